@@ -1,0 +1,23 @@
+/* rng.c - PCG32 (XSH-RR output, 64-bit LCG state); see rng.h for the citation. */
+#include "core/rng.h"
+
+void ww_rng_seed(ww_rng *r, uint64_t seed, uint64_t stream) {
+    r->state = 0u;
+    r->inc = (stream << 1u) | 1u;
+    ww_rng_u32(r);
+    r->state += seed;
+    ww_rng_u32(r);
+}
+
+uint32_t ww_rng_u32(ww_rng *r) {
+    uint64_t old = r->state;
+    r->state = old * 6364136223846793005ULL + r->inc;
+    uint32_t xorshifted = (uint32_t)(((old >> 18u) ^ old) >> 27u);
+    uint32_t rot = (uint32_t)(old >> 59u);
+    return (xorshifted >> rot) | (xorshifted << ((-rot) & 31u));
+}
+
+double ww_rng_uniform(ww_rng *r) {
+    uint64_t hi = ww_rng_u32(r) >> 5, lo = ww_rng_u32(r) >> 6; /* 27 + 26 bits */
+    return ((double)hi * 67108864.0 + (double)lo) * (1.0 / 9007199254740992.0);
+}

@@ -1,0 +1,22 @@
+/* rng.h - PCG32 random streams (O'Neill 2014, "PCG: A Family of Simple Fast Space-Efficient
+ * Statistically Good Algorithms for Random Number Generation"), one stream per system so that
+ * adding fish never moves where a stone lands. Seeded from the scene seed and a system id.
+ */
+#ifndef WW_RNG_H
+#define WW_RNG_H
+
+#include <stdint.h>
+
+typedef struct ww_rng {
+    uint64_t state; /* generator state */
+    uint64_t inc;   /* stream selector, always odd */
+} ww_rng;
+
+/* stream ids: fixed forever, so a new system never shifts another's draws */
+enum { WW_RNG_WAVES = 1, WW_RNG_RIPPLES, WW_RNG_STONES, WW_RNG_FISH, WW_RNG_CHEST, WW_RNG_BUBBLES };
+
+void ww_rng_seed(ww_rng *r, uint64_t seed, uint64_t stream);
+uint32_t ww_rng_u32(ww_rng *r);
+double ww_rng_uniform(ww_rng *r); /* [0, 1), 53 bits */
+
+#endif

@@ -1,0 +1,38 @@
+/* renderer.h - the frame renderer, built from the scene's plan (scene/plan.h): one pass object
+ * per planned pass, created once, then run in order each frame into our own framebuffers
+ * (HDR RGBA16F colour + depth, then tone mapping into sRGB8). Read back with glReadPixels and
+ * flipped once, so images come out top row first.
+ *
+ *   ww_renderer *r = NULL;
+ *   ww_renderer_new(gl, sc, &plan, &r, &err);     // compiles shaders, makes targets
+ *   ww_render_frame(r, sc, st);                   // draws all passes
+ *   ww_renderer_read_ldr(r, &img);                // RGB8 (or RGBA8) final image, caller allocs
+ *   ww_renderer_read_hdr(r, &img);                // RGBA float linear HDR image
+ *   ww_renderer_free(r);
+ *
+ * Shaders are embedded at build time; WW_SHADER_DIR=path/to/shaders loads them from files
+ * instead (development).
+ */
+#ifndef WW_RENDERER_H
+#define WW_RENDERER_H
+
+#include "core/error.h"
+#include "gfx/gl.h"
+#include "io/image.h"
+#include "scene/plan.h"
+#include "scene/scene.h"
+#include "sim/state.h"
+
+typedef struct ww_renderer ww_renderer;
+
+ww_result ww_renderer_new(const ww_gl *gl, const ww_scene *sc, const ww_plan *plan,
+                          ww_renderer **out, ww_error *err);
+void ww_renderer_free(ww_renderer *r);
+ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st, ww_error *err);
+/* im must be allocated by the caller at the plan's size: U8 with 3 or 4 channels / F32 with 4 */
+ww_result ww_renderer_read_ldr(ww_renderer *r, ww_image *im, ww_error *err);
+ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err);
+/* glFinish; used by bench to split render from read-back time */
+void ww_renderer_finish(ww_renderer *r);
+
+#endif

@@ -1,0 +1,35 @@
+/* writers.h - frame files. Every write is atomic: a temporary file beside the target
+ * ("NAME.tmp.PID"), fsync'd and renamed over it, so an interrupted run never leaves a partial file.
+ *
+ *   ww_write_png(path, &ldr, &err);     // RGB8 or RGBA8 from a U8 image, stb_image_write
+ *   ww_write_exr(path, &hdr, &meta, &err); // half-float RGBA (or RGB) from an F32 image, OpenEXRCore
+ *   ww_read_exr(path, &im, &err);       // F32 image back (tests, compare)
+ *   ww_read_png(path, &im, &err);       // U8 image back (tests, compare), stb_image
+ */
+#ifndef WW_WRITERS_H
+#define WW_WRITERS_H
+
+#include <stddef.h>
+
+#include "core/error.h"
+#include "io/image.h"
+
+typedef struct ww_exr_meta {
+    int frame;             /* -1: not written */
+    double time;           /* simulated time, s */
+    const char *scene;     /* scene name, or NULL */
+    const char *renderer;  /* GL_RENDERER string, or NULL */
+} ww_exr_meta;
+
+/* create a folder and its parents (mkdir -p); WW_E_IO with the path on failure */
+ww_result ww_make_dirs(const char *path, ww_error *err);
+
+/* write len bytes to path atomically (temporary file + rename) */
+ww_result ww_write_file_atomic(const char *path, const void *data, size_t len, ww_error *err);
+
+ww_result ww_write_png(const char *path, const ww_image *im, ww_error *err);
+ww_result ww_write_exr(const char *path, const ww_image *im, const ww_exr_meta *meta, ww_error *err);
+ww_result ww_read_png(const char *path, ww_image *out, ww_error *err);
+ww_result ww_read_exr(const char *path, ww_image *out, ww_error *err);
+
+#endif

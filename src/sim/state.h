@@ -1,0 +1,58 @@
+/* state.h - everything a step changes (the "data" of MuJoCo's model/data pair).
+ *
+ *   ww_state *st = ww_state_new(sc);     // one allocation, sized from the scene's counts
+ *   ww_state_reset(sc, st);              // step 0 at t = start (ww_state_new does this)
+ *   ww_step(sc, st); ...                 // sim/step.h
+ *   uint64_t h = ww_state_hash(sc, st);
+ *   ww_state_free(st);
+ *
+ * Each array is declared once in WW_STATE_FIELDS (MuJoCo's mjxmacro.h): the table drives sizing,
+ * reset, hashing and trace output. X(type, name, count, comment). `count` may use `sc->...`.
+ * The arrays live in the same block as the header; the field pointers point into it, so
+ * ww_state_copy() (not memcpy) makes a snapshot. The hash covers step and array bytes only.
+ */
+#ifndef WW_STATE_H
+#define WW_STATE_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "scene/scene.h"
+
+#define WW_STATE_FIELDS(X)                                                                        \
+    X(double, time_of_day, 1, "clock, hours 0..24 (1)")                                          \
+    X(double, sun_dir, 3, "unit vector toward the sun, world (3)")                               \
+    X(double, sun_color, 3, "sun radiance at the ground, linear RGB (3)")                        \
+    X(double, sky_zenith, 3, "sky colour straight up, linear RGB (3)")                           \
+    X(double, sky_horizon, 3, "sky colour at the horizon, linear RGB (3)")                       \
+    X(double, ambient, 3, "sky ambient light, linear RGB (3)")                                   \
+    X(double, cam_pos, 3, "camera position, m (3)")                                              \
+    X(double, cam_fwd, 3, "camera forward, unit (3)")                                            \
+    X(double, cam_fov, 1, "camera vertical field of view, rad (1)")                              \
+    X(double, wave_phase, sc->nwaves, "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)")
+
+typedef struct ww_state {
+    int64_t step;          /* steps taken since t = start */
+    double t;              /* start + step dt, s */
+    int event_next;        /* index of the next script event to apply */
+    int pad_;
+    size_t bytes;          /* size of the whole block */
+#define WW_STATE_DECL(type, name, count, comment) type *name;
+    WW_STATE_FIELDS(WW_STATE_DECL)
+#undef WW_STATE_DECL
+    /* the arrays follow in the same allocation */
+} ww_state;
+
+ww_state *ww_state_new(const ww_scene *sc);   /* NULL when out of memory */
+void ww_state_reset(const ww_scene *sc, ww_state *st);
+void ww_state_free(ww_state *st);
+/* dst must come from ww_state_new() on the same scene */
+void ww_state_copy(ww_state *dst, const ww_state *src);
+uint64_t ww_state_hash(const ww_scene *sc, const ww_state *st);
+/* one JSON object (no newline): t, step, camera, sun and every field */
+void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to);
+/* 0 when every value is finite; otherwise fills err naming the field, index and step */
+ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err);
+
+#endif

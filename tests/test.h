@@ -1,0 +1,79 @@
+/* test.h - the one tiny test framework (after Box2D's test_macros.h).
+ *
+ *   TEST(loader_unknown_key) { ENSURE(x == 1); ENSURE_NEAR(h, 0.25, WAVE_HEIGHT_TOL); }
+ *
+ * Tests register themselves; `ww-tests [FILTER...]` runs those whose name contains a filter.
+ * Tolerances are named for what they allow and scaled by WW_TOL_SCALE (0 shows the residuals:
+ * every NEAR check fails and prints the real difference).
+ * The runner ends with "N passed, N failed".
+ */
+#ifndef WW_TEST_H
+#define WW_TEST_H
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+
+typedef void (*ww_test_fn)(void);
+void ww_test_register(const char *name, ww_test_fn fn);
+void ww_test_fail(const char *file, int line, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+double ww_test_tol(double tol);      /* tol scaled by WW_TOL_SCALE */
+int ww_test_failed_now(void);        /* the current test has failed a check */
+
+#define TEST(name)                                                                              \
+    static void test_##name(void);                                                              \
+    __attribute__((constructor)) static void reg_##name(void) {                                 \
+        ww_test_register(#name, test_##name);                                                   \
+    }                                                                                           \
+    static void test_##name(void)
+
+#define ENSURE(c)                                                                               \
+    do {                                                                                        \
+        if (!(c)) ww_test_fail(__FILE__, __LINE__, "%s", #c);                                   \
+    } while (0)
+
+#define ENSURE_MSG(c, ...)                                                                      \
+    do {                                                                                        \
+        if (!(c)) ww_test_fail(__FILE__, __LINE__, __VA_ARGS__);                                \
+    } while (0)
+
+#define ENSURE_EQ_INT(a, b)                                                                     \
+    do {                                                                                        \
+        long long a_ = (long long)(a), b_ = (long long)(b);                                     \
+        if (a_ != b_) ww_test_fail(__FILE__, __LINE__, "%s == %s: %lld != %lld", #a, #b, a_, b_); \
+    } while (0)
+
+#define ENSURE_EQ_U64(a, b)                                                                     \
+    do {                                                                                        \
+        uint64_t a_ = (a), b_ = (b);                                                            \
+        if (a_ != b_)                                                                           \
+            ww_test_fail(__FILE__, __LINE__, "%s == %s: 0x%016llx != 0x%016llx", #a, #b,        \
+                         (unsigned long long)a_, (unsigned long long)b_);                       \
+    } while (0)
+
+#define ENSURE_NEAR(a, b, tol)                                                                  \
+    do {                                                                                        \
+        double a_ = (a), b_ = (b), t_ = ww_test_tol(tol);                                       \
+        if (!(fabs(a_ - b_) <= t_))                                                             \
+            ww_test_fail(__FILE__, __LINE__, "|%s - %s| = |%.17g - %.17g| = %.3g > %s = %.3g",  \
+                         #a, #b, a_, b_, fabs(a_ - b_), #tol, t_);                              \
+    } while (0)
+
+/* allocation counter of the test binary (the link wraps malloc/calloc/realloc) */
+long ww_test_alloc_count(void);
+
+/* test helpers shared by the test files (tests/util.c) */
+/* run a shell command line; returns its exit status (or -1); stdout/stderr to the given files
+ * when not NULL */
+int ww_test_run(const char *cmdline, const char *out_path, const char *err_path);
+/* the waterworld binary under test ($WW_BIN, default ./waterworld) */
+const char *ww_test_bin(void);
+/* a fresh folder under build/test-tmp/ named after the test; returns its path */
+const char *ww_test_tmpdir(const char *name);
+/* read a whole file; returns malloc'd NUL-terminated bytes and its length, or NULL */
+char *ww_test_read_file(const char *path, size_t *len);
+/* 1 when a GL backend can be opened here */
+int ww_test_have_gl(void);
+
+#endif
