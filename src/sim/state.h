@@ -22,6 +22,7 @@
 
 #define WW_STATE_FIELDS(X)                                                                        \
     X(double, time_of_day, 1, "clock, hours 0..24 (1)")                                          \
+    X(double, clock_anchor, 2, "clock was set to [0] hours at simulated time [1] s (2)")          \
     X(double, sun_dir, 3, "unit vector toward the sun, world (3)")                               \
     X(double, sun_color, 3, "sun radiance at the ground, linear RGB (3)")                        \
     X(double, sky_zenith, 3, "sky colour straight up, linear RGB (3)")                           \
@@ -45,8 +46,10 @@ typedef struct ww_state {
 } ww_state;
 
 ww_state *ww_state_new(const ww_scene *sc);   /* NULL when out of memory */
-void ww_state_reset(const ww_scene *sc, ww_state *st);
+void ww_state_reset(const ww_scene *sc, ww_state *st); /* in step.c: runs every system's init */
 void ww_state_free(ww_state *st);
+/* zero every array (used by reset) */
+void ww_state_clear(ww_state *st);
 /* dst must come from ww_state_new() on the same scene */
 void ww_state_copy(ww_state *dst, const ww_state *src);
 uint64_t ww_state_hash(const ww_scene *sc, const ww_state *st);

@@ -1,0 +1,118 @@
+/* camera.c - keyframe interpolation of the camera path (see camera.h). Tangents follow the
+ * finite-difference (Catmull-Rom) rule for non-uniform key times: m_i = (p_{i+1} - p_{i-1}) /
+ * (t_{i+1} - t_{i-1}), one-sided at the ends, then cubic Hermite on each segment.
+ */
+#include "sim/camera.h"
+
+#include <math.h>
+
+#include "core/mathx.h"
+
+void ww_camera_dir(double yaw, double pitch, double fwd[3]) {
+    fwd[0] = sin(yaw) * cos(pitch);
+    fwd[1] = sin(pitch);
+    fwd[2] = -cos(yaw) * cos(pitch);
+}
+
+/* the value of channel c of key i: position, look-at, yaw/pitch (unwrapped) or fov */
+typedef struct {
+    const ww_scene *sc;
+    double yaw[WW_MAX_KEYS]; /* unwrapped so consecutive keys differ by at most pi */
+    double pitch[WW_MAX_KEYS];
+} keyset;
+
+enum { CH_POS = 0, CH_TARGET = 3, CH_YAW = 6, CH_PITCH = 7, CH_FOV = 8 };
+
+static double key_value(const keyset *ks, int i, int ch) {
+    const ww_camera_key *k = &ks->sc->cam[i];
+    if (ch < CH_TARGET) return k->position[ch];
+    if (ch < CH_YAW) return k->look_at[ch - CH_TARGET];
+    if (ch == CH_YAW) return ks->yaw[i];
+    if (ch == CH_PITCH) return ks->pitch[i];
+    return k->fov > 0.0 ? k->fov : ks->sc->fov;
+}
+
+/* derivative per second at key i */
+static double key_slope(const keyset *ks, int i, int ch) {
+    int n = ks->sc->ncam, a = i > 0 ? i - 1 : i, b = i < n - 1 ? i + 1 : i;
+    if (a == b) return 0.0;
+    return (key_value(ks, b, ch) - key_value(ks, a, ch)) / (ks->sc->cam[b].t - ks->sc->cam[a].t);
+}
+
+static double channel_at(const keyset *ks, int i, double u, double h, int ch) {
+    double p0 = key_value(ks, i, ch), p1 = key_value(ks, i + 1, ch);
+    if (ks->sc->interp == WW_INTERP_LINEAR) return ww_m_lerp(p0, p1, u);
+    double m0 = key_slope(ks, i, ch) * h, m1 = key_slope(ks, i + 1, ch) * h;
+    double u2 = u * u, u3 = u2 * u;
+    return (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 +
+           (u3 - u2) * m1;
+}
+
+static void key_angles(const ww_camera_key *k, double *yaw, double *pitch) {
+    if (!k->has_look_at) {
+        *yaw = k->yaw;
+        *pitch = k->pitch;
+        return;
+    }
+    double d[3];
+    ww_m_sub3(k->look_at, k->position, d);
+    ww_m_normalize3(d);
+    *yaw = atan2(d[0], -d[2]);
+    *pitch = asin(ww_m_clamp(d[1], -1.0, 1.0));
+}
+
+void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], double *fov) {
+    keyset ks = {.sc = sc};
+    int n = sc->ncam, all_targets = 1;
+    WW_ASSERT(n >= 1);
+    for (int i = 0; i < n; i++) {
+        all_targets &= sc->cam[i].has_look_at;
+        key_angles(&sc->cam[i], &ks.yaw[i], &ks.pitch[i]);
+        if (i > 0) {
+            /* turn the short way round */
+            while (ks.yaw[i] - ks.yaw[i - 1] > WW_PI) ks.yaw[i] -= WW_TAU;
+            while (ks.yaw[i] - ks.yaw[i - 1] < -WW_PI) ks.yaw[i] += WW_TAU;
+        }
+    }
+
+    /* segment and local parameter; hold outside the path */
+    int i = 0;
+    double u = 0.0, h = 1.0;
+    if (n == 1 || t <= sc->cam[0].t) {
+        i = 0;
+    } else if (t >= sc->cam[n - 1].t) {
+        i = n - 2;
+        u = 1.0;
+        h = sc->cam[n - 1].t - sc->cam[n - 2].t;
+    } else {
+        while (i < n - 2 && t >= sc->cam[i + 1].t) i++;
+        h = sc->cam[i + 1].t - sc->cam[i].t;
+        u = (t - sc->cam[i].t) / h;
+    }
+
+    if (n == 1) {
+        for (int c = 0; c < 3; c++) pos[c] = key_value(&ks, 0, CH_POS + c);
+        ww_camera_dir(ks.yaw[0], ks.pitch[0], fwd);
+        *fov = key_value(&ks, 0, CH_FOV);
+        return;
+    }
+    for (int c = 0; c < 3; c++) pos[c] = channel_at(&ks, i, u, h, CH_POS + c);
+    *fov = channel_at(&ks, i, u, h, CH_FOV);
+
+    double target[3], d[3];
+    if (all_targets) {
+        for (int c = 0; c < 3; c++) target[c] = channel_at(&ks, i, u, h, CH_TARGET + c);
+        ww_m_sub3(target, pos, d);
+        if (ww_m_len3(d) > 1e-9) {
+            ww_m_normalize3(d);
+            for (int c = 0; c < 3; c++) fwd[c] = d[c];
+            return;
+        }
+    }
+    double pitch = ww_m_clamp(channel_at(&ks, i, u, h, CH_PITCH), ww_m_rad(-89.9), ww_m_rad(89.9));
+    ww_camera_dir(channel_at(&ks, i, u, h, CH_YAW), pitch, fwd);
+}
+
+void ww_camera_update(const ww_scene *sc, ww_state *st) {
+    ww_camera_eval(sc, st->t, st->cam_pos, st->cam_fwd, st->cam_fov);
+}

@@ -1,0 +1,116 @@
+/* state.c - the one-block simulation state: sizing, reset, copy, hash, JSON and NaN checks,
+ * all driven by the WW_STATE_FIELDS table in state.h.
+ */
+#include "sim/state.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/hash.h"
+#include "sim/step.h"
+
+/* bytes of one field, rounded to 16 so every array starts aligned */
+static size_t field_bytes(size_t elem, long long count) {
+    size_t n = elem * (size_t)(count > 0 ? count : 0);
+    return (n + 15u) & ~(size_t)15u;
+}
+
+static size_t header_bytes(void) { return (sizeof(ww_state) + 15u) & ~(size_t)15u; }
+
+/* point the field pointers into the block that follows the header */
+static void bind_fields(const ww_scene *sc, ww_state *st) {
+    unsigned char *p = (unsigned char *)st + header_bytes();
+#define WW_STATE_BIND(type, name, count, comment)                                                 \
+    st->name = (type *)(void *)p;                                                                 \
+    p += field_bytes(sizeof(type), (long long)(count));
+    WW_STATE_FIELDS(WW_STATE_BIND)
+#undef WW_STATE_BIND
+}
+
+static size_t state_bytes(const ww_scene *sc) {
+    size_t n = header_bytes();
+#define WW_STATE_SIZE(type, name, count, comment) n += field_bytes(sizeof(type), (long long)(count));
+    WW_STATE_FIELDS(WW_STATE_SIZE)
+#undef WW_STATE_SIZE
+    return n;
+}
+
+ww_state *ww_state_new(const ww_scene *sc) {
+    size_t n = state_bytes(sc);
+    ww_state *st = calloc(1, n);
+    if (!st) return NULL;
+    st->bytes = n;
+    bind_fields(sc, st);
+    ww_state_reset(sc, st);
+    return st;
+}
+
+void ww_state_free(ww_state *st) { free(st); }
+
+void ww_state_clear(ww_state *st) {
+    memset((unsigned char *)st + header_bytes(), 0, st->bytes - header_bytes());
+}
+
+void ww_state_copy(ww_state *dst, const ww_state *src) {
+    WW_ASSERT(dst->bytes == src->bytes);
+    dst->step = src->step;
+    dst->t = src->t;
+    dst->event_next = src->event_next;
+    memcpy((unsigned char *)dst + header_bytes(), (const unsigned char *)src + header_bytes(),
+           src->bytes - header_bytes());
+}
+
+uint64_t ww_state_hash(const ww_scene *sc, const ww_state *st) {
+    (void)sc;
+    uint64_t h = WW_HASH_INIT;
+    int64_t step = st->step;
+    int32_t ev = st->event_next;
+    h = ww_hash_bytes(h, &step, sizeof step);
+    h = ww_hash_bytes(h, &ev, sizeof ev);
+    return ww_hash_bytes(h, (const unsigned char *)st + header_bytes(), st->bytes - header_bytes());
+}
+
+/* %.17g round-trips a double; JSON has no NaN, so non-finite values are written as null */
+static void put_num(FILE *to, double v) {
+    if (isfinite(v))
+        fprintf(to, "%.17g", v);
+    else
+        fputs("null", to);
+}
+
+static void put_array(FILE *to, const char *name, const double *v, long long n) {
+    fprintf(to, ",\"%s\":", name);
+    if (n == 1) {
+        put_num(to, v[0]);
+        return;
+    }
+    fputc('[', to);
+    for (long long i = 0; i < n; i++) {
+        if (i) fputc(',', to);
+        put_num(to, v[i]);
+    }
+    fputc(']', to);
+}
+
+void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
+    fprintf(to, "{\"step\":%lld,\"t\":", (long long)st->step);
+    put_num(to, st->t);
+#define WW_STATE_JSON(type, name, count, comment) put_array(to, #name, st->name, (long long)(count));
+    WW_STATE_FIELDS(WW_STATE_JSON)
+#undef WW_STATE_JSON
+    fputc('}', to);
+}
+
+ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err) {
+#define WW_STATE_CHECK(type, name, count, comment)                                                \
+    for (long long i = 0; i < (long long)(count); i++)                                           \
+        if (!isfinite(st->name[i]))                                                               \
+            return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                   \
+                                "non-finite value in the simulation: %s[%lld] = %g at step %lld " \
+                                "(t = %.6f s)",                                                   \
+                                #name, i, st->name[i], (long long)st->step, st->t);
+    WW_STATE_FIELDS(WW_STATE_CHECK)
+#undef WW_STATE_CHECK
+    return WW_OK;
+}

@@ -1,0 +1,20 @@
+/* step.h - advancing the world by one fixed step: ww_step(const ww_scene*, ww_state*).
+ *
+ *   ww_state *st = ww_state_new(sc);            // reset: step 0, t = start, step-0 events applied
+ *   for (...) if (ww_step(sc, st, &err)) ...    // WW_E_NAN names system, index and step
+ *   ww_sim_advance_to(sc, st, n, &err);          // step until st->step == n (n >= st->step)
+ *
+ * Order inside a step: time, script events due at this step, sky clock, camera, waves; then the
+ * NaN guard over every state field. No allocation, no I/O, no wall clock.
+ */
+#ifndef WW_STEP_H
+#define WW_STEP_H
+
+#include "core/error.h"
+#include "scene/scene.h"
+#include "sim/state.h"
+
+ww_result ww_step(const ww_scene *sc, ww_state *st, ww_error *err);
+ww_result ww_sim_advance_to(const ww_scene *sc, ww_state *st, int64_t step, ww_error *err);
+
+#endif
