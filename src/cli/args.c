@@ -1,0 +1,109 @@
+/* args.c - option helpers shared by the subcommands: values, --set collection, --frames and
+ * --size parsing, scene loading. Errors are WW_E_USAGE naming the option.
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+int ww_cli_is_help(const char *arg) { return strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0; }
+
+int ww_cli_opt(int argc, char **argv, int *i, const char *name, const char **val, ww_result *r,
+               ww_error *err) {
+    const char *a = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(a, name, n) != 0) return 0;
+    if (a[n] == '=') {
+        *val = a + n + 1;
+        return 1;
+    }
+    if (a[n] != 0) return 0;
+    if (*i + 1 >= argc) {
+        *r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "option %s needs a value", name);
+        return 1;
+    }
+    *val = argv[++*i];
+    return 1;
+}
+
+int ww_cli_scene_arg(int argc, char **argv, int *i, ww_cli_scene_opts *o, ww_result *r, ww_error *err) {
+    const char *v = NULL;
+    if (ww_cli_opt(argc, argv, i, "--set", &v, r, err)) {
+        if (*r) return 1;
+        if (o->nsets >= WW_CLI_MAX_SETS) {
+            *r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "more than %d --set options", WW_CLI_MAX_SETS);
+            return 1;
+        }
+        o->sets[o->nsets++].text = v;
+        return 1;
+    }
+    if (ww_cli_opt(argc, argv, i, "--frames", &o->frames, r, err)) return 1;
+    if (ww_cli_opt(argc, argv, i, "--size", &o->size, r, err)) return 1;
+    const char *a = argv[*i];
+    if (a[0] == '-' && a[1] != 0) return 0; /* someone else's option */
+    if (o->scene_path) {
+        *r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "unexpected argument '%s' (scene already given: %s)",
+                          a, o->scene_path);
+        return 1;
+    }
+    o->scene_path = a;
+    return 1;
+}
+
+/* a whole non-negative integer, or -1 */
+static long long parse_count(const char *s, const char **end) {
+    if (*s < '0' || *s > '9') return -1;
+    errno = 0;
+    char *e = NULL;
+    long long v = strtoll(s, &e, 10);
+    if (errno) return -1;
+    *end = e;
+    return v;
+}
+
+ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc, ww_error *err) {
+    if (!o->scene_path)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "%s needs a scene file (waterworld %s --help)",
+                            cmd, cmd);
+    ww_result r = ww_scene_load(o->scene_path, o->sets, o->nsets, sc, err);
+    if (r || !o->size) return r;
+    const char *e = NULL;
+    long long w = parse_count(o->size, &e), h = -1;
+    if (w >= 0 && (*e == 'x' || *e == 'X')) h = parse_count(e + 1, &e);
+    if (w < 16 || h < 16 || w > 16384 || h > 16384 || *e != 0) {
+        ww_scene_free(*sc);
+        *sc = NULL;
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--size wants WIDTHxHEIGHT with each in 16..16384, got '%s'", o->size);
+    }
+    (*sc)->width = (int)w;
+    (*sc)->height = (int)h;
+    return WW_OK;
+}
+
+ww_result ww_cli_frames(const char *text, const ww_scene *sc, int64_t *first, int64_t *last,
+                        ww_error *err) {
+    *first = 0;
+    *last = sc->frame_count;
+    if (!text) return WW_OK;
+    const char *e = NULL;
+    long long a = parse_count(text, &e), b;
+    if (a >= 0 && *e == ':') {
+        b = parse_count(e + 1, &e);
+    } else {
+        b = a;
+        a = 0;
+    }
+    if (b < 0 || *e != 0 || b <= a)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--frames wants N or A:B with A < B (frames A..B-1), got '%s'", text);
+    if (b > sc->frame_count)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--frames %s goes past the scene's %lld frames (time.duration %g s at %g fps)",
+                            text, (long long)sc->frame_count, sc->duration, sc->fps);
+    *first = a;
+    *last = b;
+    return WW_OK;
+}

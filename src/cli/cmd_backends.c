@@ -1,0 +1,54 @@
+/* cmd_backends.c - `waterworld backends`: which GL backends open here, and what they run on. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "gfx/backend.h"
+
+static const char usage[] =
+    "usage: waterworld backends [--renderer]\n"
+    "\n"
+    "Opens each GL backend (auto, egl, osmesa) and prints what it runs on, or why it failed.\n"
+    "  --renderer   print only \"GL_RENDERER | GL_VERSION\" of the auto backend (golden/RENDERER)\n"
+    "\n"
+    "Exit: 0 when at least one backend opens, 3 when none does.\n";
+
+ww_result ww_cmd_backends(int argc, char **argv, ww_error *err) {
+    int only_renderer = 0;
+    for (int i = 0; i < argc; i++) {
+        if (ww_cli_is_help(argv[i])) {
+            fputs(usage, stdout);
+            return WW_OK;
+        }
+        if (strcmp(argv[i], "--renderer") == 0) {
+            only_renderer = 1;
+            continue;
+        }
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "backends: unknown option '%s'", argv[i]);
+    }
+    static const struct { const char *name; ww_backend_kind kind; } kinds[] = {
+        {"auto", WW_BACKEND_AUTO}, {"egl", WW_BACKEND_EGL}, {"osmesa", WW_BACKEND_OSMESA}};
+    int opened = 0;
+    ww_error last = {0};
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
+        ww_backend *b = NULL;
+        ww_error e = {0};
+        if (ww_backend_open(kinds[k].kind, &b, &e) == WW_OK) {
+            opened++;
+            if (only_renderer) {
+                printf("%s | %s\n", ww_backend_renderer(b), ww_backend_version(b));
+                ww_backend_close(b);
+                return WW_OK;
+            }
+            printf("%-7s %-16s %s | %s\n", kinds[k].name, ww_backend_describe(b), ww_backend_renderer(b),
+                   ww_backend_version(b));
+            ww_backend_close(b);
+        } else {
+            last = e;
+            if (!only_renderer) printf("%-7s unavailable: %s\n", kinds[k].name, e.msg);
+        }
+    }
+    if (opened) return WW_OK;
+    *err = last;
+    return last.code ? last.code : WW_E_BACKEND;
+}

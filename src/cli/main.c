@@ -1,0 +1,59 @@
+/* main.c - the waterworld command: dispatch to a subcommand, print its error, choose the exit
+ * code (0 ok, 1 check failed, 2 bad input, 3 runtime failure). The only place that decides one.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+static const char usage[] =
+    "waterworld " WW_VERSION " - headless water world renderer and simulation batch tool\n"
+    "\n"
+    "usage: waterworld COMMAND [options]   (waterworld COMMAND --help for each)\n"
+    "\n"
+    "  render   SCENE.yaml [-o DIR] [--format png|exr|none] [--frames N|A:B] [--size WxH]\n"
+    "                      [--backend auto|egl|osmesa] [--set KEY=VALUE]...\n"
+    "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--hash] [--set KEY=VALUE]...\n"
+    "  plan     SCENE.yaml                systems and render passes the scene needs\n"
+    "  bench    [render] [--frames N] [--json]   speed and memory figures\n"
+    "  backends [--renderer]             which GL backends open here, on what\n"
+    "  --help | --version\n"
+    "\n"
+    "Exit codes: 0 success, 1 check failed, 2 bad input or usage, 3 runtime failure.\n";
+
+typedef struct {
+    const char *name;
+    ww_result (*run)(int argc, char **argv, ww_error *err);
+} command;
+
+static const command commands[] = {
+    {"render", ww_cmd_render},
+    {"simulate", ww_cmd_simulate},
+    {"plan", ww_cmd_plan},
+    {"bench", ww_cmd_bench},
+    {"backends", ww_cmd_backends},
+};
+
+int main(int argc, char **argv) {
+    if (argc < 2) {
+        fputs(usage, stderr);
+        return 2;
+    }
+    if (ww_cli_is_help(argv[1])) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("waterworld %s\n", WW_VERSION);
+        return 0;
+    }
+    for (size_t c = 0; c < sizeof commands / sizeof commands[0]; c++) {
+        if (strcmp(argv[1], commands[c].name) != 0) continue;
+        ww_error err = {0};
+        ww_result r = commands[c].run(argc - 2, argv + 2, &err);
+        if (r != WW_OK) ww_error_print(&err, stderr);
+        return ww_result_exit_code(r);
+    }
+    fprintf(stderr, "error: unknown command '%s'\n\n%s", argv[1], usage);
+    return 2;
+}

@@ -1,0 +1,154 @@
+/* test_images.c - rendered pixels: golden frames (exact on the Mesa that blessed them, close
+ * elsewhere), EGL and OSMesa giving the same bytes, and llvmpipe's thread count not mattering.
+ * Images by tolerance, simulation by hash: this file never looks at the state.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gfx/backend.h"
+#include "io/writers.h"
+#include "test.h"
+
+/* on a renderer other than the one in golden/RENDERER (another Mesa, a GPU): every channel within
+ * this many 8-bit levels, and the image's PSNR at least this many dB */
+#define GOLDEN_FOREIGN_MAX_DIFF 24
+#define GOLDEN_FOREIGN_PSNR_MIN 32.0
+
+typedef struct {
+    int max_diff;
+    double psnr;
+    long differing;
+} image_diff;
+
+static int diff_images(const ww_image *a, const ww_image *b, image_diff *d) {
+    if (a->width != b->width || a->height != b->height || a->channels != b->channels) return -1;
+    size_t n = (size_t)a->width * (size_t)a->height * (size_t)a->channels;
+    double se = 0;
+    *d = (image_diff){0};
+    for (size_t i = 0; i < n; i++) {
+        int e = abs((int)a->u8[i] - (int)b->u8[i]);
+        if (e > d->max_diff) d->max_diff = e;
+        d->differing += e != 0;
+        se += (double)e * e;
+    }
+    double mse = se / (double)n;
+    d->psnr = mse > 0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
+    return 0;
+}
+
+/* "GL_RENDERER | GL_VERSION" of the auto backend here, or "" without GL */
+static void current_renderer(char *out, size_t cap) {
+    out[0] = 0;
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    if (ww_backend_open(WW_BACKEND_AUTO, &b, &err) != WW_OK) return;
+    snprintf(out, cap, "%s | %s", ww_backend_renderer(b), ww_backend_version(b));
+    ww_backend_close(b);
+}
+
+static void check_golden(const char *golden, const char *actual) {
+    ww_image g = {0}, a = {0};
+    ww_error err = {0};
+    ENSURE_MSG(ww_read_png(golden, &g, &err) == WW_OK, "%s: %s", golden, err.msg);
+    ENSURE_MSG(ww_read_png(actual, &a, &err) == WW_OK, "%s: %s", actual, err.msg);
+    if (!g.u8 || !a.u8) goto done;
+
+    char here[512];
+    current_renderer(here, sizeof here);
+    char *blessed = ww_test_read_file("golden/RENDERER", NULL);
+    int exact = blessed && strncmp(blessed, here, strlen(here)) == 0 && here[0];
+    image_diff d;
+    ENSURE(diff_images(&g, &a, &d) == 0);
+    if (exact) {
+        ENSURE_MSG(d.differing == 0, "%s: %ld channel values differ (max %d, PSNR %.1f dB); "
+                   "if the change is intended, look at %s and run make golden",
+                   golden, d.differing, d.max_diff, d.psnr, actual);
+    } else {
+        fprintf(stderr, "(renderer differs from golden/RENDERER: comparing with tolerance) ");
+        ENSURE_MSG(d.max_diff <= GOLDEN_FOREIGN_MAX_DIFF && d.psnr >= GOLDEN_FOREIGN_PSNR_MIN,
+                   "%s: max diff %d (allowed %d), PSNR %.1f dB (min %.1f)", golden, d.max_diff,
+                   GOLDEN_FOREIGN_MAX_DIFF, d.psnr, GOLDEN_FOREIGN_PSNR_MIN);
+    }
+    free(blessed);
+done:
+    ww_image_free(&g);
+    ww_image_free(&a);
+}
+
+static int render(const char *args) {
+    char c[2048];
+    snprintf(c, sizeof c, "%s render %s --quiet", ww_test_bin(), args);
+    return ww_test_run(c, NULL, NULL);
+}
+
+TEST(images_golden_minimal) {
+    if (!ww_test_have_gl()) return;
+    char dir[512], args[1024], actual[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_minimal"));
+    snprintf(args, sizeof args, "scenes/minimal.yaml --frames 1 -o %s", dir);
+    ENSURE_EQ_INT(render(args), 0);
+    snprintf(actual, sizeof actual, "%s/frame_00000.png", dir);
+    check_golden("golden/minimal/frame_00000.png", actual);
+}
+
+TEST(images_golden_demo_two_frames) {
+    if (!ww_test_have_gl()) return;
+    char dir[512], args[1024], actual[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_demo"));
+    snprintf(args, sizeof args, "scenes/demo.yaml --size 256x144 --frames 1 -o %s", dir);
+    ENSURE_EQ_INT(render(args), 0);
+    snprintf(args, sizeof args, "scenes/demo.yaml --size 256x144 --frames 150:151 -o %s", dir);
+    ENSURE_EQ_INT(render(args), 0);
+    snprintf(actual, sizeof actual, "%s/frame_00000.png", dir);
+    check_golden("golden/demo/frame_00000.png", actual);
+    snprintf(actual, sizeof actual, "%s/frame_00150.png", dir);
+    check_golden("golden/demo/frame_00150.png", actual);
+}
+
+static void same_files(const char *pa, const char *pb) {
+    size_t na = 0, nb = 0;
+    char *a = ww_test_read_file(pa, &na), *b = ww_test_read_file(pb, &nb);
+    ENSURE_MSG(a && b && na == nb && memcmp(a, b, na) == 0, "%s and %s differ", pa, pb);
+    free(a);
+    free(b);
+}
+
+TEST(images_egl_and_osmesa_identical) {
+    if (!ww_test_have_gl()) return;
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    int have_egl = ww_backend_open(WW_BACKEND_EGL, &b, &err) == WW_OK;
+    if (b) ww_backend_close(b);
+    b = NULL;
+    int have_osmesa = ww_backend_open(WW_BACKEND_OSMESA, &b, &err) == WW_OK;
+    if (b) ww_backend_close(b);
+    ENSURE_MSG(have_egl && have_osmesa, "both backends are expected on this machine (egl %d, osmesa %d)",
+               have_egl, have_osmesa);
+    if (!have_egl || !have_osmesa) return;
+    char dir[512], args[1024], pa[700], pb[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("backends"));
+    snprintf(args, sizeof args, "scenes/demo.yaml --size 256x144 --frames 90:91 --backend egl -o %s/egl", dir);
+    ENSURE_EQ_INT(render(args), 0);
+    snprintf(args, sizeof args, "scenes/demo.yaml --size 256x144 --frames 90:91 --backend osmesa -o %s/osmesa", dir);
+    ENSURE_EQ_INT(render(args), 0);
+    snprintf(pa, sizeof pa, "%s/egl/frame_00090.png", dir);
+    snprintf(pb, sizeof pb, "%s/osmesa/frame_00090.png", dir);
+    same_files(pa, pb);
+}
+
+TEST(images_llvmpipe_thread_count_does_not_matter) {
+    if (!ww_test_have_gl()) return;
+    char dir[512], args[1024], pa[700], pb[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("threads"));
+    snprintf(args, sizeof args, "scenes/minimal.yaml --frames 1 -o %s/t1", dir);
+    setenv("LP_NUM_THREADS", "1", 1);
+    ENSURE_EQ_INT(render(args), 0);
+    snprintf(args, sizeof args, "scenes/minimal.yaml --frames 1 -o %s/t4", dir);
+    setenv("LP_NUM_THREADS", "4", 1);
+    ENSURE_EQ_INT(render(args), 0);
+    unsetenv("LP_NUM_THREADS");
+    snprintf(pa, sizeof pa, "%s/t1/frame_00000.png", dir);
+    snprintf(pb, sizeof pb, "%s/t4/frame_00000.png", dir);
+    same_files(pa, pb);
+}
