@@ -1,0 +1,50 @@
+/* cmd_bench.c - `waterworld bench`: speed and memory figures (printed, never asserted). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "tools/bench.h"
+
+static const char usage[] =
+    "usage: waterworld bench [render|sim] [--frames N] [--json] [SCENE.yaml...]\n"
+    "\n"
+    "  render (default)  per backend (egl, osmesa), scene (minimal, demo) and size (256x144,\n"
+    "                    1280x720): ms per frame split into simulate / render / read back /\n"
+    "                    encode (PNG), the fill floor (one trivial full-screen pass), render/floor,\n"
+    "                    peak RSS of the render process and the size of the state\n"
+    "  sim               microseconds per simulation step\n"
+    "  --frames N        frames per configuration (default 20)\n"
+    "  --json            one JSON object per line\n";
+
+ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
+    ww_bench_opts o = {0};
+    const char *what = "render", *frames = NULL;
+    int nscenes = 0;
+    ww_result r = WW_OK;
+    for (int i = 0; i < argc && !r; i++) {
+        if (ww_cli_is_help(argv[i])) {
+            fputs(usage, stdout);
+            return WW_OK;
+        }
+        if (strcmp(argv[i], "--json") == 0) {
+            o.json = 1;
+            continue;
+        }
+        if (ww_cli_opt(argc, argv, &i, "--frames", &frames, &r, err)) continue;
+        if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0) {
+            what = argv[i];
+            continue;
+        }
+        if (argv[i][0] != '-' && nscenes < 3) {
+            o.scenes[nscenes++] = argv[i];
+            continue;
+        }
+        r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: unknown argument '%s' (see --help)", argv[i]);
+    }
+    if (r) return r;
+    if (frames && (o.frames = atoi(frames)) <= 0)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frames wants a positive count, got '%s'", frames);
+    if (strcmp(what, "sim") == 0) return ww_bench_sim(&o, stdout, err);
+    return ww_bench_render(&o, stdout, err);
+}
