@@ -1,0 +1,839 @@
+/* compile.c - the second layer of the loader: the tree of yaml_tree.c, with --set applied, checked
+ * and compiled into a ww_scene. One function per section over a shared layer of getters, each
+ * value checked by a one-line rule (sokol's _SG_VALIDATE); the first error stops the load.
+ */
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include "core/mathx.h"
+#include "scene/scene.h"
+#include "scene/tree.h"
+
+#define TRY(x)                                                                                  \
+    do {                                                                                        \
+        ww_result r_ = (x);                                                                     \
+        if (r_ != WW_OK) return r_;                                                             \
+    } while (0)
+
+#define MAX_STEPS_PER_FRAME 1000000
+#define EVENT_TIME_EPS 1e-9   /* s: an event at t fires on the step that reaches t - eps */
+
+/* ---- rules ----------------------------------------------------------------------------------- */
+
+typedef struct rule {
+    double lo, hi;
+    unsigned char lo_open, hi_open; /* 1: the end itself is excluded */
+    unsigned char integer;          /* 1: whole numbers only */
+    const char *unit;               /* for messages */
+} rule;
+
+#define CLOSED(lo, hi, unit) {lo, hi, 0, 0, 0, unit}  /* [lo, hi] */
+#define OPEN_LO(lo, hi, unit) {lo, hi, 1, 0, 0, unit} /* (lo, hi] */
+#define WHOLE(lo, hi, unit) {lo, hi, 0, 0, 1, unit}   /* whole numbers in [lo, hi] */
+#define FINITE(unit) CLOSED(-DBL_MAX, DBL_MAX, unit)  /* any finite number */
+
+/* every range of the schema, in file order; angles are checked in degrees */
+static const rule R_SEED = WHOLE(0, 9007199254740991.0, ""); /* 2^53 - 1, exact in a double */
+static const rule R_DT = OPEN_LO(0, 1, "s");
+static const rule R_FPS = OPEN_LO(0, 1000, "frames/s");
+static const rule R_DURATION = OPEN_LO(0, 1e7, "s");
+static const rule R_START = CLOSED(0, 1e9, "s");
+static const rule R_SIZE = WHOLE(16, 16384, "px");
+static const rule R_EXPOSURE = OPEN_LO(0, 100, "");
+static const rule R_GAMMA = CLOSED(0.5, 5, "");
+static const rule R_HOURS = CLOSED(0, 24, "h");
+static const rule R_DAY_LENGTH = CLOSED(0, 1e9, "s");
+static const rule R_SUN_MAX = CLOSED(0, 90, "deg");
+static const rule R_FOG_COLOR = CLOSED(0, 100, "");
+static const rule R_FOG_DENSITY = CLOSED(0, 10, "1/m");
+static const rule R_LEVEL = CLOSED(-1e6, 1e6, "m");
+static const rule R_DEPTH = OPEN_LO(0, 1e4, "m");
+static const rule R_WATER_COLOR = CLOSED(0, 1, "");
+static const rule R_ANGLE = FINITE("deg");
+static const rule R_WAVELENGTH = OPEN_LO(0, 1e5, "m");
+static const rule R_AMPLITUDE = CLOSED(0, 100, "m");
+static const rule R_STEEPNESS = CLOSED(0, 1, "");
+static const rule R_SPEED = OPEN_LO(0, 1e3, "m/s");
+static const rule R_FOV = CLOSED(1, 179, "deg");
+static const rule R_NEAR = OPEN_LO(0, 100, "m");
+static const rule R_FAR_MAX = CLOSED(0, 1e7, "m"); /* lo is near, open: built in compile_camera */
+static const rule R_KEY_TIME = CLOSED(0, 1e9, "s");
+static const rule R_POSITION = FINITE("m");
+static const rule R_PITCH = CLOSED(-89.9, 89.9, "deg");
+static const rule R_EVENT_TIME = CLOSED(0, 1e9, "s");
+
+/* script actions: an event holds "t" and exactly one of these */
+typedef struct action {
+    const char *key;
+    ww_event_kind kind;
+    const rule *range;
+} action;
+
+static const action ACTIONS[] = {
+    {"time_of_day", WW_EV_TIME_OF_DAY, &R_HOURS},
+};
+#define NACTIONS ((int)(sizeof ACTIONS / sizeof ACTIONS[0]))
+
+/* enum words, indexed by the enum value */
+static const char *const TONEMAP_WORDS[] = {[WW_TONEMAP_EXP] = "exp", [WW_TONEMAP_ACES] = "aces",
+                                            NULL};
+static const char *const SKY_WORDS[] = {"gradient", NULL};
+static const char *const WAVE_WORDS[] = {[WW_WAVES_FLAT] = "flat",
+                                         [WW_WAVES_GERSTNER] = "gerstner", NULL};
+static const char *const INTERP_WORDS[] = {[WW_INTERP_CATMULL_ROM] = "catmull_rom",
+                                           [WW_INTERP_LINEAR] = "linear", NULL};
+
+/* ---- context --------------------------------------------------------------------------------- */
+
+typedef struct ctx {
+    ww_scene *sc;
+    const char *file;     /* for errors with no node to point at */
+    ww_error *err;
+} ctx;
+
+/* a mapping being read, and its dotted name for messages */
+typedef struct section {
+    const ww_node *map;   /* NULL when absent: every value keeps its default */
+    char what[96];        /* "render.tonemap", "camera.path[2]"; "" at the top level */
+} section;
+
+typedef enum need { OPTIONAL = 0, REQUIRED } need;
+
+static ww_result fail(ctx *c, ww_result code, const ww_node *at, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
+static ww_result fail(ctx *c, ww_result code, const ww_node *at, const char *fmt, ...) {
+    char msg[sizeof c->err->msg];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (!at) return ww_error_set(c->err, code, c->file, 0, 0, "%s", msg);
+    return ww_error_set(c->err, code, at->mark.file, at->mark.line, at->mark.column, "%s", msg);
+}
+
+/* ---- words: lists, suggestions --------------------------------------------------------------- */
+
+/* edit distance (Levenshtein 1966) with two rows; names longer than 63 bytes are never near */
+static int levenshtein(const char *a, const char *b) {
+    size_t na = strlen(a), nb = strlen(b);
+    if (na > 63 || nb > 63) return 1 << 20;
+    int prev[64], row[64];
+    for (size_t j = 0; j <= nb; j++) prev[j] = (int)j;
+    for (size_t i = 1; i <= na; i++) {
+        row[0] = (int)i;
+        for (size_t j = 1; j <= nb; j++) {
+            int sub = prev[j - 1] + (a[i - 1] != b[j - 1]);
+            int del = prev[j] + 1, ins = row[j - 1] + 1;
+            row[j] = sub < del ? (sub < ins ? sub : ins) : (del < ins ? del : ins);
+        }
+        memcpy(prev, row, (nb + 1) * sizeof *row);
+    }
+    return prev[nb];
+}
+
+/* the nearest word, when near enough to be a likely typo: distance <= max(2, len/3) */
+static const char *nearest(const char *typed, const char *const *words) {
+    int len = (int)strlen(typed), limit = len / 3 > 2 ? len / 3 : 2;
+    const char *best = NULL;
+    int best_d = limit + 1;
+    for (int i = 0; words[i]; i++) {
+        int d = levenshtein(typed, words[i]);
+        if (d < best_d) {
+            best_d = d;
+            best = words[i];
+        }
+    }
+    return best;
+}
+
+static const char *join_words(const char *const *words, char *buf, size_t size) {
+    size_t at = 0;
+    buf[0] = 0;
+    for (int i = 0; words[i] && at < size; i++) {
+        int n = snprintf(buf + at, size - at, "%s%s", i ? ", " : "", words[i]);
+        if (n < 0) break;
+        at += (size_t)n;
+    }
+    return buf;
+}
+
+static int in_words(const char *s, const char *const *words) {
+    for (int i = 0; words[i]; i++)
+        if (strcmp(s, words[i]) == 0) return 1;
+    return 0;
+}
+
+/* ---- numbers --------------------------------------------------------------------------------- */
+
+typedef enum num_status { NUM_OK = 0, NUM_NOT_A_NUMBER, NUM_NONFINITE, NUM_DIV_ZERO } num_status;
+
+/* YAML's .inf, -.Inf, .nan and the bare words inf, infinity, nan, in any case */
+static int is_nonfinite_word(const char *s) {
+    if (*s == '+' || *s == '-') s++;
+    if (*s == '.') s++;
+    return strcasecmp(s, "inf") == 0 || strcasecmp(s, "infinity") == 0 ||
+           strcasecmp(s, "nan") == 0;
+}
+
+static int is_digit(char ch) { return ch >= '0' && ch <= '9'; }
+
+/* a decimal literal [+-]digits[.digits][e[+-]digits], spaces around it allowed */
+static int parse_decimal(const char *s, size_t n, double *out) {
+    while (n && *s == ' ') s++, n--;
+    while (n && s[n - 1] == ' ') n--;
+    size_t i = 0, digits = 0;
+    if (i < n && (s[i] == '+' || s[i] == '-')) i++;
+    for (; i < n && is_digit(s[i]); i++) digits++;
+    if (i < n && s[i] == '.')
+        for (i++; i < n && is_digit(s[i]); i++) digits++;
+    if (!digits) return 0;
+    if (i < n && (s[i] == 'e' || s[i] == 'E')) {
+        i++;
+        if (i < n && (s[i] == '+' || s[i] == '-')) i++;
+        size_t e = i;
+        while (i < n && is_digit(s[i])) i++;
+        if (i == e) return 0;
+    }
+    char buf[128];
+    if (i != n || n >= sizeof buf) return 0;
+    memcpy(buf, s, n);
+    buf[n] = 0;
+    *out = strtod(buf, NULL);
+    return 1;
+}
+
+/* an integer, a float, or a fraction a/b (so that dt: 1/120 is exact to the last bit) */
+static num_status parse_number(const char *text, double *out) {
+    if (is_nonfinite_word(text)) return NUM_NONFINITE;
+    const char *slash = strchr(text, '/');
+    double v, a, b;
+    if (!slash) {
+        if (!parse_decimal(text, strlen(text), &v)) return NUM_NOT_A_NUMBER;
+    } else {
+        if (!parse_decimal(text, (size_t)(slash - text), &a) ||
+            !parse_decimal(slash + 1, strlen(slash + 1), &b))
+            return NUM_NOT_A_NUMBER;
+        if (b == 0.0) return NUM_DIV_ZERO;
+        v = a / b;
+    }
+    if (!isfinite(v)) return NUM_NONFINITE;
+    *out = v;
+    return NUM_OK;
+}
+
+static int in_range(const rule *r, double v) {
+    return (r->lo_open ? v > r->lo : v >= r->lo) && (r->hi_open ? v < r->hi : v <= r->hi);
+}
+
+/* the shortest of %.15g and %.17g that reads back as v */
+static const char *num_text(double v, char *buf, size_t size) {
+    snprintf(buf, size, "%.15g", v);
+    if (strtod(buf, NULL) != v) snprintf(buf, size, "%.17g", v);
+    return buf;
+}
+
+/* "(0, 1] s" */
+static const char *range_text(const rule *r, char *buf, size_t size) {
+    char lo[32], hi[32];
+    snprintf(buf, size, "%c%s, %s%c%s%s", r->lo_open ? '(' : '[', num_text(r->lo, lo, sizeof lo),
+             num_text(r->hi, hi, sizeof hi), r->hi_open ? ')' : ']', r->unit[0] ? " " : "",
+             r->unit);
+    return buf;
+}
+
+/* what a node is, for "expected X, got Y" */
+static const char *describe(const ww_node *n, char *buf, size_t size) {
+    if (n->kind == WW_NODE_MAP) return "a mapping";
+    if (n->kind == WW_NODE_SEQ) {
+        snprintf(buf, size, "a list of %d", n->n);
+        return buf;
+    }
+    if (ww_node_is_null(n)) return "nothing (null)";
+    if (n->quoted)
+        snprintf(buf, size, "the string \"%.40s\"", n->text);
+    else
+        snprintf(buf, size, "'%.40s'", n->text);
+    return buf;
+}
+
+/* one number under its rule; name is the dotted path for messages */
+static ww_result check_number(ctx *c, const ww_node *n, const char *name, const rule *r,
+                              double *out) {
+    const char *expected = r->integer ? "a whole number" : "a number";
+    char got[80], range[96];
+    double v = 0.0;
+
+    /* quoted values are strings: "0.5" is not a number, on purpose */
+    if (n->kind != WW_NODE_SCALAR || n->quoted || ww_node_is_null(n)) {
+        int looks = n->kind == WW_NODE_SCALAR && n->quoted && parse_number(n->text, &v) == NUM_OK;
+        return fail(c, WW_E_TYPE, n, "%s: expected %s, got %s%s", name, expected,
+                    describe(n, got, sizeof got), looks ? " (quotes make it a string)" : "");
+    }
+    switch (parse_number(n->text, &v)) {
+    case NUM_NOT_A_NUMBER:
+        return fail(c, WW_E_TYPE, n, "%s: expected %s, got %s", name, expected,
+                    describe(n, got, sizeof got));
+    case NUM_NONFINITE:
+        if (r->lo == -DBL_MAX)
+            return fail(c, WW_E_NONFINITE, n, "%s: expected a finite number, got %s", name,
+                        n->text);
+        return fail(c, WW_E_NONFINITE, n, "%s: expected a finite number in %s, got %s", name,
+                    range_text(r, range, sizeof range), n->text);
+    case NUM_DIV_ZERO:
+        return fail(c, WW_E_RANGE, n,
+                    "%s: division by zero in %s: expected a fraction a/b with b != 0", name,
+                    n->text);
+    case NUM_OK: break;
+    }
+    if (r->integer && v != floor(v))
+        return fail(c, WW_E_TYPE, n, "%s: expected a whole number, got %s", name, n->text);
+    if (!in_range(r, v))
+        return fail(c, WW_E_RANGE, n, "%s must be in %s, got %s", name,
+                    range_text(r, range, sizeof range), n->text);
+    *out = v;
+    return WW_OK;
+}
+
+/* ---- getters: sections, values --------------------------------------------------------------- */
+
+static const char *where(const section *s) { return s->what[0] ? s->what : "the top level"; }
+
+/* "section.key" */
+static const char *path_of(const section *s, const char *key, char *buf, size_t size) {
+    if (snprintf(buf, size, "%s%s%s", s->what, s->what[0] ? "." : "", key) < 0) buf[0] = 0;
+    return buf;
+}
+
+/* every key of the mapping must be in keys; else point at it and suggest the nearest */
+static ww_result check_keys(ctx *c, const section *s, const char *const *keys) {
+    char list[256];
+    for (const ww_node *v = s->map->first; v; v = v->next) {
+        const char *k = v->key->text;
+        if (in_words(k, keys)) continue;
+        const char *near = nearest(k, keys);
+        join_words(keys, list, sizeof list);
+        if (near)
+            return fail(c, WW_E_UNKNOWN_KEY, v->key,
+                        "unknown key '%s' in %s: did you mean '%s'? (expected one of: %s)", k,
+                        where(s), near, list);
+        return fail(c, WW_E_UNKNOWN_KEY, v->key, "unknown key '%s' in %s: expected one of: %s",
+                    k, where(s), list);
+    }
+    return WW_OK;
+}
+
+/* node as a section named what, holding only keys */
+static ww_result open_map(ctx *c, const ww_node *node, const char *what,
+                          const char *const *keys, section *out) {
+    char got[80];
+    out->map = NULL;
+    snprintf(out->what, sizeof out->what, "%s", what);
+    if (node->kind != WW_NODE_MAP)
+        return fail(c, WW_E_TYPE, node, "%s: expected a mapping, got %s", what,
+                    describe(node, got, sizeof got));
+    out->map = node;
+    return check_keys(c, out, keys);
+}
+
+/* the sub-mapping parent.key; out->map stays NULL when absent */
+static ww_result open_section(ctx *c, const section *parent, const char *key,
+                              const char *const *keys, section *out) {
+    char what[sizeof out->what];
+    path_of(parent, key, what, sizeof what);
+    const ww_node *node = parent->map ? ww_node_find(parent->map, key) : NULL;
+    if (!node) {
+        out->map = NULL;
+        snprintf(out->what, sizeof out->what, "%s", what);
+        return WW_OK;
+    }
+    return open_map(c, node, what, keys, out);
+}
+
+/* item i of the list named list_name */
+static ww_result open_item(ctx *c, const ww_node *item, const char *list_name, int i,
+                           const char *const *keys, section *out) {
+    char what[sizeof out->what];
+    snprintf(what, sizeof what, "%s[%d]", list_name, i);
+    return open_map(c, item, what, keys, out);
+}
+
+/* the value under key, NULL when absent; a missing REQUIRED key is reported at the mapping */
+static ww_result lookup(ctx *c, const section *s, const char *key, need nd, const ww_node **out) {
+    *out = s->map ? ww_node_find(s->map, key) : NULL;
+    if (*out || nd == OPTIONAL) return WW_OK;
+    return fail(c, WW_E_MISSING, s->map, "%s is missing required key '%s'", where(s), key);
+}
+
+/* the getters leave *out alone when an optional key is absent: it holds the default */
+static ww_result get_number(ctx *c, const section *s, const char *key, const rule *r, need nd,
+                            double *out) {
+    const ww_node *n;
+    char name[128];
+    TRY(lookup(c, s, key, nd, &n));
+    return n ? check_number(c, n, path_of(s, key, name, sizeof name), r, out) : WW_OK;
+}
+
+/* written in degrees, stored in radians */
+static ww_result get_angle(ctx *c, const section *s, const char *key, const rule *r, need nd,
+                           double *out) {
+    const ww_node *n;
+    char name[128];
+    double deg;
+    TRY(lookup(c, s, key, nd, &n));
+    if (!n) return WW_OK;
+    TRY(check_number(c, n, path_of(s, key, name, sizeof name), r, &deg));
+    *out = ww_m_rad(deg);
+    return WW_OK;
+}
+
+/* a list of exactly len numbers, each under r */
+static ww_result get_vec(ctx *c, const section *s, const char *key, int len, const rule *r,
+                         need nd, double *out) {
+    const ww_node *n;
+    char name[128], item[144], got[80];
+    double v[4];
+    WW_ASSERT(len <= 4);
+    TRY(lookup(c, s, key, nd, &n));
+    if (!n) return WW_OK;
+    path_of(s, key, name, sizeof name);
+    if (n->kind != WW_NODE_SEQ || n->n != len)
+        return fail(c, WW_E_TYPE, n, "%s: expected a list of %d %s, got %s", name, len,
+                    r->integer ? "whole numbers" : "numbers", describe(n, got, sizeof got));
+    int i = 0;
+    for (const ww_node *e = n->first; e; e = e->next, i++) {
+        snprintf(item, sizeof item, "%s[%d]", name, i);
+        TRY(check_number(c, e, item, r, &v[i]));
+    }
+    memcpy(out, v, (size_t)len * sizeof *v);
+    return WW_OK;
+}
+
+/* one of words; *out is its index */
+static ww_result get_word(ctx *c, const section *s, const char *key, const char *const *words,
+                          int *out) {
+    const ww_node *n;
+    char name[128], list[128], got[80];
+    TRY(lookup(c, s, key, OPTIONAL, &n));
+    if (!n) return WW_OK;
+    path_of(s, key, name, sizeof name);
+    join_words(words, list, sizeof list);
+    if (n->kind != WW_NODE_SCALAR || ww_node_is_null(n))
+        return fail(c, WW_E_TYPE, n, "%s: expected one of: %s, got %s", name, list,
+                    describe(n, got, sizeof got));
+    for (int i = 0; words[i]; i++) {
+        if (strcmp(n->text, words[i]) == 0) {
+            *out = i;
+            return WW_OK;
+        }
+    }
+    const char *near = nearest(n->text, words);
+    if (near)
+        return fail(c, WW_E_ENUM, n, "%s: '%s' is not one of: %s (did you mean '%s'?)", name,
+                    n->text, list, near);
+    return fail(c, WW_E_ENUM, n, "%s: '%s' is not one of: %s", name, n->text, list);
+}
+
+/* a list of at most max items; *out stays NULL when absent */
+static ww_result get_list(ctx *c, const section *s, const char *key, int max,
+                          const ww_node **out) {
+    char name[128], got[80];
+    TRY(lookup(c, s, key, OPTIONAL, out));
+    if (!*out) return WW_OK;
+    path_of(s, key, name, sizeof name);
+    if ((*out)->kind != WW_NODE_SEQ)
+        return fail(c, WW_E_TYPE, *out, "%s: expected a list, got %s", name,
+                    describe(*out, got, sizeof got));
+    if ((*out)->n > max)
+        return fail(c, WW_E_RANGE, *out, "%s has %d items: expected at most %d", name,
+                    (*out)->n, max);
+    return WW_OK;
+}
+
+/* the value node of the first present key, else the mapping: where to blame a combination */
+static const ww_node *blame(const section *s, const char *a, const char *b) {
+    const ww_node *n = s->map ? ww_node_find(s->map, a) : NULL;
+    if (!n && s->map) n = ww_node_find(s->map, b);
+    return n ? n : s->map;
+}
+
+/* ---- sections -------------------------------------------------------------------------------- */
+
+static ww_result compile_time(ctx *c, const section *top) {
+    static const char *const keys[] = {"dt", "fps", "duration", "start", NULL};
+    ww_scene *sc = c->sc;
+    section s;
+    TRY(open_section(c, top, "time", keys, &s));
+    TRY(get_number(c, &s, "dt", &R_DT, OPTIONAL, &sc->dt));
+    TRY(get_number(c, &s, "fps", &R_FPS, OPTIONAL, &sc->fps));
+    TRY(get_number(c, &s, "duration", &R_DURATION, OPTIONAL, &sc->duration));
+    TRY(get_number(c, &s, "start", &R_START, OPTIONAL, &sc->start));
+
+    /* frames must land on steps: 1/(fps dt) whole within 1e-6 relative */
+    const ww_node *at = blame(&s, "dt", "fps");
+    double steps = 1.0 / (sc->fps * sc->dt);
+    if (steps > MAX_STEPS_PER_FRAME)
+        return fail(c, WW_E_RANGE, at,
+                    "dt = %g is too small for fps = %g: 1/(fps*dt) = %.6g steps per frame, "
+                    "expected at most %d",
+                    sc->dt, sc->fps, steps, MAX_STEPS_PER_FRAME);
+    long long n = llround(steps);
+    if (n < 1 || fabs(steps - (double)n) > 1e-6 * steps) {
+        char shown[32];
+        snprintf(shown, sizeof shown, "%.2f", steps);
+        if (fabs(steps - (double)n) < 0.005) snprintf(shown, sizeof shown, "%.9g", steps);
+        return fail(c, WW_E_INCONSISTENT, at,
+                    "dt must divide the frame interval 1/fps: 1/(%g*%g) = %s steps; expected a "
+                    "whole number (for example dt: 1/%.15g)",
+                    sc->fps, sc->dt, shown, sc->fps * (double)(n < 1 ? 1 : n));
+    }
+    sc->steps_per_frame = n;
+
+    /* at least one frame */
+    sc->frame_count = llround(sc->duration * sc->fps);
+    if (sc->frame_count < 1)
+        return fail(c, WW_E_RANGE, blame(&s, "duration", "fps"),
+                    "duration * fps = %g frames: expected at least 1 frame (duration >= %g s)",
+                    sc->duration * sc->fps, 0.5 / sc->fps);
+    return WW_OK;
+}
+
+static ww_result compile_render(ctx *c, const section *top) {
+    static const char *const keys[] = {"size", "tonemap", NULL};
+    static const char *const tonemap_keys[] = {"operator", "exposure", "gamma", NULL};
+    ww_scene *sc = c->sc;
+    section s, tm;
+    TRY(open_section(c, top, "render", keys, &s));
+    double size[2] = {sc->width, sc->height};
+    TRY(get_vec(c, &s, "size", 2, &R_SIZE, OPTIONAL, size));
+    sc->width = (int)size[0];
+    sc->height = (int)size[1];
+
+    TRY(open_section(c, &s, "tonemap", tonemap_keys, &tm));
+    int op = (int)sc->tonemap;
+    TRY(get_word(c, &tm, "operator", TONEMAP_WORDS, &op));
+    sc->tonemap = (ww_tonemap_op)op;
+    TRY(get_number(c, &tm, "exposure", &R_EXPOSURE, OPTIONAL, &sc->exposure));
+    return get_number(c, &tm, "gamma", &R_GAMMA, OPTIONAL, &sc->gamma);
+}
+
+static ww_result compile_sky(ctx *c, const section *top) {
+    static const char *const keys[] = {"model", "time_of_day", "day_length",
+                                       "sun_max_elevation", NULL};
+    ww_scene *sc = c->sc;
+    section s;
+    TRY(open_section(c, top, "sky", keys, &s));
+    int model = 0; /* gradient, the only sky so far: checked, nothing to store */
+    TRY(get_word(c, &s, "model", SKY_WORDS, &model));
+    TRY(get_number(c, &s, "time_of_day", &R_HOURS, OPTIONAL, &sc->time_of_day));
+    TRY(get_number(c, &s, "day_length", &R_DAY_LENGTH, OPTIONAL, &sc->day_length));
+    return get_angle(c, &s, "sun_max_elevation", &R_SUN_MAX, OPTIONAL, &sc->sun_max_elevation);
+}
+
+static ww_result compile_fog(ctx *c, const section *top) {
+    static const char *const keys[] = {"above", NULL};
+    static const char *const above_keys[] = {"color", "density", NULL};
+    ww_scene *sc = c->sc;
+    section s, above;
+    TRY(open_section(c, top, "fog", keys, &s));
+    TRY(open_section(c, &s, "above", above_keys, &above));
+    TRY(get_vec(c, &above, "color", 3, &R_FOG_COLOR, OPTIONAL, sc->fog_color));
+    return get_number(c, &above, "density", &R_FOG_DENSITY, OPTIONAL, &sc->fog_density);
+}
+
+static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave *w) {
+    static const char *const keys[] = {"direction", "wavelength", "amplitude", "steepness",
+                                       "phase", "speed", NULL};
+    section s;
+    TRY(open_item(c, item, "water.waves.list", i, keys, &s));
+    *w = (ww_wave){.steepness = 0.5};
+    double speed = 0.0;
+    TRY(get_angle(c, &s, "direction", &R_ANGLE, REQUIRED, &w->direction));
+    TRY(get_number(c, &s, "wavelength", &R_WAVELENGTH, REQUIRED, &w->wavelength));
+    TRY(get_number(c, &s, "amplitude", &R_AMPLITUDE, REQUIRED, &w->amplitude));
+    TRY(get_number(c, &s, "steepness", &R_STEEPNESS, OPTIONAL, &w->steepness));
+    TRY(get_angle(c, &s, "phase", &R_ANGLE, OPTIONAL, &w->phase));
+    TRY(get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &speed));
+
+    /* deep-water dispersion w^2 = g k (Airy wave theory) unless the phase speed is given */
+    w->dir[0] = cos(w->direction);
+    w->dir[1] = sin(w->direction);
+    w->k = WW_TAU / w->wavelength;
+    w->omega = speed > 0.0 ? speed * w->k : sqrt(WW_G * w->k);
+    w->speed = w->omega / w->k;
+    return WW_OK;
+}
+
+static ww_result compile_waves(ctx *c, const section *water) {
+    static const char *const keys[] = {"model", "list", NULL};
+    ww_scene *sc = c->sc;
+    section s;
+    const ww_node *list;
+    TRY(open_section(c, water, "waves", keys, &s));
+    int model = (int)sc->wave_model;
+    TRY(get_word(c, &s, "model", WAVE_WORDS, &model));
+    sc->wave_model = (ww_wave_model)model;
+    TRY(get_list(c, &s, "list", WW_MAX_WAVES, &list));
+
+    /* the list is checked even when flat water ignores it */
+    int i = 0;
+    for (const ww_node *item = list ? list->first : NULL; item; item = item->next, i++)
+        TRY(compile_wave(c, item, i, &sc->waves[i]));
+    sc->nwaves = i;
+    if (sc->wave_model == WW_WAVES_FLAT) {
+        memset(sc->waves, 0, sizeof sc->waves);
+        sc->nwaves = 0;
+    }
+    return WW_OK;
+}
+
+static ww_result compile_water(ctx *c, const section *top) {
+    static const char *const keys[] = {"level", "depth", "color", "waves", NULL};
+    ww_scene *sc = c->sc;
+    section s;
+    TRY(open_section(c, top, "water", keys, &s));
+    TRY(get_number(c, &s, "level", &R_LEVEL, OPTIONAL, &sc->water_level));
+    TRY(get_number(c, &s, "depth", &R_DEPTH, OPTIONAL, &sc->water_depth));
+    TRY(get_vec(c, &s, "color", 3, &R_WATER_COLOR, OPTIONAL, sc->water_color));
+    return compile_waves(c, &s);
+}
+
+static ww_result compile_camera_key(ctx *c, const ww_node *item, int i, ww_camera_key *k) {
+    static const char *const keys[] = {"t", "position", "look_at", "yaw", "pitch", "fov", NULL};
+    section s;
+    TRY(open_item(c, item, "camera.path", i, keys, &s));
+    *k = (ww_camera_key){0};
+    TRY(get_number(c, &s, "t", &R_KEY_TIME, REQUIRED, &k->t));
+    TRY(get_vec(c, &s, "position", 3, &R_POSITION, REQUIRED, k->position));
+    TRY(get_vec(c, &s, "look_at", 3, &R_POSITION, OPTIONAL, k->look_at));
+    TRY(get_angle(c, &s, "yaw", &R_ANGLE, OPTIONAL, &k->yaw));
+    TRY(get_angle(c, &s, "pitch", &R_PITCH, OPTIONAL, &k->pitch));
+    TRY(get_angle(c, &s, "fov", &R_FOV, OPTIONAL, &k->fov));
+
+    /* aim by look_at, or by yaw (and pitch), never both */
+    const ww_node *look = ww_node_find(s.map, "look_at");
+    const ww_node *yaw = ww_node_find(s.map, "yaw"), *pitch = ww_node_find(s.map, "pitch");
+    if (!look && !yaw)
+        return fail(c, WW_E_MISSING, s.map,
+                    "%s is missing required key 'look_at' or 'yaw': expected one to aim the "
+                    "camera",
+                    s.what);
+    if (look && (yaw || pitch)) {
+        const ww_node *other = yaw ? yaw : pitch;
+        return fail(c, WW_E_INCONSISTENT, other->key,
+                    "%s has both look_at and %s: expected look_at alone, or yaw and pitch",
+                    s.what, other->key->text);
+    }
+    k->has_look_at = look != NULL;
+    if (look && memcmp(k->look_at, k->position, sizeof k->position) == 0)
+        return fail(c, WW_E_INCONSISTENT, look,
+                    "%s: look_at equals position, so the camera has no direction: expected "
+                    "another point",
+                    s.what);
+    return WW_OK;
+}
+
+static ww_result compile_camera(ctx *c, const section *top) {
+    static const char *const keys[] = {"fov", "near", "far", "interpolation", "path", NULL};
+    ww_scene *sc = c->sc;
+    section s;
+    const ww_node *path;
+    TRY(open_section(c, top, "camera", keys, &s));
+    TRY(get_angle(c, &s, "fov", &R_FOV, OPTIONAL, &sc->fov));
+    TRY(get_number(c, &s, "near", &R_NEAR, OPTIONAL, &sc->near_clip));
+    rule far = R_FAR_MAX; /* (near, 1e7] */
+    far.lo = sc->near_clip;
+    far.lo_open = 1;
+    TRY(get_number(c, &s, "far", &far, OPTIONAL, &sc->far_clip));
+    int interp = (int)sc->interp;
+    TRY(get_word(c, &s, "interpolation", INTERP_WORDS, &interp));
+    sc->interp = (ww_interp)interp;
+    TRY(get_list(c, &s, "path", WW_MAX_KEYS, &path));
+
+    /* keys in strictly increasing time */
+    int i = 0;
+    for (const ww_node *item = path ? path->first : NULL; item; item = item->next, i++) {
+        ww_camera_key *k = &sc->cam[i];
+        TRY(compile_camera_key(c, item, i, k));
+        if (i > 0 && !(k->t > k[-1].t))
+            return fail(c, WW_E_INCONSISTENT, ww_node_find(item, "t"),
+                        "camera.path[%d].t = %g is not after camera.path[%d].t = %g: expected "
+                        "key times to increase",
+                        i, k->t, i - 1, k[-1].t);
+    }
+    sc->ncam = i;
+
+    /* no path: one key looking at the origin from a little above the water */
+    if (sc->ncam == 0) {
+        sc->cam[0] = (ww_camera_key){
+            .t = 0.0, .position = {0.0, 2.0, 10.0}, .has_look_at = 1, .look_at = {0.0, 0.0, 0.0}};
+        sc->ncam = 1;
+    }
+    return WW_OK;
+}
+
+static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev) {
+    const char *keys[NACTIONS + 2] = {"t"};
+    for (int a = 0; a < NACTIONS; a++) keys[a + 1] = ACTIONS[a].key;
+    keys[NACTIONS + 1] = NULL;
+    section s;
+    TRY(open_item(c, item, "script", i, keys, &s));
+    *ev = (ww_event){.line = s.map->mark.line, .column = s.map->mark.column};
+    TRY(get_number(c, &s, "t", &R_EVENT_TIME, REQUIRED, &ev->t));
+
+    /* exactly one action */
+    const action *act = NULL;
+    for (int a = 0; a < NACTIONS; a++) {
+        const ww_node *n = ww_node_find(s.map, ACTIONS[a].key);
+        if (!n) continue;
+        if (act)
+            return fail(c, WW_E_INCONSISTENT, n->key,
+                        "%s has two actions, %s and %s: expected one action per event", s.what,
+                        act->key, ACTIONS[a].key);
+        act = &ACTIONS[a];
+    }
+    if (!act) {
+        char list[128];
+        return fail(c, WW_E_INCONSISTENT, s.map, "%s has no action: expected one of: %s",
+                    s.what, join_words(keys + 1, list, sizeof list));
+    }
+    ev->kind = act->kind;
+    return get_number(c, &s, act->key, act->range, REQUIRED, &ev->value);
+}
+
+static ww_result compile_script(ctx *c, const section *top) {
+    ww_scene *sc = c->sc;
+    const ww_node *list;
+    TRY(get_list(c, top, "script", WW_MAX_EVENTS, &list));
+    int n = 0;
+    for (const ww_node *item = list ? list->first : NULL; item; item = item->next, n++)
+        TRY(compile_event(c, item, n, &sc->events[n]));
+    sc->nevents = n;
+
+    /* stable insertion sort by time: equal times keep file order */
+    for (int i = 1; i < n; i++) {
+        ww_event e = sc->events[i];
+        int j = i;
+        for (; j > 0 && sc->events[j - 1].t > e.t; j--) sc->events[j] = sc->events[j - 1];
+        sc->events[j] = e;
+    }
+
+    /* the first step n with start + n dt >= t - eps; events before start fire on step 0 */
+    for (int i = 0; i < n; i++) {
+        ww_event *e = &sc->events[i];
+        double due = e->t - EVENT_TIME_EPS;
+        int64_t step = due <= sc->start ? 0 : (int64_t)ceil((due - sc->start) / sc->dt);
+        while (step > 0 && sc->start + (double)(step - 1) * sc->dt >= due) step--;
+        while (sc->start + (double)step * sc->dt < due) step++;
+        e->step = step;
+    }
+    return WW_OK;
+}
+
+/* ---- scene ----------------------------------------------------------------------------------- */
+
+static void scene_defaults(ww_scene *sc) {
+    sc->seed = 1;
+    sc->dt = 1.0 / 120.0;
+    sc->fps = 30.0;
+    sc->duration = 10.0;
+    sc->start = 0.0;
+    sc->width = 1280;
+    sc->height = 720;
+    sc->exposure = 1.0;
+    sc->gamma = 2.2;
+    sc->tonemap = WW_TONEMAP_EXP;
+    sc->time_of_day = 16.5;
+    sc->day_length = 0.0;
+    sc->sun_max_elevation = ww_m_rad(60.0);
+    for (int i = 0; i < 3; i++) sc->fog_color[i] = -1.0;
+    sc->fog_density = 0.0012;
+    sc->water_level = 0.0;
+    sc->water_depth = 8.0;
+    sc->water_color[0] = 0.02;
+    sc->water_color[1] = 0.09;
+    sc->water_color[2] = 0.12;
+    sc->wave_model = WW_WAVES_GERSTNER;
+    sc->fov = ww_m_rad(60.0);
+    sc->near_clip = 0.1;
+    sc->far_clip = 5000.0;
+    sc->interp = WW_INTERP_CATMULL_ROM;
+}
+
+/* path as given; name is the file name without folder and extension */
+static void scene_names(ww_scene *sc, const char *path) {
+    snprintf(sc->path, sizeof sc->path, "%s", path);
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    const char *dot = strrchr(base, '.');
+    int n = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
+    snprintf(sc->name, sizeof sc->name, "%.*s", n, base);
+}
+
+static ww_result compile_scene(ctx *c, const ww_node *root) {
+    static const char *const keys[] = {"seed", "time", "render", "sky", "fog", "water",
+                                       "camera", "script", NULL};
+    section top = {.map = root};
+    TRY(check_keys(c, &top, keys));
+    double seed = (double)c->sc->seed;
+    TRY(get_number(c, &top, "seed", &R_SEED, OPTIONAL, &seed));
+    c->sc->seed = (uint64_t)seed;
+    TRY(compile_time(c, &top));
+    TRY(compile_render(c, &top));
+    TRY(compile_sky(c, &top));
+    TRY(compile_fog(c, &top));
+    TRY(compile_water(c, &top));
+    TRY(compile_camera(c, &top));
+    return compile_script(c, &top);
+}
+
+/* apply the sets, compile, free the tree; *out only on success */
+static ww_result load_tree(ww_tree *t, const char *path, const ww_set *sets, int nsets,
+                           ww_scene **out, ww_error *err) {
+    ww_result r = WW_OK;
+    for (int i = 0; i < nsets && r == WW_OK; i++) {
+        WW_ASSERT(sets[i].text);
+        r = ww_tree_set(t, i + 1, sets[i].text, err);
+    }
+    ww_scene *sc = NULL;
+    if (r == WW_OK && !(sc = calloc(1, sizeof *sc)))
+        r = ww_error_set(err, WW_E_NOMEM, path, 0, 0, "out of memory for the scene");
+    if (r == WW_OK) {
+        ctx c = {.sc = sc, .file = path, .err = err};
+        scene_defaults(sc);
+        scene_names(sc, path);
+        r = compile_scene(&c, ww_tree_root(t));
+    }
+    ww_tree_free(t);
+    if (r != WW_OK) {
+        free(sc);
+        return r;
+    }
+    *out = sc;
+    return WW_OK;
+}
+
+ww_result ww_scene_load(const char *path, const ww_set *sets, int nsets, ww_scene **out,
+                        ww_error *err) {
+    WW_ASSERT(path && out && nsets >= 0);
+    *out = NULL;
+    ww_tree *t = NULL;
+    TRY(ww_tree_load(path, &t, err));
+    return load_tree(t, path, sets, nsets, out, err);
+}
+
+ww_result ww_scene_load_string(const char *name, const char *text, size_t len, const ww_set *sets,
+                               int nsets, ww_scene **out, ww_error *err) {
+    WW_ASSERT(name && text && out && nsets >= 0);
+    *out = NULL;
+    ww_tree *t = NULL;
+    TRY(ww_tree_parse(name, text, len, &t, err));
+    return load_tree(t, name, sets, nsets, out, err);
+}
+
+void ww_scene_free(ww_scene *sc) { free(sc); }
