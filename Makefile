@@ -28,28 +28,34 @@ BIN     ?= waterworld
 .PHONY: all deps demo test unit asan golden bench soak clean help
 all: $(BIN)
 
+# V=1 shows the full command lines
+Q       := $(if $(V),,@)
+
 $(BIN): $(BUILD)/src/cli/main.o $(BUILD)/libww.a
-	$(CC) $(CFLAGS) -o $@ $^ $(LDLIBS)
+	@echo "  LD  $@"
+	$(Q)$(CC) $(CFLAGS) -o $@ $^ $(LDLIBS)
 
 $(BUILD)/libww.a: $(LIB_OBJ)
 	@rm -f $@
-	ar rcs $@ $^
+	$(Q)ar rcs $@ $^
 
 $(BUILD)/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+	@echo "  CC  $<"
+	$(Q)$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
 
 # shaders are embedded so that the binary is self-contained
 $(BUILD)/gen/shaders_embed.c: $(SHADERS) scripts/embed-shaders.sh
 	@mkdir -p $(dir $@)
-	sh scripts/embed-shaders.sh $(SHADERS) > $@.tmp && mv $@.tmp $@
+	$(Q)sh scripts/embed-shaders.sh $(SHADERS) > $@.tmp && mv $@.tmp $@
 
 $(BUILD)/gen/shaders_embed.o: $(BUILD)/gen/shaders_embed.c
-	$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
+	$(Q)$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
 
 # the test binary wraps the allocator so a test can count allocations inside ww_step
 $(BUILD)/ww-tests: $(TEST_OBJ) $(BUILD)/libww.a
-	$(CC) $(CFLAGS) -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc -o $@ $^ $(LDLIBS)
+	@echo "  LD  $@"
+	$(Q)$(CC) $(CFLAGS) -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc -o $@ $^ $(LDLIBS)
 
 deps:
 	@sh scripts/install-deps.sh
