@@ -5,6 +5,9 @@
  *   ww_write_exr(path, &hdr, &meta, &err); // half-float RGBA (or RGB) from an F32 image, OpenEXRCore
  *   ww_read_exr(path, &im, &err);       // F32 image back (tests, compare)
  *   ww_read_png(path, &im, &err);       // U8 image back (tests, compare), stb_image
+ *
+ * The readers fill an image the caller frees with ww_image_free (also after a failure: it is then
+ * empty); ww_read_file returns bytes the caller frees with free().
  */
 #ifndef WW_WRITERS_H
 #define WW_WRITERS_H
@@ -31,5 +34,8 @@ ww_result ww_write_png(const char *path, const ww_image *im, ww_error *err);
 ww_result ww_write_exr(const char *path, const ww_image *im, const ww_exr_meta *meta, ww_error *err);
 ww_result ww_read_png(const char *path, ww_image *out, ww_error *err);
 ww_result ww_read_exr(const char *path, ww_image *out, ww_error *err);
+
+/* a whole file into malloc'd memory (NUL-terminated past len); WW_E_NOFILE when it cannot */
+ww_result ww_read_file(const char *path, unsigned char **data, size_t *len, ww_error *err);
 
 #endif
