@@ -5,6 +5,10 @@
  *   ww_write_exr(path, &hdr, &meta, &err); // half-float RGBA (or RGB) from an F32 image, OpenEXRCore
  *   ww_read_exr(path, &im, &err);       // F32 image back (tests, compare)
  *   ww_read_png(path, &im, &err);       // U8 image back (tests, compare), stb_image
+ *   ww_read_exr_meta(path, &frame, &t, scene, sizeof scene, gl, sizeof gl, &err);
+ *
+ * The readers fill an image the caller frees with ww_image_free (also after a failure: it is then
+ * empty); ww_read_file returns bytes the caller frees with free().
  */
 #ifndef WW_WRITERS_H
 #define WW_WRITERS_H
@@ -16,7 +20,7 @@
 
 typedef struct ww_exr_meta {
     int frame;             /* -1: not written */
-    double time;           /* simulated time, s */
+    double time;           /* simulated time, s; NAN: not written */
     const char *scene;     /* scene name, or NULL */
     const char *renderer;  /* GL_RENDERER string, or NULL */
 } ww_exr_meta;
@@ -31,5 +35,13 @@ ww_result ww_write_png(const char *path, const ww_image *im, ww_error *err);
 ww_result ww_write_exr(const char *path, const ww_image *im, const ww_exr_meta *meta, ww_error *err);
 ww_result ww_read_png(const char *path, ww_image *out, ww_error *err);
 ww_result ww_read_exr(const char *path, ww_image *out, ww_error *err);
+
+/* the ww_exr_meta attributes of an EXR; absent ones read as frame -1, time NAN, "" (any output
+ * may be NULL; strings are cut to their capacity) */
+ww_result ww_read_exr_meta(const char *path, int *frame, double *time, char *scene,
+                           size_t scene_cap, char *renderer, size_t renderer_cap, ww_error *err);
+
+/* a whole file into malloc'd memory (NUL-terminated past len); WW_E_NOFILE when it cannot */
+ww_result ww_read_file(const char *path, unsigned char **data, size_t *len, ww_error *err);
 
 #endif

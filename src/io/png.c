@@ -1,0 +1,117 @@
+/* png.c - PNG frames through stb_image_write (encode into memory, then one atomic write) and
+ * stb_image (decode from memory). The only file that compiles stb; its global settings are pinned
+ * here before every encode and decode so the bytes are the same run to run.
+ */
+#include "io/writers.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* the one copy of the stb implementations in the program: PNG only, memory only. They compile
+ * clean under our warning flags (gcc 12 and clang, even outside the system include path), so no
+ * diagnostic is silenced around them. */
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBI_WRITE_NO_STDIO
+#define STB_IMAGE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#define STBI_NO_STDIO
+#define STBI_NO_LINEAR
+#define STBI_NO_HDR
+#define STBI_MAX_DIMENSIONS 32768
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+/* zlib level of stb's own deflate (its default, 8) and adaptive per-row filters (-1): both are
+ * deterministic, pinned so that nothing else in the process can change them under us */
+#define PNG_ZLIB_LEVEL 8
+#define PNG_FILTER (-1)
+
+typedef struct png_buf {
+    unsigned char *data;
+    size_t len, cap;
+    int failed;
+} png_buf;
+
+static void png_buf_put(void *ctx, void *data, int size) {
+    png_buf *b = ctx;
+    if (b->failed || size <= 0) return;
+    size_t need = b->len + (size_t)size;
+    if (need > b->cap) {
+        size_t cap = b->cap ? b->cap : 65536;
+        while (cap < need) cap *= 2;
+        unsigned char *nd = realloc(b->data, cap);
+        if (!nd) {
+            b->failed = 1;
+            return;
+        }
+        b->data = nd;
+        b->cap = cap;
+    }
+    memcpy(b->data + b->len, data, (size_t)size);
+    b->len = need;
+}
+
+ww_result ww_write_png(const char *path, const ww_image *im, ww_error *err) {
+    WW_ASSERT(im->type == WW_PIX_U8 && im->u8);
+    WW_ASSERT(im->channels == 3 || im->channels == 4);
+    WW_ASSERT(im->width > 0 && im->height > 0 && im->width <= INT32_MAX / im->channels);
+
+    /* pin stb's settings: our rows are stored top row first, as PNG wants them */
+    stbi_write_png_compression_level = PNG_ZLIB_LEVEL;
+    stbi_write_force_png_filter = PNG_FILTER;
+    stbi_flip_vertically_on_write(0);
+
+    /* encode into memory, then publish with one atomic write */
+    png_buf b = {0};
+    int ok = stbi_write_png_to_func(png_buf_put, &b, im->width, im->height, im->channels, im->u8,
+                                    im->width * im->channels);
+    if (!ok || b.failed) {
+        free(b.data);
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot write '%s': PNG encoding failed",
+                            path);
+    }
+    ww_result r = ww_write_file_atomic(path, b.data, b.len, err);
+    free(b.data);
+    return r;
+}
+
+ww_result ww_read_png(const char *path, ww_image *out, ww_error *err) {
+    memset(out, 0, sizeof *out);
+    unsigned char *file;
+    size_t len;
+    ww_result r = ww_read_file(path, &file, &len, err);
+    if (r != WW_OK) return r;
+    if (len > INT32_MAX) {
+        free(file);
+        return ww_error_set(err, WW_E_SYNTAX, NULL, 0, 0, "'%s': not a PNG: file too large", path);
+    }
+
+    /* pin stb's decode settings: rows top first, no premultiplied-alpha or iPhone conversions */
+    stbi_set_flip_vertically_on_load(0);
+    stbi_set_unpremultiply_on_load(0);
+    stbi_convert_iphone_png_to_rgb(0);
+
+    /* grey -> RGB, grey+alpha -> RGBA; 16-bit samples come back as their high bytes */
+    int w, h, comp;
+    if (!stbi_info_from_memory(file, (int)len, &w, &h, &comp)) {
+        free(file);
+        return ww_error_set(err, WW_E_SYNTAX, NULL, 0, 0, "'%s': not a PNG: %s", path,
+                            stbi_failure_reason());
+    }
+    int want = (comp == 2 || comp == 4) ? 4 : 3;
+    unsigned char *px = stbi_load_from_memory(file, (int)len, &w, &h, &comp, want);
+    free(file);
+    if (!px)
+        return ww_error_set(err, WW_E_SYNTAX, NULL, 0, 0, "'%s': not a PNG: %s", path,
+                            stbi_failure_reason());
+
+    if (ww_image_alloc(out, w, h, want, WW_PIX_U8) != 0) {
+        stbi_image_free(px);
+        ww_image_free(out);
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot read '%s': out of memory", path);
+    }
+    memcpy(out->u8, px, (size_t)w * (size_t)h * (size_t)want);
+    stbi_image_free(px);
+    return WW_OK;
+}
