@@ -58,7 +58,7 @@ static void check_golden(const char *golden, const char *actual) {
     current_renderer(here, sizeof here);
     char *blessed = ww_test_read_file("golden/RENDERER", NULL);
     int exact = blessed && strncmp(blessed, here, strlen(here)) == 0 && here[0];
-    image_diff d;
+    image_diff d = {0};
     ENSURE(diff_images(&g, &a, &d) == 0);
     if (exact) {
         ENSURE_MSG(d.differing == 0, "%s: %ld channel values differ (max %d, PSNR %.1f dB); "

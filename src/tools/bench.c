@@ -20,7 +20,7 @@ typedef struct {
     int ok;
     ww_job_stats s;
     double floor_ms;
-    char msg[256];
+    char msg[sizeof(((ww_error *)0)->msg)];
 } child_report;
 
 static void child_run(const char *scene, ww_backend_kind kind, int w, int h, int frames,
