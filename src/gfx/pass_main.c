@@ -1,0 +1,54 @@
+/* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the sky
+ * behind everything, then the water surface (sky.c, water.c).
+ */
+#include <stdlib.h>
+
+#include "gfx/render_impl.h"
+
+typedef struct main_pass {
+    const ww_rt *rt;
+    ww_sky *sky;
+    ww_water *water;
+} main_pass;
+
+static void main_destroy(void *self, const ww_gl *gl) {
+    main_pass *p = self;
+    if (!p) return;
+    ww_sky_free(p->sky, gl);
+    ww_water_free(p->water, gl);
+    free(p);
+}
+
+static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
+                             const ww_rt *rt, void **self, ww_error *err) {
+    if (!ww_gfx_rt_texture(rt, WW_FMT_RGBA16F) || !ww_gfx_rt_texture(rt, WW_FMT_DEPTH24))
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass %s: needs an RGBA16F colour and a DEPTH24 target", d->name);
+    main_pass *p = calloc(1, sizeof *p);
+    if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "main pass: out of memory");
+    p->rt = rt;
+    ww_result rc = ww_sky_new(r->gl, &p->sky, err);
+    if (rc == WW_OK) rc = ww_water_new(r->gl, sc, &p->water, err);
+    if (rc != WW_OK) {
+        main_destroy(p, r->gl);
+        return rc;
+    }
+    *self = p;
+    return WW_OK;
+}
+
+static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
+    (void)err;
+    main_pass *p = self;
+    const ww_gl *gl = r->gl;
+    ww_gfx_begin_pass(gl, p->rt);
+    gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    gl->ClearDepth(1.0);
+    gl->DepthMask(GL_TRUE);
+    gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ww_sky_draw(p->sky, gl, r->empty_vao, f);
+    ww_water_draw(p->water, gl, f);
+    return WW_OK;
+}
+
+const ww_pass_ops ww_pass_main_ops = {main_create, main_run, main_destroy};

@@ -1,0 +1,73 @@
+/* pass_tonemap.c - HDR to display: reads the main pass's RGBA16F colour, applies exposure, the
+ * scene's tone curve (exp or ACES) and gamma, and writes RGBA8 with alpha 1 (tonemap.frag.glsl).
+ */
+#include <stdlib.h>
+
+#include "gfx/render_impl.h"
+
+typedef struct tonemap_pass {
+    const ww_rt *rt;
+    GLuint hdr_tex;
+    GLuint prog;
+    GLint hdr, exposure, gamma, op;
+} tonemap_pass;
+
+static void tonemap_destroy(void *self, const ww_gl *gl) {
+    tonemap_pass *p = self;
+    if (!p) return;
+    if (p->prog) gl->DeleteProgram(p->prog);
+    free(p);
+}
+
+static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
+                                const ww_rt *rt, void **self, ww_error *err) {
+    (void)sc;
+    /* its input is the main pass's HDR colour, texel for texel */
+    const ww_rt *in = ww_renderer_output(r, WW_PASS_MAIN);
+    GLuint hdr = in ? ww_gfx_rt_texture(in, WW_FMT_RGBA16F) : 0;
+    if (!hdr || !ww_gfx_rt_texture(rt, WW_FMT_RGBA8))
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass %s: needs the main pass's RGBA16F colour and an RGBA8 target",
+                            d->name);
+    if (in->width != rt->width || in->height != rt->height)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass %s: its %dx%d target differs from the %dx%d HDR image", d->name,
+                            rt->width, rt->height, in->width, in->height);
+
+    tonemap_pass *p = calloc(1, sizeof *p);
+    if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "tonemap pass: out of memory");
+    p->rt = rt;
+    p->hdr_tex = hdr;
+    ww_result rc = ww_gfx_program(r->gl, "fullscreen.vert.glsl", "tonemap.frag.glsl", NULL,
+                                  &p->prog, err);
+    if (rc != WW_OK) {
+        tonemap_destroy(p, r->gl);
+        return rc;
+    }
+    p->hdr = ww_gfx_uniform(r->gl, p->prog, "u_hdr");
+    p->exposure = ww_gfx_uniform(r->gl, p->prog, "u_exposure");
+    p->gamma = ww_gfx_uniform(r->gl, p->prog, "u_gamma");
+    p->op = ww_gfx_uniform(r->gl, p->prog, "u_op");
+    *self = p;
+    return WW_OK;
+}
+
+static ww_result tonemap_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
+    (void)err;
+    tonemap_pass *p = self;
+    const ww_gl *gl = r->gl;
+    ww_gfx_begin_pass(gl, p->rt);
+    gl->UseProgram(p->prog);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindTexture(GL_TEXTURE_2D, p->hdr_tex);
+    gl->Uniform1i(p->hdr, 0);
+    gl->Uniform1f(p->exposure, (float)f->sc->exposure);
+    gl->Uniform1f(p->gamma, (float)f->sc->gamma);
+    gl->Uniform1i(p->op, f->sc->tonemap == WW_TONEMAP_ACES ? 1 : 0);
+    gl->BindVertexArray(r->empty_vao);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    return WW_OK;
+}
+
+const ww_pass_ops ww_pass_tonemap_ops = {tonemap_create, tonemap_run, tonemap_destroy};

@@ -1,0 +1,192 @@
+/* renderer.c - the frame renderer: creates exactly the planned passes (one table entry per
+ * ww_pass_id), computes the camera once per frame, runs the passes in plan order and reads the
+ * results back, flipped so the top row comes first.
+ */
+#include "gfx/renderer.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/mathx.h"
+#include "gfx/render_impl.h"
+
+/* the passes a plan may name; a new pass is a pass_xxx.c and one line here */
+static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
+    [WW_PASS_MAIN] = &ww_pass_main_ops,
+    [WW_PASS_TONEMAP] = &ww_pass_tonemap_ops,
+};
+
+const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id) {
+    for (int i = 0; i < r->npasses; i++)
+        if (r->passes[i].id == id) return &r->passes[i].rt;
+    return NULL;
+}
+
+void ww_gfx_begin_pass(const ww_gl *gl, const ww_rt *rt) {
+    gl->BindFramebuffer(GL_FRAMEBUFFER, rt->fbo);
+    gl->Viewport(0, 0, rt->width, rt->height);
+    /* nothing left from an earlier pass may change the pixels: every switch set explicitly */
+    gl->Disable(GL_DITHER);
+    gl->Disable(GL_BLEND);
+    gl->Disable(GL_CULL_FACE);
+    gl->Disable(GL_DEPTH_TEST);
+    gl->Disable(GL_SCISSOR_TEST);
+    gl->Disable(GL_FRAMEBUFFER_SRGB);
+}
+
+void ww_renderer_free(ww_renderer *r) {
+    if (!r) return;
+    const ww_gl *gl = r->gl;
+    for (int i = r->npasses - 1; i >= 0; i--) {
+        ww_pass *p = &r->passes[i];
+        if (p->self) p->ops->destroy(p->self, gl);
+        ww_gfx_rt_destroy(gl, &p->rt);
+    }
+    if (r->empty_vao) gl->DeleteVertexArrays(1, &r->empty_vao);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    free(r);
+}
+
+ww_result ww_renderer_new(const ww_gl *gl, const ww_scene *sc, const ww_plan *plan,
+                          ww_renderer **out, ww_error *err) {
+    WW_ASSERT(gl && sc && plan && out);
+    WW_ASSERT(plan->npasses >= 1 && plan->npasses <= WW_PASS_COUNT);
+    *out = NULL;
+    ww_renderer *r = calloc(1, sizeof *r);
+    if (!r) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "renderer: out of memory");
+    r->gl = gl;
+    gl->GenVertexArrays(1, &r->empty_vao);
+
+    /* every pass's targets first, so a pass can find the outputs it reads when created */
+    ww_result rc = WW_OK;
+    for (int i = 0; i < plan->npasses && rc == WW_OK; i++) {
+        const ww_pass_desc *d = &plan->passes[i];
+        WW_ASSERT(d->id >= 0 && d->id < WW_PASS_COUNT && pass_table[d->id] && d->name);
+        WW_ASSERT(!ww_renderer_output(r, d->id)); /* each pass at most once */
+        ww_pass *p = &r->passes[r->npasses++];
+        p->id = d->id;
+        p->ops = pass_table[d->id];
+        rc = ww_gfx_rt_create(gl, d, &p->rt, err);
+    }
+    for (int i = 0; i < r->npasses && rc == WW_OK; i++) {
+        ww_pass *p = &r->passes[i];
+        rc = p->ops->create(r, sc, &plan->passes[i], &p->rt, &p->self, err);
+    }
+    if (rc == WW_OK) {
+        GLenum e = gl->GetError();
+        if (e != GL_NO_ERROR)
+            rc = ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                              "renderer: GL error 0x%04x while creating the passes", (unsigned)e);
+    }
+    if (rc != WW_OK) {
+        ww_renderer_free(r);
+        return rc;
+    }
+    *out = r;
+    return WW_OK;
+}
+
+/* camera rotation and projection; positions are sent camera-relative, so the view matrix has
+ * no translation */
+static void frame_camera(ww_frame *f, const ww_renderer *r) {
+    const ww_scene *sc = f->sc;
+    const ww_state *st = f->st;
+    for (int i = 0; i < 3; i++) f->cam_pos[i] = st->cam_pos[i];
+
+    /* orthonormal basis from forward and world up; a vertical forward takes -z as up */
+    double fw[3] = {st->cam_fwd[0], st->cam_fwd[1], st->cam_fwd[2]};
+    WW_ASSERT(ww_m_len3(fw) > 0.0);
+    ww_m_normalize3(fw);
+    double up[3] = {0.0, 1.0, 0.0};
+    if (fabs(fw[1]) > 0.9999) {
+        up[1] = 0.0;
+        up[2] = -1.0;
+    }
+    double rt[3] = {fw[1] * up[2] - fw[2] * up[1], fw[2] * up[0] - fw[0] * up[2],
+                    fw[0] * up[1] - fw[1] * up[0]};
+    ww_m_normalize3(rt);
+    double u[3] = {rt[1] * fw[2] - rt[2] * fw[1], rt[2] * fw[0] - rt[0] * fw[2],
+                   rt[0] * fw[1] - rt[1] * fw[0]};
+
+    /* cglm is column-major: m[column][row]; rows are right, up, -forward */
+    glm_mat4_identity(f->view);
+    for (int c = 0; c < 3; c++) {
+        f->view[c][0] = (float)rt[c];
+        f->view[c][1] = (float)u[c];
+        f->view[c][2] = (float)-fw[c];
+    }
+
+    /* the aspect of the main pass's targets: the frame's size */
+    const ww_rt *main = ww_renderer_output(r, WW_PASS_MAIN);
+    if (!main) main = &r->passes[0].rt;
+    double fov = st->cam_fov[0] > 0.0 ? st->cam_fov[0] : sc->fov;
+    glm_perspective((float)fov, (float)main->width / (float)main->height, (float)sc->near_clip,
+                    (float)sc->far_clip, f->proj);
+    f->pixel_angle = (float)(2.0 * tan(0.5 * fov) / main->height);
+    glm_mat4_mul(f->proj, f->view, f->view_proj);
+    glm_mat4_inv(f->view_proj, f->inv_view_proj);
+}
+
+ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st, ww_error *err) {
+    WW_ASSERT(r && sc && st);
+    ww_frame f;
+    f.sc = sc;
+    f.st = st;
+    frame_camera(&f, r);
+
+    for (int i = 0; i < r->npasses; i++) {
+        ww_pass *p = &r->passes[i];
+        ww_result rc = p->ops->run(p->self, r, &f, err);
+        if (rc != WW_OK) return rc;
+    }
+    GLenum e = r->gl->GetError();
+    if (e != GL_NO_ERROR)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "renderer: GL error 0x%04x while drawing",
+                            (unsigned)e);
+    return WW_OK;
+}
+
+/* read colour attachment `fmt` of rt into im (sizes checked by the caller), then flip */
+static ww_result read_target(ww_renderer *r, const ww_rt *rt, ww_format fmt, GLenum format,
+                             GLenum type, void *pixels, ww_image *im, ww_error *err) {
+    const ww_gl *gl = r->gl;
+    int color = 0, found = -1;
+    for (int i = 0; i < rt->ntex && found < 0; i++) {
+        if (rt->fmt[i] == fmt) found = color;
+        if (rt->fmt[i] != WW_FMT_DEPTH24) color++;
+    }
+    WW_ASSERT(found >= 0);
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, rt->fbo);
+    gl->ReadBuffer(GL_COLOR_ATTACHMENT0 + (GLenum)found);
+    gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl->ReadPixels(0, 0, rt->width, rt->height, format, type, pixels);
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    GLenum e = gl->GetError();
+    if (e != GL_NO_ERROR)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "renderer: glReadPixels raised 0x%04x",
+                            (unsigned)e);
+    ww_image_flip_rows(im);
+    return WW_OK;
+}
+
+ww_result ww_renderer_read_ldr(ww_renderer *r, ww_image *im, ww_error *err) {
+    /* the final image: the last planned pass that writes RGBA8 */
+    const ww_rt *rt = NULL;
+    for (int i = 0; i < r->npasses; i++)
+        if (ww_gfx_rt_texture(&r->passes[i].rt, WW_FMT_RGBA8)) rt = &r->passes[i].rt;
+    WW_ASSERT(rt);
+    WW_ASSERT(im->type == WW_PIX_U8 && im->u8 && (im->channels == 3 || im->channels == 4));
+    WW_ASSERT(im->width == rt->width && im->height == rt->height);
+    return read_target(r, rt, WW_FMT_RGBA8, im->channels == 4 ? GL_RGBA : GL_RGB,
+                       GL_UNSIGNED_BYTE, im->u8, im, err);
+}
+
+ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err) {
+    const ww_rt *rt = ww_renderer_output(r, WW_PASS_MAIN);
+    WW_ASSERT(rt);
+    WW_ASSERT(im->type == WW_PIX_F32 && im->f32 && im->channels == 4);
+    WW_ASSERT(im->width == rt->width && im->height == rt->height);
+    return read_target(r, rt, WW_FMT_RGBA16F, GL_RGBA, GL_FLOAT, im->f32, im, err);
+}
+
+void ww_renderer_finish(ww_renderer *r) { r->gl->Finish(); }

@@ -1,0 +1,485 @@
+/* test_gfx.c - graphics: the EGL and OSMesa backends, the renderer's sky and water, determinism
+ * across runs and backends, far-from-origin precision, and the WW_SHADER_DIR override. Scenes,
+ * states and plans are built by hand here, so these tests need nothing from scene/ or sim/.
+ */
+#include <dlfcn.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/mathx.h"
+#include "gfx/backend.h"
+#include "gfx/renderer.h"
+#include "gfx/shaders.h"
+#include "test.h"
+
+#define GFX_W 256
+#define GFX_H 144
+/* the sun disc has radiance 20 x sun colour; its centre pixel must be far above the sky */
+#define SUN_MIN_RADIANCE 5.0
+/* two renders of the same camera-relative world, once at the origin and once 1e5 m away at
+ * t = 1e6 s: float rounding of the (double) centre phases may move a few LDR codes */
+#define FAR_ORIGIN_LDR_TOL 2
+#define FAR_ORIGIN_BAD_PIXEL_FRACTION 0.001
+
+/* a hand-built frame: the scene, a state whose field pointers point at our arrays, the plan */
+typedef struct world {
+    ww_scene *sc;
+    ww_state st;
+    double time_of_day, sun_dir[3], sun_color[3], sky_zenith[3], sky_horizon[3], ambient[3];
+    double cam_pos[3], cam_fwd[3], cam_fov;
+    double wave_phase[WW_MAX_WAVES];
+    ww_plan plan;
+} world;
+
+static void add_wave(ww_scene *sc, double dir_deg, double wavelength, double amp, double q) {
+    ww_wave *w = &sc->waves[sc->nwaves++];
+    w->direction = ww_m_rad(dir_deg);
+    w->dir[0] = cos(w->direction);
+    w->dir[1] = sin(w->direction);
+    w->wavelength = wavelength;
+    w->amplitude = amp;
+    w->steepness = q;
+    w->phase = 0.0;
+    w->k = WW_TAU / wavelength;
+    w->omega = sqrt(WW_G * w->k);
+    w->speed = w->omega / w->k;
+}
+
+static void set3(double *d, double x, double y, double z) {
+    d[0] = x;
+    d[1] = y;
+    d[2] = z;
+}
+
+/* unit vector from elevation and azimuth (degrees; azimuth 0 looks along -z, 90 along +x) */
+static void dir_from(double *d, double elev_deg, double azim_deg) {
+    double e = ww_m_rad(elev_deg), a = ww_m_rad(azim_deg);
+    set3(d, cos(e) * sin(a), sin(e), -cos(e) * cos(a));
+}
+
+/* wave phases at the origin for time t: -w t + p0, wrapped (as sim/waves.c does) */
+static void world_set_time(world *w, double t) {
+    w->st.t = t;
+    for (int i = 0; i < w->sc->nwaves; i++)
+        w->wave_phase[i] = ww_m_wrap_tau(-w->sc->waves[i].omega * t + w->sc->waves[i].phase);
+}
+
+static void world_look_at(world *w, double px, double py, double pz, double tx, double ty,
+                          double tz) {
+    set3(w->cam_pos, px, py, pz);
+    set3(w->cam_fwd, tx - px, ty - py, tz - pz);
+    ww_m_normalize3(w->cam_fwd);
+}
+
+/* late afternoon (16:30) over three Gerstner waves; camera at (0, 3, 10) looking at the origin */
+static world *world_new(int width, int height) {
+    world *w = calloc(1, sizeof *w);
+    w->sc = calloc(1, sizeof *w->sc);
+    ww_scene *sc = w->sc;
+    snprintf(sc->name, sizeof sc->name, "test_gfx");
+    sc->width = width;
+    sc->height = height;
+    sc->exposure = 1.0;
+    sc->gamma = 2.2;
+    sc->tonemap = WW_TONEMAP_ACES;
+    sc->time_of_day = 16.5;
+    set3(sc->fog_color, -1.0, -1.0, -1.0);
+    sc->fog_density = 0.0012;
+    sc->water_level = 0.0;
+    sc->water_depth = 8.0;
+    set3(sc->water_color, 0.02, 0.09, 0.12);
+    sc->wave_model = WW_WAVES_GERSTNER;
+    add_wave(sc, 20.0, 12.0, 0.25, 0.6);
+    add_wave(sc, -35.0, 5.0, 0.08, 0.4);
+    add_wave(sc, 75.0, 2.1, 0.025, 0.3);
+    sc->fov = ww_m_rad(60.0);
+    sc->near_clip = 0.1;
+    sc->far_clip = 5000.0;
+
+    /* the state: the header from state.h, its arrays ours */
+    ww_state *st = &w->st;
+    st->bytes = sizeof *w;
+    st->time_of_day = &w->time_of_day;
+    st->sun_dir = w->sun_dir;
+    st->sun_color = w->sun_color;
+    st->sky_zenith = w->sky_zenith;
+    st->sky_horizon = w->sky_horizon;
+    st->ambient = w->ambient;
+    st->cam_pos = w->cam_pos;
+    st->cam_fwd = w->cam_fwd;
+    st->cam_fov = &w->cam_fov;
+    st->wave_phase = w->wave_phase;
+    w->time_of_day = 16.5;
+    dir_from(w->sun_dir, 20.0, 15.0);
+    set3(w->sun_color, 1.6, 1.4, 1.1);
+    set3(w->sky_zenith, 0.1, 0.25, 0.62);
+    set3(w->sky_horizon, 0.55, 0.62, 0.72);
+    set3(w->ambient, 0.25, 0.3, 0.4);
+    w->cam_fov = ww_m_rad(60.0);
+    world_look_at(w, 0.0, 3.0, 10.0, 0.0, 0.0, 0.0);
+    world_set_time(w, 12.0);
+
+    /* the plan: main HDR pass, then tone mapping */
+    ww_plan *p = &w->plan;
+    p->npasses = 2;
+    p->passes[0] = (ww_pass_desc){.id = WW_PASS_MAIN, .name = "main", .what = "sky, water",
+                                  .ntargets = 2};
+    p->passes[0].targets[0] = (ww_target_desc){"hdr", WW_FMT_RGBA16F, width, height};
+    p->passes[0].targets[1] = (ww_target_desc){"depth", WW_FMT_DEPTH24, width, height};
+    p->passes[1] = (ww_pass_desc){.id = WW_PASS_TONEMAP, .name = "tonemap", .what = "HDR to sRGB8",
+                                  .ntargets = 1};
+    p->passes[1].targets[0] = (ww_target_desc){"ldr", WW_FMT_RGBA8, width, height};
+    return w;
+}
+
+static void world_free(world *w) {
+    free(w->sc);
+    free(w);
+}
+
+/* open a backend, render one frame and read it back (hdr may be NULL) */
+static ww_result render(ww_backend_kind kind, const world *w, ww_image *ldr, ww_image *hdr,
+                        ww_error *err) {
+    ww_backend *b = NULL;
+    ww_renderer *r = NULL;
+    ww_result rc = ww_backend_open(kind, &b, err);
+    if (rc == WW_OK) rc = ww_renderer_new(ww_backend_gl(b), w->sc, &w->plan, &r, err);
+    if (rc == WW_OK) rc = ww_render_frame(r, w->sc, &w->st, err);
+    if (rc == WW_OK) rc = ww_renderer_read_ldr(r, ldr, err);
+    if (rc == WW_OK && hdr) rc = ww_renderer_read_hdr(r, hdr, err);
+    ww_renderer_free(r);
+    ww_backend_close(b);
+    if (rc != WW_OK) fprintf(stderr, "\n    render: %s\n", err->msg);
+    return rc;
+}
+
+int ww_test_have_gl(void) {
+    static int have = -1; /* opening a context costs tens of ms: ask once */
+    if (have < 0) {
+        ww_backend *b = NULL;
+        ww_error err = {0};
+        have = ww_backend_open(WW_BACKEND_AUTO, &b, &err) == WW_OK;
+        ww_backend_close(b);
+    }
+    return have;
+}
+
+/* the library a backend needs is installed here (else its test has nothing to check) */
+static int have_lib(const char *a, const char *b) {
+    void *h = dlopen(a, RTLD_LAZY | RTLD_LOCAL);
+    if (!h && b) h = dlopen(b, RTLD_LAZY | RTLD_LOCAL);
+    if (h) dlclose(h);
+    return h != NULL;
+}
+
+#define REQUIRE_GL()                                                                            \
+    do {                                                                                        \
+        if (!ww_test_have_gl()) {                                                               \
+            fprintf(stderr, "(skipped: no GL backend here) ");                                  \
+            return;                                                                             \
+        }                                                                                       \
+    } while (0)
+
+static int gl_version_at_least(const char *v, int major, int minor) {
+    int ma = 0, mi = 0;
+    if (!v || sscanf(v, "%d.%d", &ma, &mi) != 2) return 0;
+    return ma > major || (ma == major && mi >= minor);
+}
+
+static void check_backend(ww_backend_kind kind, const char *describe_prefix) {
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    ww_result rc = ww_backend_open(kind, &b, &err);
+    ENSURE_MSG(rc == WW_OK, "open: %s", err.msg);
+    if (rc != WW_OK) return;
+    ENSURE(ww_backend_get_kind(b) == kind);
+    ENSURE(gl_version_at_least(ww_backend_version(b), 3, 3));
+    ENSURE(ww_backend_renderer(b)[0] != '\0');
+    ENSURE_MSG(strncmp(ww_backend_describe(b), describe_prefix, strlen(describe_prefix)) == 0,
+               "describe: %s", ww_backend_describe(b));
+    const ww_gl *gl = ww_backend_gl(b);
+    ENSURE(gl->GetError() == GL_NO_ERROR);
+    ww_backend_close(b);
+}
+
+TEST(gfx_backend_egl_opens) {
+    if (!have_lib("libEGL.so.1", NULL)) {
+        fprintf(stderr, "(skipped: no libEGL.so.1) ");
+        return;
+    }
+    check_backend(WW_BACKEND_EGL, "egl/");
+}
+
+TEST(gfx_backend_osmesa_opens) {
+    if (!have_lib("libOSMesa.so.8", "libOSMesa.so.6")) {
+        fprintf(stderr, "(skipped: no libOSMesa) ");
+        return;
+    }
+    check_backend(WW_BACKEND_OSMESA, "osmesa");
+}
+
+TEST(gfx_backend_egl_platform_env) {
+    if (!have_lib("libEGL.so.1", NULL)) {
+        fprintf(stderr, "(skipped: no libEGL.so.1) ");
+        return;
+    }
+    ww_backend *b = NULL;
+    ww_error err = {0};
+
+    /* forced surfaceless */
+    setenv("WW_EGL_PLATFORM", "surfaceless", 1);
+    ww_result rc = ww_backend_open(WW_BACKEND_EGL, &b, &err);
+    ENSURE_MSG(rc == WW_OK, "surfaceless: %s", err.msg);
+    if (rc == WW_OK) ENSURE(strcmp(ww_backend_describe(b), "egl/surfaceless") == 0);
+    ww_backend_close(b);
+    b = NULL;
+
+    /* a word that is no platform is refused, naming the variable */
+    setenv("WW_EGL_PLATFORM", "wayland", 1);
+    rc = ww_backend_open(WW_BACKEND_EGL, &b, &err);
+    ENSURE_EQ_INT(rc, WW_E_BACKEND);
+    ENSURE(b == NULL);
+    ENSURE(strstr(err.msg, "WW_EGL_PLATFORM") != NULL);
+
+    /* a device index past the last device */
+    unsetenv("WW_EGL_PLATFORM");
+    setenv("WW_EGL_DEVICE", "15", 1);
+    rc = ww_backend_open(WW_BACKEND_EGL, &b, &err);
+    ENSURE_EQ_INT(rc, WW_E_BACKEND);
+    ENSURE(b == NULL);
+    unsetenv("WW_EGL_DEVICE");
+}
+
+TEST(gfx_backend_bad_kind_parse) {
+    ENSURE_EQ_INT(ww_backend_kind_parse("auto"), WW_BACKEND_AUTO);
+    ENSURE_EQ_INT(ww_backend_kind_parse("egl"), WW_BACKEND_EGL);
+    ENSURE_EQ_INT(ww_backend_kind_parse("osmesa"), WW_BACKEND_OSMESA);
+    ENSURE_EQ_INT(ww_backend_kind_parse("vulkan"), -1);
+    ENSURE_EQ_INT(ww_backend_kind_parse("EGL"), -1);
+    ENSURE_EQ_INT(ww_backend_kind_parse("egl "), -1);
+    ENSURE_EQ_INT(ww_backend_kind_parse(""), -1);
+    ENSURE_EQ_INT(ww_backend_kind_parse(NULL), -1);
+}
+
+/* mean of channel c over rows [y0, y1) */
+static double rows_mean(const ww_image *im, int y0, int y1, int c) {
+    double s = 0.0;
+    for (int y = y0; y < y1; y++)
+        for (int x = 0; x < im->width; x++)
+            s += im->u8[((size_t)y * im->width + x) * im->channels + c];
+    return s / ((double)(y1 - y0) * im->width);
+}
+
+static int count_nonfinite(const ww_image *im) {
+    int bad = 0;
+    size_t n = (size_t)im->width * im->height * im->channels;
+    for (size_t i = 0; i < n; i++) bad += !isfinite(im->f32[i]);
+    return bad;
+}
+
+/* pixel (column, row from the top) where world direction d lands for the state's camera */
+static int project_dir(const world *w, const double d[3], int *px, int *py) {
+    double f[3] = {w->cam_fwd[0], w->cam_fwd[1], w->cam_fwd[2]};
+    ww_m_normalize3(f);
+    double r[3] = {-f[2], 0.0, f[0]}; /* f x (0, 1, 0) */
+    ww_m_normalize3(r);
+    double u[3] = {r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2], r[0] * f[1] - r[1] * f[0]};
+    double z = ww_m_dot3(d, f);
+    if (z <= 0.0) return 0;
+    double t = tan(w->cam_fov * 0.5), aspect = (double)w->sc->width / w->sc->height;
+    double x = ww_m_dot3(d, r) / z / (t * aspect), y = ww_m_dot3(d, u) / z / t;
+    *px = (int)floor((x + 1.0) * 0.5 * w->sc->width);
+    *py = (int)floor((1.0 - y) * 0.5 * w->sc->height);
+    return *px >= 0 && *px < w->sc->width && *py >= 0 && *py < w->sc->height;
+}
+
+TEST(gfx_render_sky_and_water) {
+    REQUIRE_GL();
+    world *w = world_new(GFX_W, GFX_H);
+    ww_image ldr, hdr;
+    ENSURE(ww_image_alloc(&ldr, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ENSURE(ww_image_alloc(&hdr, GFX_W, GFX_H, 4, WW_PIX_F32) == 0);
+    ww_error err = {0};
+
+    /* camera at (0, 3, 10) looking at the origin: sky above, water below */
+    ENSURE(render(WW_BACKEND_AUTO, w, &ldr, &hdr, &err) == WW_OK);
+    double top_r = rows_mean(&ldr, 0, 8, 0), top_b = rows_mean(&ldr, 0, 8, 2);
+    double top = (rows_mean(&ldr, 0, 8, 0) + rows_mean(&ldr, 0, 8, 1) + top_b) / 3.0;
+    double bottom = (rows_mean(&ldr, GFX_H - 8, GFX_H, 0) + rows_mean(&ldr, GFX_H - 8, GFX_H, 1) +
+                     rows_mean(&ldr, GFX_H - 8, GFX_H, 2)) / 3.0;
+    ENSURE_MSG(top_b > top_r, "top rows not blue: r %.1f b %.1f", top_r, top_b);
+    ENSURE_MSG(bottom < top, "water (%.1f) not darker than the sky (%.1f)", bottom, top);
+    ENSURE_EQ_INT(count_nonfinite(&hdr), 0);
+    /* alpha is 1 everywhere in the HDR image */
+    int alpha_bad = 0;
+    for (size_t i = 0; i < (size_t)GFX_W * GFX_H; i++) alpha_bad += hdr.f32[4 * i + 3] != 1.0f;
+    ENSURE_EQ_INT(alpha_bad, 0);
+
+    /* a camera looking a little below the sun sees the disc where projection puts it */
+    dir_from(w->sun_dir, 8.0, 30.0);
+    double look[3];
+    dir_from(look, 2.0, 22.0);
+    world_look_at(w, 0.0, 3.0, 0.0, look[0], 3.0 + look[1], look[2]);
+    ENSURE(render(WW_BACKEND_AUTO, w, &ldr, &hdr, &err) == WW_OK);
+    int px = -1, py = -1;
+    ENSURE(project_dir(w, w->sun_dir, &px, &py));
+    if (px >= 0 && py >= 0) {
+        const float *h = &hdr.f32[((size_t)py * GFX_W + px) * 4];
+        const uint8_t *l = &ldr.u8[((size_t)py * GFX_W + px) * 3];
+        double lum = 0.2126 * h[0] + 0.7152 * h[1] + 0.0722 * h[2];
+        ENSURE_MSG(lum > SUN_MIN_RADIANCE, "sun pixel (%d, %d) radiance %.3g", px, py, lum);
+        ENSURE_MSG(l[0] >= 250 && l[1] >= 250 && l[2] >= 240, "sun pixel LDR %d %d %d", l[0],
+                   l[1], l[2]);
+        /* and the sky a few degrees away is not */
+        const float *away = &hdr.f32[((size_t)py * GFX_W + (px + 20) % GFX_W) * 4];
+        ENSURE(0.2126 * away[0] + 0.7152 * away[1] + 0.0722 * away[2] < 0.5 * SUN_MIN_RADIANCE);
+    }
+    ww_image_free(&ldr);
+    ww_image_free(&hdr);
+    world_free(w);
+}
+
+static size_t count_diff(const ww_image *a, const ww_image *b, int tol) {
+    size_t n = (size_t)a->width * a->height * a->channels, bad = 0;
+    for (size_t i = 0; i < n; i++) bad += abs((int)a->u8[i] - (int)b->u8[i]) > tol;
+    return bad;
+}
+
+TEST(gfx_egl_and_osmesa_identical) {
+    REQUIRE_GL();
+    if (!have_lib("libEGL.so.1", NULL) || !have_lib("libOSMesa.so.8", "libOSMesa.so.6")) {
+        fprintf(stderr, "(skipped: needs both EGL and OSMesa) ");
+        return;
+    }
+    world *w = world_new(GFX_W, GFX_H);
+    ww_image a, b;
+    ENSURE(ww_image_alloc(&a, GFX_W, GFX_H, 4, WW_PIX_U8) == 0);
+    ENSURE(ww_image_alloc(&b, GFX_W, GFX_H, 4, WW_PIX_U8) == 0);
+    ww_error err = {0};
+    ENSURE(render(WW_BACKEND_EGL, w, &a, NULL, &err) == WW_OK);
+    ENSURE(render(WW_BACKEND_OSMESA, w, &b, NULL, &err) == WW_OK);
+    ENSURE_EQ_INT(count_diff(&a, &b, 0), 0);
+    ww_image_free(&a);
+    ww_image_free(&b);
+    world_free(w);
+}
+
+TEST(gfx_render_repeatable) {
+    REQUIRE_GL();
+    world *w = world_new(GFX_W, GFX_H);
+    ww_image a, b;
+    ENSURE(ww_image_alloc(&a, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ENSURE(ww_image_alloc(&b, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ww_backend *be = NULL;
+    ww_renderer *r = NULL;
+    ww_error err = {0};
+    ENSURE(ww_backend_open(WW_BACKEND_AUTO, &be, &err) == WW_OK);
+    if (be) ENSURE(ww_renderer_new(ww_backend_gl(be), w->sc, &w->plan, &r, &err) == WW_OK);
+    if (r) {
+        /* same renderer twice, with a different frame between (no state may leak) */
+        ENSURE(ww_render_frame(r, w->sc, &w->st, &err) == WW_OK);
+        ENSURE(ww_renderer_read_ldr(r, &a, &err) == WW_OK);
+        world_set_time(w, 13.0);
+        ENSURE(ww_render_frame(r, w->sc, &w->st, &err) == WW_OK);
+        ENSURE(ww_renderer_read_ldr(r, &b, &err) == WW_OK);
+        ENSURE(count_diff(&a, &b, 0) > 0); /* time moves the waves */
+        world_set_time(w, 12.0);
+        ENSURE(ww_render_frame(r, w->sc, &w->st, &err) == WW_OK);
+        ENSURE(ww_renderer_read_ldr(r, &b, &err) == WW_OK);
+        ENSURE_EQ_INT(count_diff(&a, &b, 0), 0);
+    }
+    ww_renderer_free(r);
+    ww_backend_close(be);
+    /* and a fresh context gives the same bytes */
+    ENSURE(render(WW_BACKEND_AUTO, w, &b, NULL, &err) == WW_OK);
+    ENSURE_EQ_INT(count_diff(&a, &b, 0), 0);
+    ww_image_free(&a);
+    ww_image_free(&b);
+    world_free(w);
+}
+
+TEST(gfx_render_far_from_origin) {
+    REQUIRE_GL();
+    /* the same camera-relative world at the origin and at (1e5, 3, -1e5) m, t = 1e6 s: the
+     * origin phases are shifted by -k D.offset so the waves around the camera are the same */
+    world *w = world_new(GFX_W, GFX_H);
+    ww_image a, b;
+    ENSURE(ww_image_alloc(&a, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ENSURE(ww_image_alloc(&b, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ww_error err = {0};
+    world_set_time(w, 1e6);
+    ENSURE(render(WW_BACKEND_AUTO, w, &a, NULL, &err) == WW_OK);
+
+    const double off[2] = {1e5, -1e5};
+    world_look_at(w, off[0], 3.0, 10.0 + off[1], off[0], 0.0, off[1]);
+    for (int i = 0; i < w->sc->nwaves; i++) {
+        const ww_wave *wv = &w->sc->waves[i];
+        double kd = wv->k * (wv->dir[0] * off[0] + wv->dir[1] * off[1]);
+        w->wave_phase[i] = ww_m_wrap_tau(w->wave_phase[i] - kd);
+    }
+    ENSURE(render(WW_BACKEND_AUTO, w, &b, NULL, &err) == WW_OK);
+    size_t bad = count_diff(&a, &b, FAR_ORIGIN_LDR_TOL);
+    ENSURE_MSG(bad <= FAR_ORIGIN_BAD_PIXEL_FRACTION * GFX_W * GFX_H * 3,
+               "%zu of %d values differ by more than %d", bad, GFX_W * GFX_H * 3,
+               FAR_ORIGIN_LDR_TOL);
+    ww_image_free(&a);
+    ww_image_free(&b);
+    world_free(w);
+}
+
+/* copy every built-in shader into dir, then break `broken` */
+static int write_shader_dir(const char *dir, const char *broken) {
+    for (const ww_shader_file *f = ww_shader_files; f->name; f++) {
+        char path[600];
+        snprintf(path, sizeof path, "%s/%s", dir, f->name);
+        FILE *out = fopen(path, "wb");
+        if (!out) return -1;
+        if (strcmp(f->name, broken) == 0)
+            fputs("#version 330 core\nout vec4 o_color;\nvoid main() { o_color = oops; }\n", out);
+        else
+            fwrite(f->text, 1, f->len, out);
+        if (fclose(out) != 0) return -1;
+    }
+    return 0;
+}
+
+TEST(gfx_shader_dir_override) {
+    REQUIRE_GL();
+    const char *tmp = ww_test_tmpdir("gfx_shader_dir_override");
+    ENSURE(tmp != NULL);
+    if (!tmp) return;
+    char dir[512];
+    snprintf(dir, sizeof dir, "%s", tmp);
+    ENSURE(write_shader_dir(dir, "water.frag.glsl") == 0);
+
+    /* the text comes from the folder */
+    setenv("WW_SHADER_DIR", dir, 1);
+    char *src = NULL;
+    ww_error err = {0};
+    ENSURE(ww_shader_source("water.frag.glsl", &src, &err) == WW_OK);
+    ENSURE(src && strstr(src, "oops") != NULL);
+    free(src);
+    ENSURE_EQ_INT(ww_shader_source("missing.glsl", &src, &err), WW_E_NOFILE);
+
+    /* and a renderer built from it fails naming the file, with the compiler's log */
+    world *w = world_new(64, 36);
+    ww_backend *b = NULL;
+    ww_renderer *r = NULL;
+    ENSURE(ww_backend_open(WW_BACKEND_AUTO, &b, &err) == WW_OK);
+    if (b) {
+        ww_result rc = ww_renderer_new(ww_backend_gl(b), w->sc, &w->plan, &r, &err);
+        ENSURE_EQ_INT(rc, WW_E_GL);
+        ENSURE(r == NULL);
+        ENSURE_MSG(strcmp(err.file, "water.frag.glsl") == 0, "file: %s", err.file);
+        ENSURE_MSG(strstr(err.msg, "oops") != NULL, "msg: %s", err.msg);
+    }
+    unsetenv("WW_SHADER_DIR");
+
+    /* without the override the built-in shaders are back */
+    if (b) {
+        ENSURE(ww_renderer_new(ww_backend_gl(b), w->sc, &w->plan, &r, &err) == WW_OK);
+        ww_renderer_free(r);
+    }
+    ww_backend_close(b);
+    world_free(w);
+}
