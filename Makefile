@@ -71,7 +71,7 @@ asan:
 	@$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/waterworld OPT="-O1 -g" \
 	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	    build/asan/waterworld build/asan/ww-tests
-	ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 WW_BIN=build/asan/waterworld \
+	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 WW_BIN=build/asan/waterworld \
 	    WW_ASAN=1 build/asan/ww-tests $(T)
 
 demo: deps
