@@ -116,6 +116,7 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
         double c = ww_now_seconds();
         s->sim_s += b - a;
         s->render_s += c - b;
+        if (f == o->first) s->first_render_s = c - b;
         if ((r = emit_frame(sc, o, &j, f, s, err))) goto done;
         s->frames++;
     }

@@ -31,6 +31,7 @@ typedef struct ww_job_stats {
     int64_t frames;           /* frames rendered */
     double prefix_s;          /* stepping the prefix before the first frame */
     double sim_s, render_s, readback_s, encode_s; /* totals over the rendered frames, s */
+    double first_render_s;    /* render time of the first frame alone (shader JIT, caches), s */
     double setup_s;           /* backend + renderer creation, s */
     char backend[64];         /* e.g. "egl/surfaceless" */
     char renderer[128];       /* GL_RENDERER */
