@@ -32,6 +32,10 @@ ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st
 /* im must be allocated by the caller at the plan's size: U8 with 3 or 4 channels / F32 with 4 */
 ww_result ww_renderer_read_ldr(ww_renderer *r, ww_image *im, ww_error *err);
 ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err);
+/* ms for one trivial full-screen pass (constant colour) into an RGBA16F target of w x h: the
+ * backend's fill floor, which bench sets render times against */
+ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error *err);
+
 /* glFinish; used by bench to split render from read-back time */
 void ww_renderer_finish(ww_renderer *r);
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "gfx/backend.h"
+#include "gfx/renderer.h"
 #include "scene/scene.h"
 #include "sim/state.h"
 #include "sim/step.h"
@@ -47,7 +48,7 @@ static void child_run(const char *scene, ww_backend_kind kind, int w, int h, int
     }
     ww_backend *b = NULL;
     if (ww_backend_open(kind, &b, &err) == WW_OK) {
-        if (ww_bench_fill_floor(ww_backend_gl(b), w, h, &rep->floor_ms, &err) != WW_OK)
+        if (ww_gfx_fill_floor(ww_backend_gl(b), w, h, &rep->floor_ms, &err) != WW_OK)
             rep->floor_ms = -1;
         ww_backend_close(b);
     }

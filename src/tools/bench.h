@@ -21,8 +21,4 @@ typedef struct ww_bench_opts {
 ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err);
 ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err);
 
-/* ms for one trivial full-screen pass into an RGBA16F target of w x h on an open backend */
-#include "gfx/gl.h"
-ww_result ww_bench_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error *err);
-
 #endif
