@@ -6,6 +6,7 @@
 #   make asan       the test suite under AddressSanitizer + UBSan only
 #   make golden     re-render the golden images in golden/ (read README first)
 #   make bench      speed and memory figures (not part of test)
+#   make fuzz       libFuzzer on the scene loader for FUZZ_SECONDS (not part of test)
 
 BUILD   ?= build
 CC      ?= cc
@@ -25,7 +26,7 @@ TEST_OBJ:= $(TEST_SRC:%.c=$(BUILD)/%.o)
 SHADERS := $(sort $(wildcard shaders/*.glsl))
 BIN     ?= waterworld
 
-.PHONY: all deps demo test unit asan golden bench soak clean help
+.PHONY: all deps demo test unit asan golden bench fuzz clean help
 all: $(BIN)
 
 # V=1 shows the full command lines
@@ -84,6 +85,15 @@ golden: $(BIN)
 
 bench: $(BIN)
 	./$(BIN) bench render
+
+# libFuzzer on the scene loader (clang; not part of test). FUZZ_SECONDS=60 by default.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@command -v clang >/dev/null || sh scripts/install-deps.sh --fuzz
+	@mkdir -p build/fuzz/corpus && cp scenes/*.yaml tests/bad/*.yaml build/fuzz/corpus/
+	clang -g -O1 -std=c11 -fsanitize=fuzzer,address,undefined -D_DEFAULT_SOURCE -Isrc \
+	    -o build/fuzz/fuzz_scene tests/fuzz/fuzz_scene.c src/scene/*.c src/core/*.c -lyaml -lm
+	build/fuzz/fuzz_scene -max_total_time=$(FUZZ_SECONDS) build/fuzz/corpus
 
 clean:
 	rm -rf build $(BIN)

@@ -9,6 +9,8 @@ set -eu
 # tests: nothing beyond these (the tests are C; images are compared in-process)
 PKGS="gcc make libc6-dev pkg-config libyaml-dev libcglm-dev libstb-dev libopenexr-dev
 libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libosmesa6-dev"
+# `make fuzz` only: clang with libFuzzer
+[ "${1:-}" = "--fuzz" ] && PKGS="clang libclang-rt-14-dev"
 
 missing=""
 for p in $PKGS; do
