@@ -78,7 +78,8 @@ asan:
 demo: deps
 	@$(MAKE) --no-print-directory $(BIN)
 	./$(BIN) render scenes/demo.yaml -o out/demo
-	@echo "frames: out/demo/frame_00000.png ... (view them, or: scripts/make-video.sh)"
+	@echo "frames: out/demo/frame_00000.png ... frame_00299.png"
+	@echo "video:  ffmpeg -framerate 30 -i out/demo/frame_%05d.png -pix_fmt yuv420p demo.mp4"
 
 golden: $(BIN)
 	sh scripts/make-golden.sh ./$(BIN)
