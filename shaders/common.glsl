@@ -13,7 +13,9 @@ const float WW_SUN_RADIANCE = 20.0;  // disc radiance per unit of sun colour
 // soft glow of sunlight scattered in the air around the sun; the sky and the fog both carry it,
 // so distant water fades into exactly the sky above the horizon
 vec3 ww_sun_glow(vec3 d) {
-    return u_sun_color * 0.5 * pow(max(dot(d, u_sun_dir), 0.0), 64.0);
+    float c = max(dot(d, u_sun_dir), 0.0);
+    c *= c; c *= c; c *= c; c *= c; c *= c; c *= c; // c^64 by squaring: pow() is exp2(log2()) in software
+    return u_sun_color * 0.5 * c;
 }
 
 // the sky seen along unit direction d, without the sun disc: a gradient from the horizon to the
@@ -21,7 +23,7 @@ vec3 ww_sun_glow(vec3 d) {
 vec3 ww_sky(vec3 d) {
     vec3 c;
     if (d.y >= 0.0)
-        c = mix(u_sky_horizon, u_sky_zenith, pow(d.y, 0.5));
+        c = mix(u_sky_horizon, u_sky_zenith, sqrt(d.y));
     else
         c = u_sky_horizon * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
     return c + ww_sun_glow(d);

@@ -16,7 +16,10 @@ out vec4 o_color;
 const float F0 = 0.02;          // reflectance of water at normal incidence
 const float SPEC_POWER = 600.0; // Blinn-Phong exponent of a calm surface
 
-float schlick(float c) { return F0 + (1.0 - F0) * pow(1.0 - clamp(c, 0.0, 1.0), 5.0); }
+float schlick(float c) {
+    float m = 1.0 - clamp(c, 0.0, 1.0), m2 = m * m;
+    return F0 + (1.0 - F0) * (m2 * m2 * m);
+}
 
 void main() {
     float dist = length(v_pos);

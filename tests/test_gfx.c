@@ -427,6 +427,37 @@ TEST(gfx_render_far_from_origin) {
     world_free(w);
 }
 
+/* drawing only the wedge of the water mesh in view must not change a pixel: poses looking
+ * level, down, steeply down, up, across the snap grid, over big waves */
+TEST(gfx_water_wedge_culling_changes_no_pixel) {
+    REQUIRE_GL();
+    world *w = world_new(GFX_W, GFX_H);
+    add_wave(w->sc, 140.0, 30.0, 1.5, 0.9); /* 1.35 m sideways displacement on top */
+    world_set_time(w, 7.0);
+    static const double poses[][6] = {
+        {0.3, 3.0, 10.2, 0.0, 0.0, 0.0},        {0.0, 2.0, 0.0, 40.0, -1.0, 3.0},
+        {-3.2, 5.0, 1.7, -3.0, 0.0, -1.0},      {0.0, 20.0, 0.0, 0.4, 0.0, 30.0},
+        {5.26, 1.2, -7.74, -100.0, 30.0, 5.0},  {0.0, 1.0, 0.0, 0.0, -5.0, 20.0},
+        {0.0, 40.0, 0.0, 0.01, 0.0, 0.01},      {12.0, 0.6, 3.0, -50.0, 0.5, 100.0},
+    };
+    ww_image a, b;
+    ENSURE(ww_image_alloc(&a, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ENSURE(ww_image_alloc(&b, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ww_error err = {0};
+    for (size_t i = 0; i < sizeof poses / sizeof poses[0]; i++) {
+        const double *p = poses[i];
+        world_look_at(w, p[0], p[1], p[2], p[3], p[4], p[5]);
+        setenv("WW_WATER_CULL", "0", 1);
+        ENSURE(render(WW_BACKEND_AUTO, w, &a, NULL, &err) == WW_OK);
+        unsetenv("WW_WATER_CULL");
+        ENSURE(render(WW_BACKEND_AUTO, w, &b, NULL, &err) == WW_OK);
+        ENSURE_MSG(count_diff(&a, &b, 0) == 0, "pose %zu: %zu values differ", i, count_diff(&a, &b, 0));
+    }
+    ww_image_free(&a);
+    ww_image_free(&b);
+    world_free(w);
+}
+
 /* copy every built-in shader into dir, then break `broken` */
 static int write_shader_dir(const char *dir, const char *broken) {
     for (const ww_shader_file *f = ww_shader_files; f->name; f++) {

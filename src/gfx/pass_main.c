@@ -1,5 +1,5 @@
-/* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the sky
- * behind everything, then the water surface (sky.c, water.c).
+/* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the water
+ * surface, then the sky on the far plane behind it (sky.c, water.c).
  */
 #include <stdlib.h>
 
@@ -46,8 +46,9 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->ClearDepth(1.0);
     gl->DepthMask(GL_TRUE);
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    ww_sky_draw(p->sky, gl, r->empty_vao, f);
+    /* opaque geometry first: the sky then shades only what it leaves uncovered (early depth) */
     ww_water_draw(p->water, gl, f);
+    ww_sky_draw(p->sky, gl, r->empty_vao, f);
     return WW_OK;
 }
 

@@ -35,6 +35,8 @@ typedef struct ww_frame {
     mat4 view_proj;     /* proj * view */
     mat4 inv_view_proj; /* for per-pixel view rays */
     float pixel_angle;  /* angle one pixel spans at the image centre, rad */
+    double fwd[3], right[3], up[3]; /* camera basis, world, unit */
+    double tan_half[2]; /* tangent of half the horizontal and vertical field of view */
 } ww_frame;
 
 typedef struct ww_pass_ops {

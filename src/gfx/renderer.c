@@ -123,6 +123,13 @@ static void frame_camera(ww_frame *f, const ww_renderer *r) {
     glm_perspective((float)fov, (float)main->width / (float)main->height, (float)sc->near_clip,
                     (float)sc->far_clip, f->proj);
     f->pixel_angle = (float)(2.0 * tan(0.5 * fov) / main->height);
+    f->tan_half[1] = tan(0.5 * fov);
+    f->tan_half[0] = f->tan_half[1] * (double)main->width / (double)main->height;
+    for (int c = 0; c < 3; c++) {
+        f->fwd[c] = fw[c];
+        f->right[c] = rt[c];
+        f->up[c] = u[c];
+    }
     glm_mat4_mul(f->proj, f->view, f->view_proj);
     glm_mat4_inv(f->view_proj, f->inv_view_proj);
 }

@@ -46,7 +46,9 @@ ww_result ww_sky_new(const ww_gl *gl, ww_sky **out, ww_error *err) {
 }
 
 void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f) {
-    gl->Disable(GL_DEPTH_TEST);
+    /* the triangle lies on the far plane: it passes where the depth is still clear */
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LEQUAL);
     gl->DepthMask(GL_FALSE);
     gl->UseProgram(s->prog);
     ww_sky_locs_set(gl, &s->sky, f->st);
@@ -54,6 +56,7 @@ void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_fr
     gl->BindVertexArray(empty_vao);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
     gl->DepthMask(GL_TRUE);
+    gl->DepthFunc(GL_LESS);
 }
 
 void ww_sky_free(ww_sky *s, const ww_gl *gl) {

@@ -6,6 +6,7 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/mathx.h"
 #include "gfx/render_impl.h"
@@ -15,10 +16,14 @@
 #define WATER_S0 0.5       /* distance of the first ring from the centre, m */
 #define WATER_REACH 0.9    /* outer ring radius as a fraction of the far clip */
 #define WATER_SNAP 0.5     /* the mesh centre moves on this grid, m */
+#define WATER_INNER_R 10.0 /* rings inside this radius are always drawn whole, m */
 
 struct ww_water {
     GLuint prog, vao, vbo, ibo;
-    GLsizei nindices;
+    GLsizei ninner;     /* indices of the inner disc (drawn whole), first in the buffer */
+    GLsizei per_seg;    /* indices of one angular segment of the outer rings, after the disc */
+    double inner_r;     /* radius of the inner disc's outer ring, m */
+    int cull;           /* draw only the segments in view (WW_WATER_CULL=0 turns it off) */
     float grid[3]; /* (s0, q - 1, angular step) for the shaders' spacing estimate */
     ww_sky_locs sky;
     GLint view_proj, origin, nwaves, wave, wave_phase, ugrid;
@@ -38,7 +43,19 @@ static double ring_growth(double s0, int n, double reach) {
     return 0.5 * (lo + hi);
 }
 
-/* centre vertex, then WATER_RINGS rings of WATER_SEGMENTS vertices; indexed triangles */
+/* the two triangles between rings j and j + 1 in segment i */
+static size_t quad(GLuint *idx, size_t k, int nseg, int j, int i) {
+    GLuint a = (GLuint)(1 + j * nseg + i), b = (GLuint)(1 + j * nseg + (i + 1) % nseg);
+    GLuint c = a + (GLuint)nseg, d = b + (GLuint)nseg;
+    idx[k++] = a; idx[k++] = b; idx[k++] = c;
+    idx[k++] = b; idx[k++] = d; idx[k++] = c;
+    return k;
+}
+
+/* centre vertex, then WATER_RINGS rings of WATER_SEGMENTS vertices; indexed triangles in two
+ * blocks: the inner disc (a fan and the rings within WATER_INNER_R), then the outer rings one
+ * angular segment after another, so that a wedge of segments is one contiguous range and the
+ * draw can skip what lies outside the view (water_draw) */
 static ww_result build_mesh(ww_water *w, const ww_gl *gl, double reach, ww_error *err) {
     const int nseg = WATER_SEGMENTS, nring = WATER_RINGS;
     double q = ring_growth(WATER_S0, nring, reach);
@@ -61,9 +78,14 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double reach, ww_error
     /* vertices: ring j (1-based) at radius s0 (q^j - 1) / (q - 1), or j s0 when q = 1 */
     v[0] = v[1] = 0.0f;
     double r = 0.0, step = s0;
+    int ninner = 1; /* rings in the inner disc */
     for (int j = 0; j < nring; j++) {
         r += step;
         step *= q;
+        if (r <= WATER_INNER_R || j == 0) {
+            ninner = j + 1;
+            w->inner_r = r;
+        }
         for (int i = 0; i < nseg; i++) {
             size_t at = 1 + (size_t)j * (size_t)nseg + (size_t)i;
             v[2 * at] = (float)(r * cos(i * dtheta));
@@ -78,14 +100,12 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double reach, ww_error
         idx[k++] = (GLuint)(1 + (i + 1) % nseg);
         idx[k++] = (GLuint)(1 + i);
     }
-    for (int j = 0; j + 1 < nring; j++) {
-        for (int i = 0; i < nseg; i++) {
-            GLuint a = (GLuint)(1 + j * nseg + i), b = (GLuint)(1 + j * nseg + (i + 1) % nseg);
-            GLuint c = a + (GLuint)nseg, d = b + (GLuint)nseg;
-            idx[k++] = a; idx[k++] = b; idx[k++] = c;
-            idx[k++] = b; idx[k++] = d; idx[k++] = c;
-        }
-    }
+    for (int j = 0; j + 1 < ninner; j++)
+        for (int i = 0; i < nseg; i++) k = quad(idx, k, nseg, j, i);
+    w->ninner = (GLsizei)k;
+    for (int i = 0; i < nseg; i++)
+        for (int j = ninner - 1; j + 1 < nring; j++) k = quad(idx, k, nseg, j, i);
+    w->per_seg = (GLsizei)(6 * (nring - ninner));
     WW_ASSERT(k == nidx);
 
     gl->GenVertexArrays(1, &w->vao);
@@ -100,7 +120,6 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double reach, ww_error
     gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(nidx * sizeof *idx), idx, GL_STATIC_DRAW);
     gl->BindVertexArray(0);
     gl->BindBuffer(GL_ARRAY_BUFFER, 0);
-    w->nindices = (GLsizei)nidx;
     free(v);
     free(idx);
     return WW_OK;
@@ -113,6 +132,8 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     ww_result rc = ww_gfx_program(gl, "water.vert.glsl", "water.frag.glsl", includes, &w->prog,
                                   err);
     if (rc == WW_OK) rc = build_mesh(w, gl, WATER_REACH * sc->far_clip, err);
+    const char *cull = getenv("WW_WATER_CULL");
+    w->cull = !(cull && strcmp(cull, "0") == 0);
     if (rc != WW_OK) {
         ww_water_free(w, gl);
         return rc;
@@ -153,6 +174,49 @@ static int pack_waves(const ww_scene *sc, const ww_state *st, const double centr
     return n;
 }
 
+static void draw_segments(const ww_water *w, const ww_gl *gl, int first, int count) {
+    if (count <= 0) return;
+    size_t offset = ((size_t)w->ninner + (size_t)first * (size_t)w->per_seg) * sizeof(GLuint);
+    gl->DrawElements(GL_TRIANGLES, count * w->per_seg, GL_UNSIGNED_INT, (const void *)offset);
+}
+
+/* the wedge of outer segments the view can see: [first, first + count) modulo WATER_SEGMENTS.
+ * The frustum is the cone of its four corner rays; unless it holds the vertical (then every
+ * azimuth is in view) its shadow on the water plane is a wedge bounded by the corners' azimuths.
+ * The margin covers the mesh centre's snap offset and the waves' sideways displacement, both
+ * seen from the inner disc's edge, the nearest outer vertex. */
+static void visible_segments(const ww_water *w, const ww_frame *f, const ww_scene *sc,
+                             const double centre[2], int *first, int *count) {
+    *first = 0;
+    *count = WATER_SEGMENTS;
+    if (!w->cull) return;
+    double corner = atan(sqrt(f->tan_half[0] * f->tan_half[0] + f->tan_half[1] * f->tan_half[1]));
+    double off = hypot(centre[0] - f->cam_pos[0], centre[1] - f->cam_pos[2]);
+    for (int i = 0; i < sc->nwaves; i++) off += sc->waves[i].steepness * sc->waves[i].amplitude;
+    if (off >= w->inner_r) return;
+    double margin = asin(off / w->inner_r) + 2.0 * WW_TAU / WATER_SEGMENTS;
+    double vert = acos(ww_m_clamp(fabs(f->fwd[1]), 0.0, 1.0)); /* angle to the nearest vertical */
+    if (vert <= corner + margin) return;
+
+    double a0 = atan2(f->fwd[2], f->fwd[0]), lo = 0.0, hi = 0.0;
+    for (int c = 0; c < 4; c++) {
+        double sx = (c & 1) ? 1.0 : -1.0, sy = (c & 2) ? 1.0 : -1.0, d[3];
+        for (int k = 0; k < 3; k++)
+            d[k] = f->fwd[k] + sx * f->tan_half[0] * f->right[k] + sy * f->tan_half[1] * f->up[k];
+        double da = atan2(d[2], d[0]) - a0;
+        da -= WW_TAU * floor((da + WW_PI) / WW_TAU); /* to [-pi, pi) */
+        if (da < lo) lo = da;
+        if (da > hi) hi = da;
+    }
+    double step = WW_TAU / WATER_SEGMENTS;
+    double from = floor((a0 + lo - margin) / step), to = floor((a0 + hi + margin) / step);
+    int n = (int)(to - from) + 1;
+    if (n >= WATER_SEGMENTS) return;
+    int s = (int)fmod(from, (double)WATER_SEGMENTS);
+    *first = s < 0 ? s + WATER_SEGMENTS : s;
+    *count = n;
+}
+
 void ww_water_draw(const ww_water *w, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
     const ww_state *st = f->st;
@@ -188,7 +252,11 @@ void ww_water_draw(const ww_water *w, const ww_gl *gl, const ww_frame *f) {
     gl->Uniform1f(w->pixel_angle, f->pixel_angle);
 
     gl->BindVertexArray(w->vao);
-    gl->DrawElements(GL_TRIANGLES, w->nindices, GL_UNSIGNED_INT, NULL);
+    gl->DrawElements(GL_TRIANGLES, w->ninner, GL_UNSIGNED_INT, NULL);
+    int first, count;
+    visible_segments(w, f, sc, centre, &first, &count);
+    draw_segments(w, gl, first, count < WATER_SEGMENTS - first ? count : WATER_SEGMENTS - first);
+    if (first + count > WATER_SEGMENTS) draw_segments(w, gl, 0, first + count - WATER_SEGMENTS);
     gl->BindVertexArray(0);
 }
 
