@@ -98,6 +98,23 @@ TEST(cli_bad_scene_exit_2_with_place_and_nothing_written) {
     ENSURE(file_contains(errf, "does/not/exist.yaml"));
 }
 
+TEST(cli_runtime_failures_exit_3) {
+    char dir[512], errf[600], args[1024];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_runtime"));
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    /* an output folder that cannot be made: a path component is a regular file */
+    snprintf(args, sizeof args, "render scenes/minimal.yaml --frames 1 -o %s/err.txt/frames", dir);
+    ENSURE_EQ_INT(run_ww(args, NULL, errf), 3);
+    ENSURE(file_contains(errf, "err.txt/frames"));
+    /* a backend that cannot open: the message says why and what to do */
+    if (!ww_test_have_gl()) return;
+    snprintf(cmd, sizeof cmd, "WW_EGL_DEVICE=99 %s render scenes/minimal.yaml --frames 1 --backend egl -o %s/x",
+             ww_test_bin(), dir);
+    ENSURE_EQ_INT(ww_test_run(cmd, NULL, errf), 3);
+    ENSURE(file_contains(errf, "WW_EGL_DEVICE"));
+    ENSURE_EQ_INT(count_files(dir), 1); /* only err.txt: no frame folder */
+}
+
 TEST(cli_simulate_hash_pinned_and_repeatable) {
     char dir[512], a[600], b[600];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_hash"));

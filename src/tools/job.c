@@ -83,8 +83,6 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     ww_result r = WW_OK;
     WW_ASSERT(o->first >= 0 && o->last > o->first);
 
-    if (o->format != WW_OUT_NONE && (r = ww_make_dirs(o->out_dir, err))) return r;
-
     /* the GL side: backend, then passes from the plan */
     double t0 = ww_now_seconds();
     ww_plan plan;
@@ -101,6 +99,9 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     }
     s->state_bytes = j.st->bytes;
     s->setup_s = ww_now_seconds() - t0;
+
+    /* the output folder only once everything that can fail before the first frame has not */
+    if (o->format != WW_OUT_NONE && (r = ww_make_dirs(o->out_dir, err))) goto done;
 
     /* the prefix is stepped, not rendered */
     t0 = ww_now_seconds();
