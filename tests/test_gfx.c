@@ -33,16 +33,9 @@ typedef struct world {
 
 static void add_wave(ww_scene *sc, double dir_deg, double wavelength, double amp, double q) {
     ww_wave *w = &sc->waves[sc->nwaves++];
-    w->direction = ww_m_rad(dir_deg);
-    w->dir[0] = cos(w->direction);
-    w->dir[1] = sin(w->direction);
-    w->wavelength = wavelength;
-    w->amplitude = amp;
-    w->steepness = q;
-    w->phase = 0.0;
-    w->k = WW_TAU / wavelength;
-    w->omega = sqrt(WW_G * w->k);
-    w->speed = w->omega / w->k;
+    *w = (ww_wave){.direction = ww_m_rad(dir_deg), .wavelength = wavelength, .amplitude = amp,
+                   .steepness = q};
+    ww_wave_derive(w, 0.0);
 }
 
 static void set3(double *d, double x, double y, double z) {
@@ -74,27 +67,16 @@ static void world_look_at(world *w, double px, double py, double pz, double tx, 
 /* late afternoon (16:30) over three Gerstner waves; camera at (0, 3, 10) looking at the origin */
 static world *world_new(int width, int height) {
     world *w = calloc(1, sizeof *w);
-    w->sc = calloc(1, sizeof *w->sc);
+    w->sc = malloc(sizeof *w->sc);
     ww_scene *sc = w->sc;
+    ww_scene_defaults(sc);
     snprintf(sc->name, sizeof sc->name, "test_gfx");
     sc->width = width;
     sc->height = height;
-    sc->exposure = 1.0;
-    sc->gamma = 2.2;
     sc->tonemap = WW_TONEMAP_ACES;
-    sc->time_of_day = 16.5;
-    set3(sc->fog_color, -1.0, -1.0, -1.0);
-    sc->fog_density = 0.0012;
-    sc->water_level = 0.0;
-    sc->water_depth = 8.0;
-    set3(sc->water_color, 0.02, 0.09, 0.12);
-    sc->wave_model = WW_WAVES_GERSTNER;
     add_wave(sc, 20.0, 12.0, 0.25, 0.6);
     add_wave(sc, -35.0, 5.0, 0.08, 0.4);
     add_wave(sc, 75.0, 2.1, 0.025, 0.3);
-    sc->fov = ww_m_rad(60.0);
-    sc->near_clip = 0.1;
-    sc->far_clip = 5000.0;
 
     /* the state: the header from state.h, its arrays ours */
     ww_state *st = &w->st;

@@ -493,3 +493,27 @@ TEST(scene_only_yaml_tree_includes_yaml_h) {
     if (got) ENSURE_MSG(strcmp(got, "src/scene/yaml_tree.c\n") == 0, "yaml.h included by: %s", got);
     free(got);
 }
+
+/* ww_scene_defaults is what a file with no sections loads as, so code-built scenes match */
+TEST(scene_defaults_match_an_empty_file) {
+    ww_scene *a = NULL, d;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_scene_load_string("empty-sections.yaml", "seed: 1\n", 8, NULL, 0, &a, &err), WW_OK);
+    if (!a) return;
+    ww_scene_defaults(&d);
+    ENSURE(a->seed == d.seed && a->dt == d.dt && a->fps == d.fps && a->duration == d.duration);
+    ENSURE(a->steps_per_frame == d.steps_per_frame && a->frame_count == d.frame_count);
+    ENSURE(a->width == d.width && a->height == d.height && a->exposure == d.exposure && a->gamma == d.gamma);
+    ENSURE(a->tonemap == d.tonemap && a->time_of_day == d.time_of_day && a->day_length == d.day_length);
+    ENSURE(a->sun_max_elevation == d.sun_max_elevation && a->fog_density == d.fog_density);
+    ENSURE(a->water_level == d.water_level && a->water_depth == d.water_depth && a->wave_model == d.wave_model);
+    ENSURE(a->nwaves == 0 && d.nwaves == 0 && a->nevents == 0 && d.nevents == 0);
+    ENSURE(a->fov == d.fov && a->near_clip == d.near_clip && a->far_clip == d.far_clip && a->interp == d.interp);
+    ENSURE(a->ncam == 1 && d.ncam == 1 && a->cam[0].t == d.cam[0].t);
+    ENSURE(a->cam[0].has_look_at == d.cam[0].has_look_at && a->cam[0].fov == d.cam[0].fov);
+    for (int i = 0; i < 3; i++) {
+        ENSURE(a->fog_color[i] == d.fog_color[i] && a->water_color[i] == d.water_color[i]);
+        ENSURE(a->cam[0].position[i] == d.cam[0].position[i] && a->cam[0].look_at[i] == d.cam[0].look_at[i]);
+    }
+    ww_scene_free(a);
+}

@@ -25,37 +25,24 @@
 /* sun direction components */
 #define SUN_DIR_TOL 1e-12
 
+/* the file format's defaults with a short clock: noon, 1 s of frames at 256x144 */
 static ww_scene *hand_scene(void) {
-    ww_scene *sc = calloc(1, sizeof *sc);
+    ww_scene *sc = malloc(sizeof *sc);
+    ww_scene_defaults(sc);
     snprintf(sc->path, sizeof sc->path, "hand.yaml");
-    sc->dt = 1.0 / 120.0;
-    sc->fps = 30;
-    sc->steps_per_frame = 4;
-    sc->frame_count = 30;
     sc->duration = 1;
+    sc->frame_count = 30;
     sc->width = 256;
     sc->height = 144;
     sc->time_of_day = 12;
-    sc->sun_max_elevation = ww_m_rad(60);
-    sc->fov = ww_m_rad(60);
-    sc->near_clip = 0.1;
     sc->far_clip = 1000;
-    sc->ncam = 1;
-    sc->cam[0] = (ww_camera_key){.t = 0, .position = {0, 2, 10}, .has_look_at = 1, .look_at = {0, 0, 0}};
     return sc;
 }
 
 static void add_wave(ww_scene *sc, double dir_deg, double L, double A, double Q) {
     ww_wave *w = &sc->waves[sc->nwaves++];
-    w->direction = ww_m_rad(dir_deg);
-    w->dir[0] = cos(w->direction);
-    w->dir[1] = sin(w->direction);
-    w->wavelength = L;
-    w->amplitude = A;
-    w->steepness = Q;
-    w->k = WW_TAU / L;
-    w->omega = sqrt(WW_G * w->k);
-    w->speed = w->omega / w->k;
+    *w = (ww_wave){.direction = ww_m_rad(dir_deg), .wavelength = L, .amplitude = A, .steepness = Q};
+    ww_wave_derive(w, 0.0);
     sc->wave_model = WW_WAVES_GERSTNER;
 }
 

@@ -462,6 +462,13 @@ static const ww_node *blame(const section *s, const char *a, const char *b) {
     return n ? n : s->map;
 }
 
+/* one key looking at the origin from a little above the water */
+static void default_camera(ww_scene *sc) {
+    sc->cam[0] = (ww_camera_key){
+        .t = 0.0, .position = {0.0, 2.0, 10.0}, .has_look_at = 1, .look_at = {0.0, 0.0, 0.0}};
+    sc->ncam = 1;
+}
+
 /* ---- sections -------------------------------------------------------------------------------- */
 
 static ww_result compile_time(ctx *c, const section *top) {
@@ -560,13 +567,17 @@ static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave *w) {
     TRY(get_angle(c, &s, "phase", &R_ANGLE, OPTIONAL, &w->phase));
     TRY(get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &speed));
 
+    ww_wave_derive(w, speed);
+    return WW_OK;
+}
+
+void ww_wave_derive(ww_wave *w, double speed) {
     /* deep-water dispersion w^2 = g k (Airy wave theory) unless the phase speed is given */
     w->dir[0] = cos(w->direction);
     w->dir[1] = sin(w->direction);
     w->k = WW_TAU / w->wavelength;
     w->omega = speed > 0.0 ? speed * w->k : sqrt(WW_G * w->k);
     w->speed = w->omega / w->k;
-    return WW_OK;
 }
 
 static ww_result compile_waves(ctx *c, const section *water) {
@@ -668,12 +679,8 @@ static ww_result compile_camera(ctx *c, const section *top) {
     }
     sc->ncam = i;
 
-    /* no path: one key looking at the origin from a little above the water */
-    if (sc->ncam == 0) {
-        sc->cam[0] = (ww_camera_key){
-            .t = 0.0, .position = {0.0, 2.0, 10.0}, .has_look_at = 1, .look_at = {0.0, 0.0, 0.0}};
-        sc->ncam = 1;
-    }
+    /* no path: the default key of ww_scene_defaults */
+    if (sc->ncam == 0) default_camera(sc);
     return WW_OK;
 }
 
@@ -737,7 +744,8 @@ static ww_result compile_script(ctx *c, const section *top) {
 
 /* ---- scene ----------------------------------------------------------------------------------- */
 
-static void scene_defaults(ww_scene *sc) {
+void ww_scene_defaults(ww_scene *sc) {
+    *sc = (ww_scene){0};
     sc->seed = 1;
     sc->dt = 1.0 / 120.0;
     sc->fps = 30.0;
@@ -763,6 +771,10 @@ static void scene_defaults(ww_scene *sc) {
     sc->near_clip = 0.1;
     sc->far_clip = 5000.0;
     sc->interp = WW_INTERP_CATMULL_ROM;
+    default_camera(sc);
+    /* derived as compile_time derives them: 1 / (30 * 1/120) = 4 steps, 10 s * 30 fps */
+    sc->steps_per_frame = 4;
+    sc->frame_count = 300;
 }
 
 /* path as given; name is the file name without folder and extension */
@@ -805,7 +817,8 @@ static ww_result load_tree(ww_tree *t, const char *path, const ww_set *sets, int
         r = ww_error_set(err, WW_E_NOMEM, path, 0, 0, "out of memory for the scene");
     if (r == WW_OK) {
         ctx c = {.sc = sc, .file = path, .err = err};
-        scene_defaults(sc);
+        ww_scene_defaults(sc);
+        sc->ncam = 0; /* the file's path, or the default key when it has none */
         scene_names(sc, path);
         r = compile_scene(&c, ww_tree_root(t));
     }

@@ -118,6 +118,14 @@ ww_result ww_scene_load_string(const char *name, const char *text, size_t len, c
                                int nsets, ww_scene **out, ww_error *err);
 void ww_scene_free(ww_scene *sc);
 
+/* every default of the file format: what an empty scene file loads as (no waves, no events,
+ * the default camera key). For code that builds a scene without a file (tests, tools). */
+void ww_scene_defaults(ww_scene *sc);
+
+/* a wave's derived fields (dir, k, omega, speed) from its direction and wavelength; speed is
+ * the phase speed in m/s, or <= 0 for deep-water dispersion w^2 = g k */
+void ww_wave_derive(ww_wave *w, double speed);
+
 /* time of frame f, s */
 static inline double ww_scene_frame_time(const ww_scene *sc, int64_t f) {
     return sc->start + (double)(f * sc->steps_per_frame) * sc->dt;
