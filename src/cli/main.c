@@ -15,7 +15,7 @@ static const char usage[] =
     "                      [--backend auto|egl|osmesa] [--set KEY=VALUE]...\n"
     "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--hash] [--set KEY=VALUE]...\n"
     "  plan     SCENE.yaml                systems and render passes the scene needs\n"
-    "  bench    [render] [--frames N] [--json]   speed and memory figures\n"
+    "  bench    [render|sim] [--frames N] [--json]   speed and memory figures\n"
     "  backends [--renderer]             which GL backends open here, on what\n"
     "  --help | --version\n"
     "\n"
