@@ -266,3 +266,22 @@ TEST(sim_nan_guard_names_field_index_and_step) {
     ww_state_free(st);
     free(sc);
 }
+
+TEST(sim_camera_spinning_path_keeps_turning_one_way) {
+    /* yaw keys 0, 120, 240, 0, 120 degrees: each step is +120 the short way, so between the
+     * third and fourth key the camera looks at 300 degrees, not back through 120 */
+    ww_scene *sc = hand_scene();
+    sc->ncam = 5;
+    sc->interp = WW_INTERP_LINEAR;
+    static const double yaw[] = {0, 120, 240, 0, 120};
+    for (int k = 0; k < 5; k++)
+        sc->cam[k] = (ww_camera_key){.t = k, .position = {0, 2, 0}, .yaw = ww_m_rad(yaw[k])};
+    double p[3], f[3], fov, want[3];
+    ww_camera_eval(sc, 2.5, p, f, &fov);
+    ww_camera_dir(ww_m_rad(300), 0, want);
+    for (int c = 0; c < 3; c++) ENSURE_NEAR(f[c], want[c], CAMERA_TOL);
+    ww_camera_eval(sc, 3.5, p, f, &fov);
+    ww_camera_dir(ww_m_rad(60), 0, want);
+    for (int c = 0; c < 3; c++) ENSURE_NEAR(f[c], want[c], CAMERA_TOL);
+    free(sc);
+}

@@ -61,34 +61,51 @@ static void key_angles(const ww_camera_key *k, double *yaw, double *pitch) {
     *pitch = asin(ww_m_clamp(d[1], -1.0, 1.0));
 }
 
+/* the segment [i, i + 1] holding t, its local parameter u and length h; holds outside the path */
+static void find_segment(const ww_scene *sc, double t, int *i, double *u, double *h) {
+    int n = sc->ncam;
+    *i = 0;
+    *u = 0.0;
+    *h = 1.0;
+    if (n == 1 || t <= sc->cam[0].t) return;
+    if (t >= sc->cam[n - 1].t) {
+        *i = n - 2;
+        *u = 1.0;
+        *h = sc->cam[n - 1].t - sc->cam[n - 2].t;
+        return;
+    }
+    /* binary search: cam[lo].t <= t < cam[hi].t */
+    int lo = 0, hi = n - 1;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (t >= sc->cam[mid].t) lo = mid; else hi = mid;
+    }
+    *i = lo;
+    *h = sc->cam[lo + 1].t - sc->cam[lo].t;
+    *u = (t - sc->cam[lo].t) / *h;
+}
+
 void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], double *fov) {
     keyset ks = {.sc = sc};
-    int n = sc->ncam, all_targets = 1;
+    int n = sc->ncam, i;
+    double u, h;
     WW_ASSERT(n >= 1);
-    for (int i = 0; i < n; i++) {
-        all_targets &= sc->cam[i].has_look_at;
-        key_angles(&sc->cam[i], &ks.yaw[i], &ks.pitch[i]);
-        if (i > 0) {
-            /* turn the short way round */
-            while (ks.yaw[i] - ks.yaw[i - 1] > WW_PI) ks.yaw[i] -= WW_TAU;
-            while (ks.yaw[i] - ks.yaw[i - 1] < -WW_PI) ks.yaw[i] += WW_TAU;
+    find_segment(sc, t, &i, &u, &h);
+
+    /* angles of the keys the segment's Hermite tangents read (i - 1 .. i + 2), the yaw unwrapped
+     * so neighbours differ by at most pi: only the segment's neighbourhood, so a step costs the
+     * same whatever the path's length */
+    int lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1, all_targets = 1;
+    for (int k = lo; k <= hi; k++) {
+        all_targets &= sc->cam[k].has_look_at;
+        key_angles(&sc->cam[k], &ks.yaw[k], &ks.pitch[k]);
+        if (k > lo) {
+            while (ks.yaw[k] - ks.yaw[k - 1] > WW_PI) ks.yaw[k] -= WW_TAU;
+            while (ks.yaw[k] - ks.yaw[k - 1] < -WW_PI) ks.yaw[k] += WW_TAU;
         }
     }
-
-    /* segment and local parameter; hold outside the path */
-    int i = 0;
-    double u = 0.0, h = 1.0;
-    if (n == 1 || t <= sc->cam[0].t) {
-        i = 0;
-    } else if (t >= sc->cam[n - 1].t) {
-        i = n - 2;
-        u = 1.0;
-        h = sc->cam[n - 1].t - sc->cam[n - 2].t;
-    } else {
-        while (i < n - 2 && t >= sc->cam[i + 1].t) i++;
-        h = sc->cam[i + 1].t - sc->cam[i].t;
-        u = (t - sc->cam[i].t) / h;
-    }
+    /* target interpolation needs every key of the path to aim at a point (camera.h) */
+    for (int k = 0; k < n && all_targets; k++) all_targets &= sc->cam[k].has_look_at;
 
     if (n == 1) {
         for (int c = 0; c < 3; c++) pos[c] = key_value(&ks, 0, CH_POS + c);
