@@ -36,6 +36,14 @@ ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err);
  * backend's fill floor, which bench sets render times against */
 ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error *err);
 
+/* the wave field as the water shaders evaluate it (shaders/gerstner.glsl, the functions the
+ * water vertex shader displaces its mesh with, fade off): for n rest points given relative to the
+ * camera position cam (world, m), draws one point each into an RGBA32F target and reads back
+ * out[8 i ..]: displaced point relative to cam (x, y, z), 0, unit normal (x, y, z), 0. Waves and
+ * ripples of st at st->t. For the GPU-vs-CPU accuracy test and bench. */
+ww_result ww_gfx_water_probe(const ww_gl *gl, const ww_scene *sc, const ww_state *st,
+                             const double cam[3], int n, const double *rest_xz, float *out,
+                             ww_error *err);
 /* glFinish; used by bench to split render from read-back time */
 void ww_renderer_finish(ww_renderer *r);
 

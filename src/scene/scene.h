@@ -17,23 +17,88 @@
 
 #include "core/error.h"
 
-#define WW_MAX_WAVES 64
+#define WW_MAX_WAVES 256
+#define WW_MAX_RIPPLES 256
 #define WW_MAX_KEYS 256
 #define WW_MAX_EVENTS 1024
+#define WW_MAX_WARNINGS 8
 
-typedef enum ww_wave_model { WW_WAVES_FLAT = 0, WW_WAVES_GERSTNER } ww_wave_model;
+/* water.waves.model. Every family is a list of components (ww_wave) evaluated by src/sim/waves.h
+ * and shaders/gerstner.glsl; the model decides the profile of each component:
+ *   FLAT        no components
+ *   GERSTNER    x' = x + Q A D cos(phi), y = A sin(phi)                          (seed 000)
+ *   SINES       y = A sin(phi), no sideways motion (Q = 0)                        (seeds 001, 004)
+ *   STEEP_SINES y = 2 A (((sin(phi) + 1) / 2)^e - mean_e), no sideways motion     (seed 001)
+ *   SPECTRUM    Gerstner components sampled from a wave spectrum at load (scene/spectrum.h) */
+typedef enum ww_wave_model {
+    WW_WAVES_FLAT = 0,
+    WW_WAVES_GERSTNER,
+    WW_WAVES_SINES,
+    WW_WAVES_STEEP_SINES,
+    WW_WAVES_SPECTRUM
+} ww_wave_model;
 
 typedef struct ww_wave {
     double direction;    /* heading of travel in the XZ plane, rad (0 = +x, 90 deg = +z) */
     double dir[2];       /* unit direction (cos, sin) of the heading */
     double wavelength;   /* m */
     double amplitude;    /* m */
-    double steepness;    /* Gerstner Q, 0..1 (dimensionless) */
+    double steepness;    /* Gerstner Q, 0..1 (dimensionless); 0 for sines and steep sines */
+    double exponent;     /* steep sines: sharpness e >= 1 (seed 001's k); 1 for the others */
+    double mean;         /* mean of ((sin + 1) / 2)^e over a period (from the exponent); steep
+                          * sines subtract it so the surface rests at the water level (seed 001's
+                          * formula raises it). Only the steep_sines model reads it. */
     double phase;        /* phase offset, rad */
     double k;            /* wavenumber 2 pi / wavelength, 1/m */
     double omega;        /* angular frequency, rad/s: sqrt(g k) unless speed is given */
     double speed;        /* phase speed omega / k, m/s */
+    int line, column;    /* where the component was written (or the section it was drawn from) */
 } ww_wave;
+
+/* water.waves.random: components drawn from seeded distributions (stream WW_RNG_WAVES), added
+ * after the list for the gerstner, sines and steep_sines models */
+typedef struct ww_wave_random {
+    int count;             /* 0: none */
+    double wavelength[2];  /* m, drawn log-uniformly in [lo, hi] */
+    double amplitude[2];   /* m, drawn uniformly in [lo, hi] */
+    double direction;      /* mean heading, rad */
+    double spread;         /* headings uniform in direction +- spread / 2, rad */
+    double steepness;      /* Q of each drawn component (gerstner) */
+    double exponent;       /* e of each drawn component (steep_sines) */
+} ww_wave_random;
+
+typedef enum ww_spectrum_kind { WW_SPECTRUM_PM = 0, WW_SPECTRUM_JONSWAP } ww_spectrum_kind;
+
+/* water.waves.spectrum (model: spectrum); see scene/spectrum.h for the formulas */
+typedef struct ww_spectrum_desc {
+    ww_spectrum_kind kind;
+    double wind_speed;     /* m/s: U at 19.5 m (Pierson-Moskowitz), U at 10 m (JONSWAP) */
+    double fetch;          /* m (JONSWAP) */
+    double gamma;          /* peak enhancement factor (JONSWAP), 1..10 */
+    double direction;      /* mean heading, rad */
+    double spread;         /* standard deviation of the headings, rad */
+    int count;             /* components */
+    double wavelength[2];  /* sampled range, m */
+    double steepness;      /* global sum Q k A over the components, < 1 so it cannot fold */
+} ww_spectrum_desc;
+
+/* water.fold: what loading does when sum Q k A > 1 (the Gerstner surface loops over itself) */
+typedef enum ww_fold_policy { WW_FOLD_WARN = 0, WW_FOLD_ERROR, WW_FOLD_CLAMP } ww_fold_policy;
+#define WW_FOLD_CLAMP_SUM 0.9 /* clamp scales every Q so that sum Q k A is this (margin 0.1) */
+
+/* water.ripples: seed 000's damped radial waves, one per splash or script event:
+ *   h = A0 e^(-alpha r) e^(-beta age) sin(kr (r - v age)) W(r, age)
+ * with W a causal front that is 1 behind r = v age and 0 one ripple wavelength ahead of it
+ * (seed 000's formula has no front: it fills the whole lake at once). See sim/ripples.h. */
+typedef struct ww_ripple_desc {
+    double amplitude;      /* A0 of a ripple whose event gives none, m */
+    double lifetime;       /* s; older ripples are pruned */
+    int max;               /* pool size; a full pool replaces its oldest ripple */
+    double radial_decay;   /* alpha, 1/m */
+    double time_decay;     /* beta, 1/s */
+    double wavenumber;     /* kr (seed 000's omega, which multiplies r - v t), rad/m */
+    double speed;          /* v, m/s: capillary-gravity phase speed of kr unless given */
+} ww_ripple_desc;
 
 typedef enum ww_interp { WW_INTERP_CATMULL_ROM = 0, WW_INTERP_LINEAR } ww_interp;
 
@@ -46,13 +111,14 @@ typedef struct ww_camera_key {
     double fov;          /* vertical field of view, rad (0: the camera's default) */
 } ww_camera_key;
 
-typedef enum ww_event_kind { WW_EV_TIME_OF_DAY = 0 } ww_event_kind;
+typedef enum ww_event_kind { WW_EV_TIME_OF_DAY = 0, WW_EV_RIPPLE } ww_event_kind;
 
 typedef struct ww_event {
     double t;            /* simulated time, s */
     int64_t step;        /* first step whose time is >= t */
     ww_event_kind kind;
-    double value;        /* TIME_OF_DAY: hours 0..24 */
+    double value;        /* TIME_OF_DAY: hours 0..24; RIPPLE: amplitude A0, m */
+    double at[2];        /* RIPPLE: centre (x, z), m */
     int line, column;    /* where it was written, for messages */
 } ww_event;
 
@@ -93,6 +159,17 @@ typedef struct ww_scene {
     ww_wave_model wave_model;
     int nwaves;
     ww_wave waves[WW_MAX_WAVES];
+    ww_wave_random wave_random;
+    ww_spectrum_desc spectrum;
+    ww_fold_policy fold;
+    double fold_sum;           /* sum Q k A of the components as loaded (after a clamp) */
+    double fold_sum_given;     /* the same before the policy was applied */
+    int ripples_on;            /* the scene has a ripples section or ripple events */
+    ww_ripple_desc ripples;
+
+    /* what loading noticed but accepted (fold: warn); the CLI prints them to stderr */
+    int nwarnings;
+    char warnings[WW_MAX_WARNINGS][256];
 
     /* camera */
     double fov;                /* default vertical field of view, rad */
@@ -122,9 +199,12 @@ void ww_scene_free(ww_scene *sc);
  * the default camera key). For code that builds a scene without a file (tests, tools). */
 void ww_scene_defaults(ww_scene *sc);
 
-/* a wave's derived fields (dir, k, omega, speed) from its direction and wavelength; speed is
- * the phase speed in m/s, or <= 0 for deep-water dispersion w^2 = g k */
+/* a wave's derived fields (dir, k, omega, speed, mean) from its direction, wavelength and
+ * exponent; speed is the phase speed in m/s, or <= 0 for deep-water dispersion w^2 = g k */
 void ww_wave_derive(ww_wave *w, double speed);
+
+/* sum Q k A over the components: above 1 the Gerstner surface folds */
+double ww_waves_fold_sum(const ww_scene *sc);
 
 /* time of frame f, s */
 static inline double ww_scene_frame_time(const ww_scene *sc, int64_t f) {

@@ -31,7 +31,8 @@
     X(double, cam_pos, 3, "camera position, m (3)")                                              \
     X(double, cam_fwd, 3, "camera forward, unit (3)")                                            \
     X(double, cam_fov, 1, "camera vertical field of view, rad (1)")                              \
-    X(double, wave_phase, sc->nwaves, "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)")
+    X(double, wave_phase, sc->nwaves, "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)") \
+    X(double, ripple, sc->ripples_on ? 4 * sc->ripples.max : 0, "ripple pool: x, z, t0, A0 per entry; A0 = 0 is free (4 max)")
 
 typedef struct ww_state {
     int64_t step;          /* steps taken since t = start */

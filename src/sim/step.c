@@ -4,6 +4,7 @@
 #include "sim/step.h"
 
 #include "sim/camera.h"
+#include "sim/ripples.h"
 #include "sim/sky.h"
 #include "sim/waves.h"
 
@@ -16,11 +17,15 @@ static void apply_events(const ww_scene *sc, ww_state *st) {
             st->clock_anchor[0] = ev->value;
             st->clock_anchor[1] = st->t;
             break;
+        case WW_EV_RIPPLE:
+            ww_ripples_add(sc, st, ev->at[0], ev->at[1], ev->value);
+            break;
         }
     }
 }
 
 static void update_systems(const ww_scene *sc, ww_state *st) {
+    ww_ripples_prune(sc, st);
     apply_events(sc, st);
     ww_sky_update(sc, st);
     ww_camera_update(sc, st);

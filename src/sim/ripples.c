@@ -1,0 +1,85 @@
+/* ripples.c - the ripple pool of ripples.h: add, prune, and the analytic height, gradient and
+ * time derivative of the sum.
+ */
+#include "sim/ripples.h"
+
+#include <math.h>
+
+#include "core/mathx.h"
+
+void ww_ripples_add(const ww_scene *sc, ww_state *st, double x, double z, double amplitude) {
+    if (!sc->ripples_on || sc->ripples.max <= 0 || !(amplitude > 0.0)) return;
+    double *pool = st->ripple;
+    int slot = 0;
+    for (int i = 0; i < sc->ripples.max; i++) {
+        const double *e = pool + i * WW_RIPPLE_STRIDE;
+        if (e[3] == 0.0) { /* a free slot */
+            slot = i;
+            break;
+        }
+        if (e[2] < pool[slot * WW_RIPPLE_STRIDE + 2]) slot = i; /* else the oldest */
+    }
+    double *e = pool + slot * WW_RIPPLE_STRIDE;
+    e[0] = x;
+    e[1] = z;
+    e[2] = st->t;
+    e[3] = amplitude;
+}
+
+void ww_ripples_prune(const ww_scene *sc, ww_state *st) {
+    if (!sc->ripples_on) return;
+    for (int i = 0; i < sc->ripples.max; i++) {
+        double *e = st->ripple + i * WW_RIPPLE_STRIDE;
+        if (e[3] != 0.0 && st->t - e[2] > sc->ripples.lifetime)
+            e[0] = e[1] = e[2] = e[3] = 0.0;
+    }
+}
+
+int ww_ripples_count(const ww_scene *sc, const ww_state *st) {
+    int n = 0;
+    if (!sc->ripples_on) return 0;
+    for (int i = 0; i < sc->ripples.max; i++) n += st->ripple[i * WW_RIPPLE_STRIDE + 3] != 0.0;
+    return n;
+}
+
+double ww_ripples_height(const ww_scene *sc, const double *pool, double t, double x, double z,
+                         double grad[2], double *dhdt) {
+    double h = 0.0, gx = 0.0, gz = 0.0, ht = 0.0;
+    if (sc->ripples_on && pool) {
+        const ww_ripple_desc *d = &sc->ripples;
+        double kr = d->wavenumber, v = d->speed;
+        double lambda = WW_TAU / kr;   /* width of the front, m */
+        double r0 = 1.0 / kr;          /* softening of the distance at the centre, m */
+        for (int i = 0; i < d->max; i++) {
+            const double *e = pool + i * WW_RIPPLE_STRIDE;
+            double age = t - e[2];
+            if (e[3] == 0.0 || age < 0.0) continue;
+            double dx = x - e[0], dz = z - e[1];
+            double r = sqrt(dx * dx + dz * dz + r0 * r0);
+            /* causal front: W = 1 behind r = v age, 0 one wavelength ahead, C1 between */
+            double u = (v * age - r) / lambda + 1.0;
+            if (u <= 0.0) continue;
+            double w = 1.0, dw = 0.0;
+            if (u < 1.0) {
+                w = u * u * (3.0 - 2.0 * u);
+                dw = 6.0 * u * (1.0 - u);
+            }
+            double env = e[3] * exp(-d->radial_decay * r - d->time_decay * age);
+            double psi = kr * (r - v * age);
+            double s = sin(psi), c = cos(psi);
+            h += env * s * w;
+            /* dh/dr and dh/dage of env sin(psi) W, then the chain rule through r(x, z) */
+            double dhdr = env * (-d->radial_decay * s * w + kr * c * w - s * dw / lambda);
+            double dhda = env * (-d->time_decay * s * w - kr * v * c * w + s * dw * v / lambda);
+            gx += dhdr * dx / r;
+            gz += dhdr * dz / r;
+            ht += dhda;
+        }
+    }
+    if (grad) {
+        grad[0] = gx;
+        grad[1] = gz;
+    }
+    if (dhdt) *dhdt = ht;
+    return h;
+}
