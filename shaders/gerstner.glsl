@@ -28,12 +28,15 @@
 #endif
 
 // the components, sorted by wavenumber ascending (water.c keeps the permutation), so a loop can
-// stop at the first one faded out: every later one is shorter and faded as well
+// stop at the first one faded out: every later one is shorter and faded as well. A loop reads
+// only what it needs: llvmpipe gathers each indexed load lane by lane, which costs more than
+// recomputing k = |kD| and 2 pi / k.
 layout(std140) uniform WwWaves {
     int u_nwaves;
+    float u_slope2_total;       // sum of the components' mean square slopes
     vec4 u_wave[WW_MAX_WAVES];  // (k Dx, k Dz, A, Q): wavenumber * direction 1/m, m, 1 (Q 0 but gerstner)
-    vec4 u_wave2[WW_MAX_WAVES]; // (phase at the centre rad in [0, 2 pi), exponent e, mean of ((sin + 1) / 2)^e, 0)
-    vec4 u_wave3[WW_MAX_WAVES]; // (k 1/m, wavelength 2 pi / k m, mean square slope of this component, of it and all later ones)
+    vec4 u_wave2[WW_MAX_WAVES]; // (phase at the centre rad in [0, 2 pi), exponent e, mean of
+                                //  ((sin + 1) / 2)^e, mean square slope per (A k)^2: 1/2 but steep sines)
 };
 
 #if WW_RIPPLES
@@ -156,13 +159,13 @@ vec3 ww_displace(vec2 p, float s) {
     float inv_s = 1.0 / max(s, 1e-6);
     for (int i = 0; i < u_nwaves; i++) {
         vec4 w = u_wave[i];
-        vec4 w3 = u_wave3[i];
-        float f = ww_wave_fade(w3.y, inv_s);
+        float k = length(w.xy);
+        float f = ww_wave_fade(2.0 * WW_PI / k, inv_s);
         if (f == 0.0) break; // sorted by k: the rest are shorter, faded out too
         float a = w.z * f;
         float phi = ww_wave_phi(i, p);
 #if WW_WAVE_MODEL == WW_MODEL_GERSTNER
-        d.xz += (w.w * a * cos(phi) / w3.x) * w.xy;
+        d.xz += (w.w * a * cos(phi) / k) * w.xy;
         d.y += a * sin(phi);
 #elif WW_WAVE_MODEL == WW_MODEL_SINES
         d.y += a * sin(phi);
@@ -189,17 +192,23 @@ void ww_partials(vec2 p, ww_footprint fp, out vec3 dpdx, out vec3 dpdz, out floa
     removed = 0.0;
     vec2 disp = vec2(0.0); // horizontal displacement, for where the ripples are read
 #if WW_WAVE_MODEL != WW_MODEL_FLAT
+    float seen = 0.0; // mean square slope of the components so far
     for (int i = 0; i < u_nwaves; i++) {
         vec4 w = u_wave[i];
-        vec4 w3 = u_wave3[i];
-        float k = w3.x;
+        float k = length(w.xy), L = 2.0 * WW_PI / k;
         // the smallest footprint of any direction is pix: faded out there, faded everywhere
-        if (ww_faded_out(w3.y, fp.inv_pix)) {
-            removed += w3.w; // this one and all later ones
+        if (ww_faded_out(L, fp.inv_pix)) {
+            removed += max(u_slope2_total - seen, 0.0); // this one and all later ones
             break;
         }
-        vec2 dir = w.xy * (w3.y * (0.5 / WW_PI)); // kD / k
-        float f = ww_wave_fade_along(w3.y, dir, fp);
+#if WW_WAVE_MODEL == WW_MODEL_STEEP
+        float slope2 = u_wave2[i].w * (w.z * k) * (w.z * k);
+#else
+        float slope2 = 0.5 * (w.z * k) * (w.z * k);
+#endif
+        seen += slope2;
+        vec2 dir = w.xy / k;
+        float f = ww_wave_fade_along(L, dir, fp);
         float a = w.z * f;
         float phi = ww_wave_phi(i, p);
 #if WW_WAVE_MODEL == WW_MODEL_GERSTNER
@@ -222,7 +231,7 @@ void ww_partials(vec2 p, ww_footprint fp, out vec3 dpdx, out vec3 dpdz, out floa
         dpdx.y += akc * dir.x;
         dpdz.y += akc * dir.y;
 #endif
-        removed += (1.0 - f * f) * w3.z;
+        removed += (1.0 - f * f) * slope2;
     }
 #endif
 #if WW_RIPPLES

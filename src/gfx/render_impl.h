@@ -119,10 +119,11 @@ void ww_sky_free(ww_sky *s, const ww_gl *gl);
 #define WW_UBO_RIPPLES 1
 
 typedef struct ww_wave_block {
-    int32_t n, pad_[3];
+    int32_t n;
+    float slope2_total;           /* sum of the mean square slopes (A k)^2 c */
+    int32_t pad_[2];
     float wave[WW_MAX_WAVES][4];  /* (k Dx, k Dz, A, Q) */
-    float wave2[WW_MAX_WAVES][4]; /* (phase at the centre, exponent e, mean, 0) */
-    float wave3[WW_MAX_WAVES][4]; /* (k, 2 pi / k, mean square slope, the same summed over i..) */
+    float wave2[WW_MAX_WAVES][4]; /* (phase at the centre, exponent e, mean, slope factor c) */
 } ww_wave_block;
 
 typedef struct ww_ripple_block {

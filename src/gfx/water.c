@@ -31,9 +31,9 @@ struct ww_water {
 };
 
 /* mean over a period of (e u^(e - 1) cos(phi))^2, u = (sin(phi) + 1) / 2: the mean square slope
- * of a steep sine 2 A (u^e - mean) per unit (A k)^2. The rectangle rule over a whole period
- * converges spectrally for a smooth periodic integrand (exact for integer e, a trigonometric
- * polynomial of degree 2e - 1 < 256). */
+ * of a steep sine 2 A (u^e - mean) per unit (A k)^2 (1/2 for a sine, e = 1). The rectangle rule
+ * over a whole period converges spectrally for a smooth periodic integrand (exact for integer e,
+ * a trigonometric polynomial of degree 2e - 1 < 256). */
 static double steep_slope_factor(double e) {
     const int n = 256;
     double sum = 0.0;
@@ -59,30 +59,24 @@ void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w) {
         w->order[j] = v;
     }
     int gerstner = sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM;
-    double slope2[WW_MAX_WAVES];
+    int steep = sc->wave_model == WW_WAVES_STEEP_SINES;
+    double total = 0.0;
     for (int i = 0; i < n; i++) {
         const ww_wave *wv = &sc->waves[w->order[i]];
         double q = gerstner ? wv->steepness : 0.0; /* sines move no water sideways */
+        double c = steep ? steep_slope_factor(wv->exponent) : 0.5;
         b->wave[i][0] = (float)(wv->k * wv->dir[0]);
         b->wave[i][1] = (float)(wv->k * wv->dir[1]);
         b->wave[i][2] = (float)wv->amplitude;
         b->wave[i][3] = (float)q;
         b->wave2[i][1] = (float)wv->exponent;
         b->wave2[i][2] = (float)wv->mean;
-        double ak = wv->amplitude * wv->k;
-        slope2[i] = sc->wave_model == WW_WAVES_STEEP_SINES ? ak * ak * steep_slope_factor(wv->exponent)
-                                                          : 0.5 * ak * ak;
-        b->wave3[i][0] = (float)wv->k;
-        b->wave3[i][1] = (float)(WW_TAU / wv->k);
-        b->wave3[i][2] = (float)slope2[i];
+        b->wave2[i][3] = (float)c;
+        total += c * (wv->amplitude * wv->k) * (wv->amplitude * wv->k);
         w->sideways += q * wv->amplitude;
     }
-    double tail = 0.0;
-    for (int i = n - 1; i >= 0; i--) {
-        tail += slope2[i];
-        b->wave3[i][3] = (float)tail;
-    }
     b->n = n;
+    b->slope2_total = (float)total;
 }
 
 void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double centre[2],
