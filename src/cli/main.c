@@ -15,7 +15,11 @@ static const char usage[] =
     "                      [--backend auto|egl|osmesa] [--set KEY=VALUE]...\n"
     "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--hash] [--set KEY=VALUE]...\n"
     "  plan     SCENE.yaml                systems and render passes the scene needs\n"
+    "  probe    SCENE.yaml --at X,Z [--from T0] [--to T1] [--every DT]\n"
+    "                                    the exact water surface over a point, CSV\n"
+    "  waves    SCENE.yaml --stats       wave statistics (Hs, periods, slopes, fold margin), JSON\n"
     "  bench    [render|sim] [--frames N] [--json]   speed and memory figures\n"
+    "  bench    waves [--json] [-o DIR]  the wave field's speed against its error, and a figure\n"
     "  backends [--renderer]             which GL backends open here, on what\n"
     "  --help | --version\n"
     "\n"
@@ -32,6 +36,8 @@ static const command commands[] = {
     {"plan", ww_cmd_plan},
     {"bench", ww_cmd_bench},
     {"backends", ww_cmd_backends},
+    {"probe", ww_cmd_probe},
+    {"waves", ww_cmd_waves},
 };
 
 int main(int argc, char **argv) {
