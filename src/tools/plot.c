@@ -156,21 +156,27 @@ static void pad_range(double *a, double *b, int log_axis) {
 }
 
 /* tick values (not axis units) inside [a, b] of an axis */
+static int linear_ticks(double a, double b, double *out) {
+    int n = 0;
+    double step = nice_step((b - a) / TARGET_TICKS);
+    for (double v = ceil(a / step - 1e-9) * step; v <= b + 1e-9 * step && n < WW_PLOT_MAX_TICKS;
+         v += step)
+        out[n++] = fabs(v) < 1e-12 * step ? 0.0 : v;
+    return n;
+}
+
 static int ticks(double a, double b, int log_axis, double *out) {
     int n = 0;
-    if (!log_axis) {
-        double step = nice_step((b - a) / TARGET_TICKS);
-        for (double v = ceil(a / step - 1e-9) * step; v <= b + 1e-9 * step && n < WW_PLOT_MAX_TICKS;
-             v += step)
-            out[n++] = fabs(v) < 1e-12 * step ? 0.0 : v;
-        return n;
-    }
-    /* powers of ten, with 2 and 5 between them over a short range */
-    static const double all[] = {1.0, 2.0, 5.0};
-    int nm = b - a <= 2.5 ? 3 : 1;
+    if (!log_axis) return linear_ticks(a, b, out);
+    /* less than a factor of 3: evenly spaced values read better than powers */
+    if (b - a < 0.5) return linear_ticks(pow(10.0, a), pow(10.0, b), out);
+    /* powers of ten; 2 and 5 between them over a few decades, every digit within one */
+    static const double few[] = {1.0, 2.0, 5.0}, all[] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+    const double *man = b - a <= 1.0 ? all : few;
+    int nm = b - a <= 1.0 ? 9 : b - a <= 2.5 ? 3 : 1;
     for (double e = floor(a); e <= ceil(b); e += 1.0)
         for (int m = 0; m < nm && n < WW_PLOT_MAX_TICKS; m++) {
-            double u = e + log10(all[m]);
+            double u = e + log10(man[m]);
             if (u >= a && u <= b) out[n++] = pow(10.0, u);
         }
     return n;
