@@ -1,7 +1,7 @@
 #version 330 core
-// water.frag.glsl - per-pixel analytic Gerstner normal (waves filtered by the pixel footprint)
-// and water shading: Schlick Fresnel between the lit deep-water colour and the reflected sky,
-// Blinn-Phong sun glitter, exp2 fog.
+// water.frag.glsl - per-pixel analytic normal of the wave field and ripples (gerstner.glsl:
+// ww_partials, components filtered by the pixel footprint) and water shading: Schlick Fresnel
+// between the lit deep-water colour and the reflected sky, Blinn-Phong sun glitter, exp2 fog.
 
 uniform vec3 u_water_color; // deep-water scattering colour, linear RGB
 uniform vec3 u_ambient;     // sky ambient, linear RGB
@@ -33,25 +33,14 @@ void main() {
     float stretch = 1.0 / max(abs(v.y), 0.01);
     float pix = dist * u_pixel_angle;
 
-    // surface partials dP/dx, dP/dz at the rest point (waves.h). The geometry fades waves by the
-    // mesh spacing; the normals fade each wave by the footprint along its direction instead, so
-    // they keep close-up detail the mesh cannot carry and drop what a pixel cannot show. The
-    // slope variance of what the fades removed widens the sun highlight instead of vanishing.
-    vec3 dpdx = vec3(1.0, 0.0, 0.0), dpdz = vec3(0.0, 0.0, 1.0);
-    float removed = 0.0;
-    for (int i = 0; i < u_nwaves; i++) {
-        vec4 w = u_wave[i];
-        float k = length(w.xy);
-        vec2 d = w.xy / k;
-        float f = ww_wave_fade(k, pix * length(vec2(dot(d, along) * stretch, dot(d, across))));
-        float a = w.z * f;
-        float phi = ww_wave_phi(i, v_local);
-        float qaks = w.w * a * k * sin(phi), akc = a * k * cos(phi);
-        dpdx += vec3(-qaks * d.x * d.x, akc * d.x, -qaks * d.x * d.y);
-        dpdz += vec3(-qaks * d.x * d.y, akc * d.y, -qaks * d.y * d.y);
-        float slope = w.z * k;
-        removed += (1.0 - f * f) * 0.5 * slope * slope;
-    }
+    // surface partials dP/dx, dP/dz at the rest point (gerstner.glsl: ww_partials). The geometry
+    // fades waves by the mesh spacing; the normals fade each wave by the footprint along its
+    // direction instead, so they keep close-up detail the mesh cannot carry and drop what a
+    // pixel cannot show. The slope variance of what the fades removed widens the sun highlight
+    // instead of vanishing.
+    vec3 dpdx, dpdz;
+    float removed;
+    ww_partials(v_local, ww_footprint(along, across, stretch, pix), dpdx, dpdz, removed);
     vec3 n = normalize(cross(dpdz, dpdx));
 
     vec3 l = u_sun_dir;

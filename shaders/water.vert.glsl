@@ -1,7 +1,8 @@
 #version 330 core
-// water.vert.glsl - displaces the camera-centred polar mesh with the Gerstner sum (waves.h):
-//   X = x + sum Q A D cos(phi),  Y = level + sum A sin(phi),  phi = phase_c + kD . local
-// Positions are camera-relative: the view matrix holds the camera's rotation only.
+// water.vert.glsl - displaces the camera-centred polar mesh with the wave field of the scene's
+// family and its ripples (gerstner.glsl: ww_displace, the function the GPU probe also uses),
+// each component faded by the local mesh spacing. Positions are camera-relative: the view
+// matrix holds the camera's rotation only.
 
 layout(location = 0) in vec2 a_local; // rest offset from the snapped mesh centre (x, z), m
 
@@ -12,16 +13,7 @@ out vec2 v_local; // rest offset, for the per-pixel normal
 out vec3 v_pos;   // displaced surface point relative to the camera, m
 
 void main() {
-    float s = ww_grid_spacing(a_local);
-    vec3 p = vec3(a_local.x, 0.0, a_local.y);
-    for (int i = 0; i < u_nwaves; i++) {
-        vec4 w = u_wave[i];
-        float k = length(w.xy);
-        float a = w.z * ww_wave_fade(k, s);
-        float phi = ww_wave_phi(i, a_local);
-        p.xz += (w.w * a * cos(phi) / k) * w.xy;
-        p.y += a * sin(phi);
-    }
+    vec3 p = vec3(a_local.x, 0.0, a_local.y) + ww_displace(a_local, ww_grid_spacing(a_local));
     v_local = a_local;
     v_pos = u_origin + p;
     gl_Position = u_view_proj * vec4(v_pos, 1.0);

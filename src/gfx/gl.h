@@ -59,6 +59,7 @@
     X(PFNGLUSEPROGRAMPROC, UseProgram)                                                           \
     X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                                           \
     X(PFNGLUNIFORM1IPROC, Uniform1i)                                                             \
+    X(PFNGLUNIFORM2IPROC, Uniform2i)                                                             \
     X(PFNGLUNIFORM1FPROC, Uniform1f)                                                             \
     X(PFNGLUNIFORM2FPROC, Uniform2f)                                                             \
     X(PFNGLUNIFORM3FPROC, Uniform3f)                                                             \
@@ -78,7 +79,12 @@
     X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray)                                 \
     X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                                         \
     X(PFNGLDRAWARRAYSPROC, DrawArrays)                                                           \
-    X(PFNGLDRAWELEMENTSPROC, DrawElements)
+    X(PFNGLDRAWELEMENTSPROC, DrawElements)                                                       \
+    X(PFNGLBUFFERSUBDATAPROC, BufferSubData)                                                     \
+    X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                                   \
+    X(PFNGLGETUNIFORMBLOCKINDEXPROC, GetUniformBlockIndex)                                       \
+    X(PFNGLUNIFORMBLOCKBINDINGPROC, UniformBlockBinding)                                         \
+    X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, GetActiveUniformBlockiv)
 
 typedef struct ww_gl {
 #define WW_GL_DECL(type, name) type name;

@@ -1,6 +1,7 @@
 /* program.c - builds GLSL programs from shader files: each stage is its file's #version line,
- * the shared defines, the include files (common.glsl, ...) and then the rest of the file, with
- * #line directives so compiler messages point into the right file. Errors name the file.
+ * the shared defines (array limits, then the caller's, e.g. the wave model), the include files
+ * (common.glsl, ...) and then the rest of the file, with #line directives so compiler messages
+ * point into the right file. Errors name the file.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -25,8 +26,8 @@ static void source_key(const char *const *includes, char *buf, size_t size) {
 }
 
 /* the stage's text with the prelude spliced in after its first line (#version) */
-static ww_result assemble(const char *name, const char *const *includes, char **out,
-                          ww_error *err) {
+static ww_result assemble(const char *name, const char *const *includes, const char *defines,
+                          char **out, ww_error *err) {
     char *main_src = NULL, *inc_src[WW_MAX_INCLUDES] = {0};
     int ninc = 0;
     ww_result rc = ww_shader_source(name, &main_src, err);
@@ -42,14 +43,17 @@ static ww_result assemble(const char *name, const char *const *includes, char **
             rc = ww_error_set(err, WW_E_GL, name, 1, 1, "a shader must start with a #version line");
         } else {
             size_t head = (size_t)(nl + 1 - main_src);
-            size_t size = strlen(main_src) + 256;
+            size_t size = strlen(main_src) + 256 + (defines ? strlen(defines) : 0);
             for (int i = 0; i < ninc; i++) size += strlen(inc_src[i]) + 32;
             text = malloc(size);
             if (!text) rc = ww_error_set(err, WW_E_NOMEM, name, 0, 0, "out of memory");
             if (text) {
                 /* #line L S: the next line is line L of source string S (0 is the file itself) */
-                size_t used = (size_t)snprintf(text, size, "%.*s#define WW_MAX_WAVES %d\n",
-                                               (int)head, main_src, WW_MAX_WAVES);
+                size_t used = (size_t)snprintf(text, size,
+                                               "%.*s#define WW_MAX_WAVES %d\n"
+                                               "#define WW_MAX_RIPPLES %d\n%s",
+                                               (int)head, main_src, WW_MAX_WAVES, WW_MAX_RIPPLES,
+                                               defines ? defines : "");
                 for (int i = 0; i < ninc; i++)
                     used += (size_t)snprintf(text + used, size - used, "#line 1 %d\n%s\n", i + 1,
                                              inc_src[i]);
@@ -64,9 +68,10 @@ static ww_result assemble(const char *name, const char *const *includes, char **
 }
 
 static ww_result compile(const ww_gl *gl, GLenum type, const char *name,
-                         const char *const *includes, GLuint *out, ww_error *err) {
+                         const char *const *includes, const char *defines, GLuint *out,
+                         ww_error *err) {
     char *text = NULL;
-    ww_result rc = assemble(name, includes, &text, err);
+    ww_result rc = assemble(name, includes, defines, &text, err);
     if (rc != WW_OK) return rc;
 
     GLuint sh = gl->CreateShader(type);
@@ -87,12 +92,13 @@ static ww_result compile(const ww_gl *gl, GLenum type, const char *name,
     return WW_OK;
 }
 
-ww_result ww_gfx_program(const ww_gl *gl, const char *vs, const char *fs,
-                         const char *const *includes, GLuint *out, ww_error *err) {
+ww_result ww_gfx_program_defs(const ww_gl *gl, const char *vs, const char *fs,
+                              const char *const *includes, const char *defines, GLuint *out,
+                              ww_error *err) {
     GLuint v = 0, f = 0;
     *out = 0;
-    ww_result rc = compile(gl, GL_VERTEX_SHADER, vs, includes, &v, err);
-    if (rc == WW_OK) rc = compile(gl, GL_FRAGMENT_SHADER, fs, includes, &f, err);
+    ww_result rc = compile(gl, GL_VERTEX_SHADER, vs, includes, defines, &v, err);
+    if (rc == WW_OK) rc = compile(gl, GL_FRAGMENT_SHADER, fs, includes, defines, &f, err);
     if (rc != WW_OK) {
         if (v) gl->DeleteShader(v);
         return rc;
@@ -116,6 +122,11 @@ ww_result ww_gfx_program(const ww_gl *gl, const char *vs, const char *fs,
     }
     *out = p;
     return WW_OK;
+}
+
+ww_result ww_gfx_program(const ww_gl *gl, const char *vs, const char *fs,
+                         const char *const *includes, GLuint *out, ww_error *err) {
+    return ww_gfx_program_defs(gl, vs, fs, includes, NULL, out, err);
 }
 
 GLint ww_gfx_uniform(const ww_gl *gl, GLuint prog, const char *name) {

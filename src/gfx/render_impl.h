@@ -12,6 +12,9 @@
 #ifndef WW_RENDER_IMPL_H
 #define WW_RENDER_IMPL_H
 
+#include <stddef.h>
+#include <stdint.h>
+
 #include <cglm/cglm.h>
 
 #include "gfx/renderer.h"
@@ -81,6 +84,10 @@ GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt);
  * order after #version; may be NULL); WW_E_GL names the file and carries the info log */
 ww_result ww_gfx_program(const ww_gl *gl, const char *vs, const char *fs,
                          const char *const *includes, GLuint *out, ww_error *err);
+/* the same with the caller's #define lines (each ending in a newline) after the shared ones */
+ww_result ww_gfx_program_defs(const ww_gl *gl, const char *vs, const char *fs,
+                              const char *const *includes, const char *defines, GLuint *out,
+                              ww_error *err);
 GLint ww_gfx_uniform(const ww_gl *gl, GLuint prog, const char *name);
 
 /* sky.c: the uniforms of common.glsl (sky gradient and sun), for any program that includes it */
@@ -96,10 +103,73 @@ ww_result ww_sky_new(const ww_gl *gl, ww_sky **out, ww_error *err);
 void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f);
 void ww_sky_free(ww_sky *s, const ww_gl *gl);
 
-/* water.c: the camera-centred polar Gerstner mesh, depth tested */
+/* water.c: the wave field as shaders/gerstner.glsl takes it, in two std140 uniform blocks (the
+ * layouts below mirror WwWaves and WwRipples; creating a program checks the driver agrees).
+ * Shared by the water pass and the probe (water_probe.c):
+ *
+ *   ww_water_waves ww; ww_water_waves_init(sc, &ww);          // once per scene: order, columns
+ *   ww_water_program(gl, sc, vs, fs, fade, &prog, &err);       // the scene's family as defines
+ *   ww_water_ubos u; ww_water_ubos_new(gl, sc, &ww, &u, &err);
+ *   per frame: ww_water_waves_phases(sc, st, centre, &ww);      // phases at the centre, double
+ *              ww_water_pack_ripples(sc, st, centre, &rb);
+ *              ww_water_ubos_upload(gl, &u, &ww, &rb); ww_water_ubos_bind(gl, &u);
+ *   ww_water_ubos_free(gl, &u);
+ */
+#define WW_UBO_WAVES 0   /* uniform buffer binding points */
+#define WW_UBO_RIPPLES 1
+
+typedef struct ww_wave_block {
+    int32_t n, pad_[3];
+    float wave[WW_MAX_WAVES][4];  /* (k Dx, k Dz, A, Q) */
+    float wave2[WW_MAX_WAVES][4]; /* (phase at the centre, exponent e, mean, 0) */
+    float wave3[WW_MAX_WAVES][4]; /* (k, mean square slope, the same summed over i.., 0) */
+} ww_wave_block;
+
+typedef struct ww_ripple_block {
+    int32_t n, pad_[3];
+    float param[4];                  /* (alpha, beta, kr, v) */
+    float shape[4];                  /* (lambda, r0, 0, 0) */
+    float ripple[WW_MAX_RIPPLES][4]; /* (x - centre.x, z - centre.z, age, A0) */
+} ww_ripple_block;
+
+/* the scene's components in upload order, sorted by wavenumber ascending so that the shaders
+ * can stop at the first one faded out */
+typedef struct ww_water_waves {
+    int order[WW_MAX_WAVES]; /* scene index of upload slot i */
+    double sideways;         /* sum Q A of what is drawn: the largest sideways displacement, m */
+    ww_wave_block block;     /* every column but the phases is filled once */
+} ww_water_waves;
+
+typedef struct ww_water_ubos {
+    GLuint waves, ripples; /* ripples is 0 when the scene has none */
+} ww_water_ubos;
+
+void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w);
+/* each component's phase at the centre (world x, z): wrap(k D.centre + phase at the origin),
+ * in double */
+void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double centre[2],
+                           ww_water_waves *w);
+/* the pool's live ripples relative to the centre, ages t - t0 in double; returns how many */
+int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double centre[2],
+                          ww_ripple_block *b);
+/* vs + fs with common.glsl and gerstner.glsl, built for the scene's wave family and ripples;
+ * fade 0 turns the distance fade off. Binds the blocks to WW_UBO_WAVES / WW_UBO_RIPPLES and
+ * checks their sizes against the driver's layout and GL_MAX_UNIFORM_BLOCK_SIZE. */
+ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, const char *fs,
+                           int fade, GLuint *prog, ww_error *err);
+ww_result ww_water_ubos_new(const ww_gl *gl, const ww_scene *sc, const ww_water_waves *w,
+                            ww_water_ubos *u, ww_error *err);
+/* the whole wave block when full is set, else only its header and phases; rb may be NULL */
+void ww_water_ubos_upload(const ww_gl *gl, const ww_water_ubos *u, const ww_water_waves *w,
+                          const ww_ripple_block *rb, int full);
+void ww_water_ubos_bind(const ww_gl *gl, const ww_water_ubos *u);
+void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u);
+
+/* water.c: the camera-centred polar mesh of the wave field, depth tested */
 typedef struct ww_water ww_water;
 ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err);
-void ww_water_draw(const ww_water *w, const ww_gl *gl, const ww_frame *f);
+/* uploads the frame's phases and ripples, then draws */
+void ww_water_draw(ww_water *w, const ww_gl *gl, const ww_frame *f);
 void ww_water_free(ww_water *w, const ww_gl *gl);
 
 #endif

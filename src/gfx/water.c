@@ -1,22 +1,19 @@
 /* water.c - the water surface: a static polar mesh built once (rings whose spacing grows
- * geometrically from 0.5 m to the horizon), re-centred each frame on the camera snapped to a
- * 0.5 m grid and displaced in the vertex shader by the Gerstner waves of src/sim/waves.h.
- * Wave phases are taken at the mesh centre here in double, so the shaders stay exact in float at
- * t = 1e6 s and 1e5 m from the origin.
+ * geometrically from 0.5 m to the horizon, scene/plan.h), re-centred each frame on the camera
+ * snapped to a 0.5 m grid and displaced in the vertex shader by the scene's wave family and its
+ * ripples (shaders/gerstner.glsl, the formulas of src/sim/waves.h and src/sim/ripples.c).
+ * Also the packing of the wave field into its uniform blocks, which the GPU probe shares: wave
+ * phases and ripple ages are taken at the centre here in double, so the shaders stay exact in
+ * float at t = 1e6 s and 1e5 m from the origin.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/mathx.h"
 #include "gfx/render_impl.h"
-
-#define WATER_SEGMENTS 256 /* vertices around each ring */
-#define WATER_RINGS 160    /* rings around the centre vertex */
-#define WATER_S0 0.5       /* distance of the first ring from the centre, m */
-#define WATER_REACH 0.9    /* outer ring radius as a fraction of the far clip */
-#define WATER_SNAP 0.5     /* the mesh centre moves on this grid, m */
-#define WATER_INNER_R 10.0 /* rings inside this radius are always drawn whole, m */
+#include "sim/ripples.h"
 
 struct ww_water {
     GLuint prog, vao, vbo, ibo;
@@ -26,21 +23,204 @@ struct ww_water {
     int cull;           /* draw only the segments in view (WW_WATER_CULL=0 turns it off) */
     float grid[3]; /* (s0, q - 1, angular step) for the shaders' spacing estimate */
     ww_sky_locs sky;
-    GLint view_proj, origin, nwaves, wave, wave_phase, ugrid;
+    GLint view_proj, origin, ugrid;
     GLint water_color, ambient, fog_color, fog_density, pixel_angle;
+    ww_water_ubos ubos;
+    ww_water_waves waves;    /* the components in upload order; phases set per frame */
+    ww_ripple_block ripples; /* filled per frame when the scene has ripples */
 };
 
-/* ring growth q such that rings s0, s0 q, s0 q^2, ... apart end at radius reach after n rings:
- * s0 (q^n - 1) / (q - 1) = reach; 1 when evenly spaced rings already reach */
-static double ring_growth(double s0, int n, double reach) {
-    if (reach <= s0 * n) return 1.0;
-    double lo = 1.0 + 1e-12, hi = 2.0;
-    for (int it = 0; it < 200; it++) {
-        double q = 0.5 * (lo + hi);
-        double r = s0 * (pow(q, n) - 1.0) / (q - 1.0);
-        if (r < reach) lo = q; else hi = q;
+/* mean over a period of (e u^(e - 1) cos(phi))^2, u = (sin(phi) + 1) / 2: the mean square slope
+ * of a steep sine 2 A (u^e - mean) per unit (A k)^2. The rectangle rule over a whole period
+ * converges spectrally for a smooth periodic integrand (exact for integer e, a trigonometric
+ * polynomial of degree 2e - 1 < 256). */
+static double steep_slope_factor(double e) {
+    const int n = 256;
+    double sum = 0.0;
+    for (int j = 0; j < n; j++) {
+        double phi = WW_TAU * j / n, u = 0.5 * (sin(phi) + 1.0);
+        double d = e * (e > 1.0 ? pow(u, e - 1.0) : 1.0) * cos(phi);
+        sum += d * d;
     }
-    return 0.5 * (lo + hi);
+    return sum / n;
+}
+
+void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w) {
+    memset(w, 0, sizeof *w);
+    ww_wave_block *b = &w->block;
+    if (sc->wave_model == WW_WAVES_FLAT) return;
+    int n = 0;
+    for (int i = 0; i < sc->nwaves && i < WW_MAX_WAVES; i++)
+        if (sc->waves[i].k > 0.0) w->order[n++] = i; /* no wave to draw, no direction to divide by */
+    /* insertion sort by wavenumber ascending, stable so equal k keep the scene's order */
+    for (int i = 1; i < n; i++) {
+        int j = i, v = w->order[i];
+        for (; j > 0 && sc->waves[w->order[j - 1]].k > sc->waves[v].k; j--) w->order[j] = w->order[j - 1];
+        w->order[j] = v;
+    }
+    int gerstner = sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM;
+    double slope2[WW_MAX_WAVES];
+    for (int i = 0; i < n; i++) {
+        const ww_wave *wv = &sc->waves[w->order[i]];
+        double q = gerstner ? wv->steepness : 0.0; /* sines move no water sideways */
+        b->wave[i][0] = (float)(wv->k * wv->dir[0]);
+        b->wave[i][1] = (float)(wv->k * wv->dir[1]);
+        b->wave[i][2] = (float)wv->amplitude;
+        b->wave[i][3] = (float)q;
+        b->wave2[i][1] = (float)wv->exponent;
+        b->wave2[i][2] = (float)wv->mean;
+        double ak = wv->amplitude * wv->k;
+        slope2[i] = sc->wave_model == WW_WAVES_STEEP_SINES ? ak * ak * steep_slope_factor(wv->exponent)
+                                                          : 0.5 * ak * ak;
+        b->wave3[i][0] = (float)wv->k;
+        b->wave3[i][1] = (float)slope2[i];
+        w->sideways += q * wv->amplitude;
+    }
+    double tail = 0.0;
+    for (int i = n - 1; i >= 0; i--) {
+        tail += slope2[i];
+        b->wave3[i][2] = (float)tail;
+    }
+    b->n = n;
+}
+
+void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double centre[2],
+                           ww_water_waves *w) {
+    for (int i = 0; i < w->block.n; i++) {
+        int s = w->order[i];
+        const ww_wave *wv = &sc->waves[s];
+        double kx = wv->k * wv->dir[0], kz = wv->k * wv->dir[1];
+        w->block.wave2[i][0] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] + st->wave_phase[s]);
+    }
+}
+
+int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double centre[2],
+                          ww_ripple_block *b) {
+    const ww_ripple_desc *d = &sc->ripples;
+    int n = 0;
+    b->param[0] = (float)d->radial_decay;
+    b->param[1] = (float)d->time_decay;
+    b->param[2] = (float)d->wavenumber;
+    b->param[3] = (float)d->speed;
+    b->shape[0] = d->wavenumber > 0.0 ? (float)(WW_TAU / d->wavenumber) : 0.0f;
+    b->shape[1] = d->wavenumber > 0.0 ? (float)(1.0 / d->wavenumber) : 0.0f;
+    if (sc->ripples_on && st->ripple && d->wavenumber > 0.0) {
+        for (int i = 0; i < d->max && i < WW_MAX_RIPPLES; i++) {
+            const double *e = st->ripple + i * WW_RIPPLE_STRIDE;
+            double age = st->t - e[2];
+            if (e[3] == 0.0 || age < 0.0) continue; /* free, or not yet started (as ripples.c) */
+            b->ripple[n][0] = (float)(e[0] - centre[0]);
+            b->ripple[n][1] = (float)(e[1] - centre[1]);
+            b->ripple[n][2] = (float)age;
+            b->ripple[n][3] = (float)e[3];
+            n++;
+        }
+    }
+    b->n = n;
+    return n;
+}
+
+/* the shader's family: the spectrum model draws Gerstner components */
+static int shader_model(ww_wave_model m) {
+    switch (m) {
+    case WW_WAVES_FLAT: return 0;
+    case WW_WAVES_GERSTNER:
+    case WW_WAVES_SPECTRUM: return 1;
+    case WW_WAVES_SINES: return 2;
+    case WW_WAVES_STEEP_SINES: return 3;
+    }
+    return 0;
+}
+
+/* bind block `name` of prog to `binding`, checking that the driver lays it out as our struct */
+static ww_result bind_block(const ww_gl *gl, GLuint prog, const char *name, GLuint binding,
+                            size_t bytes, ww_error *err) {
+    GLuint idx = gl->GetUniformBlockIndex(prog, name);
+    if (idx == GL_INVALID_INDEX) return WW_OK; /* the program does not read it */
+    GLint size = 0, max = 0;
+    gl->GetActiveUniformBlockiv(prog, idx, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+    gl->GetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &max);
+    if ((size_t)size != bytes)
+        return ww_error_set(err, WW_E_GL, "gerstner.glsl", 0, 0,
+                            "uniform block %s is %d bytes here, %zu in render_impl.h (std140)",
+                            name, size, bytes);
+    if ((size_t)max < bytes)
+        return ww_error_set(err, WW_E_GL, "gerstner.glsl", 0, 0,
+                            "uniform block %s needs %zu bytes; GL_MAX_UNIFORM_BLOCK_SIZE is %d",
+                            name, bytes, max);
+    gl->UniformBlockBinding(prog, idx, binding);
+    return WW_OK;
+}
+
+ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, const char *fs,
+                           int fade, GLuint *prog, ww_error *err) {
+    static const char *const includes[] = {"common.glsl", "gerstner.glsl", NULL};
+    char defines[160];
+    snprintf(defines, sizeof defines, "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES %d\n#define WW_FADE %d\n",
+             shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0);
+    ww_result rc = ww_gfx_program_defs(gl, vs, fs, includes, defines, prog, err);
+    if (rc == WW_OK)
+        rc = bind_block(gl, *prog, "WwWaves", WW_UBO_WAVES, sizeof(ww_wave_block), err);
+    if (rc == WW_OK && sc->ripples_on)
+        rc = bind_block(gl, *prog, "WwRipples", WW_UBO_RIPPLES, sizeof(ww_ripple_block), err);
+    if (rc != WW_OK && *prog) {
+        gl->DeleteProgram(*prog);
+        *prog = 0;
+    }
+    return rc;
+}
+
+ww_result ww_water_ubos_new(const ww_gl *gl, const ww_scene *sc, const ww_water_waves *w,
+                            ww_water_ubos *u, ww_error *err) {
+    *u = (ww_water_ubos){0};
+    gl->GenBuffers(1, &u->waves);
+    gl->BindBuffer(GL_UNIFORM_BUFFER, u->waves);
+    gl->BufferData(GL_UNIFORM_BUFFER, sizeof w->block, &w->block, GL_DYNAMIC_DRAW);
+    if (sc->ripples_on) {
+        ww_ripple_block zero = {0};
+        gl->GenBuffers(1, &u->ripples);
+        gl->BindBuffer(GL_UNIFORM_BUFFER, u->ripples);
+        gl->BufferData(GL_UNIFORM_BUFFER, sizeof zero, &zero, GL_DYNAMIC_DRAW);
+    }
+    gl->BindBuffer(GL_UNIFORM_BUFFER, 0);
+    GLenum e = gl->GetError();
+    if (e != GL_NO_ERROR) {
+        ww_water_ubos_free(gl, u);
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "water: uniform buffers raised GL error 0x%04x",
+                            (unsigned)e);
+    }
+    return WW_OK;
+}
+
+void ww_water_ubos_upload(const ww_gl *gl, const ww_water_ubos *u, const ww_water_waves *w,
+                          const ww_ripple_block *rb, int full) {
+    const ww_wave_block *b = &w->block;
+    gl->BindBuffer(GL_UNIFORM_BUFFER, u->waves);
+    if (full) {
+        gl->BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof *b, b);
+    } else if (b->n > 0) {
+        /* only the phases change from frame to frame */
+        GLintptr at = (GLintptr)offsetof(ww_wave_block, wave2);
+        gl->BufferSubData(GL_UNIFORM_BUFFER, at, (GLsizeiptr)((size_t)b->n * sizeof b->wave2[0]), b->wave2);
+    }
+    if (rb && u->ripples) {
+        /* the header and the live entries */
+        gl->BindBuffer(GL_UNIFORM_BUFFER, u->ripples);
+        size_t bytes = offsetof(ww_ripple_block, ripple) + (size_t)rb->n * sizeof rb->ripple[0];
+        gl->BufferSubData(GL_UNIFORM_BUFFER, 0, (GLsizeiptr)bytes, rb);
+    }
+    gl->BindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+void ww_water_ubos_bind(const ww_gl *gl, const ww_water_ubos *u) {
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, u->waves);
+    if (u->ripples) gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_RIPPLES, u->ripples);
+}
+
+void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u) {
+    if (u->waves) gl->DeleteBuffers(1, &u->waves);
+    if (u->ripples) gl->DeleteBuffers(1, &u->ripples);
+    *u = (ww_water_ubos){0};
 }
 
 /* the two triangles between rings j and j + 1 in segment i */
@@ -52,15 +232,16 @@ static size_t quad(GLuint *idx, size_t k, int nseg, int j, int i) {
     return k;
 }
 
-/* centre vertex, then WATER_RINGS rings of WATER_SEGMENTS vertices; indexed triangles in two
- * blocks: the inner disc (a fan and the rings within WATER_INNER_R), then the outer rings one
- * angular segment after another, so that a wedge of segments is one contiguous range and the
- * draw can skip what lies outside the view (water_draw) */
-static ww_result build_mesh(ww_water *w, const ww_gl *gl, double reach, ww_error *err) {
-    const int nseg = WATER_SEGMENTS, nring = WATER_RINGS;
-    double q = ring_growth(WATER_S0, nring, reach);
-    double s0 = q == 1.0 ? reach / nring : WATER_S0;
-    double dtheta = WW_TAU / nseg;
+/* centre vertex, then WW_WATER_RINGS rings of WW_WATER_SEGMENTS vertices; indexed triangles in
+ * two blocks: the inner disc (a fan and the rings within WW_WATER_INNER_R), then the outer rings
+ * one angular segment after another, so that a wedge of segments is one contiguous range and the
+ * draw can skip what lies outside the view (water_draw). The layout is the plan's (scene/plan.h),
+ * which reports where the spacing fades each wave. */
+static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, ww_error *err) {
+    const int nseg = WW_WATER_SEGMENTS, nring = WW_WATER_RINGS;
+    ww_water_mesh m;
+    ww_water_mesh_layout(far_clip, &m);
+    double q = m.q, s0 = m.s0, dtheta = m.dtheta;
     w->grid[0] = (float)s0;
     w->grid[1] = (float)(q - 1.0);
     w->grid[2] = (float)dtheta;
@@ -82,7 +263,7 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double reach, ww_error
     for (int j = 0; j < nring; j++) {
         r += step;
         step *= q;
-        if (r <= WATER_INNER_R || j == 0) {
+        if (r <= WW_WATER_INNER_R || j == 0) {
             ninner = j + 1;
             w->inner_r = r;
         }
@@ -126,14 +307,15 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double reach, ww_error
 }
 
 ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err) {
-    static const char *const includes[] = {"common.glsl", "gerstner.glsl", NULL};
     ww_water *w = calloc(1, sizeof *w);
     if (!w) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory");
-    ww_result rc = ww_gfx_program(gl, "water.vert.glsl", "water.frag.glsl", includes, &w->prog,
-                                  err);
-    if (rc == WW_OK) rc = build_mesh(w, gl, WATER_REACH * sc->far_clip, err);
-    const char *cull = getenv("WW_WATER_CULL");
+    const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
     w->cull = !(cull && strcmp(cull, "0") == 0);
+    ww_water_waves_init(sc, &w->waves);
+    ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
+                                    !(fade && strcmp(fade, "0") == 0), &w->prog, err);
+    if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, err);
+    if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
     if (rc != WW_OK) {
         ww_water_free(w, gl);
         return rc;
@@ -141,9 +323,6 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     ww_sky_locs_init(gl, w->prog, &w->sky);
     w->view_proj = ww_gfx_uniform(gl, w->prog, "u_view_proj");
     w->origin = ww_gfx_uniform(gl, w->prog, "u_origin");
-    w->nwaves = ww_gfx_uniform(gl, w->prog, "u_nwaves");
-    w->wave = ww_gfx_uniform(gl, w->prog, "u_wave");
-    w->wave_phase = ww_gfx_uniform(gl, w->prog, "u_wave_phase");
     w->ugrid = ww_gfx_uniform(gl, w->prog, "u_grid");
     w->water_color = ww_gfx_uniform(gl, w->prog, "u_water_color");
     w->ambient = ww_gfx_uniform(gl, w->prog, "u_ambient");
@@ -154,47 +333,27 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     return WW_OK;
 }
 
-/* the waves as the shaders take them: (k Dx, k Dz, A, Q) and the phase at the mesh centre,
- * phase_c = wrap(k D.centre + phase at the origin), in double; returns how many */
-static int pack_waves(const ww_scene *sc, const ww_state *st, const double centre[2],
-                      float wave[WW_MAX_WAVES][4], float phase[WW_MAX_WAVES]) {
-    int n = 0;
-    if (sc->wave_model != WW_WAVES_GERSTNER) return 0;
-    for (int i = 0; i < sc->nwaves && i < WW_MAX_WAVES; i++) {
-        const ww_wave *wv = &sc->waves[i];
-        if (!(wv->k > 0.0)) continue; /* no wave to draw (and no direction to divide by) */
-        double kx = wv->k * wv->dir[0], kz = wv->k * wv->dir[1];
-        wave[n][0] = (float)kx;
-        wave[n][1] = (float)kz;
-        wave[n][2] = (float)wv->amplitude;
-        wave[n][3] = (float)wv->steepness;
-        phase[n] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] + st->wave_phase[i]);
-        n++;
-    }
-    return n;
-}
-
 static void draw_segments(const ww_water *w, const ww_gl *gl, int first, int count) {
     if (count <= 0) return;
     size_t offset = ((size_t)w->ninner + (size_t)first * (size_t)w->per_seg) * sizeof(GLuint);
     gl->DrawElements(GL_TRIANGLES, count * w->per_seg, GL_UNSIGNED_INT, (const void *)offset);
 }
 
-/* the wedge of outer segments the view can see: [first, first + count) modulo WATER_SEGMENTS.
+/* the wedge of outer segments the view can see: [first, first + count) modulo WW_WATER_SEGMENTS.
  * The frustum is the cone of its four corner rays; unless it holds the vertical (then every
  * azimuth is in view) its shadow on the water plane is a wedge bounded by the corners' azimuths.
  * The margin covers the mesh centre's snap offset and the waves' sideways displacement, both
  * seen from the inner disc's edge, the nearest outer vertex. */
-static void visible_segments(const ww_water *w, const ww_frame *f, const ww_scene *sc,
-                             const double centre[2], int *first, int *count) {
+static void visible_segments(const ww_water *w, const ww_frame *f, const double centre[2],
+                             int *first, int *count) {
     *first = 0;
-    *count = WATER_SEGMENTS;
+    *count = WW_WATER_SEGMENTS;
     if (!w->cull) return;
     double corner = atan(sqrt(f->tan_half[0] * f->tan_half[0] + f->tan_half[1] * f->tan_half[1]));
     double off = hypot(centre[0] - f->cam_pos[0], centre[1] - f->cam_pos[2]);
-    for (int i = 0; i < sc->nwaves; i++) off += sc->waves[i].steepness * sc->waves[i].amplitude;
+    off += w->waves.sideways;
     if (off >= w->inner_r) return;
-    double margin = asin(off / w->inner_r) + 2.0 * WW_TAU / WATER_SEGMENTS;
+    double margin = asin(off / w->inner_r) + 2.0 * WW_TAU / WW_WATER_SEGMENTS;
     double vert = acos(ww_m_clamp(fabs(f->fwd[1]), 0.0, 1.0)); /* angle to the nearest vertical */
     if (vert <= corner + margin) return;
 
@@ -208,24 +367,25 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const ww_scen
         if (da < lo) lo = da;
         if (da > hi) hi = da;
     }
-    double step = WW_TAU / WATER_SEGMENTS;
+    double step = WW_TAU / WW_WATER_SEGMENTS;
     double from = floor((a0 + lo - margin) / step), to = floor((a0 + hi + margin) / step);
     int n = (int)(to - from) + 1;
-    if (n >= WATER_SEGMENTS) return;
-    int s = (int)fmod(from, (double)WATER_SEGMENTS);
-    *first = s < 0 ? s + WATER_SEGMENTS : s;
+    if (n >= WW_WATER_SEGMENTS) return;
+    int s = (int)fmod(from, (double)WW_WATER_SEGMENTS);
+    *first = s < 0 ? s + WW_WATER_SEGMENTS : s;
     *count = n;
 }
 
-void ww_water_draw(const ww_water *w, const ww_gl *gl, const ww_frame *f) {
+void ww_water_draw(ww_water *w, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
     const ww_state *st = f->st;
 
     /* the mesh follows the camera in whole grid steps, so its vertices do not swim */
-    double centre[2] = {WATER_SNAP * floor(f->cam_pos[0] / WATER_SNAP + 0.5),
-                        WATER_SNAP * floor(f->cam_pos[2] / WATER_SNAP + 0.5)};
-    float wave[WW_MAX_WAVES][4], phase[WW_MAX_WAVES];
-    int n = pack_waves(sc, st, centre, wave, phase);
+    double centre[2] = {WW_WATER_SNAP * floor(f->cam_pos[0] / WW_WATER_SNAP + 0.5),
+                        WW_WATER_SNAP * floor(f->cam_pos[2] / WW_WATER_SNAP + 0.5)};
+    ww_water_waves_phases(sc, st, centre, &w->waves);
+    if (sc->ripples_on) ww_water_pack_ripples(sc, st, centre, &w->ripples);
+    ww_water_ubos_upload(gl, &w->ubos, &w->waves, sc->ripples_on ? &w->ripples : NULL, 0);
 
     /* fog colour: the scene's, or the sky at the horizon so the far water meets the sky */
     const double *fog = sc->fog_color[0] < 0.0 ? st->sky_horizon : sc->fog_color;
@@ -238,11 +398,7 @@ void ww_water_draw(const ww_water *w, const ww_gl *gl, const ww_frame *f) {
     gl->UniformMatrix4fv(w->view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
     gl->Uniform3f(w->origin, (float)(centre[0] - f->cam_pos[0]),
                   (float)(sc->water_level - f->cam_pos[1]), (float)(centre[1] - f->cam_pos[2]));
-    gl->Uniform1i(w->nwaves, n);
-    if (n > 0) {
-        gl->Uniform4fv(w->wave, n, &wave[0][0]);
-        gl->Uniform1fv(w->wave_phase, n, phase);
-    }
+    ww_water_ubos_bind(gl, &w->ubos);
     gl->Uniform3fv(w->ugrid, 1, w->grid);
     gl->Uniform3f(w->water_color, (float)sc->water_color[0], (float)sc->water_color[1],
                   (float)sc->water_color[2]);
@@ -254,9 +410,9 @@ void ww_water_draw(const ww_water *w, const ww_gl *gl, const ww_frame *f) {
     gl->BindVertexArray(w->vao);
     gl->DrawElements(GL_TRIANGLES, w->ninner, GL_UNSIGNED_INT, NULL);
     int first, count;
-    visible_segments(w, f, sc, centre, &first, &count);
-    draw_segments(w, gl, first, count < WATER_SEGMENTS - first ? count : WATER_SEGMENTS - first);
-    if (first + count > WATER_SEGMENTS) draw_segments(w, gl, 0, first + count - WATER_SEGMENTS);
+    visible_segments(w, f, centre, &first, &count);
+    draw_segments(w, gl, first, count < WW_WATER_SEGMENTS - first ? count : WW_WATER_SEGMENTS - first);
+    if (first + count > WW_WATER_SEGMENTS) draw_segments(w, gl, 0, first + count - WW_WATER_SEGMENTS);
     gl->BindVertexArray(0);
 }
 
@@ -266,5 +422,6 @@ void ww_water_free(ww_water *w, const ww_gl *gl) {
     if (w->vao) gl->DeleteVertexArrays(1, &w->vao);
     if (w->vbo) gl->DeleteBuffers(1, &w->vbo);
     if (w->ibo) gl->DeleteBuffers(1, &w->ibo);
+    ww_water_ubos_free(gl, &w->ubos);
     free(w);
 }

@@ -70,6 +70,7 @@ static const rule R_WAVELENGTH = CLOSED(0.001, 1e5, "m");
 static const rule R_AMPLITUDE = CLOSED(0, 100, "m");
 static const rule R_STEEPNESS = CLOSED(0, 1, "");
 static const rule R_EXPONENT = CLOSED(1, 64, "");
+static const rule R_WAVE_SPEED = CLOSED(0, 1e3, "m/s"); /* 0: deep-water dispersion */
 static const rule R_SPEED = OPEN_LO(0, 1e3, "m/s");
 static const rule R_RANDOM_COUNT = WHOLE(0, WW_MAX_WAVES, "");
 static const rule R_RANDOM_SPREAD = CLOSED(0, 360, "deg");
@@ -644,9 +645,10 @@ static ww_result compile_fog(ctx *c, const section *top) {
     return get_number(c, &above, "density", &R_FOG_DENSITY, OPTIONAL, &sc->fog_density);
 }
 
-/* keys a model gives no meaning: steepness for sines and steep sines (they do not move water
- * sideways), exponent for every model but steep sines; flat water reads nothing, so it accepts
- * both (a scene can switch to flat with one --set) */
+/* a steepness on sines or steep sines is an error: they do not move water sideways, and a Q
+ * that silently does nothing hides a wrong model. An exponent is read by steep sines only and
+ * checked but ignored by the others (it is the shape a scene keeps when its model is switched);
+ * flat water reads nothing and accepts both. */
 static ww_result check_model_keys(ctx *c, const section *s, ww_wave_model model) {
     char name[128];
     const ww_node *n = ww_node_find(s->map, "steepness");
@@ -655,11 +657,6 @@ static ww_result check_model_keys(ctx *c, const section *s, ww_wave_model model)
                     "%s: steepness has no meaning for %s (they do not move water sideways): "
                     "remove it, or use model: gerstner",
                     path_of(s, "steepness", name, sizeof name), WAVE_WORDS[model]);
-    n = ww_node_find(s->map, "exponent");
-    if (n && model != WW_WAVES_STEEP_SINES && model != WW_WAVES_FLAT)
-        return fail(c, WW_E_INCONSISTENT, n->key,
-                    "%s: exponent has no meaning for %s: only model steep_sines reads it",
-                    path_of(s, "exponent", name, sizeof name), WAVE_WORDS[model]);
     return WW_OK;
 }
 
@@ -690,7 +687,7 @@ static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave_model 
     TRY(get_number(c, &s, "steepness", &R_STEEPNESS, OPTIONAL, &w->steepness));
     TRY(get_number(c, &s, "exponent", &R_EXPONENT, OPTIONAL, &w->exponent));
     TRY(get_angle(c, &s, "phase", &R_ANGLE, OPTIONAL, &w->phase));
-    TRY(get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &speed));
+    TRY(get_number(c, &s, "speed", &R_WAVE_SPEED, OPTIONAL, &speed));
     w->steepness = model_steepness(model, w->steepness);
     w->exponent = model_exponent(model, w->exponent);
     ww_wave_derive(w, speed);

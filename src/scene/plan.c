@@ -4,6 +4,9 @@
  */
 #include "scene/plan.h"
 
+#include <math.h>
+#include <stdlib.h>
+
 static const char *const system_names[WW_SYS_COUNT] = {
     [WW_SYS_CLOCK] = "clock",
     [WW_SYS_CAMERA] = "camera",
@@ -44,6 +47,117 @@ static void add_target(ww_plan *p, const char *name, ww_format f, int w, int h) 
     d->targets[d->ntargets++] = (ww_target_desc){name, f, w, h};
 }
 
+static const char *model_name(ww_wave_model m) {
+    switch (m) {
+    case WW_WAVES_FLAT: return "flat";
+    case WW_WAVES_GERSTNER: return "gerstner";
+    case WW_WAVES_SINES: return "sines";
+    case WW_WAVES_STEEP_SINES: return "steep_sines";
+    case WW_WAVES_SPECTRUM: return "spectrum";
+    }
+    return "?";
+}
+
+/* ring growth q such that rings s0, s0 q, s0 q^2, ... apart end at radius reach after n rings:
+ * s0 (q^n - 1) / (q - 1) = reach (bisection); 1 when evenly spaced rings already reach */
+static double ring_growth(double s0, int n, double reach) {
+    if (reach <= s0 * n) return 1.0;
+    double lo = 1.0 + 1e-12, hi = 2.0;
+    for (int it = 0; it < 200; it++) {
+        double q = 0.5 * (lo + hi);
+        double r = s0 * (pow(q, n) - 1.0) / (q - 1.0);
+        if (r < reach) lo = q; else hi = q;
+    }
+    return 0.5 * (lo + hi);
+}
+
+void ww_water_mesh_layout(double far_clip, ww_water_mesh *m) {
+    m->reach = WW_WATER_REACH * far_clip;
+    m->q = ring_growth(WW_WATER_S0, WW_WATER_RINGS, m->reach);
+    m->s0 = m->q == 1.0 ? m->reach / WW_WATER_RINGS : WW_WATER_S0;
+    m->dtheta = 2.0 * 3.14159265358979323846 / WW_WATER_SEGMENTS;
+}
+
+double ww_water_mesh_spacing(const ww_water_mesh *m, double r) {
+    double ring = m->s0 + (m->q - 1.0) * r, around = r * m->dtheta;
+    return ring > around ? ring : around;
+}
+
+/* the smallest distance from the mesh centre where the spacing reaches s (both of its terms
+ * grow with r, so the max reaches s where the first of them does); INFINITY past the mesh */
+static double mesh_distance_for(const ww_water_mesh *m, double s) {
+    if (m->s0 >= s) return 0.0;
+    double r = s / m->dtheta;
+    if (m->q > 1.0) {
+        double ring = (s - m->s0) / (m->q - 1.0);
+        if (ring < r) r = ring;
+    }
+    return r <= m->reach ? r : INFINITY;
+}
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* the fade ladder of one consumer from each component's fade-out distance (sorted here, INFINITY
+ * for never within the mesh): how many are gone beyond which distance */
+static void fade_ladder(ww_plan_fade *f, double start, double *out, int n) {
+    qsort(out, (size_t)n, sizeof *out, cmp_double);
+    f->components = n;
+    f->start = start;
+    f->nsteps = 0;
+    for (int q = 0; q < WW_PLAN_FADE_STEPS && n > 0; q++) {
+        int c = n <= WW_PLAN_FADE_STEPS ? q + 1 : q == 0 ? 1 : (n * q + 3) / 4; /* 1, ceil(n q / 4) */
+        if (c > n || !isfinite(out[c - 1])) break;
+        if (f->nsteps > 0 && f->faded[f->nsteps - 1] == c) continue;
+        f->faded[f->nsteps] = c;
+        f->beyond[f->nsteps] = out[c - 1];
+        f->nsteps++;
+    }
+}
+
+/* which components each consumer of the wave field evaluates, and where the shaders fade them
+ * (the fade of shaders/gerstner.glsl): the vertex shader by the mesh spacing at the distance
+ * from the mesh centre, the fragment shader by the pixel footprint at the distance from the
+ * camera, d x pixel angle across the view (grazing views stretch it along the view, so there
+ * components fade sooner) */
+static void plan_water(const ww_scene *sc, int height, ww_plan_water *w) {
+    double vert[WW_MAX_WAVES], frag[WW_MAX_WAVES];
+    int n = 0;
+    w->model = sc->wave_model;
+    ww_water_mesh_layout(sc->far_clip, &w->mesh);
+    w->image_height = height > 0 ? height : 1;
+    w->pixel_angle = 2.0 * tan(0.5 * sc->fov) / w->image_height;
+    w->shortest = INFINITY;
+    w->longest = 0.0;
+    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++) {
+        double L = sc->waves[i].wavelength;
+        if (!(sc->waves[i].k > 0.0)) continue; /* as the shaders: no wave to draw */
+        if (L < w->shortest) w->shortest = L;
+        if (L > w->longest) w->longest = L;
+        vert[n] = mesh_distance_for(&w->mesh, L / WW_FADE_END_SAMPLES);
+        frag[n] = L / (WW_FADE_END_SAMPLES * w->pixel_angle);
+        if (frag[n] > w->mesh.reach) frag[n] = INFINITY;
+        n++;
+    }
+    w->components = n;
+    double s = w->shortest;
+    fade_ladder(&w->vertex, n ? mesh_distance_for(&w->mesh, s / WW_FADE_START_SAMPLES) : INFINITY,
+                vert, n);
+    double fs = n ? s / (WW_FADE_START_SAMPLES * w->pixel_angle) : INFINITY;
+    fade_ladder(&w->fragment, fs <= w->mesh.reach ? fs : INFINITY, frag, n);
+
+    w->ripple_pool = sc->ripples_on ? sc->ripples.max : 0;
+    if (w->ripple_pool > 0 && sc->ripples.wavenumber > 0.0) {
+        double L = 2.0 * 3.14159265358979323846 / sc->ripples.wavenumber;
+        w->ripple_wavelength = L;
+        w->ripple_vertex_out = mesh_distance_for(&w->mesh, L / WW_FADE_END_SAMPLES);
+        w->ripple_fragment_out = L / (WW_FADE_END_SAMPLES * w->pixel_angle);
+        if (w->ripple_fragment_out > w->mesh.reach) w->ripple_fragment_out = INFINITY;
+    }
+}
+
 void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     *p = (ww_plan){0};
     p->system_on[WW_SYS_CLOCK] = 1;
@@ -57,6 +171,69 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     add_pass(p, WW_PASS_TONEMAP, "tonemap",
              sc->tonemap == WW_TONEMAP_ACES ? "HDR -> sRGB8, ACES fit" : "HDR -> sRGB8, 1 - exp(-E c)");
     add_target(p, "ldr", WW_FMT_RGBA8, width, height);
+    plan_water(sc, height, &p->water);
+}
+
+/* a distance for people: 9.53, 27, 585 m */
+static void put_m(double d, FILE *to) {
+    if (d >= 100.0) fprintf(to, "%.0f m", d);
+    else fprintf(to, "%.3g m", d);
+}
+
+/* one consumer's lines: "5 components; fading starts beyond 12 m; faded out: 1 beyond 40 m, ..."
+ * and what the distances are measured by */
+static void print_fade(const char *who, const ww_plan_fade *f, const char *note, FILE *to) {
+    fprintf(to, "    %-16s %d components", who, f->components);
+    if (!isfinite(f->start)) {
+        fprintf(to, ", none faded within the mesh\n");
+        return;
+    }
+    if (f->start > 0.0) {
+        fputs("; fading starts beyond ", to);
+        put_m(f->start, to);
+    } else {
+        fputs("; fading starts at the centre", to);
+    }
+    for (int i = 0; i < f->nsteps; i++) {
+        fprintf(to, "%s %d beyond ", i ? "," : "; faded out:", f->faded[i]);
+        put_m(f->beyond[i], to);
+    }
+    fprintf(to, "\n    %-16s (%s)\n", "", note);
+}
+
+static void print_ripple_fade(const char *who, double d, FILE *to) {
+    fprintf(to, "    %-16s ", who);
+    if (isfinite(d) && d > 0.0) {
+        fputs("fades them out beyond ", to);
+        put_m(d, to);
+        fputc('\n', to);
+    } else {
+        fputs(isfinite(d) ? "too coarse for them everywhere\n" : "draws them across the mesh\n", to);
+    }
+}
+
+static void print_water(const ww_scene *sc, const ww_plan_water *w, FILE *to) {
+    fprintf(to, "water\n  waves      %s, %d components", model_name(w->model), w->components);
+    if (w->components > 0)
+        fprintf(to, ", wavelengths %.3g .. %.3g m", w->shortest, w->longest);
+    fputc('\n', to);
+    if (w->components > 0) {
+        char note[160];
+        fprintf(to, "    %-16s %d components everywhere (double)\n", "cpu physics", w->components);
+        snprintf(note, sizeof note, "by the mesh spacing, %.3g m at the centre and x%.4f per ring; "
+                 "distances from the mesh centre", w->mesh.s0, w->mesh.q);
+        print_fade("vertex shader", &w->vertex, note, to);
+        snprintf(note, sizeof note, "by the pixel footprint across the view, %.3g mrad per pixel at "
+                 "%d px and fov %.3g deg; distances from the camera",
+                 1e3 * w->pixel_angle, w->image_height, sc->fov * 180.0 / 3.14159265358979323846);
+        print_fade("fragment shader", &w->fragment, note, to);
+    }
+    if (w->ripple_pool > 0) {
+        fprintf(to, "  ripples    pool of %d (lifetime %g s), wavelength %.3g m\n", w->ripple_pool,
+                sc->ripples.lifetime, w->ripple_wavelength);
+        print_ripple_fade("vertex shader", w->ripple_vertex_out, to);
+        print_ripple_fade("fragment shader", w->ripple_fragment_out, to);
+    }
 }
 
 void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
@@ -67,13 +244,14 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
     for (int s = 0; s < WW_SYS_COUNT; s++) {
         if (!p->system_on[s]) continue;
         fprintf(to, "  %-10s", ww_system_name((ww_system)s));
-        if (s == WW_SYS_WAVES) fprintf(to, " %d gerstner waves", sc->nwaves);
+        if (s == WW_SYS_WAVES) fprintf(to, " %d %s waves", sc->nwaves, model_name(sc->wave_model));
         if (s == WW_SYS_CAMERA) fprintf(to, " %d keys, %s", sc->ncam,
                                         sc->interp == WW_INTERP_LINEAR ? "linear" : "catmull-rom");
         if (s == WW_SYS_SCRIPT) fprintf(to, " %d events", sc->nevents);
         if (s == WW_SYS_CLOCK) fprintf(to, " %.2f h, day length %g s", sc->time_of_day, sc->day_length);
         fputc('\n', to);
     }
+    print_water(sc, &p->water, to);
     fprintf(to, "passes\n");
     size_t total = 0;
     for (int i = 0; i < p->npasses; i++) {

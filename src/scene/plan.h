@@ -43,10 +43,67 @@ typedef struct ww_pass_desc {
     ww_target_desc targets[WW_PLAN_MAX_TARGETS];
 } ww_pass_desc;
 
+/* the water mesh (gfx/water.c): a static polar grid re-centred on the camera. Its rings are
+ * WW_WATER_S0 apart at the centre and their spacing grows geometrically (by q per ring) so that
+ * WW_WATER_RINGS rings reach WW_WATER_REACH x the far clip; the plan needs the same numbers to say
+ * where the mesh becomes too coarse for a wave. */
+#define WW_WATER_SEGMENTS 256 /* vertices around each ring */
+#define WW_WATER_RINGS 160    /* rings around the centre vertex */
+#define WW_WATER_S0 0.5       /* distance of the first ring from the centre, m */
+#define WW_WATER_REACH 0.9    /* outer ring radius as a fraction of the far clip */
+#define WW_WATER_SNAP 0.5     /* the mesh centre moves on this grid, m */
+#define WW_WATER_INNER_R 10.0 /* rings inside this radius are always drawn whole, m */
+
+/* the shaders fade a component of wavelength L out where the sample spacing s grows from L / 4 to
+ * L / 2 (shaders/gerstner.glsl, ww_wave_fade: at least 4 samples per wavelength) */
+#define WW_FADE_START_SAMPLES 4.0
+#define WW_FADE_END_SAMPLES 2.0
+
+typedef struct ww_water_mesh {
+    double s0;      /* first ring spacing, m */
+    double q;       /* ring growth per ring (1: evenly spaced) */
+    double dtheta;  /* angle between neighbouring vertices of a ring, rad */
+    double reach;   /* radius of the outer ring, m */
+} ww_water_mesh;
+
+/* the mesh for a far clip distance */
+void ww_water_mesh_layout(double far_clip, ww_water_mesh *m);
+/* sample spacing of the mesh at distance r from its centre: rings s0 + (q - 1) r apart, r dtheta
+ * around a ring; the larger one */
+double ww_water_mesh_spacing(const ww_water_mesh *m, double r);
+
+/* how one consumer of the wave field thins it with distance: each component is evaluated whole
+ * up to where it starts to fade and not at all beyond where it is faded out */
+#define WW_PLAN_FADE_STEPS 6
+typedef struct ww_plan_fade {
+    int components;                   /* evaluated where nothing is faded */
+    double start;                     /* m: the shortest component starts to fade beyond this
+                                       * (INFINITY: not within the mesh) */
+    int nsteps;                       /* faded[i] components are faded out beyond beyond[i] m:
+                                       * each count up to 6 components, else 1, n/4, n/2, 3n/4, n */
+    int faded[WW_PLAN_FADE_STEPS];
+    double beyond[WW_PLAN_FADE_STEPS];
+} ww_plan_fade;
+
+typedef struct ww_plan_water {
+    ww_wave_model model;
+    int components;         /* wave components every consumer starts from */
+    double shortest, longest; /* wavelengths, m */
+    ww_water_mesh mesh;
+    double pixel_angle;     /* angle of one pixel at the image centre at the scene's fov, rad */
+    int image_height;       /* px, what the pixel angle is for */
+    ww_plan_fade vertex;    /* water vertex shader: faded by the mesh spacing */
+    ww_plan_fade fragment;  /* fragment shader: faded by the pixel footprint across the view */
+    int ripple_pool;        /* pool entries (0: no ripples) */
+    double ripple_wavelength;               /* m */
+    double ripple_vertex_out, ripple_fragment_out; /* m: ripples faded out beyond */
+} ww_plan_water;
+
 typedef struct ww_plan {
     int system_on[WW_SYS_COUNT];
     int npasses;
     ww_pass_desc passes[WW_PASS_COUNT];
+    ww_plan_water water;
 } ww_plan;
 
 void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p);
