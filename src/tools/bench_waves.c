@@ -85,6 +85,21 @@ static const char *model_name(ww_wave_model m) {
     return "?";
 }
 
+/* s as a JSON string (driver and error strings may hold quotes) */
+static void json_str(FILE *to, const char *s) {
+    fputc('"', to);
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\')
+            fprintf(to, "\\%c", c);
+        else if (c < 0x20)
+            fprintf(to, "\\u%04x", c);
+        else
+            fputc(c, to);
+    }
+    fputc('"', to);
+}
+
 /* ---- seas and timing ------------------------------------------------------------------------ */
 
 /* a seeded sea of n components of one family: wavelengths log-uniform in [lmin, lmax], headings
@@ -513,19 +528,25 @@ static void part_gpu(const config *cf, int json, FILE *to, gpu_table *g) {
             gpu_run(cf, counts[k], fade, &rep);
             if (rep.no_backend) {
                 snprintf(g->note, sizeof g->note, "skipped: no GL backend opens here (%.150s)", rep.msg);
-                if (json)
-                    fprintf(to, "{\"part\":\"gpu\",\"skipped\":\"%s\"}\n", g->note);
-                else
+                if (json) {
+                    fputs("{\"part\":\"gpu\",\"skipped\":", to);
+                    json_str(to, g->note);
+                    fputs("}\n", to);
+                } else {
                     fprintf(to, "%s\n\n", g->note);
+                }
                 return;
             }
             if (!rep.ok) {
                 snprintf(g->note, sizeof g->note, "%d components: %.150s", counts[k], rep.msg);
-                if (json)
-                    fprintf(to, "{\"part\":\"gpu\",\"components\":%d,\"fade\":%d,\"error\":\"%s\"}\n",
-                            counts[k], fade, rep.msg);
-                else
+                if (json) {
+                    fprintf(to, "{\"part\":\"gpu\",\"components\":%d,\"fade\":%d,\"error\":",
+                            counts[k], fade);
+                    json_str(to, rep.msg);
+                    fputs("}\n", to);
+                } else {
                     fprintf(to, "%5d %-4s failed: %s\n", counts[k], fade ? "on" : "off", rep.msg);
+                }
                 continue;
             }
             g->ran = 1;
@@ -537,12 +558,15 @@ static void part_gpu(const config *cf, int json, FILE *to, gpu_table *g) {
             g->ms[fade ? 0 : 1][slot] = rep.ms;
             double waves_ms = rep.ms - flat_ms;
             if (json) {
+                fputs("{\"part\":\"gpu\",\"backend\":", to);
+                json_str(to, rep.backend);
+                fputs(",\"renderer\":", to);
+                json_str(to, rep.renderer);
                 fprintf(to,
-                        "{\"part\":\"gpu\",\"backend\":\"%s\",\"renderer\":\"%s\",\"width\":%d,"
-                        "\"height\":%d,\"components\":%d,\"fade\":%d,\"frames\":%d,\"ms\":%.4f,"
-                        "\"ms_min\":%.4f,\"waves_ms\":%.4f}\n",
-                        rep.backend, rep.renderer, cf->gpu_w, cf->gpu_h, counts[k], fade, rep.frames,
-                        rep.ms, rep.ms_min, isfinite(waves_ms) ? waves_ms : 0.0);
+                        ",\"width\":%d,\"height\":%d,\"components\":%d,\"fade\":%d,\"frames\":%d,"
+                        "\"ms\":%.4f,\"ms_min\":%.4f,\"waves_ms\":%.4f}\n",
+                        cf->gpu_w, cf->gpu_h, counts[k], fade, rep.frames, rep.ms, rep.ms_min,
+                        isfinite(waves_ms) ? waves_ms : 0.0);
             } else {
                 if (!header) {
                     fprintf(to, "on %s: %s\n", rep.backend, rep.renderer);
@@ -634,10 +658,13 @@ ww_result ww_bench_waves(const ww_bench_waves_opts *o, FILE *to, ww_error *err) 
 
     char path[700];
     if ((r = write_figure(dir, &g, rows, path, sizeof path, err))) goto done;
-    if (o->json)
-        fprintf(to, "{\"part\":\"figure\",\"path\":\"%s\"}\n", path);
-    else
+    if (o->json) {
+        fputs("{\"part\":\"figure\",\"path\":", to);
+        json_str(to, path);
+        fputs("}\n", to);
+    } else {
         fprintf(to, "figure: %s\n", path);
+    }
 done:
     free(work);
     free(sc);
