@@ -772,7 +772,7 @@ static void draw_random(ww_scene *sc, const ww_node *at) {
 static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model model,
                                   section *s) {
     static const char *const keys[] = {"kind",   "wind_speed", "fetch",      "gamma",
-                                       "direction", "spread", "count", "wavelength",
+                                       "direction", "spread",  "count",      "wavelength",
                                        "steepness", NULL};
     ww_spectrum_desc *d = &c->sc->spectrum;
     TRY(open_section(c, waves, "spectrum", keys, s));
@@ -797,8 +797,9 @@ static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model mo
     return get_number(c, s, "steepness", &R_SPECTRUM_STEEPNESS, OPTIONAL, &d->steepness);
 }
 
-/* water.fold: above sum Q k A = 1 the Gerstner surface loops over itself (the Jacobian of
- * x -> x + D(x) reaches 0; Tessendorf 2001, "Simulating Ocean Water", sec. 4.4) */
+/* water.fold: above sum Q k A = 1 the Gerstner surface can loop over itself: the Jacobian of
+ * x -> x + D(x) is at least 1 - sum Q k A and reaches 0 where the crests line up (Tessendorf
+ * 2001, "Simulating Ocean Water", on choppy waves; Fournier and Reeves 1986 for Gerstner's Q) */
 static ww_result check_fold(ctx *c, const section *waves) {
     ww_scene *sc = c->sc;
     double sum = ww_waves_fold_sum(sc);
