@@ -799,7 +799,7 @@ static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model mo
 
 /* water.fold: above sum Q k A = 1 the Gerstner surface can loop over itself: the Jacobian of
  * x -> x + D(x) is at least 1 - sum Q k A and reaches 0 where the crests line up (Tessendorf
- * 2001, "Simulating Ocean Water", on choppy waves; Fournier and Reeves 1986 for Gerstner's Q) */
+ * 2001, "Simulating Ocean Water", on choppy waves; Finch 2004, GPU Gems ch. 1, for the Q) */
 static ww_result check_fold(ctx *c, const section *waves) {
     ww_scene *sc = c->sc;
     double sum = ww_waves_fold_sum(sc);
