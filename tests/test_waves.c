@@ -12,7 +12,9 @@
 #include "core/rng.h"
 #include "core/sincos.h"
 #include "sim/ripples.h"
+#include "scene/spectrum.h"
 #include "sim/state.h"
+#include "sim/wave_stats.h"
 #include "sim/water.h"
 #include "sim/waves.h"
 #include "test.h"
@@ -52,6 +54,23 @@
 #define RIPPLE_FD_TOL 1e-8
 /* a far query's surface point against long double evaluation from the raw parameters, m */
 #define QUERY_FAR_TOL 1e-9
+
+/* statistics in closed form against the same numbers computed directly: rounding */
+#define STATS_EXACT_TOL 1e-12
+/* the steep-sine variance against trapezoidal quadrature of h^2 on 4096 points, m^2 per A^2 */
+#define STEEP_VARIANCE_TOL 1e-12
+/* the steep-sine slope bound against a scan of 1e6 phases: near the maximum the scan misses
+ * f'' (pi / 1e6)^2 / 2, about 1e-11 relative */
+#define STEEP_SLOPE_SCAN_TOL 1e-9
+/* sampled extremes of a single wave on an n = 64 grid: the phases sampled leave gaps of at most
+ * 2 pi / 64, so the sampled extreme of a smooth profile misses the true one by at most
+ * (1 - cos(pi / 64)) ~ 1.2e-3 of its size (for the fold margin) or f'' (pi / 64)^2 / 2 (slope) */
+#define STATS_SAMPLE_REL_TOL 0.0125
+/* the spectrum's peak period against 2 pi / (0.877 g / U): 0.877 is (0.8 beta)^(1/4) rounded */
+#define PM_PEAK_REL_TOL 1e-3
+/* Hs of a Pierson-Moskowitz sea against 0.21 U^2 / g (the issue's 5%; 0.21 is rounded and the
+ * sampled range leaves out the far tails) */
+#define PM_HS_REL_TOL 0.05
 
 /* ---- scenes ---- */
 
@@ -765,5 +784,140 @@ TEST(ripples_pool_replaces_oldest_and_prunes) {
     double g[2], dt;
     ENSURE(ww_ripples_height(sc, st->ripple, 1.0, 4.0, 0.0, g, &dt) == 0.0 && g[0] == 0.0);
     ww_state_free(st);
+    free(sc);
+}
+
+/* ---- statistics ---- */
+
+TEST(wave_stats_single_sine) {
+    ww_scene *sc = new_scene(WW_WAVES_SINES);
+    add_wave(sc, 30, 12.0, 0.4, 0.0, 1.0);
+    ww_wave_stats st;
+    ww_wave_stats_compute(sc, 0, 0, &st);
+    const ww_wave *w = &sc->waves[0];
+    ENSURE_EQ_INT(st.count, 1);
+    ENSURE_EQ_INT(st.samples, 64 * 64 * 8);
+    ENSURE_NEAR(st.m0, 0.4 * 0.4 / 2, STATS_EXACT_TOL);
+    ENSURE_NEAR(st.hs, 4.0 * sqrt(0.4 * 0.4 / 2), STATS_EXACT_TOL);
+    ENSURE_NEAR(st.peak_period, sqrt(WW_TAU * 12.0 / WW_G), STATS_EXACT_TOL);
+    ENSURE_NEAR(st.mean_wavelength, 12.0, STATS_EXACT_TOL);
+    ENSURE(st.fold_margin == 1.0 && st.fold_sum == 0.0);
+    ENSURE_NEAR(st.slope_bound, w->k * 0.4, STATS_EXACT_TOL);
+    ENSURE(st.max_slope <= st.slope_bound);
+    ENSURE_NEAR(st.max_slope / st.slope_bound, 1.0, STATS_SAMPLE_REL_TOL);
+    ENSURE_NEAR(st.total_amplitude, 0.4, STATS_EXACT_TOL);
+    free(sc);
+}
+
+TEST(wave_stats_sea_of_sines_adds_variances) {
+    ww_scene *sc = new_scene(WW_WAVES_SINES);
+    random_sea(sc, 9, 1.0, 30.0, 0.5, 1.0, 8);
+    ww_wave_stats st;
+    ww_wave_stats_compute(sc, 16, 2, &st);
+    double m0 = 0.0, lw = 0.0, top = 0.0, tp = 0.0;
+    for (int i = 0; i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        m0 += w->amplitude * w->amplitude / 2;
+        lw += w->amplitude * w->amplitude / 2 * w->wavelength;
+        if (w->amplitude > top) {
+            top = w->amplitude;
+            tp = WW_TAU / w->omega;
+        }
+    }
+    ENSURE_EQ_INT(st.samples, 16 * 16 * 2);
+    ENSURE_NEAR(st.hs, 4.0 * sqrt(m0), STATS_EXACT_TOL);
+    ENSURE_NEAR(st.mean_wavelength, lw / m0, STATS_EXACT_TOL);
+    ENSURE_NEAR(st.peak_period, tp, STATS_EXACT_TOL);
+    ENSURE(st.max_slope <= st.slope_bound && st.max_slope > 0.0);
+    free(sc);
+}
+
+TEST(wave_stats_single_gerstner_fold_margin) {
+    const double dirs[] = {0.0, 30.0, 117.0};
+    for (int d = 0; d < 3; d++) {
+        ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+        add_wave(sc, dirs[d], 8.0, 0.5, 0.9, 1.0);
+        const ww_wave *w = &sc->waves[0];
+        double qka = 0.9 * w->k * 0.5, ka = w->k * 0.5;
+        ww_wave_stats st;
+        ww_wave_stats_compute(sc, 0, 0, &st);
+        ENSURE_NEAR(st.fold_sum, qka, STATS_EXACT_TOL);
+        ENSURE_NEAR(st.fold_sum, ww_waves_fold_sum(sc), STATS_EXACT_TOL);
+        /* J = 1 - Q k A sin(phi): the margin 1 - Q k A, sampled */
+        ENSURE(st.fold_margin >= 1.0 - qka - STATS_EXACT_TOL);
+        ENSURE_NEAR(st.fold_margin, 1.0 - qka, STATS_SAMPLE_REL_TOL * qka);
+        /* slope k A cos / (1 - Q k A sin), its largest value found by a fine scan */
+        double top = 0.0;
+        for (int i = 0; i < 100000; i++) {
+            double ph = WW_TAU * i / 100000;
+            top = fmax(top, fabs(ka * cos(ph) / (1.0 - qka * sin(ph))));
+        }
+        ENSURE(st.max_slope <= top * (1.0 + STATS_EXACT_TOL) && st.max_slope <= st.slope_bound);
+        ENSURE_NEAR(st.max_slope / top, 1.0, STATS_SAMPLE_REL_TOL);
+        ENSURE_NEAR(st.slope_bound, ka / (1.0 - qka), STATS_EXACT_TOL);
+        if (ww_test_failed_now())
+            printf("    direction %g: margin %.6f (1 - QkA = %.6f), slope %.6f of %.6f\n", dirs[d],
+                   st.fold_margin, 1.0 - qka, st.max_slope, top);
+        free(sc);
+    }
+}
+
+TEST(wave_stats_steep_sines_closed_form) {
+    const double es[] = {1.0, 2.0, 5.5};
+    for (int k = 0; k < 3; k++) {
+        ww_scene *sc = new_scene(WW_WAVES_STEEP_SINES);
+        add_wave(sc, 50, 6.0, 0.3, 0.0, es[k]);
+        const ww_wave *w = &sc->waves[0];
+        /* the profile's variance and largest |dh/dphi| by quadrature over a period */
+        const int n = 4096;
+        double s1 = 0.0, s2 = 0.0, dmax = 0.0;
+        for (int i = 0; i < n; i++) {
+            double ph = WW_TAU * i / n, u = 0.5 * (sin(ph) + 1.0);
+            double h = 2.0 * 0.3 * (pow(u, es[k]) - w->mean);
+            s1 += h / n;
+            s2 += h * h / n;
+        }
+        for (int i = 0; i < 1000000; i++) {
+            double ph = WW_TAU * i / 1000000, u = 0.5 * (sin(ph) + 1.0);
+            dmax = fmax(dmax, fabs(0.3 * es[k] * pow(u, es[k] - 1.0) * cos(ph)));
+        }
+        ww_wave_stats st;
+        ww_wave_stats_compute(sc, 0, 0, &st);
+        ENSURE_NEAR(st.m0, s2 - s1 * s1, STEEP_VARIANCE_TOL);
+        if (es[k] == 1.0) ENSURE_NEAR(st.m0, 0.3 * 0.3 / 2, STATS_EXACT_TOL);
+        ENSURE_NEAR(st.slope_bound / (w->k * dmax), 1.0, STEEP_SLOPE_SCAN_TOL);
+        ENSURE(st.max_slope <= st.slope_bound && st.fold_margin == 1.0);
+        ENSURE_NEAR(st.max_slope / st.slope_bound, 1.0, STATS_SAMPLE_REL_TOL);
+        /* the largest excursion: 2 A (1 - mean) above the level */
+        ENSURE_NEAR(st.total_amplitude, 2.0 * 0.3 * (1.0 - w->mean), STATS_EXACT_TOL);
+        free(sc);
+    }
+}
+
+TEST(wave_stats_folding_flat_and_spectrum) {
+    ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+    random_sea(sc, 5, 2.0, 20.0, 1.2, 1.0, 4);
+    ww_wave_stats st;
+    ww_wave_stats_compute(sc, 32, 4, &st);
+    ENSURE_NEAR(st.fold_sum, 1.2, STATS_EXACT_TOL);
+    ENSURE(st.fold_margin < 1.0 - 1.2 + 0.5 && isinf(st.slope_bound) && isfinite(st.max_slope));
+    sc->wave_model = WW_WAVES_FLAT;
+    ww_wave_stats_compute(sc, 0, 0, &st);
+    ENSURE(st.count == 0 && st.hs == 0.0 && st.fold_margin == 1.0 && st.max_slope == 0.0);
+    free(sc);
+
+    /* Pierson-Moskowitz at U = 10 m/s: the peak of spectrum.h, Hs ~ 0.21 U^2 / g */
+    sc = new_scene(WW_WAVES_SPECTRUM);
+    sc->spectrum = (ww_spectrum_desc){.kind = WW_SPECTRUM_PM, .wind_speed = 10.0, .count = 128,
+                                      .wavelength = {1.0, 2000.0}, .steepness = 0.5,
+                                      .spread = 0.3, .fetch = 1e5, .gamma = 3.3};
+    sc->nwaves = sc->spectrum.count;
+    ww_spectrum_sample(&sc->spectrum, 5, sc->waves);
+    ww_wave_stats_compute(sc, 16, 2, &st);
+    ENSURE_NEAR(st.peak_period, WW_TAU / (0.877 * WW_G / 10.0), PM_PEAK_REL_TOL * st.peak_period);
+    ENSURE_NEAR(st.hs / (0.21 * 100.0 / WW_G), 1.0, PM_HS_REL_TOL);
+    ENSURE_NEAR(st.fold_sum, 0.5, STATS_EXACT_TOL);
+    printf("    PM U = 10 m/s, 128 components: Hs %.4f m (0.21 U^2/g = %.4f), peak period %.4f s\n",
+           st.hs, 0.21 * 100.0 / WW_G, st.peak_period);
     free(sc);
 }
