@@ -7,6 +7,7 @@
 #include <math.h>
 
 #include "core/mathx.h"
+#include "core/sincos.h"
 #include "sim/ripples.h"
 #include "sim/waves.h"
 
@@ -47,7 +48,8 @@ static void evaluate(const ww_scene *sc, const double *phase, double minL, const
         if (w->wavelength < minL) continue;
         double dx = w->dir[0], dz = w->dir[1];
         double ph = w->k * (dx * a[0] + dz * a[1]) + phase[i];
-        double s = sin(ph), c = cos(ph);
+        double s, c;
+        ww_sincos(ph, &s, &c);
         double A = w->amplitude, qa = w->steepness * A, qka = w->k * qa;
         pr->sn[i] = s;
         dx0 += qa * dx * c;
@@ -67,7 +69,7 @@ static void evaluate(const ww_scene *sc, const double *phase, double minL, const
     pr->a[1] = a[1];
     pr->F[0] = a[0] + dx0 - x[0];
     pr->F[1] = a[1] + dz0 - x[1];
-    pr->norm = hypot(pr->F[0], pr->F[1]);
+    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
     double ex = a[0] - x[0], ez = a[1] - x[1];
     pr->G = 0.5 * (ex * ex + ez * ez) + phi;
     pr->J[0] = jxx;
