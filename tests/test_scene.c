@@ -760,6 +760,12 @@ TEST(scene_spectrum_model_loads_components) {
     ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, spectrum: {count: 0}}}\n", NULL, 0,
                             &err),
                   WW_E_RANGE);
+    /* a range far from the peak (1 m/s wind peaks at 0.83 m): an empty sea is an error */
+    ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, spectrum: {wind_speed: 1, "
+                            "wavelength: [10, 300]}}}\n",
+                            NULL, 0, &err),
+                  WW_E_INCONSISTENT);
+    ENSURE_MSG(strstr(err.msg, "hold almost none") && strstr(err.msg, "0.8327 m"), "%s", err.msg);
 }
 
 /* sum Q k A = 0.8 (2 pi / 5) 0.4 + 0.6 (2 pi / 3) 0.2 + 0.9 (2 pi / 4) 0.25

@@ -32,6 +32,8 @@
 #define RIPPLE_DEFAULT_WAVENUMBER (2.0 * WW_TAU) /* rad/m: 0.5 m ripples */
 #define WATER_SURFACE_TENSION 0.0728 /* sigma of clean water at 20 C, N/m */
 #define WATER_DENSITY 1000.0         /* rho, kg/m^3 */
+#define SPECTRUM_MIN_SLOPE 1e-6      /* sum k A of a spectrum's components below which the
+                                      * sampled range holds no visible sea */
 
 /* ---- rules ----------------------------------------------------------------------------------- */
 
@@ -770,7 +772,7 @@ static void draw_random(ww_scene *sc, const ww_node *at) {
 static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model model,
                                   section *s) {
     static const char *const keys[] = {"kind",   "wind_speed", "fetch",      "gamma",
-                                       "direction", "spread", "count", "wavelength",
+                                       "direction", "spread",  "count",      "wavelength",
                                        "steepness", NULL};
     ww_spectrum_desc *d = &c->sc->spectrum;
     TRY(open_section(c, waves, "spectrum", keys, s));
@@ -795,8 +797,9 @@ static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model mo
     return get_number(c, s, "steepness", &R_SPECTRUM_STEEPNESS, OPTIONAL, &d->steepness);
 }
 
-/* water.fold: above sum Q k A = 1 the Gerstner surface loops over itself (the Jacobian of
- * x -> x + D(x) reaches 0; Tessendorf 2001, "Simulating Ocean Water", sec. 4.4) */
+/* water.fold: above sum Q k A = 1 the Gerstner surface can loop over itself: the Jacobian of
+ * x -> x + D(x) is at least 1 - sum Q k A and reaches 0 where the crests line up (Tessendorf
+ * 2001, "Simulating Ocean Water", on choppy waves; Finch 2004, GPU Gems ch. 1, for the Q) */
 static ww_result check_fold(ctx *c, const section *waves) {
     ww_scene *sc = c->sc;
     double sum = ww_waves_fold_sum(sc);
@@ -863,11 +866,27 @@ static ww_result compile_waves(ctx *c, const section *water) {
     TRY(compile_spectrum(c, &s, model, &ss));
     if (model == WW_WAVES_SPECTRUM) {
         const ww_node *at = ss.map ? ss.map : s.map;
-        ww_spectrum_sample(&sc->spectrum, sc->seed, sc->waves);
-        sc->nwaves = sc->spectrum.count;
+        const ww_spectrum_desc *d = &sc->spectrum;
+        ww_spectrum_sample(d, sc->seed, sc->waves);
+        sc->nwaves = d->count;
+        double slope = 0.0, m0 = 0.0;
         for (int j = 0; j < sc->nwaves; j++) {
+            const ww_wave *w = &sc->waves[j];
+            slope += w->k * w->amplitude;
+            m0 += 0.5 * w->amplitude * w->amplitude;
             sc->waves[j].line = at->mark.line;
             sc->waves[j].column = at->mark.column;
+        }
+        /* a range that misses the spectrum leaves an empty sea, and the one Q that would make
+         * sum Q k A = steepness overflows (a float in the shader first) */
+        if (slope < SPECTRUM_MIN_SLOPE) {
+            double wp = ww_spectrum_peak(d);
+            return fail(c, WW_E_INCONSISTENT, at,
+                        "water.waves.spectrum: the wavelengths [%g, %g] m hold almost none of "
+                        "this spectrum's energy (Hs = %.3g m, sum k A = %.3g): expected a range "
+                        "nearer its peak at %.4g m",
+                        d->wavelength[0], d->wavelength[1], 4.0 * sqrt(m0), slope,
+                        WW_TAU * WW_G / (wp * wp));
         }
     }
     if (model == WW_WAVES_FLAT) {
