@@ -289,6 +289,16 @@ TEST(tools_probe_ripple_arrives_after_its_event) {
     }
     ENSURE_NEAR(before, 0.0, FLAT_TOL);
     ENSURE_MSG(after > RIPPLE_SEEN_MIN, "the ripple never reached the probe: max |h| = %g m", after);
+
+    /* at its centre it is there from the step of its event on: a sample between steps (0.995 s)
+     * reads the step before, one at 1 s the event's step */
+    snprintf(args, sizeof args, "probe %s --at 2,-1 --from 0.985 --to 1.0 --every 0.005", scene);
+    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(read_csv(out, 5, "t,height,nx,ny,nz", rows, 300), 4);
+    ENSURE_NEAR(rows[2].v[0], 0.995, CSV_TIME_TOL);
+    ENSURE_NEAR(rows[2].v[1], 0.0, FLAT_TOL);
+    ENSURE_MSG(fabs(rows[3].v[1]) > RIPPLE_SEEN_MIN, "no ripple at its centre at its time: h = %g m",
+               rows[3].v[1]);
     /* far away, in the same time, it has not arrived or has died out */
     snprintf(args, sizeof args, "probe %s --at 500,500 --from 0 --to 2.5 --every 0.01", scene);
     ENSURE_EQ_INT(run_ww(args, out, errf), 0);
