@@ -33,7 +33,7 @@ layout(std140) uniform WwWaves {
     int u_nwaves;
     vec4 u_wave[WW_MAX_WAVES];  // (k Dx, k Dz, A, Q): wavenumber * direction 1/m, m, 1 (Q 0 but gerstner)
     vec4 u_wave2[WW_MAX_WAVES]; // (phase at the centre rad in [0, 2 pi), exponent e, mean of ((sin + 1) / 2)^e, 0)
-    vec4 u_wave3[WW_MAX_WAVES]; // (k 1/m, mean square slope of this component, of it and all later ones, 0)
+    vec4 u_wave3[WW_MAX_WAVES]; // (k 1/m, wavelength 2 pi / k m, mean square slope of this component, of it and all later ones)
 };
 
 #if WW_RIPPLES
@@ -55,14 +55,24 @@ float ww_grid_spacing(vec2 p) {
     return max(u_grid.x + u_grid.y * r, r * u_grid.z);
 }
 
-// anti-aliasing LOD: a wave's amplitude fades to 0 where its wavelength 2 pi / k drops from
-// 4 to 2 sample spacings s (mesh spacing for the geometry, pixel footprint for the normals),
-// below which the samples cannot carry it (scene/plan.h: WW_FADE_START_SAMPLES, _END_SAMPLES)
-float ww_wave_fade(float k, float s) {
+// anti-aliasing LOD: a wave's amplitude fades to 0 where its wavelength L drops from 4 to 2
+// sample spacings s (mesh spacing for the geometry, pixel footprint for the normals), below
+// which the samples cannot carry it (scene/plan.h: WW_FADE_START_SAMPLES, _END_SAMPLES).
+// Takes 1 / s, so a loop over components divides once.
+float ww_wave_fade(float L, float inv_s) {
 #if WW_FADE
-    return smoothstep(2.0, 4.0, (2.0 * WW_PI / k) / max(s, 1e-6));
+    return smoothstep(2.0, 4.0, L * inv_s);
 #else
     return 1.0;
+#endif
+}
+
+// the fade has taken wavelength L away entirely: at most 2 samples per wavelength
+bool ww_faded_out(float L, float inv_s) {
+#if WW_FADE
+    return L * inv_s <= 2.0;
+#else
+    return false;
 #endif
 }
 
@@ -70,17 +80,27 @@ float ww_wave_fade(float k, float s) {
 struct ww_footprint {
     vec2 along, across; // unit, horizontal
     float stretch;      // >= 1
-    float pix;          // m
+    float inv_pix;      // 1 / pix, 1/m
 };
 
-// the footprint seen by a component travelling along unit d; never below fp.pix
-float ww_footprint_along(ww_footprint fp, vec2 d) {
-    return fp.pix * length(vec2(dot(d, fp.along) * fp.stretch, dot(d, fp.across)));
+ww_footprint ww_footprint_make(vec2 along, vec2 across, float stretch, float pix) {
+    return ww_footprint(along, across, stretch, 1.0 / max(pix, 1e-6));
 }
 
 // a footprint of s in every direction (a mesh spacing; 0 with the fade off)
 ww_footprint ww_footprint_round(float s) {
-    return ww_footprint(vec2(1.0, 0.0), vec2(0.0, 1.0), 1.0, s);
+    return ww_footprint_make(vec2(1.0, 0.0), vec2(0.0, 1.0), 1.0, s);
+}
+
+// the fade of wavelength L travelling along unit d, by the footprint along d:
+// pix |(d.along stretch, d.across)|, never below pix
+float ww_wave_fade_along(float L, vec2 d, ww_footprint fp) {
+#if WW_FADE
+    vec2 e = vec2(dot(d, fp.along) * fp.stretch, dot(d, fp.across));
+    return ww_wave_fade(L, fp.inv_pix * inversesqrt(max(dot(e, e), 1e-12)));
+#else
+    return 1.0;
+#endif
 }
 
 // phase of component i at rest offset p: phi = k D.x - w t + p0, with x = centre + p
@@ -98,7 +118,7 @@ vec3 ww_ripples(vec2 q, ww_footprint fp) {
     vec3 s = vec3(0.0);
     float alpha = u_ripple_param.x, beta = u_ripple_param.y, kr = u_ripple_param.z;
     float v = u_ripple_param.w, lambda = u_ripple_shape.x, r0 = u_ripple_shape.y;
-    if (ww_wave_fade(kr, fp.pix) == 0.0) return s;
+    if (ww_faded_out(lambda, fp.inv_pix)) return s;
     for (int i = 0; i < u_nripples; i++) {
         vec4 e = u_ripple[i];
         vec2 d = q - e.xy;
@@ -112,7 +132,7 @@ vec3 ww_ripples(vec2 q, ww_footprint fp) {
             dw = 6.0 * u * (1.0 - u);
         }
         float dl = length(d);
-        float f = ww_wave_fade(kr, ww_footprint_along(fp, dl > 0.0 ? d / dl : fp.across));
+        float f = ww_wave_fade_along(lambda, dl > 0.0 ? d / dl : fp.across, fp);
         float env = f * e.w * exp(-alpha * r - beta * age);
         float psi = kr * (r - v * age);
         float sp = sin(psi), cp = cos(psi);
@@ -133,15 +153,16 @@ vec3 ww_ripples(vec2 q, ww_footprint fp) {
 vec3 ww_displace(vec2 p, float s) {
     vec3 d = vec3(0.0);
 #if WW_WAVE_MODEL != WW_MODEL_FLAT
+    float inv_s = 1.0 / max(s, 1e-6);
     for (int i = 0; i < u_nwaves; i++) {
         vec4 w = u_wave[i];
-        float k = u_wave3[i].x;
-        float f = ww_wave_fade(k, s);
+        vec4 w3 = u_wave3[i];
+        float f = ww_wave_fade(w3.y, inv_s);
         if (f == 0.0) break; // sorted by k: the rest are shorter, faded out too
         float a = w.z * f;
         float phi = ww_wave_phi(i, p);
 #if WW_WAVE_MODEL == WW_MODEL_GERSTNER
-        d.xz += (w.w * a * cos(phi) / k) * w.xy;
+        d.xz += (w.w * a * cos(phi) / w3.x) * w.xy;
         d.y += a * sin(phi);
 #elif WW_WAVE_MODEL == WW_MODEL_SINES
         d.y += a * sin(phi);
@@ -172,13 +193,13 @@ void ww_partials(vec2 p, ww_footprint fp, out vec3 dpdx, out vec3 dpdz, out floa
         vec4 w = u_wave[i];
         vec4 w3 = u_wave3[i];
         float k = w3.x;
-        // the smallest footprint of any direction is fp.pix: faded out there, faded everywhere
-        if (ww_wave_fade(k, fp.pix) == 0.0) {
-            removed += w3.z; // this one and all later ones
+        // the smallest footprint of any direction is pix: faded out there, faded everywhere
+        if (ww_faded_out(w3.y, fp.inv_pix)) {
+            removed += w3.w; // this one and all later ones
             break;
         }
-        vec2 dir = w.xy / k;
-        float f = ww_wave_fade(k, ww_footprint_along(fp, dir));
+        vec2 dir = w.xy * (w3.y * (0.5 / WW_PI)); // kD / k
+        float f = ww_wave_fade_along(w3.y, dir, fp);
         float a = w.z * f;
         float phi = ww_wave_phi(i, p);
 #if WW_WAVE_MODEL == WW_MODEL_GERSTNER
@@ -201,7 +222,7 @@ void ww_partials(vec2 p, ww_footprint fp, out vec3 dpdx, out vec3 dpdz, out floa
         dpdx.y += akc * dir.x;
         dpdz.y += akc * dir.y;
 #endif
-        removed += (1.0 - f * f) * w3.y;
+        removed += (1.0 - f * f) * w3.z;
     }
 #endif
 #if WW_RIPPLES

@@ -40,7 +40,7 @@ void main() {
     // instead of vanishing.
     vec3 dpdx, dpdz;
     float removed;
-    ww_partials(v_local, ww_footprint(along, across, stretch, pix), dpdx, dpdz, removed);
+    ww_partials(v_local, ww_footprint_make(along, across, stretch, pix), dpdx, dpdz, removed);
     vec3 n = normalize(cross(dpdz, dpdx));
 
     vec3 l = u_sun_dir;

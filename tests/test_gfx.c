@@ -1,15 +1,19 @@
 /* test_gfx.c - graphics: the EGL and OSMesa backends, the renderer's sky and water, determinism
- * across runs and backends, far-from-origin precision, and the WW_SHADER_DIR override. Scenes,
- * states and plans are built by hand here, so these tests need nothing from scene/ or sim/.
+ * across runs and backends, far-from-origin precision, the WW_SHADER_DIR override, and the water
+ * shaders' wave field against the CPU's (the GPU probe). Scenes, states and plans are built by
+ * hand here; only the probe test reads sim/ (its CPU reference).
  */
 #include <dlfcn.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/mathx.h"
+#include "core/rng.h"
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
 #include "gfx/shaders.h"
+#include "sim/ripples.h"
+#include "sim/waves.h"
 #include "test.h"
 
 #define GFX_W 256
@@ -28,6 +32,7 @@ typedef struct world {
     double time_of_day, sun_dir[3], sun_color[3], sky_zenith[3], sky_horizon[3], ambient[3];
     double cam_pos[3], cam_fwd[3], cam_fov;
     double wave_phase[WW_MAX_WAVES];
+    double ripple[WW_RIPPLE_STRIDE * WW_MAX_RIPPLES];
     ww_plan plan;
 } world;
 
@@ -91,6 +96,7 @@ static world *world_new(int width, int height) {
     st->cam_fwd = w->cam_fwd;
     st->cam_fov = &w->cam_fov;
     st->wave_phase = w->wave_phase;
+    st->ripple = w->ripple;
     w->time_of_day = 16.5;
     dir_from(w->sun_dir, 20.0, 15.0);
     set3(w->sun_color, 1.6, 1.4, 1.1);
@@ -494,5 +500,241 @@ TEST(gfx_shader_dir_override) {
         ww_renderer_free(r);
     }
     ww_backend_close(b);
+    world_free(w);
+}
+
+/* ---- one field, two consumers: the water shaders' surface against the CPU's ---- */
+
+/* float shaders (phases wrapped in double at the camera, float sums and sin/cos) against the
+ * double CPU field: the issue's bound on the height, a fraction of the total amplitude */
+#define PROBE_HEIGHT_TOL 1e-3
+/* the same for the angle between the GPU and CPU normals, degrees */
+#define PROBE_NORMAL_TOL_DEG 0.5
+#define PROBE_POINTS 600
+#define PROBE_RADIUS 60.0 /* sample points within this distance of the camera, m */
+
+/* a few live ripples near the camera (x, z offsets, age s, A0 m), one free slot and one that has
+ * not started yet; the pool is placed relative to the camera at time t */
+static void probe_ripples(world *w, const double cam[3], double t) {
+    static const double live[][4] = {
+        {3.0, -4.0, 2.0, 0.08}, {-10.0, 6.0, 5.0, 0.1}, {20.0, 25.0, 12.0, 0.06}, {0.5, 0.5, 0.7, 0.05},
+    };
+    ww_scene *sc = w->sc;
+    sc->ripples_on = 1;
+    sc->ripples = (ww_ripple_desc){.amplitude = 0.05, .lifetime = 60.0, .max = 6,
+                                   .radial_decay = 0.08, .time_decay = 0.1,
+                                   .wavenumber = WW_TAU / 1.5};
+    sc->ripples.speed = sqrt(WW_G / sc->ripples.wavenumber); /* deep water, 1.5 m ripples */
+    memset(w->ripple, 0, sizeof w->ripple);
+    for (int i = 0; i < 4; i++) {
+        double *e = w->ripple + WW_RIPPLE_STRIDE * i;
+        e[0] = cam[0] + live[i][0];
+        e[1] = cam[2] + live[i][1];
+        e[2] = t - live[i][2];
+        e[3] = live[i][3];
+    }
+    double *future = w->ripple + WW_RIPPLE_STRIDE * 5; /* slot 4 stays free */
+    future[0] = cam[0];
+    future[1] = cam[2];
+    future[2] = t + 1.0;
+    future[3] = 0.2;
+}
+
+/* rest points relative to the camera, exactly representable in float (what the probe draws):
+ * half spread over the disc, half within 12 m of the ripple centres */
+static void probe_points(double *xz, int n) {
+    static const double near[][2] = {{3.0, -4.0}, {-10.0, 6.0}, {20.0, 25.0}, {0.5, 0.5}};
+    ww_rng rng;
+    ww_rng_seed(&rng, 20261122u, 99u);
+    for (int i = 0; i < n; i++) {
+        double r, a = WW_TAU * ww_rng_uniform(&rng), cx = 0.0, cz = 0.0;
+        if (i % 2 == 0) {
+            r = PROBE_RADIUS * sqrt(ww_rng_uniform(&rng));
+        } else {
+            r = 12.0 * ww_rng_uniform(&rng);
+            cx = near[(i / 2) % 4][0];
+            cz = near[(i / 2) % 4][1];
+        }
+        xz[2 * i] = (float)(cx + r * cos(a));
+        xz[2 * i + 1] = (float)(cz + r * sin(a));
+    }
+}
+
+typedef struct probe_err {
+    double dh, dxz, angle; /* max |height|, max |horizontal| difference (m), max normal angle (deg) */
+    double total;          /* total amplitude, m */
+    int rippled;           /* points where the ripples move the surface by more than 1 mm */
+} probe_err;
+
+/* the probe at one time and camera against ww_waves_point + ww_ripples_height, the ripples read at
+ * the displaced point (where sim/water.h reads them) and their gradient taken through it */
+static ww_result probe_compare(const ww_gl *gl, world *w, const double cam[3], double t,
+                               const double *xz, int n, float *gpu, probe_err *pe, ww_error *err) {
+    const ww_scene *sc = w->sc;
+    w->st.t = t;
+    ww_waves_phases(sc, t, w->wave_phase);
+    probe_ripples(w, cam, t);
+    ww_result rc = ww_gfx_water_probe(gl, sc, &w->st, cam, n, xz, gpu, err);
+    if (rc != WW_OK) return rc;
+
+    double phase_at[WW_MAX_WAVES];
+    ww_waves_phases_at(sc, w->wave_phase, cam[0], cam[2], phase_at);
+    pe->total = ww_waves_total_amplitude(sc);
+    for (int i = 0; i < 4; i++) pe->total += w->ripple[WW_RIPPLE_STRIDE * i + 3];
+    for (int i = 0; i < n; i++) {
+        ww_wave_point wp;
+        ww_waves_point(sc, phase_at, xz[2 * i], xz[2 * i + 1], 0.0, &wp);
+        double g[2];
+        double h = ww_ripples_height(sc, w->ripple, t, cam[0] + wp.p[0], cam[2] + wp.p[2], g, NULL);
+        pe->rippled += fabs(h) > 1e-3;
+        double dx[3] = {wp.dpdx[0], wp.dpdx[1] + g[0] * wp.dpdx[0] + g[1] * wp.dpdx[2], wp.dpdx[2]};
+        double dz[3] = {wp.dpdz[0], wp.dpdz[1] + g[0] * wp.dpdz[0] + g[1] * wp.dpdz[2], wp.dpdz[2]};
+        double nc[3] = {dz[1] * dx[2] - dz[2] * dx[1], dz[2] * dx[0] - dz[0] * dx[2],
+                        dz[0] * dx[1] - dz[1] * dx[0]};
+        ww_m_normalize3(nc);
+
+        const float *o = gpu + 8 * i;
+        double dh = fabs((cam[1] + o[1]) - (wp.p[1] + h));
+        double dxz = fmax(fabs(o[0] - wp.p[0]), fabs(o[2] - wp.p[2]));
+        double ng[3] = {o[4], o[5], o[6]};
+        double cr[3] = {ng[1] * nc[2] - ng[2] * nc[1], ng[2] * nc[0] - ng[0] * nc[2],
+                        ng[0] * nc[1] - ng[1] * nc[0]};
+        double angle = ww_m_deg(atan2(ww_m_len3(cr), ww_m_dot3(ng, nc)));
+        if (!(dh <= pe->dh)) pe->dh = dh; /* NaN sticks */
+        if (!(dxz <= pe->dxz)) pe->dxz = dxz;
+        if (!(angle <= pe->angle)) pe->angle = angle;
+    }
+    return WW_OK;
+}
+
+/* the five waves of the probe test (sum Q k A = 0.26 for gerstner: far from folding), from 0.9 m
+ * to 30 m, in scene order not sorted by wavenumber */
+static void probe_waves(ww_scene *sc, ww_wave_model model, double exponent) {
+    static const double waves[][4] = {
+        {20.0, 12.0, 0.25, 0.6}, {-35.0, 5.0, 0.08, 0.4}, {140.0, 30.0, 0.8, 0.5},
+        {250.0, 0.9, 0.01, 0.5}, {75.0, 2.1, 0.025, 0.3},
+    };
+    int gerstner = model == WW_WAVES_GERSTNER;
+    sc->wave_model = model;
+    sc->nwaves = 0;
+    for (size_t i = 0; i < sizeof waves / sizeof waves[0]; i++) {
+        ww_wave *w = &sc->waves[sc->nwaves++];
+        *w = (ww_wave){.direction = ww_m_rad(waves[i][0]), .wavelength = waves[i][1],
+                       .amplitude = waves[i][2], .steepness = gerstner ? waves[i][3] : 0.0,
+                       .exponent = exponent, .phase = 0.7 * (double)i};
+        ww_wave_derive(w, 0.0);
+    }
+}
+
+TEST(gfx_water_probe_matches_cpu) {
+    REQUIRE_GL();
+    static const struct {
+        const char *name;
+        ww_wave_model model;
+        double exponent;
+    } models[] = {
+        {"gerstner", WW_WAVES_GERSTNER, 1.0},
+        {"sines", WW_WAVES_SINES, 1.0},
+        {"steep_sines e=3", WW_WAVES_STEEP_SINES, 3.0},
+    };
+    static const double times[] = {0.0, 1e3, 1e6};
+    static const double cams[][3] = {{0.0, 3.0, 0.0}, {1e5, 3.0, 1e5}};
+    world *w = world_new(64, 36);
+    double *xz = malloc(2 * PROBE_POINTS * sizeof *xz);
+    float *gpu = malloc(8 * PROBE_POINTS * sizeof *gpu);
+    ENSURE(xz && gpu);
+    probe_points(xz, PROBE_POINTS);
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    ENSURE(ww_backend_open(WW_BACKEND_AUTO, &b, &err) == WW_OK);
+    for (size_t m = 0; b && xz && gpu && m < sizeof models / sizeof models[0]; m++) {
+        probe_waves(w->sc, models[m].model, models[m].exponent);
+        probe_err worst = {0};
+        for (size_t ti = 0; ti < sizeof times / sizeof times[0]; ti++) {
+            for (size_t c = 0; c < sizeof cams / sizeof cams[0]; c++) {
+                probe_err pe = {0};
+                ww_result rc = probe_compare(ww_backend_gl(b), w, cams[c], times[ti], xz,
+                                             PROBE_POINTS, gpu, &pe, &err);
+                ENSURE_MSG(rc == WW_OK, "%s: %s", models[m].name, err.msg);
+                if (rc != WW_OK) break;
+                /* the ripples are in the picture at every time and place */
+                ENSURE_MSG(pe.rippled > PROBE_POINTS / 10, "%s: ripples move only %d points",
+                           models[m].name, pe.rippled);
+                worst.total = pe.total;
+                worst.dh = fmax(worst.dh, pe.dh / pe.total);
+                worst.dxz = fmax(worst.dxz, pe.dxz / pe.total);
+                worst.angle = fmax(worst.angle, pe.angle);
+                if (!(pe.dh / pe.total <= ww_test_tol(PROBE_HEIGHT_TOL)) ||
+                    !(pe.angle <= ww_test_tol(PROBE_NORMAL_TOL_DEG)))
+                    fprintf(stderr, "\n    %s at t = %g, camera (%g, %g, %g): |dh| %.3g m, angle %.3g deg",
+                            models[m].name, times[ti], cams[c][0], cams[c][1], cams[c][2], pe.dh,
+                            pe.angle);
+            }
+        }
+        fprintf(stderr, "\n    %-16s max |dh| %.2e of %.3g m, |dxz| %.2e, normal %.4f deg",
+                models[m].name, worst.dh, worst.total, worst.dxz, worst.angle);
+        ENSURE_NEAR(worst.dh, 0.0, PROBE_HEIGHT_TOL);
+        ENSURE_NEAR(worst.dxz, 0.0, PROBE_HEIGHT_TOL);
+        ENSURE_NEAR(worst.angle, 0.0, PROBE_NORMAL_TOL_DEG);
+    }
+    fprintf(stderr, "\n    ");
+    ww_backend_close(b);
+    free(xz);
+    free(gpu);
+    world_free(w);
+}
+
+/* ---- plan: where each shader fades the components out ---- */
+
+/* the plan's distances come from closed forms; checked against the spacing they invert */
+#define PLAN_DISTANCE_TOL 1e-9 /* relative: rounding of the closed forms */
+
+TEST(gfx_plan_fade_distances) {
+    world *w = world_new(GFX_W, GFX_H);
+    add_wave(w->sc, 0.0, 0.7, 0.01, 0.3); /* shorter than 2 s0: the mesh never carries it */
+    const double sorted[] = {0.7, 2.1, 5.0, 12.0};
+    ww_plan p;
+    ww_plan_build(w->sc, GFX_W, GFX_H, &p);
+    const ww_plan_water *pw = &p.water;
+    ENSURE_EQ_INT(pw->components, 4);
+    ENSURE_EQ_INT(pw->model, WW_WAVES_GERSTNER);
+
+    /* the mesh: WW_WATER_RINGS rings growing by q from s0 end at the reach */
+    const ww_water_mesh *m = &pw->mesh;
+    double r = m->s0 * (pow(m->q, WW_WATER_RINGS) - 1.0) / (m->q - 1.0);
+    ENSURE_NEAR(r / m->reach, 1.0, PLAN_DISTANCE_TOL);
+    ENSURE_NEAR(m->reach, WW_WATER_REACH * w->sc->far_clip, PLAN_DISTANCE_TOL * m->reach);
+
+    /* vertex: faded out where the spacing reaches half the wavelength (one step per component
+     * for so few), 0 when the centre is already that coarse */
+    ENSURE_EQ_INT(pw->vertex.nsteps, 4);
+    for (int i = 0; i < pw->vertex.nsteps; i++) {
+        double L = sorted[pw->vertex.faded[i] - 1], d = pw->vertex.beyond[i];
+        ENSURE_EQ_INT(pw->vertex.faded[i], i + 1);
+        if (d > 0.0)
+            ENSURE_NEAR(ww_water_mesh_spacing(m, d) / (0.5 * L), 1.0, PLAN_DISTANCE_TOL);
+        else
+            ENSURE(m->s0 >= 0.5 * L);
+    }
+    ENSURE(pw->vertex.beyond[0] == 0.0); /* the 0.7 m wave */
+    ENSURE(pw->vertex.start == 0.0);
+
+    /* fragment: the footprint across the view, d x pixel angle, reaches half the wavelength */
+    double pa = 2.0 * tan(0.5 * w->sc->fov) / GFX_H;
+    ENSURE_NEAR(pw->pixel_angle / pa, 1.0, PLAN_DISTANCE_TOL);
+    ENSURE_NEAR(pw->fragment.start * pa / (0.25 * sorted[0]), 1.0, PLAN_DISTANCE_TOL);
+    for (int i = 0; i < pw->fragment.nsteps; i++) {
+        double L = sorted[pw->fragment.faded[i] - 1];
+        ENSURE_NEAR(pw->fragment.beyond[i] * pa / (0.5 * L), 1.0, PLAN_DISTANCE_TOL);
+    }
+    ENSURE_EQ_INT(pw->ripple_pool, 0);
+
+    /* ripples on: the pool is reported */
+    w->sc->ripples_on = 1;
+    w->sc->ripples.max = 32;
+    w->sc->ripples.wavenumber = WW_TAU / 0.4;
+    ww_plan_build(w->sc, GFX_W, GFX_H, &p);
+    ENSURE_EQ_INT(p.water.ripple_pool, 32);
+    ENSURE_NEAR(p.water.ripple_fragment_out * pa / 0.2, 1.0, PLAN_DISTANCE_TOL);
     world_free(w);
 }

@@ -122,7 +122,7 @@ typedef struct ww_wave_block {
     int32_t n, pad_[3];
     float wave[WW_MAX_WAVES][4];  /* (k Dx, k Dz, A, Q) */
     float wave2[WW_MAX_WAVES][4]; /* (phase at the centre, exponent e, mean, 0) */
-    float wave3[WW_MAX_WAVES][4]; /* (k, mean square slope, the same summed over i.., 0) */
+    float wave3[WW_MAX_WAVES][4]; /* (k, 2 pi / k, mean square slope, the same summed over i..) */
 } ww_wave_block;
 
 typedef struct ww_ripple_block {

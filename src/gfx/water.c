@@ -73,13 +73,14 @@ void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w) {
         slope2[i] = sc->wave_model == WW_WAVES_STEEP_SINES ? ak * ak * steep_slope_factor(wv->exponent)
                                                           : 0.5 * ak * ak;
         b->wave3[i][0] = (float)wv->k;
-        b->wave3[i][1] = (float)slope2[i];
+        b->wave3[i][1] = (float)(WW_TAU / wv->k);
+        b->wave3[i][2] = (float)slope2[i];
         w->sideways += q * wv->amplitude;
     }
     double tail = 0.0;
     for (int i = n - 1; i >= 0; i--) {
         tail += slope2[i];
-        b->wave3[i][2] = (float)tail;
+        b->wave3[i][3] = (float)tail;
     }
     b->n = n;
 }

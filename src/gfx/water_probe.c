@@ -20,6 +20,7 @@ typedef struct probe {
 
 static void probe_free(probe *p, const ww_gl *gl) {
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl->UseProgram(0);
     if (p->prog) gl->DeleteProgram(p->prog);
     if (p->vao) gl->DeleteVertexArrays(1, &p->vao);
     if (p->vbo) gl->DeleteBuffers(1, &p->vbo);

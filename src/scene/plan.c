@@ -195,8 +195,13 @@ static void print_fade(const char *who, const ww_plan_fade *f, const char *note,
         fputs("; fading starts at the centre", to);
     }
     for (int i = 0; i < f->nsteps; i++) {
-        fprintf(to, "%s %d beyond ", i ? "," : "; faded out:", f->faded[i]);
-        put_m(f->beyond[i], to);
+        fprintf(to, "%s %d ", i ? "," : "; faded out:", f->faded[i]);
+        if (f->beyond[i] > 0.0) {
+            fputs("beyond ", to);
+            put_m(f->beyond[i], to);
+        } else {
+            fputs("everywhere", to);
+        }
     }
     fprintf(to, "\n    %-16s (%s)\n", "", note);
 }
