@@ -15,6 +15,9 @@ static const char usage[] =
     "                      [--backend auto|egl|osmesa] [--set KEY=VALUE]...\n"
     "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--hash] [--set KEY=VALUE]...\n"
     "  plan     SCENE.yaml                systems and render passes the scene needs\n"
+    "  sweep    SCENE.yaml --vary KEY=A:B:N [--vary KEY=v1,v2]... [--random N --seed S]\n"
+    "                      [--jobs N] [--emit-jobs | --point I] [--thumbs] [-o DIR]\n"
+    "                      wave statistics over a grid of --set values\n"
     "  bench    [render|sim] [--frames N] [--json]   speed and memory figures\n"
     "  backends [--renderer]             which GL backends open here, on what\n"
     "  --help | --version\n"
@@ -31,6 +34,7 @@ static const command commands[] = {
     {"simulate", ww_cmd_simulate},
     {"plan", ww_cmd_plan},
     {"bench", ww_cmd_bench},
+    {"sweep", ww_cmd_sweep},
     {"backends", ww_cmd_backends},
 };
 
