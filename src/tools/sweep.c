@@ -103,12 +103,15 @@ const char *ww_sweep_axis_key(const ww_sweep *s, int a) {
     return s->ax[a].key;
 }
 
-/* the shortest %g text that reads back as the same double */
+/* the shortest %g text that reads back as the same double; whole numbers below 1e17 without an
+ * exponent ("30", not "3e+01": %g switches to one when the exponent reaches the precision, and
+ * then the value is whole, so %.0f is exact) */
 static void fmt_num(char *buf, size_t cap, double v) {
     for (int p = 1; p <= 17; p++) {
         snprintf(buf, cap, "%.*g", p, v);
-        if (strtod(buf, NULL) == v) return;
+        if (strtod(buf, NULL) == v) break;
     }
+    if (strchr(buf, 'e') && fabs(v) >= 1.0 && fabs(v) < 1e17) snprintf(buf, cap, "%.0f", v);
 }
 
 /* index of the first `sep` at or after i that is outside [], {} and quotes; len when none */
