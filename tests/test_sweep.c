@@ -429,6 +429,24 @@ TEST(sweep_invalid_point_is_an_error_row) {
     ENSURE(l && strncmp(l, "0,-1,gerstner,error,,,,,,,,,\"--vary[1]:1:", 41) == 0);
     free(l);
     free(c);
+
+    /* a sea that folds (sum Q k A = 1.3): fold: warn is a row with status warn and the
+     * loader's warning, fold: error an error row, fold: clamp a warn row clamped to 0.9 */
+    snprintf(args, sizeof args, "scenes/minimal.yaml --set water.waves.list[0].amplitude=4 "
+             "--vary water.fold=warn,error,clamp -o %s --quiet", outd);
+    ENSURE_EQ_INT(run_sweep(args, NULL, NULL), 0);
+    snprintf(path, sizeof path, "%s/sweep.jsonl", outd);
+    j = ww_test_read_file(path, NULL);
+    r0 = j ? line_at(j, 0) : NULL;
+    r1 = j ? line_at(j, 1) : NULL;
+    r2 = j ? line_at(j, 2) : NULL;
+    ENSURE(r0 && strstr(r0, "\"status\":\"warn\",\"metrics\":{") && strstr(r0, "\"message\":\"scenes/minimal.yaml:"));
+    ENSURE(r1 && strstr(r1, "\"status\":\"error\",\"code\":\"range\""));
+    ENSURE(r2 && strstr(r2, "\"status\":\"warn\"") && strstr(r2, "\"fold_sum\":0.9"));
+    free(r0);
+    free(r1);
+    free(r2);
+    free(j);
 }
 
 TEST(sweep_contact_layout_and_text) {
