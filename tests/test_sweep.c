@@ -384,6 +384,10 @@ TEST(sweep_bad_vary_exit_2_before_any_work) {
         ENSURE_MSG(run_sweep(args, NULL, errf) == 2, "exit 2 for: %s", bad[i]);
     }
     ENSURE_EQ_INT(run_sweep("scenes/minimal.yaml --vary water.waves.model=flat --thumbs", NULL, errf), 2);
+    ENSURE_EQ_INT(run_sweep("--help", errf, NULL), 0);
+    char *help = ww_test_read_file(errf, NULL);
+    ENSURE(help && strstr(help, "usage: waterworld sweep") && strstr(help, "cat DIR/points/point_*.jsonl"));
+    free(help);
     /* an unknown key: found by loading the first point, named as the axis */
     snprintf(args, sizeof args, "scenes/minimal.yaml --vary water.waves.list[0].amplitud=0.1:0.5:3 -o %s", outd);
     ENSURE_EQ_INT(run_sweep(args, NULL, errf), 2);
