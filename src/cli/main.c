@@ -18,6 +18,9 @@ static const char usage[] =
     "  probe    SCENE.yaml --at X,Z [--from T0] [--to T1] [--every DT]\n"
     "                                    the exact water surface over a point, CSV\n"
     "  waves    SCENE.yaml --stats       wave statistics (Hs, periods, slopes, fold margin), JSON\n"
+    "  sweep    SCENE.yaml --vary KEY=A:B:N [--vary KEY=v1,v2]... [--random N --seed S]\n"
+    "                      [--jobs N] [--emit-jobs | --point I] [--thumbs] [-o DIR]\n"
+    "                      wave statistics over a grid of --set values\n"
     "  bench    [render|sim] [--frames N] [--json]   speed and memory figures\n"
     "  bench    waves [--json] [-o DIR]  the wave field's speed against its error, and a figure\n"
     "  backends [--renderer]             which GL backends open here, on what\n"
@@ -35,6 +38,7 @@ static const command commands[] = {
     {"simulate", ww_cmd_simulate},
     {"plan", ww_cmd_plan},
     {"bench", ww_cmd_bench},
+    {"sweep", ww_cmd_sweep},
     {"backends", ww_cmd_backends},
     {"probe", ww_cmd_probe},
     {"waves", ww_cmd_waves},

@@ -647,22 +647,9 @@ static ww_result compile_fog(ctx *c, const section *top) {
     return get_number(c, &above, "density", &R_FOG_DENSITY, OPTIONAL, &sc->fog_density);
 }
 
-/* a steepness on sines or steep sines is an error: they do not move water sideways, and a Q
- * that silently does nothing hides a wrong model. An exponent is read by steep sines only and
- * checked but ignored by the others (it is the shape a scene keeps when its model is switched);
- * flat water reads nothing and accepts both. */
-static ww_result check_model_keys(ctx *c, const section *s, ww_wave_model model) {
-    char name[128];
-    const ww_node *n = ww_node_find(s->map, "steepness");
-    if (n && (model == WW_WAVES_SINES || model == WW_WAVES_STEEP_SINES))
-        return fail(c, WW_E_INCONSISTENT, n->key,
-                    "%s: steepness has no meaning for %s (they do not move water sideways): "
-                    "remove it, or use model: gerstner",
-                    path_of(s, "steepness", name, sizeof name), WAVE_WORDS[model]);
-    return WW_OK;
-}
-
-/* what the model makes of a component's steepness and exponent */
+/* what the model makes of a component's steepness and exponent: each is checked whatever the
+ * model and read only by the models it means something to (Q by gerstner, e by steep sines), so
+ * one scene can be switched between families with a single --set or sweep axis */
 static double model_steepness(ww_wave_model model, double q) {
     return model == WW_WAVES_SINES || model == WW_WAVES_STEEP_SINES ? 0.0 : q;
 }
@@ -677,7 +664,6 @@ static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave_model 
                                        "exponent", "phase", "speed", NULL};
     section s;
     TRY(open_item(c, item, "water.waves.list", i, keys, &s));
-    TRY(check_model_keys(c, &s, model));
     *w = (ww_wave){.steepness = DEFAULT_STEEPNESS,
                    .exponent = DEFAULT_EXPONENT,
                    .line = s.map->mark.line,
@@ -724,7 +710,6 @@ static ww_result compile_random(ctx *c, const section *waves, ww_wave_model mode
     ww_wave_random *r = &c->sc->wave_random;
     TRY(open_section(c, waves, "random", keys, s));
     if (!s->map) return WW_OK;
-    TRY(check_model_keys(c, s, model));
     double count = RANDOM_DEFAULT_COUNT;
     TRY(get_number(c, s, "count", &R_RANDOM_COUNT, OPTIONAL, &count));
     TRY(get_range(c, s, "wavelength", &R_WAVELENGTH, 0, r->wavelength));
