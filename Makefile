@@ -86,6 +86,7 @@ golden: $(BIN)
 
 bench: $(BIN)
 	./$(BIN) bench render
+	./$(BIN) bench waves
 
 # libFuzzer on the scene loader (clang; not part of test). FUZZ_SECONDS=60 by default.
 FUZZ_SECONDS ?= 60

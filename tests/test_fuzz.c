@@ -48,7 +48,13 @@ static size_t mutate(ww_rng *r, char *buf, size_t len, size_t cap) {
 static int scene_is_finite(const ww_scene *sc) {
     int ok = isfinite(sc->dt) && isfinite(sc->fps) && isfinite(sc->duration) && isfinite(sc->start);
     for (int i = 0; i < sc->nwaves; i++)
-        ok &= isfinite(sc->waves[i].k) && isfinite(sc->waves[i].omega) && isfinite(sc->waves[i].amplitude);
+        ok &= isfinite(sc->waves[i].k) && isfinite(sc->waves[i].omega) &&
+              isfinite(sc->waves[i].amplitude) && isfinite(sc->waves[i].steepness) &&
+              isfinite(sc->waves[i].mean) && isfinite(sc->waves[i].phase);
+    ok &= isfinite(sc->fold_sum);
+    if (sc->ripples_on)
+        ok &= isfinite(sc->ripples.speed) && sc->ripples.wavenumber > 0.0 &&
+              sc->ripples.max >= 1 && sc->ripples.max <= WW_MAX_RIPPLES;
     for (int i = 0; i < sc->ncam; i++)
         ok &= isfinite(sc->cam[i].position[0]) && isfinite(sc->cam[i].t);
     return ok && sc->steps_per_frame >= 1 && sc->frame_count >= 1;
@@ -114,3 +120,5 @@ TEST(fuzz_scene_set_mutations) {
     }
     ENSURE_EQ_INT(bad, 0);
 }
+TEST(fuzz_scene_loader_mutations_spectrum) { fuzz_file("scenes/spectrum.yaml", 3); }
+TEST(fuzz_scene_loader_mutations_ripples) { fuzz_file("scenes/ripples.yaml", 4); }

@@ -12,7 +12,7 @@
 /* values computed the same way as the loader: only rounding of the degree conversion differs */
 #define SCENE_VALUE_TOL 1e-12
 #define SCENE_ANGLE_TOL 1e-12
-#define BAD_MIN_FILES 22
+#define BAD_MIN_FILES 48
 
 static ww_scene *load_text(const char *text, const ww_set *sets, int nsets, ww_error *err) {
     ww_scene *sc = NULL;
@@ -516,4 +516,480 @@ TEST(scene_defaults_match_an_empty_file) {
         ENSURE(a->cam[0].position[i] == d.cam[0].position[i] && a->cam[0].look_at[i] == d.cam[0].look_at[i]);
     }
     ww_scene_free(a);
+}
+
+/* ---- wave families, random draws, spectra, fold policy, ripples ---- */
+
+/* steep sines' mean from an independent rule: the average of ((sin + 1) / 2)^e over 20000
+ * midpoints of a period (the midpoint rule is spectrally exact for periodic integrands) */
+#define STEEP_MEAN_QUADRATURE_TOL 1e-12
+/* a direction vector normalised, against the exact fractions */
+#define DIRECTION_VECTOR_TOL 1e-15
+/* sum Q k A after the clamp against WW_FOLD_CLAMP_SUM: rounding of a short sum */
+#define FOLD_CLAMP_TOL 1e-12
+
+static double mean_by_quadrature(double e) {
+    const int n = 20000;
+    double sum = 0.0;
+    for (int i = 0; i < n; i++) sum += pow((sin(WW_TAU * (i + 0.5) / n) + 1.0) / 2.0, e);
+    return sum / n;
+}
+
+TEST(scene_waves_sines_and_steep_sines) {
+    ww_error err = {0};
+    ww_scene *sc = load_text("water:\n"
+                             "  waves:\n"
+                             "    model: sines\n"
+                             "    list:\n"
+                             "      - {direction: 30, wavelength: 12, amplitude: 0.25, phase: 90}\n",
+                             NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (!sc) return;
+    ENSURE_EQ_INT(sc->wave_model, WW_WAVES_SINES);
+    ENSURE_EQ_INT(sc->nwaves, 1);
+    ENSURE(sc->waves[0].steepness == 0.0 && sc->waves[0].exponent == 1.0);
+    ENSURE_NEAR(sc->waves[0].amplitude, 0.25, SCENE_VALUE_TOL);
+    ENSURE_NEAR(sc->waves[0].omega, sqrt(WW_G * WW_TAU / 12.0), SCENE_VALUE_TOL);
+    ENSURE_EQ_INT(sc->waves[0].line, 5);
+    ENSURE_EQ_INT(sc->waves[0].column, 9);
+    ENSURE(sc->fold_sum == 0.0 && sc->nwarnings == 0);
+    ww_scene_free(sc);
+
+    /* steep sines: exponent 2 by default, or as given; the mean of the profile from it */
+    sc = load_text("water:\n"
+                   "  waves:\n"
+                   "    model: steep_sines\n"
+                   "    list:\n"
+                   "      - {direction: 0, wavelength: 8, amplitude: 0.2}\n"
+                   "      - {direction: 0, wavelength: 5, amplitude: 0.1, exponent: 4}\n"
+                   "      - {direction: 0, wavelength: 3, amplitude: 0.1, exponent: 2.7}\n",
+                   NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (!sc) return;
+    ENSURE_EQ_INT(sc->nwaves, 3);
+    ENSURE(sc->waves[0].exponent == 2.0 && sc->waves[1].exponent == 4.0);
+    ENSURE(sc->waves[1].steepness == 0.0);
+    /* exact: e = 2 gives (1/2 + 1) / 4 = 3/8; e = 4 gives 35/128 */
+    ENSURE_NEAR(sc->waves[0].mean, 0.375, STEEP_MEAN_QUADRATURE_TOL);
+    ENSURE_NEAR(sc->waves[1].mean, 35.0 / 128.0, STEEP_MEAN_QUADRATURE_TOL);
+    ENSURE_NEAR(sc->waves[2].mean, mean_by_quadrature(2.7), STEEP_MEAN_QUADRATURE_TOL);
+    ww_scene_free(sc);
+
+    /* a steepness is checked but only Gerstner models read it: a scene switches family by --set */
+    sc = load_text("water: {waves: {model: steep_sines, list: [{direction: 0, "
+                   "wavelength: 8, amplitude: 0.2, steepness: 0.5}]}}\n",
+                   NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE(sc->waves[0].steepness == 0.0 && sc->waves[0].exponent == 2.0);
+        ww_scene_free(sc);
+    }
+    ENSURE_EQ_INT(load_code("water: {waves: {model: sines, list: [{direction: 0, "
+                            "wavelength: 8, amplitude: 0.2, steepness: 1.5}]}}\n",
+                            NULL, 0, &err),
+                  WW_E_RANGE);
+    /* an exponent is checked but only steep sines read it; speed 0 is deep-water dispersion */
+    sc = load_text("water: {waves: {model: gerstner, list: [{direction: 0, wavelength: 8, "
+                   "amplitude: 0.2, exponent: 3, speed: 0}]}}\n",
+                   NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE(sc->waves[0].exponent == 1.0 && sc->waves[0].steepness == 0.5);
+        ENSURE_NEAR(sc->waves[0].omega, sqrt(WW_G * WW_TAU / 8.0), SCENE_VALUE_TOL);
+        ww_scene_free(sc);
+    }
+    ENSURE_EQ_INT(load_code("water: {waves: {model: gerstner, list: [{direction: 0, "
+                            "wavelength: 8, amplitude: 0.2, exponent: 65}]}}\n",
+                            NULL, 0, &err),
+                  WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {waves: {model: steep_sines, list: [{direction: 0, "
+                            "wavelength: 8, amplitude: 0.2, exponent: 0.5}]}}\n",
+                            NULL, 0, &err),
+                  WW_E_RANGE);
+    /* flat water accepts both, so one --set switches any scene to flat */
+    ww_set flat[] = {{"water.waves.model=flat"}};
+    ENSURE_EQ_INT(load_code("water: {waves: {model: steep_sines, list: [{direction: 0, "
+                            "wavelength: 8, amplitude: 0.2, exponent: 3}]}}\n",
+                            flat, 1, &err),
+                  WW_OK);
+    ENSURE_EQ_INT(load_code(TWO_WAVES, flat, 1, &err), WW_OK);
+}
+
+TEST(scene_direction_vector_normalises) {
+    ww_error err = {0};
+    ww_scene *sc = load_text("water:\n"
+                             "  waves:\n"
+                             "    list:\n"
+                             "      - {direction: [3, 4], wavelength: 10, amplitude: 0.1}\n"
+                             "      - {direction: [-0.002, 0], wavelength: 10, amplitude: 0.1}\n",
+                             NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (!sc) return;
+    ENSURE_NEAR(sc->waves[0].dir[0], 0.6, DIRECTION_VECTOR_TOL);
+    ENSURE_NEAR(sc->waves[0].dir[1], 0.8, DIRECTION_VECTOR_TOL);
+    ENSURE_NEAR(sc->waves[0].direction, atan2(4.0, 3.0), SCENE_ANGLE_TOL);
+    ENSURE_NEAR(sc->waves[1].dir[0], -1.0, DIRECTION_VECTOR_TOL);
+    ENSURE_NEAR(sc->waves[1].dir[1], 0.0, DIRECTION_VECTOR_TOL);
+    ENSURE_NEAR(sc->waves[1].direction, WW_PI, SCENE_ANGLE_TOL);
+    ww_scene_free(sc);
+
+    /* the zero vector, a vector of the wrong length, a non-finite component */
+    ENSURE_EQ_INT(load_code("water: {waves: {list: [{direction: [0, 0], wavelength: 9, "
+                            "amplitude: 1}]}}\n",
+                            NULL, 0, &err),
+                  WW_E_RANGE);
+    ENSURE_EQ_INT(err.column, 36); /* the vector */
+    ENSURE_EQ_INT(load_code("water: {waves: {list: [{direction: [1, 0, 0], wavelength: 9, "
+                            "amplitude: 1}]}}\n",
+                            NULL, 0, &err),
+                  WW_E_TYPE);
+    ENSURE_EQ_INT(load_code("water: {waves: {list: [{direction: [1, .inf], wavelength: 9, "
+                            "amplitude: 1}]}}\n",
+                            NULL, 0, &err),
+                  WW_E_NONFINITE);
+    ENSURE_EQ_INT(err.column, 40); /* the component */
+}
+
+static const char *RANDOM_WAVES =
+    "seed: 3\n"
+    "water:\n"
+    "  waves:\n"
+    "    model: gerstner\n"
+    "    list:\n"
+    "      - {direction: 0, wavelength: 40, amplitude: 0.3}\n"
+    "    random: {count: 24, wavelength: [2, 30], amplitude: [0.02, 0.1], direction: 60,\n"
+    "             spread: 90, steepness: 0.2}\n";
+
+TEST(scene_random_waves_seeded_and_in_range) {
+    ww_error err = {0};
+    ww_scene *a = load_text(RANDOM_WAVES, NULL, 0, &err);
+    ww_scene *b = load_text(RANDOM_WAVES, NULL, 0, &err);
+    ww_set other[] = {{"seed=4"}};
+    ww_scene *c = load_text(RANDOM_WAVES, other, 1, &err);
+    ENSURE_MSG(a && b && c, "%s", err.msg);
+    if (a && b && c) {
+        ENSURE_EQ_INT(a->nwaves, 25);
+        ENSURE_EQ_INT(a->wave_random.count, 24);
+        ENSURE_NEAR(a->waves[0].wavelength, 40.0, SCENE_VALUE_TOL); /* the list comes first */
+        ENSURE(memcmp(a->waves, b->waves, sizeof(ww_wave) * 25) == 0);
+        int moved = 0;
+        for (int i = 1; i < 25; i++) {
+            const ww_wave *w = &a->waves[i];
+            ENSURE(w->wavelength >= 2.0 && w->wavelength <= 30.0);
+            ENSURE(w->amplitude >= 0.02 && w->amplitude <= 0.1);
+            ENSURE(w->direction >= ww_m_rad(15.0) && w->direction <= ww_m_rad(105.0));
+            ENSURE(w->phase >= 0.0 && w->phase < WW_TAU);
+            ENSURE(w->steepness == 0.2 && w->exponent == 1.0);
+            ENSURE_NEAR(w->omega, sqrt(WW_G * WW_TAU / w->wavelength), SCENE_VALUE_TOL);
+            ENSURE_EQ_INT(w->line, 7);
+            moved += c->waves[i].wavelength != w->wavelength && c->waves[i].phase != w->phase;
+        }
+        ENSURE_EQ_INT(moved, 24); /* another seed, other draws */
+    }
+    ww_scene_free(a);
+    ww_scene_free(b);
+    ww_scene_free(c);
+
+    /* an empty section draws the default 16; sines draw no steepness; steep sines the exponent */
+    ww_scene *s = load_text("water: {waves: {model: steep_sines, random: {exponent: 5}}}\n", NULL,
+                            0, &err);
+    ENSURE_MSG(s != NULL, "%s", err.msg);
+    if (s) {
+        ENSURE_EQ_INT(s->nwaves, 16);
+        ENSURE(s->waves[15].steepness == 0.0 && s->waves[15].exponent == 5.0);
+        ENSURE(s->waves[15].wavelength >= 2.0 && s->waves[15].wavelength <= 30.0);
+        ww_scene_free(s);
+    }
+    ENSURE_EQ_INT(load_code("water: {waves: {random: {count: 4, wavelength: [5, 5]}}}\n", NULL, 0,
+                            &err),
+                  WW_E_INCONSISTENT);
+    ENSURE_EQ_INT(load_code("water: {waves: {random: {count: 256}}}\n", NULL, 0, &err), WW_OK);
+    ENSURE_EQ_INT(load_code("water: {waves: {random: {count: 257}}}\n", NULL, 0, &err),
+                  WW_E_RANGE);
+}
+
+TEST(scene_spectrum_model_loads_components) {
+    ww_error err = {0};
+    ww_scene *sc = load_text("seed: 9\n"
+                             "water:\n"
+                             "  waves:\n"
+                             "    model: spectrum\n"
+                             "    spectrum: {kind: jonswap, wind_speed: 12, fetch: 50000, "
+                             "gamma: 2, direction: [0, 1],\n"
+                             "               spread: 15, count: 48, wavelength: [0.5, 200], "
+                             "steepness: 0.4}\n",
+                             NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (!sc) return;
+    const ww_spectrum_desc *d = &sc->spectrum;
+    ENSURE_EQ_INT(sc->wave_model, WW_WAVES_SPECTRUM);
+    ENSURE_EQ_INT(d->kind, WW_SPECTRUM_JONSWAP);
+    ENSURE_NEAR(d->wind_speed, 12.0, SCENE_VALUE_TOL);
+    ENSURE_NEAR(d->fetch, 50000.0, SCENE_VALUE_TOL);
+    ENSURE_NEAR(d->gamma, 2.0, SCENE_VALUE_TOL);
+    ENSURE_NEAR(d->direction, WW_PI / 2.0, SCENE_ANGLE_TOL);
+    ENSURE_NEAR(d->spread, ww_m_rad(15.0), SCENE_ANGLE_TOL);
+    ENSURE_NEAR(d->wavelength[0], 0.5, SCENE_VALUE_TOL);
+    ENSURE_EQ_INT(sc->nwaves, 48);
+    ENSURE_NEAR(sc->fold_sum, 0.4, FOLD_CLAMP_TOL);
+    ENSURE(sc->fold_sum == sc->fold_sum_given);
+    for (int i = 0; i < sc->nwaves; i++) {
+        ENSURE(sc->waves[i].wavelength >= 0.5 * (1 - 1e-12) &&
+               sc->waves[i].wavelength <= 200.0 * (1 + 1e-12));
+        ENSURE_EQ_INT(sc->waves[i].line, 5);
+    }
+    ww_scene_free(sc);
+
+    /* the defaults (Pierson-Moskowitz at 8 m/s, 32 components) and the model's exclusions */
+    sc = load_text("water: {waves: {model: spectrum}}\n", NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE_EQ_INT(sc->spectrum.kind, WW_SPECTRUM_PM);
+        ENSURE_EQ_INT(sc->nwaves, 32);
+        ENSURE_NEAR(sc->fold_sum, 0.5, FOLD_CLAMP_TOL);
+        ww_scene_free(sc);
+    }
+    ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, random: {count: 3}}}\n", NULL, 0,
+                            &err),
+                  WW_E_INCONSISTENT);
+    ENSURE_EQ_INT(load_code("water: {waves: {model: gerstner, spectrum: {count: 3}}}\n", NULL, 0,
+                            &err),
+                  WW_E_INCONSISTENT);
+    ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, spectrum: {steepness: 0.96}}}\n",
+                            NULL, 0, &err),
+                  WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, spectrum: {gamma: 0.5}}}\n", NULL,
+                            0, &err),
+                  WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, spectrum: {wind_speed: 0}}}\n",
+                            NULL, 0, &err),
+                  WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, spectrum: {count: 0}}}\n", NULL, 0,
+                            &err),
+                  WW_E_RANGE);
+    /* a range far from the peak (1 m/s wind peaks at 0.83 m): an empty sea is an error */
+    ENSURE_EQ_INT(load_code("water: {waves: {model: spectrum, spectrum: {wind_speed: 1, "
+                            "wavelength: [10, 300]}}}\n",
+                            NULL, 0, &err),
+                  WW_E_INCONSISTENT);
+    ENSURE_MSG(strstr(err.msg, "hold almost none") && strstr(err.msg, "0.8327 m"), "%s", err.msg);
+}
+
+/* sum Q k A = 0.8 (2 pi / 5) 0.4 + 0.6 (2 pi / 3) 0.2 + 0.9 (2 pi / 4) 0.25
+ *           = 0.4021 + 0.2513 + 0.3534 = 1.0068: no wave folds alone, together they do */
+static const char *FOLDING =
+    "water:\n"
+    "  waves:\n"
+    "    list:\n"
+    "      - {direction: 0, wavelength: 5, amplitude: 0.4, steepness: 0.8}\n"
+    "      - {direction: 60, wavelength: 3, amplitude: 0.2, steepness: 0.6}\n"
+    "      - {direction: 120, wavelength: 4, amplitude: 0.25, steepness: 0.9}\n";
+
+TEST(scene_fold_policies) {
+    double want = 0.8 * WW_TAU / 5.0 * 0.4 + 0.6 * WW_TAU / 3.0 * 0.2 + 0.9 * WW_TAU / 4.0 * 0.25;
+    ww_error err = {0};
+
+    /* warn, the default: kept as given, one warning with the place, the sum and the margin */
+    ww_scene *sc = load_text(FOLDING, NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE_EQ_INT(sc->fold, WW_FOLD_WARN);
+        ENSURE_NEAR(sc->fold_sum, want, FOLD_CLAMP_TOL);
+        ENSURE(sc->fold_sum == sc->fold_sum_given);
+        ENSURE_NEAR(sc->waves[2].steepness, 0.9, SCENE_VALUE_TOL);
+        ENSURE_EQ_INT(sc->nwarnings, 1);
+        char sum[32], margin[32];
+        snprintf(sum, sizeof sum, "sum Q k A = %.6g", want);
+        snprintf(margin, sizeof margin, "margin 1 - sum = %.6g", 1.0 - want);
+        ENSURE_MSG(strstr(sc->warnings[0], "inline.yaml:2:3: warning: water.waves folds") ==
+                           sc->warnings[0] &&
+                       strstr(sc->warnings[0], sum) && strstr(sc->warnings[0], margin),
+                   "%s", sc->warnings[0]);
+        ww_scene_free(sc);
+    }
+
+    /* clamp: every Q scaled by one factor, to a sum of 0.9, with a warning saying so */
+    ww_set clamp[] = {{"water.fold=clamp"}};
+    sc = load_text(FOLDING, clamp, 1, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE_NEAR(sc->fold_sum, WW_FOLD_CLAMP_SUM, FOLD_CLAMP_TOL);
+        ENSURE_NEAR(ww_waves_fold_sum(sc), WW_FOLD_CLAMP_SUM, FOLD_CLAMP_TOL);
+        ENSURE_NEAR(sc->fold_sum_given, want, FOLD_CLAMP_TOL);
+        ENSURE_NEAR(sc->waves[0].steepness / 0.8, WW_FOLD_CLAMP_SUM / want, FOLD_CLAMP_TOL);
+        ENSURE_NEAR(sc->waves[2].steepness / 0.9, WW_FOLD_CLAMP_SUM / want, FOLD_CLAMP_TOL);
+        ENSURE_EQ_INT(sc->nwarnings, 1);
+        ENSURE_MSG(strstr(sc->warnings[0], "clamp scaled every steepness") &&
+                       strstr(sc->warnings[0], "to a sum of 0.9"),
+                   "%s", sc->warnings[0]);
+        ww_scene_free(sc);
+    }
+
+    /* error: a range error at water.waves */
+    ww_set error[] = {{"water.fold=error"}};
+    ENSURE_EQ_INT(load_code(FOLDING, error, 1, &err), WW_E_RANGE);
+    ENSURE_EQ_INT(err.line, 2);
+    ENSURE_EQ_INT(err.column, 3);
+    ENSURE_MSG(strstr(err.msg, "folds over itself") && strstr(err.msg, "warn") &&
+                   strstr(err.msg, "clamp"),
+               "%s", err.msg);
+
+    /* under 1 every policy loads quietly; a typo in the policy is an enum error */
+    sc = load_text(TWO_WAVES, error, 1, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE_EQ_INT(sc->nwarnings, 0);
+        ENSURE_NEAR(sc->fold_sum, 0.5 * WW_TAU / 10.0 * 0.5 + 0.5 * WW_TAU / 20.0 * 0.4,
+                    FOLD_CLAMP_TOL);
+        ww_scene_free(sc);
+    }
+    ww_set typo[] = {{"water.fold=clmap"}};
+    ENSURE_EQ_INT(load_code(TWO_WAVES, typo, 1, &err), WW_E_ENUM);
+    ENSURE(strstr(err.msg, "did you mean 'clamp'") != NULL);
+}
+
+TEST(scene_ripples_defaults_and_events) {
+    ww_error err = {0};
+    /* no section and no events: no pool */
+    ww_scene *sc = load_text(TWO_WAVES, NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE(!sc->ripples_on);
+        ww_scene_free(sc);
+    }
+
+    /* an empty section: the defaults, speed from capillary-gravity dispersion */
+    sc = load_text("water: {ripples: {}}\n", NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        const ww_ripple_desc *d = &sc->ripples;
+        double k = 4.0 * WW_PI;
+        ENSURE(sc->ripples_on);
+        ENSURE_NEAR(d->amplitude, 0.05, SCENE_VALUE_TOL);
+        ENSURE_NEAR(d->lifetime, 4.0, SCENE_VALUE_TOL);
+        ENSURE_EQ_INT(d->max, 64);
+        ENSURE_NEAR(d->radial_decay, 0.25, SCENE_VALUE_TOL);
+        ENSURE_NEAR(d->time_decay, 0.6, SCENE_VALUE_TOL);
+        ENSURE_NEAR(d->wavenumber, k, SCENE_VALUE_TOL);
+        ENSURE_NEAR(d->speed, sqrt(WW_G / k + 0.0728 * k / 1000.0), SCENE_VALUE_TOL);
+        ww_scene_free(sc);
+    }
+
+    /* given values; the default speed follows the wavenumber, a given speed overrides it */
+    sc = load_text("water: {ripples: {amplitude: 0.2, lifetime: 3, max: 8, radial_decay: 0.5,\n"
+                   "                  time_decay: 1, wavenumber: 100}}\n",
+                   NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE_EQ_INT(sc->ripples.max, 8);
+        ENSURE_NEAR(sc->ripples.speed, sqrt(WW_G / 100.0 + 0.0728 * 100.0 / 1000.0),
+                    SCENE_VALUE_TOL);
+        ww_scene_free(sc);
+    }
+    ww_set speed[] = {{"water.ripples.speed=0.3"}};
+    sc = load_text("water: {ripples: {wavenumber: 100}}\n", speed, 1, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE_NEAR(sc->ripples.speed, 0.3, SCENE_VALUE_TOL);
+        ww_scene_free(sc);
+    }
+
+    /* events alone turn the pool on; amplitude defaults to the section's; sorted with others */
+    sc = load_text("time: {dt: 1/100, fps: 25}\n"
+                   "script:\n"
+                   "  - {t: 2, ripple: {at: [3, -4], amplitude: 0.1}}\n"
+                   "  - {t: 1, time_of_day: 9}\n"
+                   "  - {t: 0.5, ripple: {at: [0, 1.5]}}\n",
+                   NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE(sc->ripples_on);
+        ENSURE_EQ_INT(sc->nevents, 3);
+        ENSURE_EQ_INT(sc->events[0].kind, WW_EV_RIPPLE);
+        ENSURE_NEAR(sc->events[0].value, 0.05, SCENE_VALUE_TOL);
+        ENSURE_NEAR(sc->events[0].at[1], 1.5, SCENE_VALUE_TOL);
+        ENSURE_EQ_INT(sc->events[0].step, 50);
+        ENSURE_EQ_INT(sc->events[1].kind, WW_EV_TIME_OF_DAY);
+        ENSURE_EQ_INT(sc->events[2].kind, WW_EV_RIPPLE);
+        ENSURE_NEAR(sc->events[2].value, 0.1, SCENE_VALUE_TOL);
+        ENSURE_NEAR(sc->events[2].at[0], 3.0, SCENE_VALUE_TOL);
+        ENSURE_NEAR(sc->events[2].at[1], -4.0, SCENE_VALUE_TOL);
+        ENSURE_EQ_INT(sc->events[2].step, 200);
+        ENSURE_EQ_INT(sc->events[2].line, 3);
+        ww_scene_free(sc);
+    }
+    sc = load_text("water: {ripples: {amplitude: 0.3}}\nscript: [{t: 1, ripple: {at: [0, 0]}}]\n",
+                   NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%s", err.msg);
+    if (sc) {
+        ENSURE_NEAR(sc->events[0].value, 0.3, SCENE_VALUE_TOL);
+        ww_scene_free(sc);
+    }
+
+    /* bad ripples */
+    ENSURE_EQ_INT(load_code("water: {ripples: {max: 257}}\n", NULL, 0, &err), WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {ripples: {lifetime: 0}}\n", NULL, 0, &err), WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {ripples: {amplitude: 11}}\n", NULL, 0, &err), WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {ripples: {wavenumber: 0}}\n", NULL, 0, &err), WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("water: {ripples: {time_decay: -1}}\n", NULL, 0, &err), WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("script: [{t: 1, ripple: {at: [0, 0], amplitude: -1}}]\n", NULL, 0,
+                            &err),
+                  WW_E_RANGE);
+    ENSURE_EQ_INT(load_code("script: [{t: 1, ripple: 0.1}]\n", NULL, 0, &err), WW_E_TYPE);
+    ENSURE_EQ_INT(load_code("script: [{t: 1, ripple: {at: [0, 0]}, time_of_day: 3}]\n", NULL, 0,
+                            &err),
+                  WW_E_INCONSISTENT);
+    ENSURE(strstr(err.msg, "two actions") != NULL);
+}
+
+/* the shipped example scenes load, each with the family its name says and no warnings */
+TEST(scene_examples_load) {
+    static const struct {
+        const char *path;
+        ww_wave_model model;
+        int ripples;
+    } ex[] = {{"scenes/sines.yaml", WW_WAVES_SINES, 0},
+              {"scenes/steep_sines.yaml", WW_WAVES_STEEP_SINES, 0},
+              {"scenes/spectrum.yaml", WW_WAVES_SPECTRUM, 0},
+              {"scenes/ripples.yaml", WW_WAVES_GERSTNER, 1}};
+    for (size_t i = 0; i < sizeof ex / sizeof ex[0]; i++) {
+        ww_scene *sc = NULL;
+        ww_error err = {0};
+        ww_result r = ww_scene_load(ex[i].path, NULL, 0, &sc, &err);
+        ENSURE_MSG(r == WW_OK, "%s:%d:%d: %s", err.file, err.line, err.column, err.msg);
+        if (!sc) continue;
+        ENSURE_EQ_INT(sc->wave_model, ex[i].model);
+        ENSURE(sc->nwaves > 0);
+        ENSURE_EQ_INT(sc->ripples_on, ex[i].ripples);
+        ENSURE_EQ_INT(sc->nwarnings, 0);
+        ENSURE(sc->width == 256 && sc->height == 144);
+        ENSURE(sc->duration >= 2.0 && sc->duration <= 4.0);
+        ww_scene_free(sc);
+    }
+}
+
+/* the format's reference block (every wave key, random and ripples), as documented */
+TEST(scene_format_reference_block_loads) {
+    ww_error err = {0};
+    ww_scene *sc = load_text(
+        "water:\n"
+        "  fold: warn\n"
+        "  waves:\n"
+        "    model: gerstner\n"
+        "    list:\n"
+        "      - {direction: 20, wavelength: 12, amplitude: 0.25, steepness: 0.6, phase: 0, "
+        "speed: 0, exponent: 2}\n"
+        "    random: {count: 16, wavelength: [2, 30], amplitude: [0.02, 0.1], direction: 0, "
+        "spread: 90,\n"
+        "             steepness: 0.5, exponent: 2}\n"
+        "  ripples: {amplitude: 0.05, lifetime: 4, max: 64, radial_decay: 0.25, time_decay: 0.6,\n"
+        "            wavenumber: 12.566}\n"
+        "script:\n"
+        "  - {t: 2, ripple: {at: [1, -3], amplitude: 0.1}}\n",
+        NULL, 0, &err);
+    ENSURE_MSG(sc != NULL, "%d:%d: %s", err.line, err.column, err.msg);
+    if (!sc) return;
+    ENSURE_EQ_INT(sc->nwaves, 17);
+    ENSURE(sc->ripples_on && sc->nevents == 1 && sc->events[0].kind == WW_EV_RIPPLE);
+    ww_scene_free(sc);
 }

@@ -11,6 +11,11 @@
 #include "core/mathx.h"
 #include "core/rng.h"
 #include "core/sincos.h"
+#include "sim/ripples.h"
+#include "scene/spectrum.h"
+#include "sim/state.h"
+#include "sim/wave_stats.h"
+#include "sim/water.h"
 #include "sim/waves.h"
 #include "test.h"
 
@@ -28,13 +33,42 @@
 #define NORMAL_FD_TOL 1e-7
 /* particle velocity against a central difference in time of the displaced point, m/s */
 #define VELOCITY_FD_TOL 1e-7
-/* batch (ww_sincos) against scalar (libm) in double, m: 1e-16 per component value, summed */
-#define BATCH_SCALAR_TOL 1e-12
 /* the same model evaluated two equivalent ways (steep sines e = 1 against sines), m */
 #define SAME_MODEL_TOL 1e-14
 /* relative evaluation at 1e5 m against long double from the raw parameters, m: the double
  * phase of the origin at t (omega t ~ 1e6 rad rounds to ~1e-10 rad) times k A */
 #define FAR_POINT_TOL 1e-9
+
+/* the query's bound at fold margin >= 0.1: residual below this within QUERY_MAX_IT evaluations */
+#define QUERY_RESIDUAL_TOL 1e-6
+#define QUERY_MAX_IT 8
+/* what the query reports against the same quantity recomputed from its rest point: rounding */
+#define QUERY_CONSISTENCY_TOL 1e-12
+/* the world normal against central differences of the queried height (tolerance 1e-13 m, step
+ * QUERY_FD_STEP): the height's error over the step (1e-8) plus the truncation k^3 A step^2 / 6 */
+#define QUERY_NORMAL_FD_TOL 1e-7
+#define QUERY_FD_STEP 1e-5
+/* ripple gradient and dh/dt against central differences (step FD_STEP; k up to 6 rad/m) */
+#define RIPPLE_FD_TOL 1e-8
+/* a far query's surface point against long double evaluation from the raw parameters, m */
+#define QUERY_FAR_TOL 1e-9
+
+/* statistics in closed form against the same numbers computed directly: rounding */
+#define STATS_EXACT_TOL 1e-12
+/* the steep-sine variance against trapezoidal quadrature of h^2 on 4096 points, m^2 per A^2 */
+#define STEEP_VARIANCE_TOL 1e-12
+/* the steep-sine slope bound against a scan of 1e6 phases: near the maximum the scan misses
+ * f'' (pi / 1e6)^2 / 2, about 1e-11 relative */
+#define STEEP_SLOPE_SCAN_TOL 1e-9
+/* sampled extremes of a single wave on an n = 64 grid: the phases sampled leave gaps of at most
+ * 2 pi / 64, so the sampled extreme of a smooth profile misses the true one by at most
+ * (1 - cos(pi / 64)) ~ 1.2e-3 of its size (for the fold margin) or f'' (pi / 64)^2 / 2 (slope) */
+#define STATS_SAMPLE_REL_TOL 0.0125
+/* the spectrum's peak period against 2 pi / (0.877 g / U): 0.877 is (0.8 beta)^(1/4) rounded */
+#define PM_PEAK_REL_TOL 1e-3
+/* Hs of a Pierson-Moskowitz sea against 0.21 U^2 / g (the issue's 5%; 0.21 is rounded and the
+ * sampled range leaves out the far tails) */
+#define PM_HS_REL_TOL 0.05
 
 /* ---- scenes ---- */
 
@@ -325,8 +359,10 @@ TEST(waves_batch_matches_scalar) {
                 double pd[3], nd[3];
                 ww_waves_eval(sc, ph, x[j], z[j], pd, nd);
                 for (int c = 0; c < 3; c++) {
-                    ENSURE_NEAR(pos[c][j], pd[c], BATCH_SCALAR_TOL);
-                    ENSURE_NEAR(nor[c][j], nd[c], BATCH_SCALAR_TOL);
+                    /* the same operations in the same order, one lane per point: equal bits */
+                    ENSURE_MSG(pos[c][j] == pd[c] && nor[c][j] == nd[c],
+                               "%s point %d: batch (%.17g, %.17g) scalar (%.17g, %.17g)",
+                               FAMILIES[fi].name, j, pos[c][j], nor[c][j], pd[c], nd[c]);
                     worst = fmax(worst, fabs(pos[c][j] - pd[c]));
                     worstf = fmax(worstf, fabs((double)posf[c][j] - p[c]));
                     worstfn = fmax(worstfn, fabs((double)norf[c][j] - n[c]));
@@ -385,6 +421,513 @@ TEST(waves_far_point_relative_matches_long_double) {
             ENSURE_NEAR(p[1], (double)Y, FAR_POINT_TOL);
             ENSURE_NEAR(p[0] + rx, (double)X, FAR_POINT_TOL);
         }
+    }
+    free(sc);
+}
+
+/* ---- the exact surface query ---- */
+
+/* |X(rest) - x| recomputed from the reported rest point */
+static double true_residual(const ww_scene *sc, const double *ph, double x, double z,
+                            const ww_water_sample *o) {
+    ww_wave_point p;
+    ww_waves_point(sc, ph, o->rest[0], o->rest[1], 0.0, &p);
+    return hypot(p.p[0] - x, p.p[2] - z);
+}
+
+TEST(water_inversion_converges_within_8_at_fold_margin_0_1) {
+    /* fold margins 0.5, 0.2, 0.1 (sum Q k A = 0.5, 0.8, 0.9): every query reaches 1e-6 m */
+    const double sums[] = {0.5, 0.8, 0.9};
+    const int counts[] = {1, 2, 3, 8, 64};
+    const ww_query_opts opts = {.tolerance = QUERY_RESIDUAL_TOL, .max_iterations = QUERY_MAX_IT};
+    for (int si = 0; si < 3; si++) {
+        long total = 0, queries = 0;
+        int worst_it = 0;
+        double worst_res = 0.0;
+        for (int ci = 0; ci < 5; ci++) {
+            for (int seed = 0; seed < 6; seed++) {
+                ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+                random_sea(sc, counts[ci], 0.5, 40.0, sums[si], 1.0, 500 + (uint64_t)(seed * 7 + ci));
+                double ph[WW_MAX_WAVES], t = 1.7 * seed;
+                ww_waves_phases(sc, t, ph);
+                ww_field f = {.sc = sc, .phase = ph, .t = t};
+                for (int j = 0; j < 300; j++) {
+                    double x = 40.0 * (j % 20) / 20.0 - 13.0, z = 40.0 * (j / 20) / 15.0 + 2.0;
+                    ww_water_sample o;
+                    int ok = ww_water_height(&f, x, z, &opts, &o);
+                    ENSURE_MSG(ok && o.converged && o.iterations <= QUERY_MAX_IT,
+                               "sum %.1f n %d seed %d at (%g, %g): residual %.3g after %d",
+                               sums[si], counts[ci], seed, x, z, o.residual, o.iterations);
+                    ENSURE_NEAR(true_residual(sc, ph, x, z, &o), 0.0, QUERY_RESIDUAL_TOL);
+                    total += o.iterations;
+                    queries++;
+                    worst_it = o.iterations > worst_it ? o.iterations : worst_it;
+                    worst_res = fmax(worst_res, o.residual);
+                }
+                free(sc);
+            }
+        }
+        printf("    fold margin %.1f: %ld queries, mean %.2f evaluations, max %d, max residual "
+               "%.2g m\n", 1.0 - sums[si], queries, (double)total / (double)queries, worst_it,
+               worst_res);
+    }
+}
+
+TEST(water_steep_and_folding_seas_report_honestly) {
+    /* margins 0.05 and 0 and a folding sea (sum 1.2): finite answers, the residual and the
+     * converged flag true to the reported rest point, within the iteration cap */
+    const double sums[] = {0.95, 1.0, 1.2};
+    const int caps[] = {8, 32};
+    for (int si = 0; si < 3; si++) {
+        for (int ki = 0; ki < 2; ki++) {
+            const ww_query_opts opts = {.tolerance = QUERY_RESIDUAL_TOL, .max_iterations = caps[ki]};
+            int missed = 0, queries = 0, worst_it = 0;
+            long total = 0;
+            double worst = 0.0;
+            for (int seed = 0; seed < 8; seed++) {
+                ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+                random_sea(sc, 1 + seed % 4, 0.5, 40.0, sums[si], 1.0, 900 + (uint64_t)seed);
+                double ph[WW_MAX_WAVES], total_amp = ww_waves_total_amplitude(sc);
+                ww_waves_phases(sc, 0.3 * seed, ph);
+                ww_field f = {.sc = sc, .phase = ph, .t = 0.3 * seed};
+                for (int j = 0; j < 250; j++) {
+                    double x = 0.173 * j - 20.0, z = 11.0 * sin(0.05 * j);
+                    ww_water_sample o;
+                    int ok = ww_water_height(&f, x, z, &opts, &o);
+                    ENSURE(isfinite(o.height) && isfinite(o.residual));
+                    ENSURE(fabs(o.height) <= total_amp);
+                    ENSURE_NEAR(hypot(o.normal[0], hypot(o.normal[1], o.normal[2])), 1.0,
+                                QUERY_CONSISTENCY_TOL);
+                    ENSURE(o.normal[1] >= 0.0);
+                    for (int c = 0; c < 3; c++) ENSURE(isfinite(o.velocity[c]));
+                    ENSURE(o.iterations >= 1 && o.iterations <= caps[ki]);
+                    ENSURE(ok == o.converged && o.converged == (o.residual <= QUERY_RESIDUAL_TOL));
+                    ENSURE_NEAR(true_residual(sc, ph, x, z, &o), o.residual, QUERY_CONSISTENCY_TOL);
+                    missed += !o.converged;
+                    queries++;
+                    total += o.iterations;
+                    worst_it = o.iterations > worst_it ? o.iterations : worst_it;
+                    if (!o.converged) worst = fmax(worst, o.residual);
+                }
+                free(sc);
+            }
+            printf("    sum Q k A %.2f, cap %2d: %d/%d not converged (worst residual %.2g m), "
+                   "mean %.2f evaluations, max %d\n", sums[si], caps[ki], missed, queries, worst,
+                   (double)total / queries, worst_it);
+            /* below the fold the query still converges (more slowly) */
+            if (sums[si] < 1.0 && caps[ki] == 32) ENSURE_EQ_INT(missed, 0);
+        }
+    }
+    /* a cap that cannot be met is reported as such */
+    ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+    add_wave(sc, 30, 10, 0.5, 1.0, 1.0);
+    double ph[1];
+    ww_waves_phases(sc, 0.0, ph);
+    ww_field f = {.sc = sc, .phase = ph};
+    ww_water_sample o;
+    const ww_query_opts one = {.max_iterations = 1};
+    ENSURE_EQ_INT(ww_water_height(&f, 1.0, 2.0, &one, &o), 0);
+    ENSURE(o.iterations == 1 && !o.converged && o.residual > WW_QUERY_TOLERANCE);
+    ENSURE_NEAR(true_residual(sc, ph, 1.0, 2.0, &o), o.residual, QUERY_CONSISTENCY_TOL);
+    free(sc);
+}
+
+TEST(water_inversion_agrees_with_brute_force_grid) {
+    /* the rest point minimising |a + D(a) - x| over a fine grid around x (the root is within
+     * sum Q A of x, and unique below the fold) against the query's */
+    for (int seed = 0; seed < 2; seed++) {
+        ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+        random_sea(sc, 4, 1.0, 30.0, 0.9, 1.0, 1200 + (uint64_t)seed);
+        double ph[4], R = 0.0;
+        for (int i = 0; i < sc->nwaves; i++) R += sc->waves[i].steepness * sc->waves[i].amplitude;
+        ww_waves_phases(sc, 2.0, ph);
+        ww_field f = {.sc = sc, .phase = ph, .t = 2.0};
+        const int n = 500;
+        double h = 2.0 * R / n; /* grid step, m */
+        for (int q = 0; q < 3; q++) {
+            double x = 3.1 * q - 2.0, z = 1.7 * q + 0.5, bx = x, bz = z, bres = INFINITY;
+            for (int i = 0; i <= n; i++) {
+                for (int j = 0; j <= n; j++) {
+                    double ax = x - R + h * i, az = z - R + h * j, p[3];
+                    ww_waves_eval(sc, ph, ax, az, p, NULL);
+                    double r = hypot(p[0] - x, p[2] - z);
+                    if (r < bres) {
+                        bres = r;
+                        bx = ax;
+                        bz = az;
+                    }
+                }
+            }
+            ww_water_sample o;
+            ENSURE(ww_water_height(&f, x, z, NULL, &o));
+            /* |F| grows at least (1 - sum) |a - a*| and at most (1 + sum) |a - a*|: the grid's
+             * best is within h (1 + sum) / (1 - sum) of the root */
+            double grid_tol = h * 1.9 / 0.1;
+            ENSURE_NEAR(o.rest[0], bx, grid_tol);
+            ENSURE_NEAR(o.rest[1], bz, grid_tol);
+            ENSURE(o.residual <= bres); /* and it is closer than any grid point */
+        }
+        free(sc);
+    }
+}
+
+static void ripple_setup(ww_scene *sc) {
+    sc->ripples_on = 1;
+    sc->ripples = (ww_ripple_desc){.amplitude = 0.05, .lifetime = 10.0, .max = 4,
+                                   .radial_decay = 0.1, .time_decay = 0.3, .wavenumber = 6.0,
+                                   .speed = 1.2};
+}
+
+TEST(water_query_matches_surface_point_and_finite_differences) {
+    /* every family with two ripples: the reported height, normal and velocity are the surface
+     * at the reported rest point plus the ripples; the normal is the finite-difference normal
+     * of the queried height field */
+    for (int fi = 0; fi < NFAMILIES; fi++) {
+        ww_scene *sc = family_sea(&FAMILIES[fi], 5, 40 + (uint64_t)fi);
+        sc->water_level = 0.3;
+        ripple_setup(sc);
+        ww_state *st = ww_state_new(sc);
+        st->t = 1.0;
+        ww_ripples_add(sc, st, 1.0, -1.0, 0.04);
+        st->t = 2.5;
+        ww_ripples_add(sc, st, -2.0, 0.5, 0.03);
+        double t = 4.0, ph[5], phm[5], php[5];
+        ww_waves_phases(sc, t, ph);
+        ww_waves_phases(sc, t - FD_STEP, phm);
+        ww_waves_phases(sc, t + FD_STEP, php);
+        ww_field f = {.sc = sc, .phase = ph, .t = t, .ripples = st->ripple};
+        const ww_query_opts opts = {.tolerance = 1e-13};
+        for (int j = 0; j < 12; j++) {
+            double x = -3.0 + 0.55 * j, z = 1.5 - 0.35 * j;
+            ww_water_sample o, xm, xp, zm, zp;
+            ENSURE(ww_water_height(&f, x, z, &opts, &o));
+            ww_wave_point p;
+            ww_waves_point(sc, ph, o.rest[0], o.rest[1], 0.0, &p);
+            double rg[2], rdt, rh = ww_ripples_height(sc, st->ripple, t, x, z, rg, &rdt);
+            ENSURE(rh != 0.0);
+            ENSURE_NEAR(o.height, p.p[1] + rh, QUERY_CONSISTENCY_TOL);
+            ENSURE_NEAR(o.velocity[0], p.vel[0], QUERY_CONSISTENCY_TOL);
+            ENSURE_NEAR(o.velocity[1], p.vel[1] + rdt, QUERY_CONSISTENCY_TOL);
+            ENSURE_NEAR(o.velocity[2], p.vel[2], QUERY_CONSISTENCY_TOL);
+            if (FAMILIES[fi].model != WW_WAVES_GERSTNER)
+                ENSURE(o.rest[0] == x && o.rest[1] == z && o.iterations == 1);
+            double h = QUERY_FD_STEP;
+            ww_water_height(&f, x - h, z, &opts, &xm);
+            ww_water_height(&f, x + h, z, &opts, &xp);
+            ww_water_height(&f, x, z - h, &opts, &zm);
+            ww_water_height(&f, x, z + h, &opts, &zp);
+            double n[3] = {-(xp.height - xm.height) / (2 * h), 1.0,
+                           -(zp.height - zm.height) / (2 * h)};
+            ww_m_normalize3(n);
+            for (int c = 0; c < 3; c++) ENSURE_NEAR(o.normal[c], n[c], QUERY_NORMAL_FD_TOL);
+            /* without sideways motion the surface velocity is dh/dt at the world point */
+            if (FAMILIES[fi].model != WW_WAVES_GERSTNER) {
+                ww_field fm = f, fp = f;
+                fm.phase = phm;
+                fm.t = t - FD_STEP;
+                fp.phase = php;
+                fp.t = t + FD_STEP;
+                ww_water_sample tm, tp;
+                ww_water_height(&fm, x, z, &opts, &tm);
+                ww_water_height(&fp, x, z, &opts, &tp);
+                ENSURE_NEAR(o.velocity[1], (tp.height - tm.height) / (2 * FD_STEP), VELOCITY_FD_TOL);
+            }
+        }
+        ww_state_free(st);
+        free(sc);
+    }
+}
+
+TEST(water_query_min_wavelength_ignores_short_components) {
+    ww_scene *all = new_scene(WW_WAVES_GERSTNER), *lng = new_scene(WW_WAVES_GERSTNER);
+    random_sea(all, 10, 0.5, 50, 0.7, 1.0, 21);
+    double ph[10], phl[10];
+    ww_waves_phases(all, 3.0, ph);
+    lng->nwaves = 0;
+    for (int i = 0; i < all->nwaves; i++)
+        if (all->waves[i].wavelength >= 5.0) {
+            phl[lng->nwaves] = ph[i];
+            lng->waves[lng->nwaves++] = all->waves[i];
+        }
+    ENSURE(lng->nwaves > 0 && lng->nwaves < all->nwaves);
+    ww_field fa = {.sc = all, .phase = ph, .t = 3.0}, fl = {.sc = lng, .phase = phl, .t = 3.0};
+    const ww_query_opts skip = {.min_wavelength = 5.0};
+    for (int j = 0; j < 10; j++) {
+        ww_water_sample a, b, c;
+        ENSURE(ww_water_height(&fa, 1.1 * j, -0.7 * j, &skip, &a));
+        ENSURE(ww_water_height(&fl, 1.1 * j, -0.7 * j, NULL, &b));
+        ENSURE(ww_water_height(&fa, 1.1 * j, -0.7 * j, NULL, &c));
+        ENSURE(a.height == b.height && a.normal[1] == b.normal[1] && a.velocity[1] == b.velocity[1]);
+        ENSURE(a.height != c.height);
+    }
+    free(all);
+    free(lng);
+}
+
+TEST(water_query_hard_cases) {
+    /* 1 and 256 components, wavelengths 0.01 m and 1000 m together, t = 1e6 s, the folding limit:
+     * finite, bounded answers whose converged flag is true to the residual */
+    ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+    for (int kind = 0; kind < 4; kind++) {
+        sc->nwaves = 0;
+        if (kind == 0) add_wave(sc, 10, 7.0, 0.5, 0.8, 1.0);
+        if (kind == 1) random_sea(sc, 256, 0.3, 300.0, 0.9, 1.0, 31);
+        if (kind == 2) {
+            add_wave(sc, 20, 0.01, 0.01 / WW_TAU * 0.3, 1.0, 1.0);
+            add_wave(sc, 200, 1000.0, 1000.0 / WW_TAU * 0.5, 1.0, 1.0);
+        }
+        if (kind == 3) add_wave(sc, 45, 5.0, 5.0 / WW_TAU, 1.0, 1.0); /* Q k A = 1: cusps */
+        double ph[WW_MAX_WAVES], amp = ww_waves_total_amplitude(sc);
+        const double times[] = {0.0, 1e6};
+        for (int ti = 0; ti < 2; ti++) {
+            ww_waves_phases(sc, times[ti], ph);
+            ww_field f = {.sc = sc, .phase = ph, .t = times[ti]};
+            int missed = 0, most = 0;
+            for (int j = 0; j < 200; j++) {
+                double x = 0.0137 * j * (kind == 2 ? 10.0 : 1.0) - 1.0, z = 0.021 * j;
+                ww_water_sample o;
+                ww_water_height(&f, x, z, NULL, &o);
+                ENSURE(isfinite(o.height) && fabs(o.height) <= amp);
+                ENSURE(isfinite(o.normal[0]) && isfinite(o.normal[1]) && isfinite(o.normal[2]));
+                ENSURE(o.converged == (o.residual <= WW_QUERY_TOLERANCE));
+                ENSURE_NEAR(true_residual(sc, ph, x, z, &o), o.residual, QUERY_CONSISTENCY_TOL);
+                if (kind < 3) ENSURE(o.converged);
+                missed += !o.converged;
+                most = o.iterations > most ? o.iterations : most;
+            }
+            printf("    hard case %d at t = %g: %d/200 not converged to 1e-9 m, max %d evaluations\n",
+                   kind, times[ti], missed, most);
+        }
+    }
+    free(sc);
+}
+
+TEST(water_query_far_from_origin) {
+    /* |x| = 1e5 m at t = 1e6 s: the reported point lies on the surface computed in long double
+     * from the raw parameters */
+    ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+    random_sea(sc, 12, 0.5, 200.0, 0.8, 1.0, 61);
+    double t = 1e6, ph[12];
+    ww_waves_phases(sc, t, ph);
+    ww_field f = {.sc = sc, .phase = ph, .t = t};
+    const double at[][2] = {{1e5, 3.25}, {-1e5, 1e5}, {512.5, -99999.75}};
+    for (int q = 0; q < 3; q++) {
+        ww_water_sample o;
+        ENSURE(ww_water_height(&f, at[q][0], at[q][1], NULL, &o));
+        long double X = o.rest[0], Y = 0.0L, Z = o.rest[1];
+        for (int i = 0; i < sc->nwaves; i++) {
+            const ww_wave *w = &sc->waves[i];
+            long double phi = (long double)w->k * ((long double)w->dir[0] * o.rest[0] +
+                                                   (long double)w->dir[1] * o.rest[1]) -
+                              (long double)w->omega * t + (long double)w->phase;
+            long double qa = (long double)(w->steepness * w->amplitude);
+            X += qa * (long double)w->dir[0] * cosl(phi);
+            Z += qa * (long double)w->dir[1] * cosl(phi);
+            Y += (long double)w->amplitude * sinl(phi);
+        }
+        ENSURE_NEAR((double)(X - at[q][0]), 0.0, QUERY_FAR_TOL);
+        ENSURE_NEAR((double)(Z - at[q][1]), 0.0, QUERY_FAR_TOL);
+        ENSURE_NEAR(o.height, (double)Y, QUERY_FAR_TOL);
+    }
+    free(sc);
+}
+
+/* ---- ripples ---- */
+
+TEST(ripples_gradient_and_rate_match_finite_differences) {
+    ww_scene *sc = new_scene(WW_WAVES_FLAT);
+    ripple_setup(sc);
+    ww_state *st = ww_state_new(sc);
+    st->t = 0.5;
+    ww_ripples_add(sc, st, 0.0, 0.0, 0.05);
+    st->t = 1.0;
+    ww_ripples_add(sc, st, 1.5, -0.5, 0.02);
+    double t = 3.0, h = FD_STEP;
+    int inside = 0;
+    for (int j = 0; j < 60; j++) {
+        /* points behind, inside and ahead of the fronts (v age = 3 m and 2.4 m) */
+        double x = -6.0 + 0.2 * j, z = 0.3 - 0.05 * j, g[2], dt;
+        double v = ww_ripples_height(sc, st->ripple, t, x, z, g, &dt);
+        double gx = (ww_ripples_height(sc, st->ripple, t, x + h, z, NULL, NULL) -
+                     ww_ripples_height(sc, st->ripple, t, x - h, z, NULL, NULL)) / (2 * h);
+        double gz = (ww_ripples_height(sc, st->ripple, t, x, z + h, NULL, NULL) -
+                     ww_ripples_height(sc, st->ripple, t, x, z - h, NULL, NULL)) / (2 * h);
+        double gt = (ww_ripples_height(sc, st->ripple, t + h, x, z, NULL, NULL) -
+                     ww_ripples_height(sc, st->ripple, t - h, x, z, NULL, NULL)) / (2 * h);
+        ENSURE_NEAR(g[0], gx, RIPPLE_FD_TOL);
+        ENSURE_NEAR(g[1], gz, RIPPLE_FD_TOL);
+        ENSURE_NEAR(dt, gt, RIPPLE_FD_TOL);
+        inside += v != 0.0;
+    }
+    ENSURE(inside > 10 && inside < 60); /* the front is crossed */
+    ww_state_free(st);
+    free(sc);
+}
+
+TEST(ripples_pool_replaces_oldest_and_prunes) {
+    ww_scene *sc = new_scene(WW_WAVES_FLAT);
+    ripple_setup(sc);
+    ww_state *st = ww_state_new(sc);
+    for (int i = 0; i < 6; i++) {
+        st->t = i;
+        ww_ripples_add(sc, st, i, 0.0, 0.01);
+    }
+    ENSURE_EQ_INT(ww_ripples_count(sc, st), 4);
+    /* the two oldest (t0 = 0, 1) were replaced */
+    for (int i = 0; i < 4; i++) ENSURE(st->ripple[i * WW_RIPPLE_STRIDE + 2] >= 2.0);
+    st->t = 13.5; /* ages 11.5, 10.5, 9.5, 8.5 against a lifetime of 10 */
+    ww_ripples_prune(sc, st);
+    ENSURE_EQ_INT(ww_ripples_count(sc, st), 2);
+    ww_ripples_add(sc, st, 0.0, 0.0, 0.0); /* no amplitude: nothing added */
+    ENSURE_EQ_INT(ww_ripples_count(sc, st), 2);
+    /* a ripple has no effect before it starts */
+    double g[2], dt;
+    ENSURE(ww_ripples_height(sc, st->ripple, 1.0, 4.0, 0.0, g, &dt) == 0.0 && g[0] == 0.0);
+    ww_state_free(st);
+    free(sc);
+}
+
+/* ---- statistics ---- */
+
+TEST(wave_stats_single_sine) {
+    ww_scene *sc = new_scene(WW_WAVES_SINES);
+    add_wave(sc, 30, 12.0, 0.4, 0.0, 1.0);
+    ww_wave_stats st;
+    ww_wave_stats_compute(sc, 0, 0, &st);
+    const ww_wave *w = &sc->waves[0];
+    ENSURE_EQ_INT(st.count, 1);
+    ENSURE_EQ_INT(st.samples, 64 * 64 * 8);
+    ENSURE_NEAR(st.m0, 0.4 * 0.4 / 2, STATS_EXACT_TOL);
+    ENSURE_NEAR(st.hs, 4.0 * sqrt(0.4 * 0.4 / 2), STATS_EXACT_TOL);
+    ENSURE_NEAR(st.peak_period, sqrt(WW_TAU * 12.0 / WW_G), STATS_EXACT_TOL);
+    ENSURE_NEAR(st.mean_wavelength, 12.0, STATS_EXACT_TOL);
+    ENSURE(st.fold_margin == 1.0 && st.fold_sum == 0.0);
+    ENSURE_NEAR(st.slope_bound, w->k * 0.4, STATS_EXACT_TOL);
+    ENSURE(st.max_slope <= st.slope_bound);
+    ENSURE_NEAR(st.max_slope / st.slope_bound, 1.0, STATS_SAMPLE_REL_TOL);
+    ENSURE_NEAR(st.total_amplitude, 0.4, STATS_EXACT_TOL);
+    free(sc);
+}
+
+TEST(wave_stats_sea_of_sines_adds_variances) {
+    ww_scene *sc = new_scene(WW_WAVES_SINES);
+    random_sea(sc, 9, 1.0, 30.0, 0.5, 1.0, 8);
+    ww_wave_stats st;
+    ww_wave_stats_compute(sc, 16, 2, &st);
+    double m0 = 0.0, lw = 0.0, top = 0.0, tp = 0.0;
+    for (int i = 0; i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        m0 += w->amplitude * w->amplitude / 2;
+        lw += w->amplitude * w->amplitude / 2 * w->wavelength;
+        if (w->amplitude > top) {
+            top = w->amplitude;
+            tp = WW_TAU / w->omega;
+        }
+    }
+    ENSURE_EQ_INT(st.samples, 16 * 16 * 2);
+    ENSURE_NEAR(st.hs, 4.0 * sqrt(m0), STATS_EXACT_TOL);
+    ENSURE_NEAR(st.mean_wavelength, lw / m0, STATS_EXACT_TOL);
+    ENSURE_NEAR(st.peak_period, tp, STATS_EXACT_TOL);
+    ENSURE(st.max_slope <= st.slope_bound && st.max_slope > 0.0);
+    free(sc);
+}
+
+TEST(wave_stats_single_gerstner_fold_margin) {
+    const double dirs[] = {0.0, 30.0, 117.0};
+    for (int d = 0; d < 3; d++) {
+        ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+        add_wave(sc, dirs[d], 8.0, 0.5, 0.9, 1.0);
+        const ww_wave *w = &sc->waves[0];
+        double qka = 0.9 * w->k * 0.5, ka = w->k * 0.5;
+        ww_wave_stats st;
+        ww_wave_stats_compute(sc, 0, 0, &st);
+        ENSURE_NEAR(st.fold_sum, qka, STATS_EXACT_TOL);
+        ENSURE_NEAR(st.fold_sum, ww_waves_fold_sum(sc), STATS_EXACT_TOL);
+        /* J = 1 - Q k A sin(phi): the margin 1 - Q k A, sampled */
+        ENSURE(st.fold_margin >= 1.0 - qka - STATS_EXACT_TOL);
+        ENSURE_NEAR(st.fold_margin, 1.0 - qka, STATS_SAMPLE_REL_TOL * qka);
+        /* slope k A cos / (1 - Q k A sin), its largest value found by a fine scan */
+        double top = 0.0;
+        for (int i = 0; i < 100000; i++) {
+            double ph = WW_TAU * i / 100000;
+            top = fmax(top, fabs(ka * cos(ph) / (1.0 - qka * sin(ph))));
+        }
+        ENSURE(st.max_slope <= top * (1.0 + STATS_EXACT_TOL) && st.max_slope <= st.slope_bound);
+        ENSURE_NEAR(st.max_slope / top, 1.0, STATS_SAMPLE_REL_TOL);
+        ENSURE_NEAR(st.slope_bound, ka / (1.0 - qka), STATS_EXACT_TOL);
+        if (ww_test_failed_now())
+            printf("    direction %g: margin %.6f (1 - QkA = %.6f), slope %.6f of %.6f\n", dirs[d],
+                   st.fold_margin, 1.0 - qka, st.max_slope, top);
+        free(sc);
+    }
+}
+
+TEST(wave_stats_steep_sines_closed_form) {
+    const double es[] = {1.0, 2.0, 5.5};
+    for (int k = 0; k < 3; k++) {
+        ww_scene *sc = new_scene(WW_WAVES_STEEP_SINES);
+        add_wave(sc, 50, 6.0, 0.3, 0.0, es[k]);
+        const ww_wave *w = &sc->waves[0];
+        /* the profile's variance and largest |dh/dphi| by quadrature over a period */
+        const int n = 4096;
+        double s1 = 0.0, s2 = 0.0, dmax = 0.0;
+        for (int i = 0; i < n; i++) {
+            double ph = WW_TAU * i / n, u = 0.5 * (sin(ph) + 1.0);
+            double h = 2.0 * 0.3 * (pow(u, es[k]) - w->mean);
+            s1 += h / n;
+            s2 += h * h / n;
+        }
+        for (int i = 0; i < 1000000; i++) {
+            double ph = WW_TAU * i / 1000000, u = 0.5 * (sin(ph) + 1.0);
+            dmax = fmax(dmax, fabs(0.3 * es[k] * pow(u, es[k] - 1.0) * cos(ph)));
+        }
+        ww_wave_stats st;
+        ww_wave_stats_compute(sc, 0, 0, &st);
+        ENSURE_NEAR(st.m0, s2 - s1 * s1, STEEP_VARIANCE_TOL);
+        if (es[k] == 1.0) ENSURE_NEAR(st.m0, 0.3 * 0.3 / 2, STATS_EXACT_TOL);
+        ENSURE_NEAR(st.slope_bound / (w->k * dmax), 1.0, STEEP_SLOPE_SCAN_TOL);
+        ENSURE(st.max_slope <= st.slope_bound && st.fold_margin == 1.0);
+        ENSURE_NEAR(st.max_slope / st.slope_bound, 1.0, STATS_SAMPLE_REL_TOL);
+        /* the largest excursion: 2 A (1 - mean) above the level */
+        ENSURE_NEAR(st.total_amplitude, 2.0 * 0.3 * (1.0 - w->mean), STATS_EXACT_TOL);
+        free(sc);
+    }
+}
+
+TEST(wave_stats_folding_flat_and_spectrum) {
+    ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+    random_sea(sc, 5, 2.0, 20.0, 1.2, 1.0, 4);
+    ww_wave_stats st;
+    ww_wave_stats_compute(sc, 32, 4, &st);
+    ENSURE_NEAR(st.fold_sum, 1.2, STATS_EXACT_TOL);
+    ENSURE(st.fold_margin < 1.0 - 1.2 + 0.5 && isinf(st.slope_bound) && isfinite(st.max_slope));
+    sc->wave_model = WW_WAVES_FLAT;
+    ww_wave_stats_compute(sc, 0, 0, &st);
+    ENSURE(st.count == 0 && st.hs == 0.0 && st.fold_margin == 1.0 && st.max_slope == 0.0);
+    free(sc);
+
+    /* Pierson-Moskowitz at U = 10 m/s: the peak of spectrum.h, Hs ~ 0.21 U^2 / g */
+    sc = new_scene(WW_WAVES_SPECTRUM);
+    sc->spectrum = (ww_spectrum_desc){.kind = WW_SPECTRUM_PM, .wind_speed = 10.0, .count = 128,
+                                      .wavelength = {1.0, 2000.0}, .steepness = 0.5,
+                                      .spread = 0.3, .fetch = 1e5, .gamma = 3.3};
+    sc->nwaves = sc->spectrum.count;
+    ww_spectrum_sample(&sc->spectrum, 5, sc->waves);
+    ww_wave_stats_compute(sc, 16, 2, &st);
+    ENSURE_NEAR(st.peak_period, WW_TAU / (0.877 * WW_G / 10.0), PM_PEAK_REL_TOL * st.peak_period);
+    ENSURE_NEAR(st.hs / (0.21 * 100.0 / WW_G), 1.0, PM_HS_REL_TOL);
+    ENSURE_NEAR(st.fold_sum, 0.5, STATS_EXACT_TOL);
+    printf("    PM U = 10 m/s, 128 components: Hs %.4f m (0.21 U^2/g = %.4f), peak period %.4f s\n",
+           st.hs, 0.21 * 100.0 / WW_G, st.peak_period);
+    /* the spectrum's components are Gerstner waves: the query inverts them too */
+    double ph[128];
+    ww_waves_phases(sc, 10.0, ph);
+    ww_field f = {.sc = sc, .phase = ph, .t = 10.0};
+    const ww_query_opts opts = {.tolerance = QUERY_RESIDUAL_TOL, .max_iterations = QUERY_MAX_IT};
+    for (int j = 0; j < 50; j++) {
+        ww_water_sample o;
+        ENSURE(ww_water_height(&f, 1.7 * j, -0.9 * j, &opts, &o));
+        ENSURE(fabs(o.height) <= ww_waves_total_amplitude(sc));
     }
     free(sc);
 }

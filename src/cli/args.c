@@ -1,5 +1,6 @@
 /* args.c - option helpers shared by the subcommands: values, --set collection, --frames and
- * --size parsing, scene loading. Errors are WW_E_USAGE naming the option.
+ * --size parsing, scene loading (which prints the scene's warnings to stderr). Errors are
+ * WW_E_USAGE naming the option.
  */
 #include <errno.h>
 #include <stdio.h>
@@ -68,7 +69,10 @@ ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "%s needs a scene file (waterworld %s --help)",
                             cmd, cmd);
     ww_result r = ww_scene_load(o->scene_path, o->sets, o->nsets, sc, err);
-    if (r || !o->size) return r;
+    if (r) return r;
+    /* what the loader accepted but noticed (a folding sea under water.fold: warn, ...) */
+    for (int i = 0; i < (*sc)->nwarnings; i++) fprintf(stderr, "%s\n", (*sc)->warnings[i]);
+    if (!o->size) return WW_OK;
     const char *e = NULL;
     long long w = parse_count(o->size, &e), h = -1;
     if (w >= 0 && (*e == 'x' || *e == 'X')) h = parse_count(e + 1, &e);

@@ -5,21 +5,31 @@
 
 #include "cli/cli.h"
 #include "tools/bench.h"
+#include "tools/bench_waves.h"
 
 static const char usage[] =
     "usage: waterworld bench [render|sim] [--frames N] [--json] [SCENE.yaml...]\n"
+    "       waterworld bench waves [--json] [-o DIR]\n"
     "\n"
     "  render (default)  per backend (egl, osmesa), scene (minimal, demo) and size (256x144,\n"
     "                    1280x720): ms per frame split into simulate / render / read back /\n"
     "                    encode (PNG), the fill floor (one trivial full-screen pass), render/floor,\n"
     "                    peak RSS of the render process and the size of the state\n"
     "  sim               microseconds per simulation step\n"
+    "  waves             the wave field's speed against its error: CPU evaluations per second\n"
+    "                    per family and component count (double, float, against the libm\n"
+    "                    sincos calls they need) with the float error; height queries'\n"
+    "                    iterations, residual and time at fold margins 0.5, 0.2, 0.05; GPU ms\n"
+    "                    per frame at 1280x720 against component count, fade on and off; and\n"
+    "                    the figure DIR/waves.png\n"
+    "  -o DIR            folder for the waves figure (default out/bench)\n"
     "  --frames N        frames per configuration (default 20)\n"
     "  --json            one JSON object per line\n";
 
 ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     ww_bench_opts o = {0};
-    const char *what = "render", *frames = NULL;
+    const char *what = "render", *frames = NULL, *out = NULL;
+    int tiny = 0;
     int nscenes = 0;
     ww_result r = WW_OK;
     for (int i = 0; i < argc && !r; i++) {
@@ -31,8 +41,15 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
             o.json = 1;
             continue;
         }
+        /* not in the help: a seconds-long `bench waves` for the tests */
+        if (strcmp(argv[i], "--tiny") == 0) {
+            tiny = 1;
+            continue;
+        }
         if (ww_cli_opt(argc, argv, &i, "--frames", &frames, &r, err)) continue;
-        if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0) {
+        if (ww_cli_opt(argc, argv, &i, "-o", &out, &r, err)) continue;
+        if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0 ||
+            strcmp(argv[i], "waves") == 0) {
             what = argv[i];
             continue;
         }
@@ -45,6 +62,17 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     if (r) return r;
     if (frames && (o.frames = atoi(frames)) <= 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frames wants a positive count, got '%s'", frames);
+    int waves = strcmp(what, "waves") == 0;
+    if (!waves && (out || tiny))
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench waves only",
+                            out ? "-o" : "--tiny");
+    if (waves && (nscenes || frames))
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "bench waves takes no scenes or --frames (it builds its own seas)");
+    if (waves) {
+        ww_bench_waves_opts wo = {.json = o.json, .out_dir = out, .tiny = tiny};
+        return ww_bench_waves(&wo, stdout, err);
+    }
     if (strcmp(what, "sim") == 0) return ww_bench_sim(&o, stdout, err);
     return ww_bench_render(&o, stdout, err);
 }

@@ -15,7 +15,14 @@ static const char usage[] =
     "                      [--backend auto|egl|osmesa] [--set KEY=VALUE]...\n"
     "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--hash] [--set KEY=VALUE]...\n"
     "  plan     SCENE.yaml                systems and render passes the scene needs\n"
+    "  probe    SCENE.yaml --at X,Z [--from T0] [--to T1] [--every DT]\n"
+    "                                    the exact water surface over a point, CSV\n"
+    "  waves    SCENE.yaml --stats       wave statistics (Hs, periods, slopes, fold margin), JSON\n"
+    "  sweep    SCENE.yaml --vary KEY=A:B:N [--vary KEY=v1,v2]... [--random N --seed S]\n"
+    "                      [--jobs N] [--emit-jobs | --point I] [--thumbs] [-o DIR]\n"
+    "                      wave statistics over a grid of --set values\n"
     "  bench    [render|sim] [--frames N] [--json]   speed and memory figures\n"
+    "  bench    waves [--json] [-o DIR]  the wave field's speed against its error, and a figure\n"
     "  backends [--renderer]             which GL backends open here, on what\n"
     "  --help | --version\n"
     "\n"
@@ -31,7 +38,10 @@ static const command commands[] = {
     {"simulate", ww_cmd_simulate},
     {"plan", ww_cmd_plan},
     {"bench", ww_cmd_bench},
+    {"sweep", ww_cmd_sweep},
     {"backends", ww_cmd_backends},
+    {"probe", ww_cmd_probe},
+    {"waves", ww_cmd_waves},
 };
 
 int main(int argc, char **argv) {

@@ -13,7 +13,10 @@ typedef struct ww_rng {
 } ww_rng;
 
 /* stream ids: fixed forever, so a new system never shifts another's draws */
-enum { WW_RNG_WAVES = 1, WW_RNG_RIPPLES, WW_RNG_STONES, WW_RNG_FISH, WW_RNG_CHEST, WW_RNG_BUBBLES };
+enum {
+    WW_RNG_WAVES = 1, WW_RNG_RIPPLES, WW_RNG_STONES, WW_RNG_FISH, WW_RNG_CHEST, WW_RNG_BUBBLES,
+    WW_RNG_SWEEP /* the points of `sweep --random` */
+};
 
 void ww_rng_seed(ww_rng *r, uint64_t seed, uint64_t stream);
 uint32_t ww_rng_u32(ww_rng *r);

@@ -11,7 +11,9 @@
 #include <strings.h>
 
 #include "core/mathx.h"
+#include "core/rng.h"
 #include "scene/scene.h"
+#include "scene/spectrum.h"
 #include "scene/tree.h"
 
 #define TRY(x)                                                                                  \
@@ -22,6 +24,16 @@
 
 #define MAX_STEPS_PER_FRAME 1000000
 #define EVENT_TIME_EPS 1e-9   /* s: an event at t fires on the step that reaches t - eps */
+
+/* defaults of the wave keys (the rest are in ww_scene_defaults) */
+#define DEFAULT_STEEPNESS 0.5    /* Gerstner Q of a component that gives none */
+#define DEFAULT_EXPONENT 2.0     /* steep sines' e */
+#define RANDOM_DEFAULT_COUNT 16  /* components of a water.waves.random with no count */
+#define RIPPLE_DEFAULT_WAVENUMBER (2.0 * WW_TAU) /* rad/m: 0.5 m ripples */
+#define WATER_SURFACE_TENSION 0.0728 /* sigma of clean water at 20 C, N/m */
+#define WATER_DENSITY 1000.0         /* rho, kg/m^3 */
+#define SPECTRUM_MIN_SLOPE 1e-6      /* sum k A of a spectrum's components below which the
+                                      * sampled range holds no visible sea */
 
 /* ---- rules ----------------------------------------------------------------------------------- */
 
@@ -55,10 +67,27 @@ static const rule R_LEVEL = CLOSED(-1e6, 1e6, "m");
 static const rule R_DEPTH = OPEN_LO(0, 1e4, "m");
 static const rule R_WATER_COLOR = CLOSED(0, 1, "");
 static const rule R_ANGLE = FINITE("deg");
-static const rule R_WAVELENGTH = OPEN_LO(0, 1e5, "m");
+static const rule R_DIR_VECTOR = FINITE("");
+static const rule R_WAVELENGTH = CLOSED(0.001, 1e5, "m");
 static const rule R_AMPLITUDE = CLOSED(0, 100, "m");
 static const rule R_STEEPNESS = CLOSED(0, 1, "");
+static const rule R_EXPONENT = CLOSED(1, 64, "");
+static const rule R_WAVE_SPEED = CLOSED(0, 1e3, "m/s"); /* 0: deep-water dispersion */
 static const rule R_SPEED = OPEN_LO(0, 1e3, "m/s");
+static const rule R_RANDOM_COUNT = WHOLE(0, WW_MAX_WAVES, "");
+static const rule R_RANDOM_SPREAD = CLOSED(0, 360, "deg");
+static const rule R_WIND_SPEED = OPEN_LO(0, 100, "m/s");
+static const rule R_FETCH = OPEN_LO(0, 1e8, "m");
+static const rule R_PEAK_GAMMA = CLOSED(1, 10, "");
+static const rule R_SPECTRUM_SPREAD = CLOSED(0, 180, "deg");
+static const rule R_SPECTRUM_COUNT = WHOLE(1, WW_MAX_WAVES, "");
+static const rule R_SPECTRUM_STEEPNESS = CLOSED(0, 0.95, "");
+static const rule R_RIPPLE_AMPLITUDE = CLOSED(0, 10, "m");
+static const rule R_RIPPLE_LIFETIME = OPEN_LO(0, 1e4, "s");
+static const rule R_RIPPLE_MAX = WHOLE(1, WW_MAX_RIPPLES, "");
+static const rule R_RADIAL_DECAY = CLOSED(0, 1e3, "1/m");
+static const rule R_TIME_DECAY = CLOSED(0, 1e3, "1/s");
+static const rule R_RIPPLE_WAVENUMBER = OPEN_LO(0, 1e4, "rad/m");
 static const rule R_FOV = CLOSED(1, 179, "deg");
 static const rule R_NEAR = OPEN_LO(0, 100, "m");
 static const rule R_FAR_MAX = CLOSED(0, 1e7, "m"); /* lo is near, open: built in compile_camera */
@@ -67,7 +96,8 @@ static const rule R_POSITION = FINITE("m");
 static const rule R_PITCH = CLOSED(-89.9, 89.9, "deg");
 static const rule R_EVENT_TIME = CLOSED(0, 1e9, "s");
 
-/* script actions: an event holds "t" and exactly one of these */
+/* script actions: an event holds "t" and exactly one of these; an action with a range is a
+ * number, one without is a mapping read by its own function (compile_event) */
 typedef struct action {
     const char *key;
     ww_event_kind kind;
@@ -76,6 +106,7 @@ typedef struct action {
 
 static const action ACTIONS[] = {
     {"time_of_day", WW_EV_TIME_OF_DAY, &R_HOURS},
+    {"ripple", WW_EV_RIPPLE, NULL},
 };
 #define NACTIONS ((int)(sizeof ACTIONS / sizeof ACTIONS[0]))
 
@@ -84,7 +115,14 @@ static const char *const TONEMAP_WORDS[] = {[WW_TONEMAP_EXP] = "exp", [WW_TONEMA
                                             NULL};
 static const char *const SKY_WORDS[] = {"gradient", NULL};
 static const char *const WAVE_WORDS[] = {[WW_WAVES_FLAT] = "flat",
-                                         [WW_WAVES_GERSTNER] = "gerstner", NULL};
+                                         [WW_WAVES_GERSTNER] = "gerstner",
+                                         [WW_WAVES_SINES] = "sines",
+                                         [WW_WAVES_STEEP_SINES] = "steep_sines",
+                                         [WW_WAVES_SPECTRUM] = "spectrum", NULL};
+static const char *const SPECTRUM_WORDS[] = {[WW_SPECTRUM_PM] = "pierson_moskowitz",
+                                             [WW_SPECTRUM_JONSWAP] = "jonswap", NULL};
+static const char *const FOLD_WORDS[] = {[WW_FOLD_WARN] = "warn", [WW_FOLD_ERROR] = "error",
+                                         [WW_FOLD_CLAMP] = "clamp", NULL};
 static const char *const INTERP_WORDS[] = {[WW_INTERP_CATMULL_ROM] = "catmull_rom",
                                            [WW_INTERP_LINEAR] = "linear", NULL};
 
@@ -115,6 +153,26 @@ static ww_result fail(ctx *c, ww_result code, const ww_node *at, const char *fmt
     va_end(ap);
     if (!at) return ww_error_set(c->err, code, c->file, 0, 0, "%s", msg);
     return ww_error_set(c->err, code, at->mark.file, at->mark.line, at->mark.column, "%s", msg);
+}
+
+/* "FILE:LINE:COL: warning: ..." appended to the scene's warnings (the CLI prints them); past
+ * WW_MAX_WARNINGS the rest are dropped */
+static void warn(ctx *c, const ww_node *at, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static void warn(ctx *c, const ww_node *at, const char *fmt, ...) {
+    ww_scene *sc = c->sc;
+    if (sc->nwarnings >= WW_MAX_WARNINGS) return;
+    char msg[sizeof sc->warnings[0]];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    char *out = sc->warnings[sc->nwarnings++];
+    int n = at ? snprintf(out, sizeof sc->warnings[0], "%s:%d:%d: warning: %s", at->mark.file,
+                          at->mark.line, at->mark.column, msg)
+               : snprintf(out, sizeof sc->warnings[0], "%s: warning: %s", c->file, msg);
+    if (n < 0) out[0] = 0;
 }
 
 /* ---- words: lists, suggestions --------------------------------------------------------------- */
@@ -414,6 +472,42 @@ static ww_result get_vec(ctx *c, const section *s, const char *key, int len, con
     return WW_OK;
 }
 
+/* a heading: degrees (0 = +x, 90 = +z), or a vector [x, z] in the XZ plane, which must not be
+ * zero; stored in radians */
+static ww_result get_heading(ctx *c, const section *s, const char *key, need nd, double *out) {
+    const ww_node *n;
+    char name[128];
+    TRY(lookup(c, s, key, nd, &n));
+    if (!n) return WW_OK;
+    if (n->kind != WW_NODE_SEQ) return get_angle(c, s, key, &R_ANGLE, nd, out);
+    double v[2];
+    TRY(get_vec(c, s, key, 2, &R_DIR_VECTOR, nd, v));
+    if (v[0] == 0.0 && v[1] == 0.0)
+        return fail(c, WW_E_RANGE, n,
+                    "%s: the vector [0, 0] has no direction: expected a heading in degrees or a "
+                    "non-zero [x, z]",
+                    path_of(s, key, name, sizeof name));
+    *out = atan2(v[1], v[0]);
+    return WW_OK;
+}
+
+/* a range [lo, hi] of two numbers under r with lo < hi, or lo <= hi when equal is allowed */
+static ww_result get_range(ctx *c, const section *s, const char *key, const rule *r,
+                           int allow_equal, double out[2]) {
+    const ww_node *n;
+    char name[128];
+    double v[2] = {out[0], out[1]};
+    TRY(lookup(c, s, key, OPTIONAL, &n));
+    if (!n) return WW_OK;
+    TRY(get_vec(c, s, key, 2, r, OPTIONAL, v));
+    if (allow_equal ? !(v[0] <= v[1]) : !(v[0] < v[1]))
+        return fail(c, WW_E_INCONSISTENT, n, "%s = [%g, %g]: expected [lo, hi] with lo %s hi",
+                    path_of(s, key, name, sizeof name), v[0], v[1], allow_equal ? "<=" : "<");
+    out[0] = v[0];
+    out[1] = v[1];
+    return WW_OK;
+}
+
 /* one of words; *out is its index */
 static ww_result get_word(ctx *c, const section *s, const char *key, const char *const *words,
                           int *out) {
@@ -553,20 +647,37 @@ static ww_result compile_fog(ctx *c, const section *top) {
     return get_number(c, &above, "density", &R_FOG_DENSITY, OPTIONAL, &sc->fog_density);
 }
 
-static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave *w) {
+/* what the model makes of a component's steepness and exponent: each is checked whatever the
+ * model and read only by the models it means something to (Q by gerstner, e by steep sines), so
+ * one scene can be switched between families with a single --set or sweep axis */
+static double model_steepness(ww_wave_model model, double q) {
+    return model == WW_WAVES_SINES || model == WW_WAVES_STEEP_SINES ? 0.0 : q;
+}
+
+static double model_exponent(ww_wave_model model, double e) {
+    return model == WW_WAVES_STEEP_SINES ? e : 1.0;
+}
+
+static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave_model model,
+                              ww_wave *w) {
     static const char *const keys[] = {"direction", "wavelength", "amplitude", "steepness",
-                                       "phase", "speed", NULL};
+                                       "exponent", "phase", "speed", NULL};
     section s;
     TRY(open_item(c, item, "water.waves.list", i, keys, &s));
-    *w = (ww_wave){.steepness = 0.5};
+    *w = (ww_wave){.steepness = DEFAULT_STEEPNESS,
+                   .exponent = DEFAULT_EXPONENT,
+                   .line = s.map->mark.line,
+                   .column = s.map->mark.column};
     double speed = 0.0;
-    TRY(get_angle(c, &s, "direction", &R_ANGLE, REQUIRED, &w->direction));
+    TRY(get_heading(c, &s, "direction", REQUIRED, &w->direction));
     TRY(get_number(c, &s, "wavelength", &R_WAVELENGTH, REQUIRED, &w->wavelength));
     TRY(get_number(c, &s, "amplitude", &R_AMPLITUDE, REQUIRED, &w->amplitude));
     TRY(get_number(c, &s, "steepness", &R_STEEPNESS, OPTIONAL, &w->steepness));
+    TRY(get_number(c, &s, "exponent", &R_EXPONENT, OPTIONAL, &w->exponent));
     TRY(get_angle(c, &s, "phase", &R_ANGLE, OPTIONAL, &w->phase));
-    TRY(get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &speed));
-
+    TRY(get_number(c, &s, "speed", &R_WAVE_SPEED, OPTIONAL, &speed));
+    w->steepness = model_steepness(model, w->steepness);
+    w->exponent = model_exponent(model, w->exponent);
     ww_wave_derive(w, speed);
     return WW_OK;
 }
@@ -578,40 +689,239 @@ void ww_wave_derive(ww_wave *w, double speed) {
     w->k = WW_TAU / w->wavelength;
     w->omega = speed > 0.0 ? speed * w->k : sqrt(WW_G * w->k);
     w->speed = w->omega / w->k;
+    /* mean of ((sin phi + 1) / 2)^e over a period: with u = (sin + 1) / 2 = sin^2(phi / 2 +
+     * pi / 4), the Wallis integral (1 / pi) int_0^pi sin^(2e) = Gamma(e + 1/2) / (sqrt(pi)
+     * Gamma(e + 1)) (Abramowitz and Stegun 6.1.1, 6.2.1) */
+    w->mean = tgamma(w->exponent + 0.5) / (sqrt(WW_PI) * tgamma(w->exponent + 1.0));
 }
 
-static ww_result compile_waves(ctx *c, const section *water) {
-    static const char *const keys[] = {"model", "list", NULL};
-    ww_scene *sc = c->sc;
-    section s;
-    const ww_node *list;
-    TRY(open_section(c, water, "waves", keys, &s));
-    int model = (int)sc->wave_model;
-    TRY(get_word(c, &s, "model", WAVE_WORDS, &model));
-    sc->wave_model = (ww_wave_model)model;
-    TRY(get_list(c, &s, "list", WW_MAX_WAVES, &list));
+double ww_waves_fold_sum(const ww_scene *sc) {
+    double sum = 0.0;
+    for (int i = 0; i < sc->nwaves; i++)
+        sum += sc->waves[i].steepness * sc->waves[i].k * sc->waves[i].amplitude;
+    return sum;
+}
 
-    /* the list is checked even when flat water ignores it */
-    int i = 0;
-    for (const ww_node *item = list ? list->first : NULL; item; item = item->next, i++)
-        TRY(compile_wave(c, item, i, &sc->waves[i]));
-    sc->nwaves = i;
-    if (sc->wave_model == WW_WAVES_FLAT) {
-        memset(sc->waves, 0, sizeof sc->waves);
-        sc->nwaves = 0;
+/* water.waves.random: the description; count stays 0 when the section is absent */
+static ww_result compile_random(ctx *c, const section *waves, ww_wave_model model, int nlisted,
+                                section *s) {
+    static const char *const keys[] = {"count",  "wavelength", "amplitude", "direction",
+                                       "spread", "steepness",  "exponent",  NULL};
+    ww_wave_random *r = &c->sc->wave_random;
+    TRY(open_section(c, waves, "random", keys, s));
+    if (!s->map) return WW_OK;
+    double count = RANDOM_DEFAULT_COUNT;
+    TRY(get_number(c, s, "count", &R_RANDOM_COUNT, OPTIONAL, &count));
+    TRY(get_range(c, s, "wavelength", &R_WAVELENGTH, 0, r->wavelength));
+    TRY(get_range(c, s, "amplitude", &R_AMPLITUDE, 1, r->amplitude));
+    TRY(get_heading(c, s, "direction", OPTIONAL, &r->direction));
+    TRY(get_angle(c, s, "spread", &R_RANDOM_SPREAD, OPTIONAL, &r->spread));
+    TRY(get_number(c, s, "steepness", &R_STEEPNESS, OPTIONAL, &r->steepness));
+    TRY(get_number(c, s, "exponent", &R_EXPONENT, OPTIONAL, &r->exponent));
+    r->steepness = model_steepness(model, r->steepness);
+    r->exponent = model_exponent(model, r->exponent);
+
+    /* the list and the drawn components share the scene's WW_MAX_WAVES slots */
+    if (nlisted + (int)count > WW_MAX_WAVES)
+        return fail(c, WW_E_RANGE, blame(s, "count", "count"),
+                    "%s.count = %d with %d listed waves makes %d components: expected at most "
+                    "%d in all",
+                    s->what, (int)count, nlisted, nlisted + (int)count, WW_MAX_WAVES);
+    r->count = (int)count;
+    return WW_OK;
+}
+
+/* the random components, appended after the list; drawn from the stream WW_RNG_WAVES in a fixed
+ * order per component: wavelength (log-uniform), amplitude (uniform), heading (uniform in
+ * direction +- spread / 2), phase (uniform) */
+static void draw_random(ww_scene *sc, const ww_node *at) {
+    const ww_wave_random *r = &sc->wave_random;
+    ww_rng rng;
+    ww_rng_seed(&rng, sc->seed, WW_RNG_WAVES);
+    double ratio = r->wavelength[1] / r->wavelength[0];
+    for (int i = 0; i < r->count; i++) {
+        ww_wave *w = &sc->waves[sc->nwaves++];
+        *w = (ww_wave){.steepness = r->steepness,
+                       .exponent = r->exponent,
+                       .line = at->mark.line,
+                       .column = at->mark.column};
+        w->wavelength = r->wavelength[0] * pow(ratio, ww_rng_uniform(&rng));
+        w->amplitude = ww_m_lerp(r->amplitude[0], r->amplitude[1], ww_rng_uniform(&rng));
+        w->direction = r->direction + r->spread * (ww_rng_uniform(&rng) - 0.5);
+        w->phase = WW_TAU * ww_rng_uniform(&rng);
+        ww_wave_derive(w, 0.0);
+    }
+}
+
+/* water.waves.spectrum: read by model spectrum (and checked, then ignored, by flat) */
+static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model model,
+                                  section *s) {
+    static const char *const keys[] = {"kind",   "wind_speed", "fetch",      "gamma",
+                                       "direction", "spread",  "count",      "wavelength",
+                                       "steepness", NULL};
+    ww_spectrum_desc *d = &c->sc->spectrum;
+    TRY(open_section(c, waves, "spectrum", keys, s));
+    if (!s->map) return WW_OK;
+    if (model != WW_WAVES_SPECTRUM && model != WW_WAVES_FLAT)
+        return fail(c, WW_E_INCONSISTENT, s->map->key,
+                    "water.waves.spectrum is read only by model: spectrum, and the model is %s: "
+                    "remove it, or set water.waves.model: spectrum",
+                    WAVE_WORDS[model]);
+    int kind = (int)d->kind;
+    TRY(get_word(c, s, "kind", SPECTRUM_WORDS, &kind));
+    d->kind = (ww_spectrum_kind)kind;
+    TRY(get_number(c, s, "wind_speed", &R_WIND_SPEED, OPTIONAL, &d->wind_speed));
+    TRY(get_number(c, s, "fetch", &R_FETCH, OPTIONAL, &d->fetch));
+    TRY(get_number(c, s, "gamma", &R_PEAK_GAMMA, OPTIONAL, &d->gamma));
+    TRY(get_heading(c, s, "direction", OPTIONAL, &d->direction));
+    TRY(get_angle(c, s, "spread", &R_SPECTRUM_SPREAD, OPTIONAL, &d->spread));
+    double count = d->count;
+    TRY(get_number(c, s, "count", &R_SPECTRUM_COUNT, OPTIONAL, &count));
+    d->count = (int)count;
+    TRY(get_range(c, s, "wavelength", &R_WAVELENGTH, 0, d->wavelength));
+    return get_number(c, s, "steepness", &R_SPECTRUM_STEEPNESS, OPTIONAL, &d->steepness);
+}
+
+/* water.fold: above sum Q k A = 1 the Gerstner surface can loop over itself: the Jacobian of
+ * x -> x + D(x) is at least 1 - sum Q k A and reaches 0 where the crests line up (Tessendorf
+ * 2001, "Simulating Ocean Water", on choppy waves; Finch 2004, GPU Gems ch. 1, for the Q) */
+static ww_result check_fold(ctx *c, const section *waves) {
+    ww_scene *sc = c->sc;
+    double sum = ww_waves_fold_sum(sc);
+    sc->fold_sum_given = sc->fold_sum = sum;
+    if (!(sum > 1.0)) return WW_OK;
+    WW_ASSERT(waves->map);
+    const ww_node *at = waves->map->key ? waves->map->key : waves->map;
+    switch (sc->fold) {
+    case WW_FOLD_ERROR:
+        return fail(c, WW_E_RANGE, at,
+                    "water.waves: sum Q k A = %.6g > 1, so the Gerstner surface folds over "
+                    "itself (margin 1 - sum = %.6g): expected at most 1 under water.fold: error "
+                    "(warn keeps the waves as given, clamp scales every steepness to a sum of %g)",
+                    sum, 1.0 - sum, WW_FOLD_CLAMP_SUM);
+    case WW_FOLD_WARN:
+        warn(c, at,
+             "water.waves folds: sum Q k A = %.6g > 1, margin 1 - sum = %.6g (water.fold: warn "
+             "keeps it; clamp scales the steepness, error refuses)",
+             sum, 1.0 - sum);
+        return WW_OK;
+    case WW_FOLD_CLAMP: {
+        double f = WW_FOLD_CLAMP_SUM / sum;
+        for (int i = 0; i < sc->nwaves; i++) sc->waves[i].steepness *= f;
+        sc->fold_sum = ww_waves_fold_sum(sc);
+        warn(c, at,
+             "water.waves folds: sum Q k A = %.6g > 1; water.fold: clamp scaled every steepness "
+             "by %.6g to a sum of %.6g (margin %.6g)",
+             sum, f, sc->fold_sum, 1.0 - sc->fold_sum);
+        return WW_OK;
+    }
     }
     return WW_OK;
 }
 
+static ww_result compile_waves(ctx *c, const section *water) {
+    static const char *const keys[] = {"model", "list", "random", "spectrum", NULL};
+    ww_scene *sc = c->sc;
+    section s, rs, ss;
+    const ww_node *list;
+    TRY(open_section(c, water, "waves", keys, &s));
+    int m = (int)sc->wave_model;
+    TRY(get_word(c, &s, "model", WAVE_WORDS, &m));
+    ww_wave_model model = (ww_wave_model)m;
+    sc->wave_model = model;
+    TRY(get_list(c, &s, "list", WW_MAX_WAVES, &list));
+
+    /* the spectrum model samples its own components */
+    const ww_node *own = list ? list : s.map ? ww_node_find(s.map, "random") : NULL;
+    if (model == WW_WAVES_SPECTRUM && own)
+        return fail(c, WW_E_INCONSISTENT, own->key,
+                    "water.waves.%s is not read by model: spectrum (its components are sampled "
+                    "from water.waves.spectrum): remove it, or use model gerstner, sines or "
+                    "steep_sines",
+                    own->key->text);
+
+    /* the list, then the random draws; checked even when flat water ignores them */
+    int i = 0;
+    for (const ww_node *item = list ? list->first : NULL; item; item = item->next, i++)
+        TRY(compile_wave(c, item, i, model, &sc->waves[i]));
+    sc->nwaves = i;
+    TRY(compile_random(c, &s, model, sc->nwaves, &rs));
+    if (sc->wave_random.count > 0) draw_random(sc, rs.map);
+
+    TRY(compile_spectrum(c, &s, model, &ss));
+    if (model == WW_WAVES_SPECTRUM) {
+        const ww_node *at = ss.map ? ss.map : s.map;
+        const ww_spectrum_desc *d = &sc->spectrum;
+        ww_spectrum_sample(d, sc->seed, sc->waves);
+        sc->nwaves = d->count;
+        double slope = 0.0, m0 = 0.0;
+        for (int j = 0; j < sc->nwaves; j++) {
+            const ww_wave *w = &sc->waves[j];
+            slope += w->k * w->amplitude;
+            m0 += 0.5 * w->amplitude * w->amplitude;
+            sc->waves[j].line = at->mark.line;
+            sc->waves[j].column = at->mark.column;
+        }
+        /* a range that misses the spectrum leaves an empty sea, and the one Q that would make
+         * sum Q k A = steepness overflows (a float in the shader first) */
+        if (slope < SPECTRUM_MIN_SLOPE) {
+            double wp = ww_spectrum_peak(d);
+            return fail(c, WW_E_INCONSISTENT, at,
+                        "water.waves.spectrum: the wavelengths [%g, %g] m hold almost none of "
+                        "this spectrum's energy (Hs = %.3g m, sum k A = %.3g): expected a range "
+                        "nearer its peak at %.4g m",
+                        d->wavelength[0], d->wavelength[1], 4.0 * sqrt(m0), slope,
+                        WW_TAU * WW_G / (wp * wp));
+        }
+    }
+    if (model == WW_WAVES_FLAT) {
+        memset(sc->waves, 0, sizeof sc->waves);
+        sc->nwaves = 0;
+        sc->wave_random.count = 0;
+    }
+    return check_fold(c, &s);
+}
+
+/* capillary-gravity phase speed c = sqrt(g / k + sigma k / rho) (Lamb 1932, "Hydrodynamics",
+ * sec. 267: w^2 = g k + sigma k^3 / rho in deep water) */
+static double ripple_speed(double k) {
+    return sqrt(WW_G / k + WATER_SURFACE_TENSION * k / WATER_DENSITY);
+}
+
+static ww_result compile_ripples(ctx *c, const section *water) {
+    static const char *const keys[] = {"amplitude",  "lifetime",   "max",   "radial_decay",
+                                       "time_decay", "wavenumber", "speed", NULL};
+    ww_ripple_desc *d = &c->sc->ripples;
+    section s;
+    TRY(open_section(c, water, "ripples", keys, &s));
+    if (!s.map) return WW_OK;
+    c->sc->ripples_on = 1;
+    double max = d->max;
+    TRY(get_number(c, &s, "amplitude", &R_RIPPLE_AMPLITUDE, OPTIONAL, &d->amplitude));
+    TRY(get_number(c, &s, "lifetime", &R_RIPPLE_LIFETIME, OPTIONAL, &d->lifetime));
+    TRY(get_number(c, &s, "max", &R_RIPPLE_MAX, OPTIONAL, &max));
+    d->max = (int)max;
+    TRY(get_number(c, &s, "radial_decay", &R_RADIAL_DECAY, OPTIONAL, &d->radial_decay));
+    TRY(get_number(c, &s, "time_decay", &R_TIME_DECAY, OPTIONAL, &d->time_decay));
+    TRY(get_number(c, &s, "wavenumber", &R_RIPPLE_WAVENUMBER, OPTIONAL, &d->wavenumber));
+    d->speed = ripple_speed(d->wavenumber);
+    return get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &d->speed);
+}
+
 static ww_result compile_water(ctx *c, const section *top) {
-    static const char *const keys[] = {"level", "depth", "color", "waves", NULL};
+    static const char *const keys[] = {"level", "depth", "color", "fold", "waves", "ripples",
+                                       NULL};
     ww_scene *sc = c->sc;
     section s;
     TRY(open_section(c, top, "water", keys, &s));
     TRY(get_number(c, &s, "level", &R_LEVEL, OPTIONAL, &sc->water_level));
     TRY(get_number(c, &s, "depth", &R_DEPTH, OPTIONAL, &sc->water_depth));
     TRY(get_vec(c, &s, "color", 3, &R_WATER_COLOR, OPTIONAL, sc->water_color));
-    return compile_waves(c, &s);
+    int fold = (int)sc->fold;
+    TRY(get_word(c, &s, "fold", FOLD_WORDS, &fold));
+    sc->fold = (ww_fold_policy)fold;
+    TRY(compile_waves(c, &s));
+    return compile_ripples(c, &s);
 }
 
 static ww_result compile_camera_key(ctx *c, const ww_node *item, int i, ww_camera_key *k) {
@@ -684,6 +994,19 @@ static ww_result compile_camera(ctx *c, const section *top) {
     return WW_OK;
 }
 
+/* {at: [x, z], amplitude: A0}: a ripple; A0 defaults to water.ripples.amplitude, and the event
+ * turns the ripple pool on even without a water.ripples section */
+static ww_result compile_ripple_event(ctx *c, const section *event, ww_event *ev) {
+    static const char *const keys[] = {"at", "amplitude", NULL};
+    section s;
+    TRY(open_section(c, event, "ripple", keys, &s));
+    ev->value = c->sc->ripples.amplitude;
+    TRY(get_vec(c, &s, "at", 2, &R_POSITION, REQUIRED, ev->at));
+    TRY(get_number(c, &s, "amplitude", &R_RIPPLE_AMPLITUDE, OPTIONAL, &ev->value));
+    c->sc->ripples_on = 1;
+    return WW_OK;
+}
+
 static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev) {
     const char *keys[NACTIONS + 2] = {"t"};
     for (int a = 0; a < NACTIONS; a++) keys[a + 1] = ACTIONS[a].key;
@@ -710,7 +1033,8 @@ static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev)
                     s.what, join_words(keys + 1, list, sizeof list));
     }
     ev->kind = act->kind;
-    return get_number(c, &s, act->key, act->range, REQUIRED, &ev->value);
+    if (act->range) return get_number(c, &s, act->key, act->range, REQUIRED, &ev->value);
+    return compile_ripple_event(c, &s, ev);
 }
 
 static ww_result compile_script(ctx *c, const section *top) {
@@ -767,6 +1091,31 @@ void ww_scene_defaults(ww_scene *sc) {
     sc->water_color[1] = 0.09;
     sc->water_color[2] = 0.12;
     sc->wave_model = WW_WAVES_GERSTNER;
+    sc->wave_random = (ww_wave_random){.count = 0,
+                                       .wavelength = {2.0, 30.0},
+                                       .amplitude = {0.02, 0.1},
+                                       .direction = 0.0,
+                                       .spread = ww_m_rad(90.0),
+                                       .steepness = DEFAULT_STEEPNESS,
+                                       .exponent = DEFAULT_EXPONENT};
+    sc->spectrum = (ww_spectrum_desc){.kind = WW_SPECTRUM_PM,
+                                      .wind_speed = 8.0,
+                                      .fetch = 1e5,
+                                      .gamma = 3.3,
+                                      .direction = 0.0,
+                                      .spread = ww_m_rad(20.0),
+                                      .count = 32,
+                                      .wavelength = {1.0, 300.0},
+                                      .steepness = 0.5};
+    sc->fold = WW_FOLD_WARN;
+    sc->ripples_on = 0;
+    sc->ripples = (ww_ripple_desc){.amplitude = 0.05,
+                                   .lifetime = 4.0,
+                                   .max = 64,
+                                   .radial_decay = 0.25,
+                                   .time_decay = 0.6,
+                                   .wavenumber = RIPPLE_DEFAULT_WAVENUMBER,
+                                   .speed = ripple_speed(RIPPLE_DEFAULT_WAVENUMBER)};
     sc->fov = ww_m_rad(60.0);
     sc->near_clip = 0.1;
     sc->far_clip = 5000.0;

@@ -20,7 +20,8 @@ typedef struct ww_wave_stats {
     double peak_period;      /* s */
     double mean_wavelength;  /* energy-weighted, m */
     double max_slope;        /* largest |grad h| over the sample */
-    double slope_bound;      /* sum k A h'max: no slope can exceed it */
+    double slope_bound;      /* sum k A h'max / (1 - fold_sum): no slope can exceed it
+                              * (INFINITY when fold_sum >= 1) */
     double fold_sum;         /* sum Q k A */
     double fold_margin;      /* min Jacobian over the sample */
     double total_amplitude;  /* sum of amplitudes, m */

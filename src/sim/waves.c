@@ -1,6 +1,8 @@
 /* waves.c - the wave field of every family (formulas in waves.h, profiles in scene.h): per-wave
  * phases, one rest point with its partials, velocity and normal in double, and a batch
  * evaluation over many points (double and float) that GCC vectorises across points.
+ * Sines and cosines come from ww_sincos (core/sincos.h) everywhere, so the scalar and batch paths
+ * give the same bits and no result depends on the C library's version.
  */
 #include "sim/waves.h"
 
@@ -93,7 +95,8 @@ void ww_waves_point(const ww_scene *sc, const double *phase, double x, double z,
         if (w->wavelength < min_wavelength) continue;
         double dx = w->dir[0], dz = w->dir[1];
         double ph = w->k * (dx * x + dz * z) + phase[i];
-        double s = sin(ph), c = cos(ph), h, dh;
+        double s, c, h, dh;
+        ww_sincos(ph, &s, &c);
         profile(sc, w, s, c, &h, &dh);
         double qa = wave_q(sc, w) * w->amplitude;
         X += qa * dx * c;

@@ -61,7 +61,8 @@ void ww_waves_eval_batch_f(const ww_scene *sc, const double *phase, int n, const
                            const float *z, float *X, float *Y, float *Z, float *nx, float *ny,
                            float *nz);
 
-/* sum of the amplitudes: the largest excursion of the surface from its rest level, m */
+/* the largest excursion of the surface from its rest level, m: the sum of the amplitudes
+ * (a steep sine's component reaches 2 A (1 - mean) above the level) */
 double ww_waves_total_amplitude(const ww_scene *sc);
 
 #endif

@@ -1,0 +1,248 @@
+/* water.c - the exact surface over a world point (water.h): inverts the Gerstner horizontal
+ * displacement by a damped Newton iteration on a smoothed Jacobian, then adds the ripples;
+ * height, normal and velocity.
+ */
+#include "sim/water.h"
+
+#include <math.h>
+
+#include "core/mathx.h"
+#include "core/sincos.h"
+#include "sim/ripples.h"
+#include "sim/waves.h"
+
+/* beyond this distance from the origin the phases move to a reference at the point, so the
+ * positions the wave sum sees stay small (waves.h); closer, the origin's phases are exact enough */
+#define FAR_FROM_ORIGIN 1024.0
+/* Armijo's sufficient decrease of G along the step (Nocedal and Wright, eq. 3.4) */
+#define ARMIJO 1e-4
+/* a step that halves |F| is accepted whatever G does: near the answer G's decrease (|F|^2) is
+ * below G's own rounding */
+#define RESIDUAL_CUT 0.5
+/* the line search's next step fraction stays within these parts of the last one */
+#define LAMBDA_LO 0.1
+#define LAMBDA_HI 0.5
+
+/* one evaluation of the Gerstner sum at rest point a (relative to the reference) */
+typedef struct probe {
+    double a[2];       /* rest point, m */
+    double F[2];       /* a + D(a) - x, m */
+    double norm;       /* |F|, m */
+    double G;          /* the potential whose gradient is F (see ww_water_height), m^2 */
+    double J[3];       /* horizontal Jacobian d(a + D)/da: xx, xz (= zx), zz */
+    double Y;          /* surface height above the rest level at a, m */
+    double dY[2];      /* dY/da */
+    double vel[3];     /* particle velocity, m/s */
+    double *sn;        /* sin(phi) per component, for the smoothed Jacobian */
+} probe;
+
+/* the Gerstner sum of waves.h at a, with G = |a - x|^2 / 2 + sum (Q A / k) sin(phi): its
+ * gradient is F since d/da (Q A / k) sin(phi) = Q A D cos(phi) */
+static void evaluate(const ww_scene *sc, const double *phase, double minL, const double x[2],
+                     const double a[2], probe *pr) {
+    double dx0 = 0.0, dz0 = 0.0, phi = 0.0, y = 0.0, yx = 0.0, yz = 0.0;
+    double jxx = 1.0, jxz = 0.0, jzz = 1.0, vx = 0.0, vy = 0.0, vz = 0.0;
+    for (int i = 0; i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        pr->sn[i] = 0.0;
+        if (w->wavelength < minL) continue;
+        double dx = w->dir[0], dz = w->dir[1];
+        double ph = w->k * (dx * a[0] + dz * a[1]) + phase[i];
+        double s, c;
+        ww_sincos(ph, &s, &c);
+        double A = w->amplitude, qa = w->steepness * A, qka = w->k * qa;
+        pr->sn[i] = s;
+        dx0 += qa * dx * c;
+        dz0 += qa * dz * c;
+        phi += qa / w->k * s;
+        y += A * s;
+        yx += w->k * dx * A * c;
+        yz += w->k * dz * A * c;
+        jxx -= qka * dx * dx * s;
+        jxz -= qka * dx * dz * s;
+        jzz -= qka * dz * dz * s;
+        vx += qa * w->omega * dx * s;
+        vy -= w->omega * A * c;
+        vz += qa * w->omega * dz * s;
+    }
+    pr->a[0] = a[0];
+    pr->a[1] = a[1];
+    pr->F[0] = a[0] + dx0 - x[0];
+    pr->F[1] = a[1] + dz0 - x[1];
+    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
+    double ex = a[0] - x[0], ez = a[1] - x[1];
+    pr->G = 0.5 * (ex * ex + ez * ez) + phi;
+    pr->J[0] = jxx;
+    pr->J[1] = jxz;
+    pr->J[2] = jzz;
+    pr->Y = y;
+    pr->dY[0] = yx;
+    pr->dY[1] = yz;
+    pr->vel[0] = vx;
+    pr->vel[1] = vy;
+    pr->vel[2] = vz;
+}
+
+/* the step direction at pr. Newton's d = -J^-1 F, but with each component's term of J damped
+ * by rho = 1 / (1 + (k |F|)^2): over a step of about |F| a component whose phase would turn by
+ * more than a radian has a local slope that says nothing about the step, and its slope averages
+ * to 0 over a period. Far from the answer Newton then follows the long waves and treats the short
+ * ones as a bounded perturbation; near it rho -> 1 (the error is O(|F|^2)) and Newton's quadratic
+ * convergence returns. J_eff = I - sum rho Q k A D D^T sin(phi) is positive definite while
+ * sum Q k A < 1; where it is not (a fold), the fixed-point direction -F, which G also decreases
+ * along, is taken. */
+static void direction(const ww_scene *sc, double minL, const probe *pr, double d[2]) {
+    double jxx = 1.0, jxz = 0.0, jzz = 1.0;
+    for (int i = 0; i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        if (w->wavelength < minL) continue;
+        double kr = w->k * pr->norm, rho = 1.0 / (1.0 + kr * kr);
+        double t = rho * w->steepness * w->k * w->amplitude * pr->sn[i];
+        jxx -= t * w->dir[0] * w->dir[0];
+        jxz -= t * w->dir[0] * w->dir[1];
+        jzz -= t * w->dir[1] * w->dir[1];
+    }
+    double det = jxx * jzz - jxz * jxz;
+    if (jxx > 0.0 && jzz > 0.0 && det > 0.0) {
+        d[0] = -(jzz * pr->F[0] - jxz * pr->F[1]) / det;
+        d[1] = -(jxx * pr->F[1] - jxz * pr->F[0]) / det;
+    } else {
+        d[0] = -pr->F[0];
+        d[1] = -pr->F[1];
+    }
+}
+
+static void swap_sn(probe *a, probe *b) {
+    double *t = a->sn;
+    a->sn = b->sn;
+    b->sn = t;
+}
+
+/* copies what the answer needs (not the sn buffer) */
+static void keep(probe *best, const probe *pr) {
+    double *sn = best->sn;
+    *best = *pr;
+    best->sn = sn;
+}
+
+/* damped Newton on F(a) = a + D(a) - x from a = x. F is the gradient of
+ * G(a) = |a - x|^2 / 2 + sum (Q A / k) sin(phi), strongly convex while sum Q k A < 1 (its Hessian J
+ * has eigenvalues in [1 - sum, 1 + sum]), so a descent direction with a backtracking line search
+ * on G converges from any start (Nocedal and Wright, "Numerical Optimization", 2nd ed., ch. 3:
+ * Armijo condition, quadratic interpolation of the step). Returns the evaluations taken. */
+static int invert(const ww_scene *sc, const double *phase, double minL, const double x[2],
+                  double tol, int maxit, probe *best, double *sn0, double *sn1) {
+    probe cur = {.sn = sn0}, trial = {.sn = sn1};
+    evaluate(sc, phase, minL, x, x, &cur);
+    int it = 1;
+    keep(best, &cur);
+    while (cur.norm > tol && it < maxit) {
+        double d[2];
+        direction(sc, minL, &cur, d);
+        double slope = cur.F[0] * d[0] + cur.F[1] * d[1]; /* dG/dlambda at 0 */
+        double lam = 1.0;
+        int accepted = 0;
+        while (it < maxit) {
+            double a[2] = {cur.a[0] + lam * d[0], cur.a[1] + lam * d[1]};
+            evaluate(sc, phase, minL, x, a, &trial);
+            it++;
+            if (trial.norm < best->norm) keep(best, &trial);
+            if (trial.G <= cur.G + ARMIJO * lam * slope || trial.norm <= RESIDUAL_CUT * cur.norm) {
+                accepted = 1;
+                break;
+            }
+            /* minimiser of the quadratic through G(0), G'(0) and G(lam) */
+            double next = -slope * lam * lam / (2.0 * (trial.G - cur.G - slope * lam));
+            lam = fmin(fmax(next, LAMBDA_LO * lam), LAMBDA_HI * lam);
+        }
+        if (!accepted) break;
+        keep(&cur, &trial);
+        swap_sn(&cur, &trial);
+    }
+    return it;
+}
+
+int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *opts,
+                    ww_water_sample *out) {
+    const ww_scene *sc = f->sc;
+    double tol = opts && opts->tolerance > 0.0 ? opts->tolerance : WW_QUERY_TOLERANCE;
+    int maxit = opts && opts->max_iterations > 0 ? opts->max_iterations : WW_QUERY_MAX_ITERATIONS;
+    double minL = opts ? opts->min_wavelength : 0.0;
+
+    /* phases at a reference near a far point; positions relative to it */
+    double phase_at[WW_MAX_WAVES];
+    const double *phase = f->phase;
+    double ref[2] = {0.0, 0.0};
+    if (fabs(x) > FAR_FROM_ORIGIN || fabs(z) > FAR_FROM_ORIGIN) {
+        ref[0] = round(x);
+        ref[1] = round(z);
+        ww_waves_phases_at(sc, f->phase, ref[0], ref[1], phase_at);
+        phase = phase_at;
+    }
+    double xr[2] = {x - ref[0], z - ref[1]};
+
+    /* the wave surface over xr: its height, slope in rest coordinates, horizontal Jacobian and
+     * particle velocity at the rest point */
+    double y, dy[2], J[3], vel[3], rest[2], residual;
+    int iterations;
+    if (sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM) {
+        double sn0[WW_MAX_WAVES], sn1[WW_MAX_WAVES], snb[WW_MAX_WAVES];
+        probe best = {.sn = snb};
+        iterations = invert(sc, phase, minL, xr, tol, maxit, &best, sn0, sn1);
+        y = sc->water_level + best.Y;
+        dy[0] = best.dY[0];
+        dy[1] = best.dY[1];
+        for (int c = 0; c < 3; c++) {
+            J[c] = best.J[c];
+            vel[c] = best.vel[c];
+        }
+        rest[0] = best.a[0];
+        rest[1] = best.a[1];
+        residual = best.norm;
+    } else {
+        /* no sideways motion: the rest point is the world point */
+        ww_wave_point p;
+        ww_waves_point(sc, phase, xr[0], xr[1], minL, &p);
+        iterations = 1;
+        y = p.p[1];
+        dy[0] = p.dpdx[1];
+        dy[1] = p.dpdz[1];
+        J[0] = p.dpdx[0];
+        J[1] = p.dpdz[0];
+        J[2] = p.dpdz[2];
+        for (int c = 0; c < 3; c++) vel[c] = p.vel[c];
+        rest[0] = xr[0];
+        rest[1] = xr[1];
+        residual = hypot(p.p[0] - xr[0], p.p[2] - xr[1]);
+    }
+
+    /* the ripples at the world point */
+    double rg[2], rdt;
+    double rh = ww_ripples_height(sc, f->ripples, f->t, x, z, rg, &rdt);
+    out->height = y + rh;
+
+    /* normal: grad h = J^-T grad_a Y + ripple gradient, n = normalize(-hx, 1, -hz). Multiplied
+     * through by det J it is the cross-product normal dP/dz x dP/dx plus det J (-rx, 0, -rz),
+     * which stays defined where det J -> 0 (a fold); |det J| keeps it pointing up */
+    double det = J[0] * J[2] - J[1] * J[1];
+    double n[3] = {dy[1] * J[1] - J[2] * dy[0] - det * rg[0], det,
+                   J[1] * dy[0] - dy[1] * J[0] - det * rg[1]};
+    if (det < 0.0)
+        for (int c = 0; c < 3; c++) n[c] = -n[c];
+    double len = ww_m_len3(n);
+    if (len > 0.0 && isfinite(len)) {
+        for (int c = 0; c < 3; c++) out->normal[c] = n[c] / len;
+    } else {
+        out->normal[0] = out->normal[2] = 0.0;
+        out->normal[1] = 1.0;
+    }
+    out->velocity[0] = vel[0];
+    out->velocity[1] = vel[1] + rdt;
+    out->velocity[2] = vel[2];
+    out->rest[0] = rest[0] + ref[0];
+    out->rest[1] = rest[1] + ref[1];
+    out->residual = residual;
+    out->iterations = iterations;
+    out->converged = residual <= tol;
+    return out->converged;
+}
