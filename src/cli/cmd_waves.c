@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "io/json.h"
 #include "sim/wave_stats.h"
 
 static const char usage[] =
@@ -27,17 +28,6 @@ static const char usage[] =
     "Numbers that are not finite are written as null.\n"
     "Exit: 0 done, 2 bad input.\n";
 
-static const char *model_name(ww_wave_model m) {
-    switch (m) {
-    case WW_WAVES_FLAT: return "flat";
-    case WW_WAVES_GERSTNER: return "gerstner";
-    case WW_WAVES_SINES: return "sines";
-    case WW_WAVES_STEEP_SINES: return "steep_sines";
-    case WW_WAVES_SPECTRUM: return "spectrum";
-    }
-    return "unknown";
-}
-
 /* a JSON number; JSON has no NaN or Inf */
 static void json_number(FILE *to, double v) {
     if (isfinite(v))
@@ -51,25 +41,10 @@ static void json_field(FILE *to, const char *key, double v) {
     json_number(to, v);
 }
 
-/* a JSON string: quotes, backslashes and control characters escaped */
-static void json_string(FILE *to, const char *s) {
-    fputc('"', to);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\')
-            fprintf(to, "\\%c", c);
-        else if (c < 0x20)
-            fprintf(to, "\\u%04x", c);
-        else
-            fputc(c, to);
-    }
-    fputc('"', to);
-}
-
 static void write_stats(const ww_scene *sc, const ww_wave_stats *s, FILE *to) {
     fputs("{\"scene\":", to);
-    json_string(to, sc->name);
-    fprintf(to, ",\"model\":\"%s\",\"count\":%d", model_name(sc->wave_model), s->count);
+    ww_json_string(to, sc->name);
+    fprintf(to, ",\"model\":\"%s\",\"count\":%d", ww_wave_model_name(sc->wave_model), s->count);
     json_field(to, "m0", s->m0);
     json_field(to, "hs", s->hs);
     json_field(to, "peak_period", s->peak_period);

@@ -119,6 +119,10 @@ static const char *const WAVE_WORDS[] = {[WW_WAVES_FLAT] = "flat",
                                          [WW_WAVES_SINES] = "sines",
                                          [WW_WAVES_STEEP_SINES] = "steep_sines",
                                          [WW_WAVES_SPECTRUM] = "spectrum", NULL};
+const char *ww_wave_model_name(ww_wave_model m) {
+    return m >= WW_WAVES_FLAT && m <= WW_WAVES_SPECTRUM ? WAVE_WORDS[m] : "unknown";
+}
+
 static const char *const SPECTRUM_WORDS[] = {[WW_SPECTRUM_PM] = "pierson_moskowitz",
                                              [WW_SPECTRUM_JONSWAP] = "jonswap", NULL};
 static const char *const FOLD_WORDS[] = {[WW_FOLD_WARN] = "warn", [WW_FOLD_ERROR] = "error",

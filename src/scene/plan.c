@@ -47,17 +47,6 @@ static void add_target(ww_plan *p, const char *name, ww_format f, int w, int h) 
     d->targets[d->ntargets++] = (ww_target_desc){name, f, w, h};
 }
 
-static const char *model_name(ww_wave_model m) {
-    switch (m) {
-    case WW_WAVES_FLAT: return "flat";
-    case WW_WAVES_GERSTNER: return "gerstner";
-    case WW_WAVES_SINES: return "sines";
-    case WW_WAVES_STEEP_SINES: return "steep_sines";
-    case WW_WAVES_SPECTRUM: return "spectrum";
-    }
-    return "?";
-}
-
 /* ring growth q such that rings s0, s0 q, s0 q^2, ... apart end at radius reach after n rings:
  * s0 (q^n - 1) / (q - 1) = reach (bisection); 1 when evenly spaced rings already reach */
 static double ring_growth(double s0, int n, double reach) {
@@ -218,7 +207,7 @@ static void print_ripple_fade(const char *who, double d, FILE *to) {
 }
 
 static void print_water(const ww_scene *sc, const ww_plan_water *w, FILE *to) {
-    fprintf(to, "water\n  waves      %s, %d components", model_name(w->model), w->components);
+    fprintf(to, "water\n  waves      %s, %d components", ww_wave_model_name(w->model), w->components);
     if (w->components > 0)
         fprintf(to, ", wavelengths %.3g .. %.3g m", w->shortest, w->longest);
     fputc('\n', to);
@@ -249,7 +238,7 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
     for (int s = 0; s < WW_SYS_COUNT; s++) {
         if (!p->system_on[s]) continue;
         fprintf(to, "  %-10s", ww_system_name((ww_system)s));
-        if (s == WW_SYS_WAVES) fprintf(to, " %d %s waves", sc->nwaves, model_name(sc->wave_model));
+        if (s == WW_SYS_WAVES) fprintf(to, " %d %s waves", sc->nwaves, ww_wave_model_name(sc->wave_model));
         if (s == WW_SYS_CAMERA) fprintf(to, " %d keys, %s", sc->ncam,
                                         sc->interp == WW_INTERP_LINEAR ? "linear" : "catmull-rom");
         if (s == WW_SYS_SCRIPT) fprintf(to, " %d events", sc->nevents);

@@ -203,6 +203,9 @@ void ww_scene_defaults(ww_scene *sc);
  * exponent; speed is the phase speed in m/s, or <= 0 for deep-water dispersion w^2 = g k */
 void ww_wave_derive(ww_wave *w, double speed);
 
+/* the model's word in the scene format: "gerstner", "sines", ... */
+const char *ww_wave_model_name(ww_wave_model m);
+
 /* sum Q k A over the components: above 1 the Gerstner surface folds */
 double ww_waves_fold_sum(const ww_scene *sc);
 

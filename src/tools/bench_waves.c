@@ -15,6 +15,7 @@
 #include "core/rng.h"
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
+#include "io/json.h"
 #include "io/writers.h"
 #include "scene/plan.h"
 #include "scene/scene.h"
@@ -74,32 +75,6 @@ static config make_config(int tiny) {
                     .gpu_warmup = GPU_WARMUP, .gpu_frames = GPU_FRAMES};
 }
 
-static const char *model_name(ww_wave_model m) {
-    switch (m) {
-    case WW_WAVES_FLAT: return "flat";
-    case WW_WAVES_GERSTNER: return "gerstner";
-    case WW_WAVES_SINES: return "sines";
-    case WW_WAVES_STEEP_SINES: return "steep_sines";
-    case WW_WAVES_SPECTRUM: return "spectrum";
-    }
-    return "?";
-}
-
-/* s as a JSON string (driver and error strings may hold quotes) */
-static void json_str(FILE *to, const char *s) {
-    fputc('"', to);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\')
-            fprintf(to, "\\%c", c);
-        else if (c < 0x20)
-            fprintf(to, "\\u%04x", c);
-        else
-            fputc(c, to);
-    }
-    fputc('"', to);
-}
-
 /* ---- seas and timing ------------------------------------------------------------------------ */
 
 /* a seeded sea of n components of one family: wavelengths log-uniform in [lmin, lmax], headings
@@ -108,7 +83,7 @@ static void json_str(FILE *to, const char *s) {
 static void make_sea(ww_scene *sc, ww_wave_model model, int n, double fold_sum, double lmin,
                      double lmax, uint64_t seed) {
     ww_scene_defaults(sc);
-    snprintf(sc->name, sizeof sc->name, "bench-%s-%d", model_name(model), n);
+    snprintf(sc->name, sizeof sc->name, "bench-%s-%d", ww_wave_model_name(model), n);
     sc->seed = seed;
     sc->wave_model = model;
     sc->nwaves = n;
@@ -279,13 +254,13 @@ static void cpu_print_row(FILE *to, const cpu_row *r, int json, int points) {
                 "\"sincos_ns_per_point\":%.4f,\"double_evals_per_s\":%.6g,\"float_evals_per_s\":%.6g,"
                 "\"double_over_sincos\":%.4f,\"float_over_sincos\":%.4f,\"float_height_err_m\":%.4g,"
                 "\"float_xz_err_m\":%.4g,\"float_height_err_rel\":%.4g,\"float_normal_err_deg\":%.4g}\n",
-                model_name(r->model), r->count, points, r->ns_double, r->ns_float, r->ns_scalar,
+                ww_wave_model_name(r->model), r->count, points, r->ns_double, r->ns_float, r->ns_scalar,
                 r->ns_sincos, 1e9 / r->ns_double, 1e9 / r->ns_float, rd, rf, r->err_h, r->err_xz,
                 r->err_rel, r->err_normal_deg);
         return;
     }
     fprintf(to, "%-11s %5d | %9.2f %9.2f %9.2f | %9.2f %7.2f %7.2f | %10.2e %9.2e %10.2e\n",
-            model_name(r->model), r->count, r->ns_double, r->ns_float, r->ns_scalar, r->ns_sincos, rd,
+            ww_wave_model_name(r->model), r->count, r->ns_double, r->ns_float, r->ns_scalar, r->ns_sincos, rd,
             rf, r->err_h, r->err_rel, r->err_normal_deg);
 }
 
@@ -530,7 +505,7 @@ static void part_gpu(const config *cf, int json, FILE *to, gpu_table *g) {
                 snprintf(g->note, sizeof g->note, "skipped: no GL backend opens here (%.150s)", rep.msg);
                 if (json) {
                     fputs("{\"part\":\"gpu\",\"skipped\":", to);
-                    json_str(to, g->note);
+                    ww_json_string(to, g->note);
                     fputs("}\n", to);
                 } else {
                     fprintf(to, "%s\n\n", g->note);
@@ -542,7 +517,7 @@ static void part_gpu(const config *cf, int json, FILE *to, gpu_table *g) {
                 if (json) {
                     fprintf(to, "{\"part\":\"gpu\",\"components\":%d,\"fade\":%d,\"error\":",
                             counts[k], fade);
-                    json_str(to, rep.msg);
+                    ww_json_string(to, rep.msg);
                     fputs("}\n", to);
                 } else {
                     fprintf(to, "%5d %-4s failed: %s\n", counts[k], fade ? "on" : "off", rep.msg);
@@ -559,9 +534,9 @@ static void part_gpu(const config *cf, int json, FILE *to, gpu_table *g) {
             double waves_ms = rep.ms - flat_ms;
             if (json) {
                 fputs("{\"part\":\"gpu\",\"backend\":", to);
-                json_str(to, rep.backend);
+                ww_json_string(to, rep.backend);
                 fputs(",\"renderer\":", to);
-                json_str(to, rep.renderer);
+                ww_json_string(to, rep.renderer);
                 fprintf(to,
                         ",\"width\":%d,\"height\":%d,\"components\":%d,\"fade\":%d,\"frames\":%d,"
                         "\"ms\":%.4f,\"ms_min\":%.4f,\"waves_ms\":%.4f}\n",
@@ -660,7 +635,7 @@ ww_result ww_bench_waves(const ww_bench_waves_opts *o, FILE *to, ww_error *err) 
     if ((r = write_figure(dir, &g, rows, path, sizeof path, err))) goto done;
     if (o->json) {
         fputs("{\"part\":\"figure\",\"path\":", to);
-        json_str(to, path);
+        ww_json_string(to, path);
         fputs("}\n", to);
     } else {
         fprintf(to, "figure: %s\n", path);

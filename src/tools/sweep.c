@@ -16,6 +16,7 @@
 
 #include "core/rng.h"
 #include "io/image.h"
+#include "io/json.h"
 #include "io/stream.h"
 #include "io/writers.h"
 #include "sim/wave_stats.h"
@@ -514,20 +515,6 @@ static void csv_cell(FILE *f, const char *t) {
     fputc('"', f);
 }
 
-static void json_str(FILE *f, const char *t) {
-    fputc('"', f);
-    for (; *t; t++) {
-        unsigned char c = (unsigned char)*t;
-        if (c == '"' || c == '\\')
-            fprintf(f, "\\%c", c);
-        else if (c < 0x20)
-            fprintf(f, "\\u%04x", c);
-        else
-            fputc(c, f);
-    }
-    fputc('"', f);
-}
-
 /* JSON's number grammar (RFC 8259 section 6): -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)? */
 static int is_json_number(const char *t) {
     if (*t == '-') t++;
@@ -556,7 +543,7 @@ static void json_value(FILE *f, const char *t) {
     if (is_json_number(t))
         fputs(t, f);
     else
-        json_str(f, t);
+        ww_json_string(f, t);
 }
 
 static void csv_header(const ww_sweep *s, FILE *f) {
@@ -599,7 +586,7 @@ static void json_row(const ww_sweep *s, const row *rw, char vals[][WW_SWEEP_VALU
     fprintf(f, "{\"point\":%lld,\"values\":{", rw->point);
     for (int a = 0; a < s->naxes; a++) {
         if (a) fputc(',', f);
-        json_str(f, s->ax[a].key);
+        ww_json_string(f, s->ax[a].key);
         fputc(':', f);
         json_value(f, vals[a]);
     }
@@ -620,7 +607,7 @@ static void json_row(const ww_sweep *s, const row *rw, char vals[][WW_SWEEP_VALU
     }
     if (rw->msg[0]) {
         fputs(",\"message\":", f);
-        json_str(f, rw->msg);
+        ww_json_string(f, rw->msg);
     }
     if (rw->thumb == THUMB_OK) fprintf(f, ",\"thumb\":\"thumbs/point_%0*lld.png\"", s->digits, rw->point);
     fputs("}\n", f);
