@@ -62,9 +62,10 @@ float ww_grid_spacing(vec2 p) {
 // sample spacings s (mesh spacing for the geometry, pixel footprint for the normals), below
 // which the samples cannot carry it (scene/plan.h: WW_FADE_START_SAMPLES, _END_SAMPLES).
 // Takes 1 / s, so a loop over components divides once.
+#define WW_FADE_FULL 4.0 // samples per wavelength from which a component is drawn whole
 float ww_wave_fade(float L, float inv_s) {
 #if WW_FADE
-    return smoothstep(2.0, 4.0, L * inv_s);
+    return smoothstep(2.0, WW_FADE_FULL, L * inv_s);
 #else
     return 1.0;
 #endif
@@ -193,6 +194,7 @@ void ww_partials(vec2 p, ww_footprint fp, out vec3 dpdx, out vec3 dpdz, out floa
     vec2 disp = vec2(0.0); // horizontal displacement, for where the ripples are read
 #if WW_WAVE_MODEL != WW_MODEL_FLAT
     float seen = 0.0; // mean square slope of the components so far
+    float inv_long = fp.inv_pix / fp.stretch; // 1 / the footprint along the view
     for (int i = 0; i < u_nwaves; i++) {
         vec4 w = u_wave[i];
         float k = length(w.xy), L = 2.0 * WW_PI / k;
@@ -208,7 +210,9 @@ void ww_partials(vec2 p, ww_footprint fp, out vec3 dpdx, out vec3 dpdz, out floa
 #endif
         seen += slope2;
         vec2 dir = w.xy / k;
-        float f = ww_wave_fade_along(L, dir, fp);
+        // the largest footprint of any direction is pix stretch: at least 4 samples per
+        // wavelength there, at least 4 along every direction, so no fade to work out
+        float f = L * inv_long >= WW_FADE_FULL ? 1.0 : ww_wave_fade_along(L, dir, fp);
         float a = w.z * f;
         float phi = ww_wave_phi(i, p);
 #if WW_WAVE_MODEL == WW_MODEL_GERSTNER

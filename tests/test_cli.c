@@ -267,15 +267,21 @@ static long child_peak_rss_kib(const char *args) {
     return ru.ru_maxrss;
 }
 
-/* memory growth allowed between 10 and 120 frames: allocator noise, not per-frame buffers */
+/* memory growth allowed over 90 frames once running: allocator noise, not per-frame buffers
+ * (a leak of 23 KB a frame exceeds it) */
 #define RSS_GROWTH_TOL_KIB 2048.0
 
+/* peak RSS after 30, 120 and 210 frames: a GPU driver may still grow its caches over the first
+ * hundred frames (NVIDIA's did by 2.2 MB), so the check is on the last 90 frames; llvmpipe's
+ * three figures are equal */
 TEST(cli_render_peak_memory_does_not_grow_with_frames) {
     if (!ww_test_have_gl() || getenv("WW_ASAN")) return; /* ASan's quarantine holds freed memory */
-    long a = child_peak_rss_kib("render scenes/demo.yaml --size 256x144 --frames 10 --format none --quiet");
+    long a = child_peak_rss_kib("render scenes/demo.yaml --size 256x144 --frames 30 --format none --quiet");
     long b = child_peak_rss_kib("render scenes/demo.yaml --size 256x144 --frames 120 --format none --quiet");
-    ENSURE(a > 0 && b > 0);
-    ENSURE_NEAR((double)b, (double)a, RSS_GROWTH_TOL_KIB);
+    long c = child_peak_rss_kib("render scenes/demo.yaml --size 256x144 --frames 210 --format none --quiet");
+    ENSURE(a > 0 && b > 0 && c > 0);
+    ENSURE(b >= a - (long)RSS_GROWTH_TOL_KIB); /* the runs are alike */
+    ENSURE_NEAR((double)c, (double)b, RSS_GROWTH_TOL_KIB);
 }
 
 /* src/sim never reaches up into GL or the YAML parser; only one file includes yaml.h */
