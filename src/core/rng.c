@@ -21,3 +21,19 @@ double ww_rng_uniform(ww_rng *r) {
     uint64_t hi = ww_rng_u32(r) >> 5, lo = ww_rng_u32(r) >> 6; /* 27 + 26 bits */
     return ((double)hi * 67108864.0 + (double)lo) * (1.0 / 9007199254740992.0);
 }
+
+/* SplitMix64's output function: a bijective 64-bit mixer */
+static uint64_t mix64(uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+double ww_rng_draw(uint64_t seed, uint64_t stream, uint64_t a, uint64_t b) {
+    const uint64_t golden = 0x9e3779b97f4a7c15ULL; /* 2^64 / phi, SplitMix64's increment */
+    uint64_t h = mix64(seed + golden);
+    h = mix64(h ^ (stream + 2 * golden));
+    h = mix64(h ^ (a + 3 * golden));
+    h = mix64(h ^ (b + 4 * golden));
+    return (double)(h >> 11) * (1.0 / 9007199254740992.0);
+}

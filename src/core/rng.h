@@ -15,11 +15,18 @@ typedef struct ww_rng {
 /* stream ids: fixed forever, so a new system never shifts another's draws */
 enum {
     WW_RNG_WAVES = 1, WW_RNG_RIPPLES, WW_RNG_STONES, WW_RNG_FISH, WW_RNG_CHEST, WW_RNG_BUBBLES,
-    WW_RNG_SWEEP /* the points of `sweep --random` */
+    WW_RNG_SWEEP, /* the points of `sweep --random` */
+    WW_RNG_CUBES, WW_RNG_BOAT, WW_RNG_ROD
 };
 
 void ww_rng_seed(ww_rng *r, uint64_t seed, uint64_t stream);
 uint32_t ww_rng_u32(ww_rng *r);
 double ww_rng_uniform(ww_rng *r); /* [0, 1), 53 bits */
+
+/* a counter-based draw for the simulation: uniform in [0, 1) from (seed, stream, a, b) alone,
+ * e.g. a = step, b = object * 16 + k. No generator state lives in ww_state, so a --frames slice
+ * draws exactly what a full run draws, and one system's draws never move another's. The bits
+ * come from SplitMix64's finaliser (Steele, Lea & Flood 2014) over the four words. */
+double ww_rng_draw(uint64_t seed, uint64_t stream, uint64_t a, uint64_t b);
 
 #endif

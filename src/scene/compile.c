@@ -12,15 +12,8 @@
 
 #include "core/mathx.h"
 #include "core/rng.h"
-#include "scene/scene.h"
+#include "scene/compile_impl.h"
 #include "scene/spectrum.h"
-#include "scene/tree.h"
-
-#define TRY(x)                                                                                  \
-    do {                                                                                        \
-        ww_result r_ = (x);                                                                     \
-        if (r_ != WW_OK) return r_;                                                             \
-    } while (0)
 
 #define MAX_STEPS_PER_FRAME 1000000
 #define EVENT_TIME_EPS 1e-9   /* s: an event at t fires on the step that reaches t - eps */
@@ -36,18 +29,6 @@
                                       * sampled range holds no visible sea */
 
 /* ---- rules ----------------------------------------------------------------------------------- */
-
-typedef struct rule {
-    double lo, hi;
-    unsigned char lo_open, hi_open; /* 1: the end itself is excluded */
-    unsigned char integer;          /* 1: whole numbers only */
-    const char *unit;               /* for messages */
-} rule;
-
-#define CLOSED(lo, hi, unit) {lo, hi, 0, 0, 0, unit}  /* [lo, hi] */
-#define OPEN_LO(lo, hi, unit) {lo, hi, 1, 0, 0, unit} /* (lo, hi] */
-#define WHOLE(lo, hi, unit) {lo, hi, 0, 0, 1, unit}   /* whole numbers in [lo, hi] */
-#define FINITE(unit) CLOSED(-DBL_MAX, DBL_MAX, unit)  /* any finite number */
 
 /* every range of the schema, in file order; angles are checked in degrees */
 static const rule R_SEED = WHOLE(0, 9007199254740991.0, ""); /* 2^53 - 1, exact in a double */
@@ -97,16 +78,27 @@ static const rule R_PITCH = CLOSED(-89.9, 89.9, "deg");
 static const rule R_EVENT_TIME = CLOSED(0, 1e9, "s");
 
 /* script actions: an event holds "t" and exactly one of these; an action with a range is a
- * number, one without is a mapping read by its own function (compile_event) */
+ * number, one without is read by its function from the event's mapping (compile_event) */
+typedef ww_result (*action_fn)(ctx *c, const section *s, const ww_node *value, ww_event *ev);
+
 typedef struct action {
     const char *key;
     ww_event_kind kind;
     const rule *range;
+    action_fn parse;
 } action;
 
+static ww_result action_ripple(ctx *c, const section *s, const ww_node *value, ww_event *ev);
+
 static const action ACTIONS[] = {
-    {"time_of_day", WW_EV_TIME_OF_DAY, &R_HOURS},
-    {"ripple", WW_EV_RIPPLE, NULL},
+    {"time_of_day", WW_EV_TIME_OF_DAY, &R_HOURS, NULL},
+    {"ripple", WW_EV_RIPPLE, NULL, action_ripple},
+    {"throw", WW_EV_THROW, NULL, wwc_action_throw},     /* compile_stones.c */
+    {"cast", WW_EV_CAST, NULL, wwc_action_cast},        /* compile_fishing.c */
+    {"boat", WW_EV_BOAT, NULL, wwc_action_boat},        /* compile_boat.c */
+    {"camera", WW_EV_CAMERA_MODE, NULL, wwc_action_camera}, /* compile_boat.c */
+    {"press", WW_EV_PRESS, NULL, wwc_action_press},     /* compile_cubes.c */
+    {"chest", WW_EV_CHEST, NULL, wwc_action_chest},     /* compile_reef.c */
 };
 #define NACTIONS ((int)(sizeof ACTIONS / sizeof ACTIONS[0]))
 
@@ -127,29 +119,13 @@ static const char *const SPECTRUM_WORDS[] = {[WW_SPECTRUM_PM] = "pierson_moskowi
                                              [WW_SPECTRUM_JONSWAP] = "jonswap", NULL};
 static const char *const FOLD_WORDS[] = {[WW_FOLD_WARN] = "warn", [WW_FOLD_ERROR] = "error",
                                          [WW_FOLD_CLAMP] = "clamp", NULL};
+static const char *const BOOL_WORDS[] = {"false", "true", NULL};
 static const char *const INTERP_WORDS[] = {[WW_INTERP_CATMULL_ROM] = "catmull_rom",
                                            [WW_INTERP_LINEAR] = "linear", NULL};
 
 /* ---- context --------------------------------------------------------------------------------- */
 
-typedef struct ctx {
-    ww_scene *sc;
-    const char *file;     /* for errors with no node to point at */
-    ww_error *err;
-} ctx;
-
-/* a mapping being read, and its dotted name for messages */
-typedef struct section {
-    const ww_node *map;   /* NULL when absent: every value keeps its default */
-    char what[96];        /* "render.tonemap", "camera.path[2]"; "" at the top level */
-} section;
-
-typedef enum need { OPTIONAL = 0, REQUIRED } need;
-
-static ww_result fail(ctx *c, ww_result code, const ww_node *at, const char *fmt, ...)
-    __attribute__((format(printf, 4, 5)));
-
-static ww_result fail(ctx *c, ww_result code, const ww_node *at, const char *fmt, ...) {
+ww_result wwc_fail(ctx *c, ww_result code, const ww_node *at, const char *fmt, ...) {
     char msg[sizeof c->err->msg];
     va_list ap;
     va_start(ap, fmt);
@@ -161,10 +137,7 @@ static ww_result fail(ctx *c, ww_result code, const ww_node *at, const char *fmt
 
 /* "FILE:LINE:COL: warning: ..." appended to the scene's warnings (the CLI prints them); past
  * WW_MAX_WARNINGS the rest are dropped */
-static void warn(ctx *c, const ww_node *at, const char *fmt, ...)
-    __attribute__((format(printf, 3, 4)));
-
-static void warn(ctx *c, const ww_node *at, const char *fmt, ...) {
+void wwc_warn(ctx *c, const ww_node *at, const char *fmt, ...) {
     ww_scene *sc = c->sc;
     if (sc->nwarnings >= WW_MAX_WARNINGS) return;
     char msg[sizeof sc->warnings[0]];
@@ -200,7 +173,7 @@ static int levenshtein(const char *a, const char *b) {
 }
 
 /* the nearest word, when near enough to be a likely typo: distance <= max(2, len/3) */
-static const char *nearest(const char *typed, const char *const *words) {
+const char *wwc_nearest(const char *typed, const char *const *words) {
     int len = (int)strlen(typed), limit = len / 3 > 2 ? len / 3 : 2;
     const char *best = NULL;
     int best_d = limit + 1;
@@ -214,7 +187,7 @@ static const char *nearest(const char *typed, const char *const *words) {
     return best;
 }
 
-static const char *join_words(const char *const *words, char *buf, size_t size) {
+const char *wwc_join_words(const char *const *words, char *buf, size_t size) {
     size_t at = 0;
     buf[0] = 0;
     for (int i = 0; words[i] && at < size; i++) {
@@ -325,7 +298,7 @@ static const char *describe(const ww_node *n, char *buf, size_t size) {
 }
 
 /* one number under its rule; name is the dotted path for messages */
-static ww_result check_number(ctx *c, const ww_node *n, const char *name, const rule *r,
+ww_result wwc_check_number(ctx *c, const ww_node *n, const char *name, const rule *r,
                               double *out) {
     const char *expected = r->integer ? "a whole number" : "a number";
     char got[80], range[96];
@@ -334,29 +307,29 @@ static ww_result check_number(ctx *c, const ww_node *n, const char *name, const 
     /* quoted values are strings: "0.5" is not a number, on purpose */
     if (n->kind != WW_NODE_SCALAR || n->quoted || ww_node_is_null(n)) {
         int looks = n->kind == WW_NODE_SCALAR && n->quoted && parse_number(n->text, &v) == NUM_OK;
-        return fail(c, WW_E_TYPE, n, "%s: expected %s, got %s%s", name, expected,
+        return wwc_fail(c, WW_E_TYPE, n, "%s: expected %s, got %s%s", name, expected,
                     describe(n, got, sizeof got), looks ? " (quotes make it a string)" : "");
     }
     switch (parse_number(n->text, &v)) {
     case NUM_NOT_A_NUMBER:
-        return fail(c, WW_E_TYPE, n, "%s: expected %s, got %s", name, expected,
+        return wwc_fail(c, WW_E_TYPE, n, "%s: expected %s, got %s", name, expected,
                     describe(n, got, sizeof got));
     case NUM_NONFINITE:
         if (r->lo == -DBL_MAX)
-            return fail(c, WW_E_NONFINITE, n, "%s: expected a finite number, got %s", name,
+            return wwc_fail(c, WW_E_NONFINITE, n, "%s: expected a finite number, got %s", name,
                         n->text);
-        return fail(c, WW_E_NONFINITE, n, "%s: expected a finite number in %s, got %s", name,
+        return wwc_fail(c, WW_E_NONFINITE, n, "%s: expected a finite number in %s, got %s", name,
                     range_text(r, range, sizeof range), n->text);
     case NUM_DIV_ZERO:
-        return fail(c, WW_E_RANGE, n,
+        return wwc_fail(c, WW_E_RANGE, n,
                     "%s: division by zero in %s: expected a fraction a/b with b != 0", name,
                     n->text);
     case NUM_OK: break;
     }
     if (r->integer && v != floor(v))
-        return fail(c, WW_E_TYPE, n, "%s: expected a whole number, got %s", name, n->text);
+        return wwc_fail(c, WW_E_TYPE, n, "%s: expected a whole number, got %s", name, n->text);
     if (!in_range(r, v))
-        return fail(c, WW_E_RANGE, n, "%s must be in %s, got %s", name,
+        return wwc_fail(c, WW_E_RANGE, n, "%s must be in %s, got %s", name,
                     range_text(r, range, sizeof range), n->text);
     *out = v;
     return WW_OK;
@@ -364,28 +337,28 @@ static ww_result check_number(ctx *c, const ww_node *n, const char *name, const 
 
 /* ---- getters: sections, values --------------------------------------------------------------- */
 
-static const char *where(const section *s) { return s->what[0] ? s->what : "the top level"; }
+const char *wwc_where(const section *s) { return s->what[0] ? s->what : "the top level"; }
 
 /* "section.key" */
-static const char *path_of(const section *s, const char *key, char *buf, size_t size) {
+const char *wwc_path_of(const section *s, const char *key, char *buf, size_t size) {
     if (snprintf(buf, size, "%s%s%s", s->what, s->what[0] ? "." : "", key) < 0) buf[0] = 0;
     return buf;
 }
 
 /* every key of the mapping must be in keys; else point at it and suggest the nearest */
-static ww_result check_keys(ctx *c, const section *s, const char *const *keys) {
+ww_result wwc_check_keys(ctx *c, const section *s, const char *const *keys) {
     char list[256];
     for (const ww_node *v = s->map->first; v; v = v->next) {
         const char *k = v->key->text;
         if (in_words(k, keys)) continue;
-        const char *near = nearest(k, keys);
-        join_words(keys, list, sizeof list);
+        const char *near = wwc_nearest(k, keys);
+        wwc_join_words(keys, list, sizeof list);
         if (near)
-            return fail(c, WW_E_UNKNOWN_KEY, v->key,
+            return wwc_fail(c, WW_E_UNKNOWN_KEY, v->key,
                         "unknown key '%s' in %s: did you mean '%s'? (expected one of: %s)", k,
-                        where(s), near, list);
-        return fail(c, WW_E_UNKNOWN_KEY, v->key, "unknown key '%s' in %s: expected one of: %s",
-                    k, where(s), list);
+                        wwc_where(s), near, list);
+        return wwc_fail(c, WW_E_UNKNOWN_KEY, v->key, "unknown key '%s' in %s: expected one of: %s",
+                    k, wwc_where(s), list);
     }
     return WW_OK;
 }
@@ -397,17 +370,17 @@ static ww_result open_map(ctx *c, const ww_node *node, const char *what,
     out->map = NULL;
     snprintf(out->what, sizeof out->what, "%s", what);
     if (node->kind != WW_NODE_MAP)
-        return fail(c, WW_E_TYPE, node, "%s: expected a mapping, got %s", what,
+        return wwc_fail(c, WW_E_TYPE, node, "%s: expected a mapping, got %s", what,
                     describe(node, got, sizeof got));
     out->map = node;
-    return check_keys(c, out, keys);
+    return wwc_check_keys(c, out, keys);
 }
 
 /* the sub-mapping parent.key; out->map stays NULL when absent */
-static ww_result open_section(ctx *c, const section *parent, const char *key,
+ww_result wwc_open_section(ctx *c, const section *parent, const char *key,
                               const char *const *keys, section *out) {
     char what[sizeof out->what];
-    path_of(parent, key, what, sizeof what);
+    wwc_path_of(parent, key, what, sizeof what);
     const ww_node *node = parent->map ? ww_node_find(parent->map, key) : NULL;
     if (!node) {
         out->map = NULL;
@@ -418,7 +391,7 @@ static ww_result open_section(ctx *c, const section *parent, const char *key,
 }
 
 /* item i of the list named list_name */
-static ww_result open_item(ctx *c, const ww_node *item, const char *list_name, int i,
+ww_result wwc_open_item(ctx *c, const ww_node *item, const char *list_name, int i,
                            const char *const *keys, section *out) {
     char what[sizeof out->what];
     snprintf(what, sizeof what, "%s[%d]", list_name, i);
@@ -426,51 +399,51 @@ static ww_result open_item(ctx *c, const ww_node *item, const char *list_name, i
 }
 
 /* the value under key, NULL when absent; a missing REQUIRED key is reported at the mapping */
-static ww_result lookup(ctx *c, const section *s, const char *key, need nd, const ww_node **out) {
+ww_result wwc_lookup(ctx *c, const section *s, const char *key, need nd, const ww_node **out) {
     *out = s->map ? ww_node_find(s->map, key) : NULL;
     if (*out || nd == OPTIONAL) return WW_OK;
-    return fail(c, WW_E_MISSING, s->map, "%s is missing required key '%s'", where(s), key);
+    return wwc_fail(c, WW_E_MISSING, s->map, "%s is missing required key '%s'", wwc_where(s), key);
 }
 
 /* the getters leave *out alone when an optional key is absent: it holds the default */
-static ww_result get_number(ctx *c, const section *s, const char *key, const rule *r, need nd,
+ww_result wwc_get_number(ctx *c, const section *s, const char *key, const rule *r, need nd,
                             double *out) {
     const ww_node *n;
     char name[128];
-    TRY(lookup(c, s, key, nd, &n));
-    return n ? check_number(c, n, path_of(s, key, name, sizeof name), r, out) : WW_OK;
+    TRY(wwc_lookup(c, s, key, nd, &n));
+    return n ? wwc_check_number(c, n, wwc_path_of(s, key, name, sizeof name), r, out) : WW_OK;
 }
 
 /* written in degrees, stored in radians */
-static ww_result get_angle(ctx *c, const section *s, const char *key, const rule *r, need nd,
+ww_result wwc_get_angle(ctx *c, const section *s, const char *key, const rule *r, need nd,
                            double *out) {
     const ww_node *n;
     char name[128];
     double deg;
-    TRY(lookup(c, s, key, nd, &n));
+    TRY(wwc_lookup(c, s, key, nd, &n));
     if (!n) return WW_OK;
-    TRY(check_number(c, n, path_of(s, key, name, sizeof name), r, &deg));
+    TRY(wwc_check_number(c, n, wwc_path_of(s, key, name, sizeof name), r, &deg));
     *out = ww_m_rad(deg);
     return WW_OK;
 }
 
 /* a list of exactly len numbers, each under r */
-static ww_result get_vec(ctx *c, const section *s, const char *key, int len, const rule *r,
+ww_result wwc_get_vec(ctx *c, const section *s, const char *key, int len, const rule *r,
                          need nd, double *out) {
     const ww_node *n;
     char name[128], item[144], got[80];
     double v[4];
     WW_ASSERT(len <= 4);
-    TRY(lookup(c, s, key, nd, &n));
+    TRY(wwc_lookup(c, s, key, nd, &n));
     if (!n) return WW_OK;
-    path_of(s, key, name, sizeof name);
+    wwc_path_of(s, key, name, sizeof name);
     if (n->kind != WW_NODE_SEQ || n->n != len)
-        return fail(c, WW_E_TYPE, n, "%s: expected a list of %d %s, got %s", name, len,
+        return wwc_fail(c, WW_E_TYPE, n, "%s: expected a list of %d %s, got %s", name, len,
                     r->integer ? "whole numbers" : "numbers", describe(n, got, sizeof got));
     int i = 0;
     for (const ww_node *e = n->first; e; e = e->next, i++) {
         snprintf(item, sizeof item, "%s[%d]", name, i);
-        TRY(check_number(c, e, item, r, &v[i]));
+        TRY(wwc_check_number(c, e, item, r, &v[i]));
     }
     memcpy(out, v, (size_t)len * sizeof *v);
     return WW_OK;
@@ -478,51 +451,51 @@ static ww_result get_vec(ctx *c, const section *s, const char *key, int len, con
 
 /* a heading: degrees (0 = +x, 90 = +z), or a vector [x, z] in the XZ plane, which must not be
  * zero; stored in radians */
-static ww_result get_heading(ctx *c, const section *s, const char *key, need nd, double *out) {
+ww_result wwc_get_heading(ctx *c, const section *s, const char *key, need nd, double *out) {
     const ww_node *n;
     char name[128];
-    TRY(lookup(c, s, key, nd, &n));
+    TRY(wwc_lookup(c, s, key, nd, &n));
     if (!n) return WW_OK;
-    if (n->kind != WW_NODE_SEQ) return get_angle(c, s, key, &R_ANGLE, nd, out);
+    if (n->kind != WW_NODE_SEQ) return wwc_get_angle(c, s, key, &R_ANGLE, nd, out);
     double v[2];
-    TRY(get_vec(c, s, key, 2, &R_DIR_VECTOR, nd, v));
+    TRY(wwc_get_vec(c, s, key, 2, &R_DIR_VECTOR, nd, v));
     if (v[0] == 0.0 && v[1] == 0.0)
-        return fail(c, WW_E_RANGE, n,
+        return wwc_fail(c, WW_E_RANGE, n,
                     "%s: the vector [0, 0] has no direction: expected a heading in degrees or a "
                     "non-zero [x, z]",
-                    path_of(s, key, name, sizeof name));
+                    wwc_path_of(s, key, name, sizeof name));
     *out = atan2(v[1], v[0]);
     return WW_OK;
 }
 
 /* a range [lo, hi] of two numbers under r with lo < hi, or lo <= hi when equal is allowed */
-static ww_result get_range(ctx *c, const section *s, const char *key, const rule *r,
+ww_result wwc_get_range(ctx *c, const section *s, const char *key, const rule *r,
                            int allow_equal, double out[2]) {
     const ww_node *n;
     char name[128];
     double v[2] = {out[0], out[1]};
-    TRY(lookup(c, s, key, OPTIONAL, &n));
+    TRY(wwc_lookup(c, s, key, OPTIONAL, &n));
     if (!n) return WW_OK;
-    TRY(get_vec(c, s, key, 2, r, OPTIONAL, v));
+    TRY(wwc_get_vec(c, s, key, 2, r, OPTIONAL, v));
     if (allow_equal ? !(v[0] <= v[1]) : !(v[0] < v[1]))
-        return fail(c, WW_E_INCONSISTENT, n, "%s = [%g, %g]: expected [lo, hi] with lo %s hi",
-                    path_of(s, key, name, sizeof name), v[0], v[1], allow_equal ? "<=" : "<");
+        return wwc_fail(c, WW_E_INCONSISTENT, n, "%s = [%g, %g]: expected [lo, hi] with lo %s hi",
+                    wwc_path_of(s, key, name, sizeof name), v[0], v[1], allow_equal ? "<=" : "<");
     out[0] = v[0];
     out[1] = v[1];
     return WW_OK;
 }
 
 /* one of words; *out is its index */
-static ww_result get_word(ctx *c, const section *s, const char *key, const char *const *words,
+ww_result wwc_get_word(ctx *c, const section *s, const char *key, const char *const *words,
                           int *out) {
     const ww_node *n;
     char name[128], list[128], got[80];
-    TRY(lookup(c, s, key, OPTIONAL, &n));
+    TRY(wwc_lookup(c, s, key, OPTIONAL, &n));
     if (!n) return WW_OK;
-    path_of(s, key, name, sizeof name);
-    join_words(words, list, sizeof list);
+    wwc_path_of(s, key, name, sizeof name);
+    wwc_join_words(words, list, sizeof list);
     if (n->kind != WW_NODE_SCALAR || ww_node_is_null(n))
-        return fail(c, WW_E_TYPE, n, "%s: expected one of: %s, got %s", name, list,
+        return wwc_fail(c, WW_E_TYPE, n, "%s: expected one of: %s, got %s", name, list,
                     describe(n, got, sizeof got));
     for (int i = 0; words[i]; i++) {
         if (strcmp(n->text, words[i]) == 0) {
@@ -530,25 +503,25 @@ static ww_result get_word(ctx *c, const section *s, const char *key, const char 
             return WW_OK;
         }
     }
-    const char *near = nearest(n->text, words);
+    const char *near = wwc_nearest(n->text, words);
     if (near)
-        return fail(c, WW_E_ENUM, n, "%s: '%s' is not one of: %s (did you mean '%s'?)", name,
+        return wwc_fail(c, WW_E_ENUM, n, "%s: '%s' is not one of: %s (did you mean '%s'?)", name,
                     n->text, list, near);
-    return fail(c, WW_E_ENUM, n, "%s: '%s' is not one of: %s", name, n->text, list);
+    return wwc_fail(c, WW_E_ENUM, n, "%s: '%s' is not one of: %s", name, n->text, list);
 }
 
 /* a list of at most max items; *out stays NULL when absent */
-static ww_result get_list(ctx *c, const section *s, const char *key, int max,
+ww_result wwc_get_list(ctx *c, const section *s, const char *key, int max,
                           const ww_node **out) {
     char name[128], got[80];
-    TRY(lookup(c, s, key, OPTIONAL, out));
+    TRY(wwc_lookup(c, s, key, OPTIONAL, out));
     if (!*out) return WW_OK;
-    path_of(s, key, name, sizeof name);
+    wwc_path_of(s, key, name, sizeof name);
     if ((*out)->kind != WW_NODE_SEQ)
-        return fail(c, WW_E_TYPE, *out, "%s: expected a list, got %s", name,
+        return wwc_fail(c, WW_E_TYPE, *out, "%s: expected a list, got %s", name,
                     describe(*out, got, sizeof got));
     if ((*out)->n > max)
-        return fail(c, WW_E_RANGE, *out, "%s has %d items: expected at most %d", name,
+        return wwc_fail(c, WW_E_RANGE, *out, "%s has %d items: expected at most %d", name,
                     (*out)->n, max);
     return WW_OK;
 }
@@ -573,17 +546,17 @@ static ww_result compile_time(ctx *c, const section *top) {
     static const char *const keys[] = {"dt", "fps", "duration", "start", NULL};
     ww_scene *sc = c->sc;
     section s;
-    TRY(open_section(c, top, "time", keys, &s));
-    TRY(get_number(c, &s, "dt", &R_DT, OPTIONAL, &sc->dt));
-    TRY(get_number(c, &s, "fps", &R_FPS, OPTIONAL, &sc->fps));
-    TRY(get_number(c, &s, "duration", &R_DURATION, OPTIONAL, &sc->duration));
-    TRY(get_number(c, &s, "start", &R_START, OPTIONAL, &sc->start));
+    TRY(wwc_open_section(c, top, "time", keys, &s));
+    TRY(wwc_get_number(c, &s, "dt", &R_DT, OPTIONAL, &sc->dt));
+    TRY(wwc_get_number(c, &s, "fps", &R_FPS, OPTIONAL, &sc->fps));
+    TRY(wwc_get_number(c, &s, "duration", &R_DURATION, OPTIONAL, &sc->duration));
+    TRY(wwc_get_number(c, &s, "start", &R_START, OPTIONAL, &sc->start));
 
     /* frames must land on steps: 1/(fps dt) whole within 1e-6 relative */
     const ww_node *at = blame(&s, "dt", "fps");
     double steps = 1.0 / (sc->fps * sc->dt);
     if (steps > MAX_STEPS_PER_FRAME)
-        return fail(c, WW_E_RANGE, at,
+        return wwc_fail(c, WW_E_RANGE, at,
                     "dt = %g is too small for fps = %g: 1/(fps*dt) = %.6g steps per frame, "
                     "expected at most %d",
                     sc->dt, sc->fps, steps, MAX_STEPS_PER_FRAME);
@@ -592,7 +565,7 @@ static ww_result compile_time(ctx *c, const section *top) {
         char shown[32];
         snprintf(shown, sizeof shown, "%.2f", steps);
         if (fabs(steps - (double)n) < 0.005) snprintf(shown, sizeof shown, "%.9g", steps);
-        return fail(c, WW_E_INCONSISTENT, at,
+        return wwc_fail(c, WW_E_INCONSISTENT, at,
                     "dt must divide the frame interval 1/fps: 1/(%g*%g) = %s steps; expected a "
                     "whole number (for example dt: 1/%.15g)",
                     sc->fps, sc->dt, shown, sc->fps * (double)(n < 1 ? 1 : n));
@@ -602,7 +575,7 @@ static ww_result compile_time(ctx *c, const section *top) {
     /* at least one frame */
     sc->frame_count = llround(sc->duration * sc->fps);
     if (sc->frame_count < 1)
-        return fail(c, WW_E_RANGE, blame(&s, "duration", "fps"),
+        return wwc_fail(c, WW_E_RANGE, blame(&s, "duration", "fps"),
                     "duration * fps = %g frames: expected at least 1 frame (duration >= %g s)",
                     sc->duration * sc->fps, 0.5 / sc->fps);
     return WW_OK;
@@ -613,18 +586,18 @@ static ww_result compile_render(ctx *c, const section *top) {
     static const char *const tonemap_keys[] = {"operator", "exposure", "gamma", NULL};
     ww_scene *sc = c->sc;
     section s, tm;
-    TRY(open_section(c, top, "render", keys, &s));
+    TRY(wwc_open_section(c, top, "render", keys, &s));
     double size[2] = {sc->width, sc->height};
-    TRY(get_vec(c, &s, "size", 2, &R_SIZE, OPTIONAL, size));
+    TRY(wwc_get_vec(c, &s, "size", 2, &R_SIZE, OPTIONAL, size));
     sc->width = (int)size[0];
     sc->height = (int)size[1];
 
-    TRY(open_section(c, &s, "tonemap", tonemap_keys, &tm));
+    TRY(wwc_open_section(c, &s, "tonemap", tonemap_keys, &tm));
     int op = (int)sc->tonemap;
-    TRY(get_word(c, &tm, "operator", TONEMAP_WORDS, &op));
+    TRY(wwc_get_word(c, &tm, "operator", TONEMAP_WORDS, &op));
     sc->tonemap = (ww_tonemap_op)op;
-    TRY(get_number(c, &tm, "exposure", &R_EXPOSURE, OPTIONAL, &sc->exposure));
-    return get_number(c, &tm, "gamma", &R_GAMMA, OPTIONAL, &sc->gamma);
+    TRY(wwc_get_number(c, &tm, "exposure", &R_EXPOSURE, OPTIONAL, &sc->exposure));
+    return wwc_get_number(c, &tm, "gamma", &R_GAMMA, OPTIONAL, &sc->gamma);
 }
 
 static ww_result compile_sky(ctx *c, const section *top) {
@@ -632,12 +605,12 @@ static ww_result compile_sky(ctx *c, const section *top) {
                                        "sun_max_elevation", NULL};
     ww_scene *sc = c->sc;
     section s;
-    TRY(open_section(c, top, "sky", keys, &s));
+    TRY(wwc_open_section(c, top, "sky", keys, &s));
     int model = 0; /* gradient, the only sky so far: checked, nothing to store */
-    TRY(get_word(c, &s, "model", SKY_WORDS, &model));
-    TRY(get_number(c, &s, "time_of_day", &R_HOURS, OPTIONAL, &sc->time_of_day));
-    TRY(get_number(c, &s, "day_length", &R_DAY_LENGTH, OPTIONAL, &sc->day_length));
-    return get_angle(c, &s, "sun_max_elevation", &R_SUN_MAX, OPTIONAL, &sc->sun_max_elevation);
+    TRY(wwc_get_word(c, &s, "model", SKY_WORDS, &model));
+    TRY(wwc_get_number(c, &s, "time_of_day", &R_HOURS, OPTIONAL, &sc->time_of_day));
+    TRY(wwc_get_number(c, &s, "day_length", &R_DAY_LENGTH, OPTIONAL, &sc->day_length));
+    return wwc_get_angle(c, &s, "sun_max_elevation", &R_SUN_MAX, OPTIONAL, &sc->sun_max_elevation);
 }
 
 static ww_result compile_fog(ctx *c, const section *top) {
@@ -645,10 +618,10 @@ static ww_result compile_fog(ctx *c, const section *top) {
     static const char *const above_keys[] = {"color", "density", NULL};
     ww_scene *sc = c->sc;
     section s, above;
-    TRY(open_section(c, top, "fog", keys, &s));
-    TRY(open_section(c, &s, "above", above_keys, &above));
-    TRY(get_vec(c, &above, "color", 3, &R_FOG_COLOR, OPTIONAL, sc->fog_color));
-    return get_number(c, &above, "density", &R_FOG_DENSITY, OPTIONAL, &sc->fog_density);
+    TRY(wwc_open_section(c, top, "fog", keys, &s));
+    TRY(wwc_open_section(c, &s, "above", above_keys, &above));
+    TRY(wwc_get_vec(c, &above, "color", 3, &R_FOG_COLOR, OPTIONAL, sc->fog_color));
+    return wwc_get_number(c, &above, "density", &R_FOG_DENSITY, OPTIONAL, &sc->fog_density);
 }
 
 /* what the model makes of a component's steepness and exponent: each is checked whatever the
@@ -667,19 +640,19 @@ static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave_model 
     static const char *const keys[] = {"direction", "wavelength", "amplitude", "steepness",
                                        "exponent", "phase", "speed", NULL};
     section s;
-    TRY(open_item(c, item, "water.waves.list", i, keys, &s));
+    TRY(wwc_open_item(c, item, "water.waves.list", i, keys, &s));
     *w = (ww_wave){.steepness = DEFAULT_STEEPNESS,
                    .exponent = DEFAULT_EXPONENT,
                    .line = s.map->mark.line,
                    .column = s.map->mark.column};
     double speed = 0.0;
-    TRY(get_heading(c, &s, "direction", REQUIRED, &w->direction));
-    TRY(get_number(c, &s, "wavelength", &R_WAVELENGTH, REQUIRED, &w->wavelength));
-    TRY(get_number(c, &s, "amplitude", &R_AMPLITUDE, REQUIRED, &w->amplitude));
-    TRY(get_number(c, &s, "steepness", &R_STEEPNESS, OPTIONAL, &w->steepness));
-    TRY(get_number(c, &s, "exponent", &R_EXPONENT, OPTIONAL, &w->exponent));
-    TRY(get_angle(c, &s, "phase", &R_ANGLE, OPTIONAL, &w->phase));
-    TRY(get_number(c, &s, "speed", &R_WAVE_SPEED, OPTIONAL, &speed));
+    TRY(wwc_get_heading(c, &s, "direction", REQUIRED, &w->direction));
+    TRY(wwc_get_number(c, &s, "wavelength", &R_WAVELENGTH, REQUIRED, &w->wavelength));
+    TRY(wwc_get_number(c, &s, "amplitude", &R_AMPLITUDE, REQUIRED, &w->amplitude));
+    TRY(wwc_get_number(c, &s, "steepness", &R_STEEPNESS, OPTIONAL, &w->steepness));
+    TRY(wwc_get_number(c, &s, "exponent", &R_EXPONENT, OPTIONAL, &w->exponent));
+    TRY(wwc_get_angle(c, &s, "phase", &R_ANGLE, OPTIONAL, &w->phase));
+    TRY(wwc_get_number(c, &s, "speed", &R_WAVE_SPEED, OPTIONAL, &speed));
     w->steepness = model_steepness(model, w->steepness);
     w->exponent = model_exponent(model, w->exponent);
     ww_wave_derive(w, speed);
@@ -712,22 +685,22 @@ static ww_result compile_random(ctx *c, const section *waves, ww_wave_model mode
     static const char *const keys[] = {"count",  "wavelength", "amplitude", "direction",
                                        "spread", "steepness",  "exponent",  NULL};
     ww_wave_random *r = &c->sc->wave_random;
-    TRY(open_section(c, waves, "random", keys, s));
+    TRY(wwc_open_section(c, waves, "random", keys, s));
     if (!s->map) return WW_OK;
     double count = RANDOM_DEFAULT_COUNT;
-    TRY(get_number(c, s, "count", &R_RANDOM_COUNT, OPTIONAL, &count));
-    TRY(get_range(c, s, "wavelength", &R_WAVELENGTH, 0, r->wavelength));
-    TRY(get_range(c, s, "amplitude", &R_AMPLITUDE, 1, r->amplitude));
-    TRY(get_heading(c, s, "direction", OPTIONAL, &r->direction));
-    TRY(get_angle(c, s, "spread", &R_RANDOM_SPREAD, OPTIONAL, &r->spread));
-    TRY(get_number(c, s, "steepness", &R_STEEPNESS, OPTIONAL, &r->steepness));
-    TRY(get_number(c, s, "exponent", &R_EXPONENT, OPTIONAL, &r->exponent));
+    TRY(wwc_get_number(c, s, "count", &R_RANDOM_COUNT, OPTIONAL, &count));
+    TRY(wwc_get_range(c, s, "wavelength", &R_WAVELENGTH, 0, r->wavelength));
+    TRY(wwc_get_range(c, s, "amplitude", &R_AMPLITUDE, 1, r->amplitude));
+    TRY(wwc_get_heading(c, s, "direction", OPTIONAL, &r->direction));
+    TRY(wwc_get_angle(c, s, "spread", &R_RANDOM_SPREAD, OPTIONAL, &r->spread));
+    TRY(wwc_get_number(c, s, "steepness", &R_STEEPNESS, OPTIONAL, &r->steepness));
+    TRY(wwc_get_number(c, s, "exponent", &R_EXPONENT, OPTIONAL, &r->exponent));
     r->steepness = model_steepness(model, r->steepness);
     r->exponent = model_exponent(model, r->exponent);
 
     /* the list and the drawn components share the scene's WW_MAX_WAVES slots */
     if (nlisted + (int)count > WW_MAX_WAVES)
-        return fail(c, WW_E_RANGE, blame(s, "count", "count"),
+        return wwc_fail(c, WW_E_RANGE, blame(s, "count", "count"),
                     "%s.count = %d with %d listed waves makes %d components: expected at most "
                     "%d in all",
                     s->what, (int)count, nlisted, nlisted + (int)count, WW_MAX_WAVES);
@@ -764,26 +737,26 @@ static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model mo
                                        "direction", "spread",  "count",      "wavelength",
                                        "steepness", NULL};
     ww_spectrum_desc *d = &c->sc->spectrum;
-    TRY(open_section(c, waves, "spectrum", keys, s));
+    TRY(wwc_open_section(c, waves, "spectrum", keys, s));
     if (!s->map) return WW_OK;
     if (model != WW_WAVES_SPECTRUM && model != WW_WAVES_FLAT)
-        return fail(c, WW_E_INCONSISTENT, s->map->key,
+        return wwc_fail(c, WW_E_INCONSISTENT, s->map->key,
                     "water.waves.spectrum is read only by model: spectrum, and the model is %s: "
                     "remove it, or set water.waves.model: spectrum",
                     WAVE_WORDS[model]);
     int kind = (int)d->kind;
-    TRY(get_word(c, s, "kind", SPECTRUM_WORDS, &kind));
+    TRY(wwc_get_word(c, s, "kind", SPECTRUM_WORDS, &kind));
     d->kind = (ww_spectrum_kind)kind;
-    TRY(get_number(c, s, "wind_speed", &R_WIND_SPEED, OPTIONAL, &d->wind_speed));
-    TRY(get_number(c, s, "fetch", &R_FETCH, OPTIONAL, &d->fetch));
-    TRY(get_number(c, s, "gamma", &R_PEAK_GAMMA, OPTIONAL, &d->gamma));
-    TRY(get_heading(c, s, "direction", OPTIONAL, &d->direction));
-    TRY(get_angle(c, s, "spread", &R_SPECTRUM_SPREAD, OPTIONAL, &d->spread));
+    TRY(wwc_get_number(c, s, "wind_speed", &R_WIND_SPEED, OPTIONAL, &d->wind_speed));
+    TRY(wwc_get_number(c, s, "fetch", &R_FETCH, OPTIONAL, &d->fetch));
+    TRY(wwc_get_number(c, s, "gamma", &R_PEAK_GAMMA, OPTIONAL, &d->gamma));
+    TRY(wwc_get_heading(c, s, "direction", OPTIONAL, &d->direction));
+    TRY(wwc_get_angle(c, s, "spread", &R_SPECTRUM_SPREAD, OPTIONAL, &d->spread));
     double count = d->count;
-    TRY(get_number(c, s, "count", &R_SPECTRUM_COUNT, OPTIONAL, &count));
+    TRY(wwc_get_number(c, s, "count", &R_SPECTRUM_COUNT, OPTIONAL, &count));
     d->count = (int)count;
-    TRY(get_range(c, s, "wavelength", &R_WAVELENGTH, 0, d->wavelength));
-    return get_number(c, s, "steepness", &R_SPECTRUM_STEEPNESS, OPTIONAL, &d->steepness);
+    TRY(wwc_get_range(c, s, "wavelength", &R_WAVELENGTH, 0, d->wavelength));
+    return wwc_get_number(c, s, "steepness", &R_SPECTRUM_STEEPNESS, OPTIONAL, &d->steepness);
 }
 
 /* water.fold: above sum Q k A = 1 the Gerstner surface can loop over itself: the Jacobian of
@@ -798,13 +771,13 @@ static ww_result check_fold(ctx *c, const section *waves) {
     const ww_node *at = waves->map->key ? waves->map->key : waves->map;
     switch (sc->fold) {
     case WW_FOLD_ERROR:
-        return fail(c, WW_E_RANGE, at,
+        return wwc_fail(c, WW_E_RANGE, at,
                     "water.waves: sum Q k A = %.6g > 1, so the Gerstner surface folds over "
                     "itself (margin 1 - sum = %.6g): expected at most 1 under water.fold: error "
                     "(warn keeps the waves as given, clamp scales every steepness to a sum of %g)",
                     sum, 1.0 - sum, WW_FOLD_CLAMP_SUM);
     case WW_FOLD_WARN:
-        warn(c, at,
+        wwc_warn(c, at,
              "water.waves folds: sum Q k A = %.6g > 1, margin 1 - sum = %.6g (water.fold: warn "
              "keeps it; clamp scales the steepness, error refuses)",
              sum, 1.0 - sum);
@@ -813,7 +786,7 @@ static ww_result check_fold(ctx *c, const section *waves) {
         double f = WW_FOLD_CLAMP_SUM / sum;
         for (int i = 0; i < sc->nwaves; i++) sc->waves[i].steepness *= f;
         sc->fold_sum = ww_waves_fold_sum(sc);
-        warn(c, at,
+        wwc_warn(c, at,
              "water.waves folds: sum Q k A = %.6g > 1; water.fold: clamp scaled every steepness "
              "by %.6g to a sum of %.6g (margin %.6g)",
              sum, f, sc->fold_sum, 1.0 - sc->fold_sum);
@@ -828,17 +801,17 @@ static ww_result compile_waves(ctx *c, const section *water) {
     ww_scene *sc = c->sc;
     section s, rs, ss;
     const ww_node *list;
-    TRY(open_section(c, water, "waves", keys, &s));
+    TRY(wwc_open_section(c, water, "waves", keys, &s));
     int m = (int)sc->wave_model;
-    TRY(get_word(c, &s, "model", WAVE_WORDS, &m));
+    TRY(wwc_get_word(c, &s, "model", WAVE_WORDS, &m));
     ww_wave_model model = (ww_wave_model)m;
     sc->wave_model = model;
-    TRY(get_list(c, &s, "list", WW_MAX_WAVES, &list));
+    TRY(wwc_get_list(c, &s, "list", WW_MAX_WAVES, &list));
 
     /* the spectrum model samples its own components */
     const ww_node *own = list ? list : s.map ? ww_node_find(s.map, "random") : NULL;
     if (model == WW_WAVES_SPECTRUM && own)
-        return fail(c, WW_E_INCONSISTENT, own->key,
+        return wwc_fail(c, WW_E_INCONSISTENT, own->key,
                     "water.waves.%s is not read by model: spectrum (its components are sampled "
                     "from water.waves.spectrum): remove it, or use model gerstner, sines or "
                     "steep_sines",
@@ -870,7 +843,7 @@ static ww_result compile_waves(ctx *c, const section *water) {
          * sum Q k A = steepness overflows (a float in the shader first) */
         if (slope < SPECTRUM_MIN_SLOPE) {
             double wp = ww_spectrum_peak(d);
-            return fail(c, WW_E_INCONSISTENT, at,
+            return wwc_fail(c, WW_E_INCONSISTENT, at,
                         "water.waves.spectrum: the wavelengths [%g, %g] m hold almost none of "
                         "this spectrum's energy (Hs = %.3g m, sum k A = %.3g): expected a range "
                         "nearer its peak at %.4g m",
@@ -897,19 +870,19 @@ static ww_result compile_ripples(ctx *c, const section *water) {
                                        "time_decay", "wavenumber", "speed", NULL};
     ww_ripple_desc *d = &c->sc->ripples;
     section s;
-    TRY(open_section(c, water, "ripples", keys, &s));
+    TRY(wwc_open_section(c, water, "ripples", keys, &s));
     if (!s.map) return WW_OK;
     c->sc->ripples_on = 1;
     double max = d->max;
-    TRY(get_number(c, &s, "amplitude", &R_RIPPLE_AMPLITUDE, OPTIONAL, &d->amplitude));
-    TRY(get_number(c, &s, "lifetime", &R_RIPPLE_LIFETIME, OPTIONAL, &d->lifetime));
-    TRY(get_number(c, &s, "max", &R_RIPPLE_MAX, OPTIONAL, &max));
+    TRY(wwc_get_number(c, &s, "amplitude", &R_RIPPLE_AMPLITUDE, OPTIONAL, &d->amplitude));
+    TRY(wwc_get_number(c, &s, "lifetime", &R_RIPPLE_LIFETIME, OPTIONAL, &d->lifetime));
+    TRY(wwc_get_number(c, &s, "max", &R_RIPPLE_MAX, OPTIONAL, &max));
     d->max = (int)max;
-    TRY(get_number(c, &s, "radial_decay", &R_RADIAL_DECAY, OPTIONAL, &d->radial_decay));
-    TRY(get_number(c, &s, "time_decay", &R_TIME_DECAY, OPTIONAL, &d->time_decay));
-    TRY(get_number(c, &s, "wavenumber", &R_RIPPLE_WAVENUMBER, OPTIONAL, &d->wavenumber));
+    TRY(wwc_get_number(c, &s, "radial_decay", &R_RADIAL_DECAY, OPTIONAL, &d->radial_decay));
+    TRY(wwc_get_number(c, &s, "time_decay", &R_TIME_DECAY, OPTIONAL, &d->time_decay));
+    TRY(wwc_get_number(c, &s, "wavenumber", &R_RIPPLE_WAVENUMBER, OPTIONAL, &d->wavenumber));
     d->speed = ripple_speed(d->wavenumber);
-    return get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &d->speed);
+    return wwc_get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &d->speed);
 }
 
 static ww_result compile_water(ctx *c, const section *top) {
@@ -917,12 +890,12 @@ static ww_result compile_water(ctx *c, const section *top) {
                                        NULL};
     ww_scene *sc = c->sc;
     section s;
-    TRY(open_section(c, top, "water", keys, &s));
-    TRY(get_number(c, &s, "level", &R_LEVEL, OPTIONAL, &sc->water_level));
-    TRY(get_number(c, &s, "depth", &R_DEPTH, OPTIONAL, &sc->water_depth));
-    TRY(get_vec(c, &s, "color", 3, &R_WATER_COLOR, OPTIONAL, sc->water_color));
+    TRY(wwc_open_section(c, top, "water", keys, &s));
+    TRY(wwc_get_number(c, &s, "level", &R_LEVEL, OPTIONAL, &sc->water_level));
+    TRY(wwc_get_number(c, &s, "depth", &R_DEPTH, OPTIONAL, &sc->water_depth));
+    TRY(wwc_get_vec(c, &s, "color", 3, &R_WATER_COLOR, OPTIONAL, sc->water_color));
     int fold = (int)sc->fold;
-    TRY(get_word(c, &s, "fold", FOLD_WORDS, &fold));
+    TRY(wwc_get_word(c, &s, "fold", FOLD_WORDS, &fold));
     sc->fold = (ww_fold_policy)fold;
     TRY(compile_waves(c, &s));
     return compile_ripples(c, &s);
@@ -931,32 +904,32 @@ static ww_result compile_water(ctx *c, const section *top) {
 static ww_result compile_camera_key(ctx *c, const ww_node *item, int i, ww_camera_key *k) {
     static const char *const keys[] = {"t", "position", "look_at", "yaw", "pitch", "fov", NULL};
     section s;
-    TRY(open_item(c, item, "camera.path", i, keys, &s));
+    TRY(wwc_open_item(c, item, "camera.path", i, keys, &s));
     *k = (ww_camera_key){0};
-    TRY(get_number(c, &s, "t", &R_KEY_TIME, REQUIRED, &k->t));
-    TRY(get_vec(c, &s, "position", 3, &R_POSITION, REQUIRED, k->position));
-    TRY(get_vec(c, &s, "look_at", 3, &R_POSITION, OPTIONAL, k->look_at));
-    TRY(get_angle(c, &s, "yaw", &R_ANGLE, OPTIONAL, &k->yaw));
-    TRY(get_angle(c, &s, "pitch", &R_PITCH, OPTIONAL, &k->pitch));
-    TRY(get_angle(c, &s, "fov", &R_FOV, OPTIONAL, &k->fov));
+    TRY(wwc_get_number(c, &s, "t", &R_KEY_TIME, REQUIRED, &k->t));
+    TRY(wwc_get_vec(c, &s, "position", 3, &R_POSITION, REQUIRED, k->position));
+    TRY(wwc_get_vec(c, &s, "look_at", 3, &R_POSITION, OPTIONAL, k->look_at));
+    TRY(wwc_get_angle(c, &s, "yaw", &R_ANGLE, OPTIONAL, &k->yaw));
+    TRY(wwc_get_angle(c, &s, "pitch", &R_PITCH, OPTIONAL, &k->pitch));
+    TRY(wwc_get_angle(c, &s, "fov", &R_FOV, OPTIONAL, &k->fov));
 
     /* aim by look_at, or by yaw (and pitch), never both */
     const ww_node *look = ww_node_find(s.map, "look_at");
     const ww_node *yaw = ww_node_find(s.map, "yaw"), *pitch = ww_node_find(s.map, "pitch");
     if (!look && !yaw)
-        return fail(c, WW_E_MISSING, s.map,
+        return wwc_fail(c, WW_E_MISSING, s.map,
                     "%s is missing required key 'look_at' or 'yaw': expected one to aim the "
                     "camera",
                     s.what);
     if (look && (yaw || pitch)) {
         const ww_node *other = yaw ? yaw : pitch;
-        return fail(c, WW_E_INCONSISTENT, other->key,
+        return wwc_fail(c, WW_E_INCONSISTENT, other->key,
                     "%s has both look_at and %s: expected look_at alone, or yaw and pitch",
                     s.what, other->key->text);
     }
     k->has_look_at = look != NULL;
     if (look && memcmp(k->look_at, k->position, sizeof k->position) == 0)
-        return fail(c, WW_E_INCONSISTENT, look,
+        return wwc_fail(c, WW_E_INCONSISTENT, look,
                     "%s: look_at equals position, so the camera has no direction: expected "
                     "another point",
                     s.what);
@@ -964,21 +937,23 @@ static ww_result compile_camera_key(ctx *c, const ww_node *item, int i, ww_camer
 }
 
 static ww_result compile_camera(ctx *c, const section *top) {
-    static const char *const keys[] = {"fov", "near", "far", "interpolation", "path", NULL};
+    static const char *const keys[] = {"fov", "near", "far", "interpolation", "collide", "path",
+                                       NULL};
     ww_scene *sc = c->sc;
     section s;
     const ww_node *path;
-    TRY(open_section(c, top, "camera", keys, &s));
-    TRY(get_angle(c, &s, "fov", &R_FOV, OPTIONAL, &sc->fov));
-    TRY(get_number(c, &s, "near", &R_NEAR, OPTIONAL, &sc->near_clip));
+    TRY(wwc_open_section(c, top, "camera", keys, &s));
+    TRY(wwc_get_angle(c, &s, "fov", &R_FOV, OPTIONAL, &sc->fov));
+    TRY(wwc_get_number(c, &s, "near", &R_NEAR, OPTIONAL, &sc->near_clip));
     rule far = R_FAR_MAX; /* (near, 1e7] */
     far.lo = sc->near_clip;
     far.lo_open = 1;
-    TRY(get_number(c, &s, "far", &far, OPTIONAL, &sc->far_clip));
+    TRY(wwc_get_number(c, &s, "far", &far, OPTIONAL, &sc->far_clip));
     int interp = (int)sc->interp;
-    TRY(get_word(c, &s, "interpolation", INTERP_WORDS, &interp));
+    TRY(wwc_get_word(c, &s, "interpolation", INTERP_WORDS, &interp));
     sc->interp = (ww_interp)interp;
-    TRY(get_list(c, &s, "path", WW_MAX_KEYS, &path));
+    TRY(wwc_get_word(c, &s, "collide", BOOL_WORDS, &sc->camera_collide));
+    TRY(wwc_get_list(c, &s, "path", WW_MAX_KEYS, &path));
 
     /* keys in strictly increasing time */
     int i = 0;
@@ -986,7 +961,7 @@ static ww_result compile_camera(ctx *c, const section *top) {
         ww_camera_key *k = &sc->cam[i];
         TRY(compile_camera_key(c, item, i, k));
         if (i > 0 && !(k->t > k[-1].t))
-            return fail(c, WW_E_INCONSISTENT, ww_node_find(item, "t"),
+            return wwc_fail(c, WW_E_INCONSISTENT, ww_node_find(item, "t"),
                         "camera.path[%d].t = %g is not after camera.path[%d].t = %g: expected "
                         "key times to increase",
                         i, k->t, i - 1, k[-1].t);
@@ -1003,12 +978,17 @@ static ww_result compile_camera(ctx *c, const section *top) {
 static ww_result compile_ripple_event(ctx *c, const section *event, ww_event *ev) {
     static const char *const keys[] = {"at", "amplitude", NULL};
     section s;
-    TRY(open_section(c, event, "ripple", keys, &s));
+    TRY(wwc_open_section(c, event, "ripple", keys, &s));
     ev->value = c->sc->ripples.amplitude;
-    TRY(get_vec(c, &s, "at", 2, &R_POSITION, REQUIRED, ev->at));
-    TRY(get_number(c, &s, "amplitude", &R_RIPPLE_AMPLITUDE, OPTIONAL, &ev->value));
+    TRY(wwc_get_vec(c, &s, "at", 2, &R_POSITION, REQUIRED, ev->at));
+    TRY(wwc_get_number(c, &s, "amplitude", &R_RIPPLE_AMPLITUDE, OPTIONAL, &ev->value));
     c->sc->ripples_on = 1;
     return WW_OK;
+}
+
+static ww_result action_ripple(ctx *c, const section *s, const ww_node *value, ww_event *ev) {
+    (void)value;
+    return compile_ripple_event(c, s, ev);
 }
 
 static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev) {
@@ -1016,9 +996,9 @@ static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev)
     for (int a = 0; a < NACTIONS; a++) keys[a + 1] = ACTIONS[a].key;
     keys[NACTIONS + 1] = NULL;
     section s;
-    TRY(open_item(c, item, "script", i, keys, &s));
+    TRY(wwc_open_item(c, item, "script", i, keys, &s));
     *ev = (ww_event){.line = s.map->mark.line, .column = s.map->mark.column};
-    TRY(get_number(c, &s, "t", &R_EVENT_TIME, REQUIRED, &ev->t));
+    TRY(wwc_get_number(c, &s, "t", &R_EVENT_TIME, REQUIRED, &ev->t));
 
     /* exactly one action */
     const action *act = NULL;
@@ -1026,25 +1006,25 @@ static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev)
         const ww_node *n = ww_node_find(s.map, ACTIONS[a].key);
         if (!n) continue;
         if (act)
-            return fail(c, WW_E_INCONSISTENT, n->key,
+            return wwc_fail(c, WW_E_INCONSISTENT, n->key,
                         "%s has two actions, %s and %s: expected one action per event", s.what,
                         act->key, ACTIONS[a].key);
         act = &ACTIONS[a];
     }
     if (!act) {
         char list[128];
-        return fail(c, WW_E_INCONSISTENT, s.map, "%s has no action: expected one of: %s",
-                    s.what, join_words(keys + 1, list, sizeof list));
+        return wwc_fail(c, WW_E_INCONSISTENT, s.map, "%s has no action: expected one of: %s",
+                    s.what, wwc_join_words(keys + 1, list, sizeof list));
     }
     ev->kind = act->kind;
-    if (act->range) return get_number(c, &s, act->key, act->range, REQUIRED, &ev->value);
-    return compile_ripple_event(c, &s, ev);
+    if (act->range) return wwc_get_number(c, &s, act->key, act->range, REQUIRED, &ev->value);
+    return act->parse(c, &s, ww_node_find(s.map, act->key), ev);
 }
 
 static ww_result compile_script(ctx *c, const section *top) {
     ww_scene *sc = c->sc;
     const ww_node *list;
-    TRY(get_list(c, top, "script", WW_MAX_EVENTS, &list));
+    TRY(wwc_get_list(c, top, "script", WW_MAX_EVENTS, &list));
     int n = 0;
     for (const ww_node *item = list ? list->first : NULL; item; item = item->next, n++)
         TRY(compile_event(c, item, n, &sc->events[n]));
@@ -1068,6 +1048,19 @@ static ww_result compile_script(ctx *c, const section *top) {
         e->step = step;
     }
     return WW_OK;
+}
+
+/* objects: each system of the scripted world reads its own keys (compile_<system>.c) */
+static ww_result compile_objects(ctx *c, const section *top) {
+    static const char *const keys[] = {"cubes", "boat", "stones", "rod",   "fish",
+                                       "chest", "bubbles", "models", NULL};
+    section s;
+    TRY(wwc_open_section(c, top, "objects", keys, &s));
+    TRY(wwc_cubes(c, &s));
+    TRY(wwc_boat(c, &s));
+    TRY(wwc_stones(c, &s));
+    TRY(wwc_fishing(c, &s));
+    return wwc_reef(c, &s);
 }
 
 /* ---- scene ----------------------------------------------------------------------------------- */
@@ -1124,6 +1117,7 @@ void ww_scene_defaults(ww_scene *sc) {
     sc->near_clip = 0.1;
     sc->far_clip = 5000.0;
     sc->interp = WW_INTERP_CATMULL_ROM;
+    sc->camera_collide = 1;
     default_camera(sc);
     /* derived as compile_time derives them: 1 / (30 * 1/120) = 4 steps, 10 s * 30 fps */
     sc->steps_per_frame = 4;
@@ -1142,19 +1136,21 @@ static void scene_names(ww_scene *sc, const char *path) {
 
 static ww_result compile_scene(ctx *c, const ww_node *root) {
     static const char *const keys[] = {"seed", "time", "render", "sky", "fog", "water",
-                                       "camera", "script", NULL};
+                                       "objects", "camera", "script", NULL};
     section top = {.map = root};
-    TRY(check_keys(c, &top, keys));
+    TRY(wwc_check_keys(c, &top, keys));
     double seed = (double)c->sc->seed;
-    TRY(get_number(c, &top, "seed", &R_SEED, OPTIONAL, &seed));
+    TRY(wwc_get_number(c, &top, "seed", &R_SEED, OPTIONAL, &seed));
     c->sc->seed = (uint64_t)seed;
     TRY(compile_time(c, &top));
     TRY(compile_render(c, &top));
     TRY(compile_sky(c, &top));
     TRY(compile_fog(c, &top));
     TRY(compile_water(c, &top));
+    TRY(compile_objects(c, &top));
     TRY(compile_camera(c, &top));
-    return compile_script(c, &top);
+    TRY(compile_script(c, &top));
+    return wwc_check_world(c);
 }
 
 /* apply the sets, compile, free the tree; *out only on success */

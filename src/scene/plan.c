@@ -12,6 +12,15 @@ static const char *const system_names[WW_SYS_COUNT] = {
     [WW_SYS_CAMERA] = "camera",
     [WW_SYS_WAVES] = "waves",
     [WW_SYS_SCRIPT] = "script",
+    [WW_SYS_RIPPLES] = "ripples",
+    [WW_SYS_CUBES] = "cubes",
+    [WW_SYS_STONES] = "stones",
+    [WW_SYS_ROD] = "rod",
+    [WW_SYS_FISH] = "fish",
+    [WW_SYS_CHEST] = "chest",
+    [WW_SYS_BUBBLES] = "bubbles",
+    [WW_SYS_BOAT] = "boat",
+    [WW_SYS_COLLIDE] = "collide",
 };
 
 const char *ww_system_name(ww_system s) { return system_names[s]; }
@@ -153,6 +162,15 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     p->system_on[WW_SYS_CAMERA] = 1;
     p->system_on[WW_SYS_WAVES] = sc->nwaves > 0;
     p->system_on[WW_SYS_SCRIPT] = sc->nevents > 0;
+    p->system_on[WW_SYS_RIPPLES] = sc->ripples_on;
+    p->system_on[WW_SYS_CUBES] = sc->cubes.on;
+    p->system_on[WW_SYS_STONES] = sc->stones.on;
+    p->system_on[WW_SYS_ROD] = sc->rod.on;
+    p->system_on[WW_SYS_FISH] = sc->fish.on;
+    p->system_on[WW_SYS_CHEST] = sc->chest.on;
+    p->system_on[WW_SYS_BUBBLES] = sc->bubbles.on;
+    p->system_on[WW_SYS_BOAT] = sc->boat.on;
+    p->system_on[WW_SYS_COLLIDE] = sc->camera_collide && ww_scene_has_objects(sc);
 
     add_pass(p, WW_PASS_MAIN, "main", "HDR: gradient sky with sun disc, water surface");
     add_target(p, "hdr", WW_FMT_RGBA16F, width, height);
@@ -243,6 +261,9 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
                                         sc->interp == WW_INTERP_LINEAR ? "linear" : "catmull-rom");
         if (s == WW_SYS_SCRIPT) fprintf(to, " %d events", sc->nevents);
         if (s == WW_SYS_CLOCK) fprintf(to, " %.2f h, day length %g s", sc->time_of_day, sc->day_length);
+        if (s == WW_SYS_RIPPLES) fprintf(to, " pool of %d, lifetime %g s", sc->ripples.max, sc->ripples.lifetime);
+        if (s == WW_SYS_CUBES) fprintf(to, " %d cubes", sc->cubes.count);
+        if (s == WW_SYS_FISH) fprintf(to, " %d fish", sc->fish.count);
         fputc('\n', to);
     }
     print_water(sc, &p->water, to);

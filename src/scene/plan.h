@@ -16,6 +16,15 @@ typedef enum ww_system {
     WW_SYS_CAMERA,      /* camera path */
     WW_SYS_WAVES,       /* Gerstner wave phases */
     WW_SYS_SCRIPT,      /* script events */
+    WW_SYS_RIPPLES,     /* the ripple pool */
+    WW_SYS_CUBES,       /* floating cubes */
+    WW_SYS_STONES,      /* thrown stones */
+    WW_SYS_ROD,         /* rod and lure */
+    WW_SYS_FISH,        /* fish */
+    WW_SYS_CHEST,       /* treasure chest */
+    WW_SYS_BUBBLES,     /* air bubbles */
+    WW_SYS_BOAT,        /* the boat */
+    WW_SYS_COLLIDE,     /* camera collision */
     WW_SYS_COUNT
 } ww_system;
 

@@ -16,6 +16,11 @@
 #include <stdint.h>
 
 #include "core/error.h"
+#include "scene/desc_boat.h"
+#include "scene/desc_cubes.h"
+#include "scene/desc_fishing.h"
+#include "scene/desc_reef.h"
+#include "scene/desc_stones.h"
 
 #define WW_MAX_WAVES 256
 #define WW_MAX_RIPPLES 256
@@ -111,7 +116,18 @@ typedef struct ww_camera_key {
     double fov;          /* vertical field of view, rad (0: the camera's default) */
 } ww_camera_key;
 
-typedef enum ww_event_kind { WW_EV_TIME_OF_DAY = 0, WW_EV_RIPPLE } ww_event_kind;
+/* script actions; the payload of each (value, at, v, index, flags) is documented by the system
+ * that reads it (sim/<system>.h) */
+typedef enum ww_event_kind {
+    WW_EV_TIME_OF_DAY = 0, /* set the clock */
+    WW_EV_RIPPLE,          /* add a ripple */
+    WW_EV_THROW,           /* throw a stone (sim/stones.h) */
+    WW_EV_CAST,            /* cast the rod (sim/rod.h) */
+    WW_EV_BOAT,            /* boat throttle and steering until a time (sim/boat.h) */
+    WW_EV_CAMERA_MODE,     /* camera: free | boat (sim/boat.h) */
+    WW_EV_PRESS,           /* press a cube (sim/cubes.h) */
+    WW_EV_CHEST            /* force a chest spawn (sim/chest.h) */
+} ww_event_kind;
 
 typedef struct ww_event {
     double t;            /* simulated time, s */
@@ -119,6 +135,9 @@ typedef struct ww_event {
     ww_event_kind kind;
     double value;        /* TIME_OF_DAY: hours 0..24; RIPPLE: amplitude A0, m */
     double at[2];        /* RIPPLE: centre (x, z), m */
+    double v[8];         /* the other actions' numbers */
+    int index;           /* the other actions' object index */
+    int flags;           /* the other actions' options */
     int line, column;    /* where it was written, for messages */
 } ww_event;
 
@@ -178,6 +197,17 @@ typedef struct ww_scene {
     int ncam;
     ww_camera_key cam[WW_MAX_KEYS];
 
+    /* the scripted world (issue 4): each system exists only when its `on` is set */
+    ww_cubes_desc cubes;
+    ww_boat_desc boat;
+    ww_stones_desc stones;
+    ww_rod_desc rod;
+    ww_fish_desc fish;
+    ww_chest_desc chest;
+    ww_bubbles_desc bubbles;
+    ww_models_desc models;
+    int camera_collide;        /* camera.collide: the camera stops at solid objects */
+
     /* script timeline, sorted by t (stable for equal times) */
     int nevents;
     ww_event events[WW_MAX_EVENTS];
@@ -202,6 +232,12 @@ void ww_scene_defaults(ww_scene *sc);
 /* a wave's derived fields (dir, k, omega, speed, mean) from its direction, wavelength and
  * exponent; speed is the phase speed in m/s, or <= 0 for deep-water dispersion w^2 = g k */
 void ww_wave_derive(ww_wave *w, double speed);
+
+/* any system of the scripted world is on (they emit simulation events) */
+static inline int ww_scene_has_objects(const ww_scene *sc) {
+    return sc->cubes.on || sc->boat.on || sc->stones.on || sc->rod.on || sc->fish.on ||
+           sc->chest.on || sc->bubbles.on;
+}
 
 /* the model's word in the scene format: "gerstner", "sines", ... */
 const char *ww_wave_model_name(ww_wave_model m);

@@ -19,6 +19,14 @@
 #include <stdio.h>
 
 #include "scene/scene.h"
+#include "sim/fields_boat.h"
+#include "sim/fields_cubes.h"
+#include "sim/fields_fishing.h"
+#include "sim/fields_reef.h"
+#include "sim/fields_stones.h"
+
+#define WW_MAX_STEP_EVENTS 64  /* the outbox of sim/events.h */
+#define WW_SIM_EVENT_STRIDE 8
 
 #define WW_STATE_FIELDS(X)                                                                        \
     X(double, time_of_day, 1, "clock, hours 0..24 (1)")                                          \
@@ -32,7 +40,15 @@
     X(double, cam_fwd, 3, "camera forward, unit (3)")                                            \
     X(double, cam_fov, 1, "camera vertical field of view, rad (1)")                              \
     X(double, wave_phase, sc->nwaves, "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)") \
-    X(double, ripple, sc->ripples_on ? 4 * sc->ripples.max : 0, "ripple pool: x, z, t0, A0 per entry; A0 = 0 is free (4 max)")
+    X(double, ripple, sc->ripples_on ? 4 * sc->ripples.max : 0, "ripple pool: x, z, t0, A0 per entry; A0 = 0 is free (4 max)") \
+    X(double, event_count, ww_scene_has_objects(sc) ? 1 : 0, "events in the step's outbox (1)") \
+    X(double, events_dropped, ww_scene_has_objects(sc) ? 1 : 0, "events a full outbox could not hold, since step 0 (1)") \
+    X(double, events, ww_scene_has_objects(sc) ? WW_MAX_STEP_EVENTS * WW_SIM_EVENT_STRIDE : 0, "the step's outbox, sim/events.h")  \
+    WW_FIELDS_CUBES(X)                                                                           \
+    WW_FIELDS_STONES(X)                                                                          \
+    WW_FIELDS_FISHING(X)                                                                         \
+    WW_FIELDS_REEF(X)                                                                            \
+    WW_FIELDS_BOAT(X)
 
 typedef struct ww_state {
     int64_t step;          /* steps taken since t = start */

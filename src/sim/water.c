@@ -246,3 +246,12 @@ int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *
     out->converged = residual <= tol;
     return out->converged;
 }
+
+int ww_water_at(const ww_scene *sc, const ww_state *st, double x, double z,
+                double min_wavelength, ww_water_sample *out) {
+    ww_field f = {.sc = sc, .phase = st->wave_phase, .t = st->t, .ripples = st->ripple};
+    ww_query_opts o = {.tolerance = WW_QUERY_TOLERANCE,
+                       .max_iterations = WW_QUERY_MAX_ITERATIONS,
+                       .min_wavelength = min_wavelength};
+    return ww_water_height(&f, x, z, &o, out);
+}

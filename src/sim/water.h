@@ -18,6 +18,7 @@
 #define WW_WATER_H
 
 #include "scene/scene.h"
+#include "sim/state.h"
 
 /* the surface at one time */
 typedef struct ww_field {
@@ -50,5 +51,11 @@ typedef struct ww_water_sample {
  * sea) the answer is the best rest point found: finite, with its residual reported. */
 int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *opts,
                     ww_water_sample *out);
+
+/* the surface over (x, z) as the systems of a step read it: the waves at st->t (the state's
+ * phases) and the state's ripples; components shorter than min_wavelength are ignored (0: all).
+ * Default tolerance and iteration cap. Returns out->converged. */
+int ww_water_at(const ww_scene *sc, const ww_state *st, double x, double z,
+                double min_wavelength, ww_water_sample *out);
 
 #endif

@@ -1,0 +1,6 @@
+/* cubes.c - placeholder until its system lands (issue 4, in progress). */
+#include "sim/cubes.h"
+
+void ww_cubes_reset(const ww_scene *sc, ww_state *st) { (void)sc; (void)st; }
+void ww_cubes_step(const ww_scene *sc, ww_state *st) { (void)sc; (void)st; }
+void ww_cubes_event(const ww_scene *sc, ww_state *st, const ww_event *ev) { (void)sc; (void)st; (void)ev; }

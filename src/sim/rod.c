@@ -1,0 +1,6 @@
+/* rod.c - placeholder until its system lands (issue 4, in progress). */
+#include "sim/rod.h"
+
+void ww_rod_reset(const ww_scene *sc, ww_state *st) { (void)sc; (void)st; }
+void ww_rod_step(const ww_scene *sc, ww_state *st) { (void)sc; (void)st; }
+void ww_rod_event(const ww_scene *sc, ww_state *st, const ww_event *ev) { (void)sc; (void)st; (void)ev; }
