@@ -1,9 +1,15 @@
-/* fields_cubes.h - the state fields of the cubes system(s), an X-macro table appended to
- * WW_STATE_FIELDS (sim/state.h): X(type, name, count, comment), count 0 when the scene does not
- * have the system. */
+/* fields_cubes.h - the state fields of the cubes system, an X-macro table appended to
+ * WW_STATE_FIELDS (sim/state.h): X(type, name, count, comment), count 0 without cubes.
+ * cube_pos, cube_vel and cube_rot are read (and cube_pos/cube_vel written when pushing) by the
+ * boat, stones, fish and camera collision. */
 #ifndef WW_FIELDS_CUBES_H
 #define WW_FIELDS_CUBES_H
 
-#define WW_FIELDS_CUBES(X)
+#define WW_N_CUBES(sc) ((sc)->cubes.on ? (sc)->cubes.count : 0)
+
+#define WW_FIELDS_CUBES(X)                                                                        \
+    X(double, cube_pos, 3 * WW_N_CUBES(sc), "cube centres, m (3 per cube)")                      \
+    X(double, cube_vel, 3 * WW_N_CUBES(sc), "cube velocities, m/s (3 per cube)")                 \
+    X(double, cube_rot, 4 * WW_N_CUBES(sc), "cube orientations, unit quaternion w x y z (4 per cube)")
 
 #endif

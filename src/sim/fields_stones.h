@@ -1,9 +1,13 @@
-/* fields_stones.h - the state fields of the stones system(s), an X-macro table appended to
- * WW_STATE_FIELDS (sim/state.h): X(type, name, count, comment), count 0 when the scene does not
- * have the system. */
+/* fields_stones.h - the state fields of the stones, an X-macro table appended to
+ * WW_STATE_FIELDS (sim/state.h), counts 0 without stones. */
 #ifndef WW_FIELDS_STONES_H
 #define WW_FIELDS_STONES_H
 
-#define WW_FIELDS_STONES(X)
+#define WW_N_STONES(sc) ((sc)->stones.on ? WW_MAX_STONES : 0)
+
+#define WW_FIELDS_STONES(X)                                                                       \
+    X(double, stone_pos, 3 * WW_N_STONES(sc), "stone positions, m (3 per slot)")                 \
+    X(double, stone_state, WW_N_STONES(sc), "0 free slot, 1 flying, 2 sinking (1 per slot)")     \
+    X(double, skips, WW_N_STONES(sc) ? 1 : 0, "skips so far, all stones (1)")
 
 #endif
