@@ -106,7 +106,7 @@ ww_result wwc_action_throw(ctx *c, const section *event, const ww_node *value, w
     double spin = d->throw_spin / WW_TAU;
 
     if (charge && (speed || angle))
-        return wwc_fail(c, WW_E_INCONSISTENT, speed ? speed : angle,
+        return wwc_fail(c, WW_E_INCONSISTENT, speed ? speed->key : angle->key,
                         "%s has charge and %s: expected a charge or an explicit speed and angle",
                         wwc_where(&s), speed ? "speed" : "angle");
     if (charge) {
@@ -129,7 +129,7 @@ ww_result wwc_action_throw(ctx *c, const section *event, const ww_node *value, w
     ev->v[2] = spin * WW_TAU;
 
     if (heading && !from)
-        return wwc_fail(c, WW_E_INCONSISTENT, heading,
+        return wwc_fail(c, WW_E_INCONSISTENT, heading->key,
                         "%s has a heading but no 'from': a throw from the camera takes the "
                         "camera's heading",
                         wwc_where(&s));
