@@ -1,8 +1,9 @@
 /* step.c - the fixed-step driver: t = start + n dt with an integer n, script events applied on
  * the first step at or after their time, then each system present in the scene, in seed 000's
  * order: cubes, stones, rod and lure, fish, chest, bubbles, boat (which pushes the cubes); then
- * the sky clock and the camera (path, boat seat, collision). The wave phases are taken first, so
- * every system reads the surface at the step's own time.
+ * the sky clock and the camera (boat seat, collision). The wave phases and the camera path are
+ * taken first, so every system reads the surface at the step's own time and a throw or cast
+ * starts from this step's camera.
  */
 #include "sim/step.h"
 
@@ -44,6 +45,7 @@ static void update_systems(const ww_scene *sc, ww_state *st) {
     ww_waves_phases(sc, st->t, st->wave_phase);
     ww_events_clear(sc, st);
     ww_ripples_prune(sc, st);
+    ww_camera_update(sc, st); /* the path first: a throw or cast at this step starts from it */
     apply_events(sc, st);
     if (sc->cubes.on) ww_cubes_step(sc, st);
     if (sc->stones.on) ww_stones_step(sc, st);
@@ -53,7 +55,6 @@ static void update_systems(const ww_scene *sc, ww_state *st) {
     if (sc->bubbles.on) ww_bubbles_step(sc, st);
     if (sc->boat.on) ww_boat_step(sc, st);
     ww_sky_update(sc, st);
-    ww_camera_update(sc, st);
     if (sc->boat.on) ww_boat_camera(sc, st);
     if (sc->camera_collide) ww_camera_collide(sc, st);
 }
