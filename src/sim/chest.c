@@ -3,6 +3,7 @@
  * chest.h). */
 #include "sim/chest.h"
 
+#include <float.h>
 #include <math.h>
 
 #include "core/mathx.h"
@@ -16,11 +17,10 @@ void ww_chest_place(double cx, double cz, double r, double u1, double u2, double
     double rho = r * sqrt(ww_m_clamp(u1, 0.0, 1.0)), th = WW_TAU * u2;
     double dx = rho * cos(th), dz = rho * sin(th);
 
-    /* |(cos, sin)| may round to 1 + ulp: keep the edge on the disc */
-    double d = sqrt(dx * dx + dz * dz);
-    if (d > r && d > 0.0) {
-        dx *= r / d;
-        dz *= r / d;
+    /* |(cos, sin)| may round to 1 + ulp: keep the offset on the disc */
+    for (int i = 0; i < 4 && sqrt(dx * dx + dz * dz) > r; i++) {
+        dx *= 1.0 - 2.0 * DBL_EPSILON;
+        dz *= 1.0 - 2.0 * DBL_EPSILON;
     }
     out[0] = cx + dx;
     out[1] = cz + dz;
