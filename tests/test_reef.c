@@ -281,7 +281,7 @@ TEST(reef_bubbles_rise_wobble_burst_at_flat_surface_and_are_released_again) {
     ENSURE(r.min_burst_top >= -1.1 * 0.5 / 120.0 - RISE_SPEED_TOL);
 }
 
-TEST(reef_bubbles_never_above_a_wavy_surface_with_ripples) {
+TEST(reef_bubbles_never_above_a_wavy_surface) {
     bubble_run r;
     run_bubbles("{waves: {model: gerstner, list: [{direction: 30, wavelength: 6, amplitude: 0.4,"
                 " steepness: 0.6}, {direction: -50, wavelength: 2.5, amplitude: 0.1,"
