@@ -422,6 +422,34 @@ TEST(simtools_events_cli) {
     ENSURE_EQ_INT(run_ww(args, NULL, NULL), 2);
 }
 
+/* the real systems of scenes/soak.yaml: every line parses and names a known kind; its stones
+ * skip and sink, its boat starts and its cubes are pressed */
+TEST(simtools_events_soak_scene) {
+    const char *dir = ww_test_tmpdir("simtools_events_soak_scene");
+    char path[512], args[2048];
+    snprintf(path, sizeof path, "%s/events.jsonl", dir);
+    snprintf(args, sizeof args, "simulate scenes/soak.yaml --frames 450 --events %s", path);
+    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    char *text = ww_test_read_file(path, NULL);
+    ENSURE(text != NULL);
+    if (!text) return;
+    int n = json_lines(text);
+    ENSURE(n > 0);
+    int known = 0;
+    for (const char *p = strstr(text, "\"kind\":\""); p; p = strstr(p + 1, "\"kind\":\"")) {
+        char kind[32] = "";
+        ENSURE_EQ_INT(sscanf(p, "\"kind\":\"%31[^\"]\"", kind), 1);
+        for (int k = 1; k < WW_SE_COUNT; k++)
+            if (strcmp(kind, ww_sim_event_name((ww_sim_event_kind)k)) == 0) known++;
+    }
+    ENSURE_EQ_INT(known, n);
+    ENSURE(strstr(text, "\"kind\":\"stone_skip\"") != NULL);
+    ENSURE(strstr(text, "\"kind\":\"stone_sink\"") != NULL);
+    ENSURE(strstr(text, "\"kind\":\"boat_start\"") != NULL);
+    ENSURE(strstr(text, "\"kind\":\"cube_press\"") != NULL);
+    free(text);
+}
+
 /* ---- fields by name, NaN reports ------------------------------------------------------------ */
 
 TEST(simtools_fields_by_name) {
