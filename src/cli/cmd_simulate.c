@@ -154,9 +154,11 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
         if (d && n > 0) dropped = (long long)d[0];
         fprintf(stderr,
                 "simulated %.3f s (%lld steps of %.6g s) in %.3f s wall: %.1f simulated s per "
-                "wall s, %.3f us per step; %lld events written, %lld dropped by a full outbox\n",
+                "wall s, %.3f us per step",
                 simulated, (long long)st->step, sc->dt, wall, wall > 0 ? simulated / wall : 0.0,
-                st->step > 0 ? 1e6 * wall / (double)st->step : 0.0, o.nevents, dropped);
+                st->step > 0 ? 1e6 * wall / (double)st->step : 0.0);
+        if (o.ef) fprintf(stderr, "; %lld events written", o.nevents);
+        fprintf(stderr, "; %lld events dropped by a full outbox\n", dropped);
     }
 done:
     ww_state_free(st);
