@@ -1,19 +1,63 @@
 /* desc_reef.h - objects.chest, objects.bubbles, objects.models: the treasure chest (seed 000),
  * air bubbles (seed 003) and static models' bounds the camera cannot enter. Read by
- * compile_reef.c; simulated by sim/chest.c, sim/bubbles.c, sim/collide.c. */
+ * compile_reef.c; simulated by sim/chest.c, sim/bubbles.c, sim/collide.c.
+ *
+ *   objects:
+ *     chest: {first: 20, every: 300, ttl: 15, radius: 12, near: boat, reach: 2, size: [0.9, 0.6, 0.6]}
+ *     bubbles: [{at: [3, -6, 2], rate: 2, speed: 0.25, wobble: 0.03, frequency: 2, size: 0.01, count: 16}]
+ *     models: [{name: rock, min: [-1, -8, -1], max: [1, -6, 1]}]
+ */
 #ifndef WW_DESC_REEF_H
 #define WW_DESC_REEF_H
 
+#define WW_MAX_EMITTERS 32
+#define WW_MAX_BUBBLES_PER_EMITTER 64
+#define WW_MAX_MODELS 64
+
+/* what a chest spawns around */
+typedef enum ww_chest_near {
+    WW_CHEST_NEAR_AUTO = 0, /* the boat when the scene has one, else the camera */
+    WW_CHEST_NEAR_BOAT,
+    WW_CHEST_NEAR_CAMERA
+} ww_chest_near;
+
 typedef struct ww_chest_desc {
-    int on;      /* the scene has a chest */
+    int on;          /* the scene has a chest (a chest section or a chest event) */
+    double first;    /* simulated time of the first scheduled spawn, s (like script times) */
+    double every;    /* scheduled spawns at first + k every, s */
+    double ttl;      /* lifetime of a chest, s (<= every) */
+    double radius;   /* spawns within this distance of the anchor in XZ, m */
+    ww_chest_near near;
+    double reach;    /* collected when the camera is this close to the chest's box, m */
+    double size[3];  /* box width (x), height (y), depth (z), m */
 } ww_chest_desc;
 
+typedef struct ww_emitter_desc {
+    double at[3];    /* the vent, m (below the water level) */
+    double rate;     /* bubbles released per second, 1/s */
+    double speed;    /* mean rise speed, m/s (each bubble +-10%) */
+    double wobble;   /* lateral amplitude of the zigzag, m */
+    double frequency;/* of the zigzag, Hz */
+    double size;     /* largest bubble radius, m (each bubble 0.5..1 of it) */
+    int count;       /* pool size: bubbles in flight at most */
+    int first;       /* index of the pool's first bubble in the state's arrays */
+} ww_emitter_desc;
+
 typedef struct ww_bubbles_desc {
-    int on;      /* the scene has bubble emitters */
+    int on;          /* the scene has bubble emitters */
+    int count;       /* emitters */
+    int total;       /* bubbles in all pools */
+    ww_emitter_desc emitter[WW_MAX_EMITTERS];
 } ww_bubbles_desc;
 
+typedef struct ww_model_desc {
+    char name[32];   /* for messages and the renderer; "" when not given */
+    double min[3], max[3]; /* axis-aligned bounds, m */
+} ww_model_desc;
+
 typedef struct ww_models_desc {
-    int count;   /* static models (their bounds are solid to the camera) */
+    int count;       /* static models (their bounds are solid to the camera) */
+    ww_model_desc model[WW_MAX_MODELS];
 } ww_models_desc;
 
 #endif

@@ -240,10 +240,11 @@ void ww_scene_defaults(ww_scene *sc);
  * exponent; speed is the phase speed in m/s, or <= 0 for deep-water dispersion w^2 = g k */
 void ww_wave_derive(ww_wave *w, double speed);
 
-/* any system of the scripted world is on (they emit simulation events) */
+/* any system of the scripted world is on (they emit simulation events; models block the
+ * camera, which logs it) */
 static inline int ww_scene_has_objects(const ww_scene *sc) {
     return sc->cubes.on || sc->boat.on || sc->stones.on || sc->rod.on || sc->fish.on ||
-           sc->chest.on || sc->bubbles.on;
+           sc->chest.on || sc->bubbles.on || sc->models.count > 0;
 }
 
 /* the model's word in the scene format: "gerstner", "sines", ... */

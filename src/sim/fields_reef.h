@@ -1,13 +1,30 @@
 /* fields_reef.h - the state fields of the chest, bubbles and camera collision, an X-macro table
- * appended to WW_STATE_FIELDS (sim/state.h), counts 0 without them. */
+ * appended to WW_STATE_FIELDS (sim/state.h), counts 0 without them. The collision's fields exist
+ * only when the scene has something solid (boat, cubes, chest or models), so scenes without
+ * objects keep their state and hash. */
 #ifndef WW_FIELDS_REEF_H
 #define WW_FIELDS_REEF_H
 
 #define WW_N_CHEST(sc) ((sc)->chest.on ? 1 : 0)
+#define WW_N_EMITTERS(sc) ((sc)->bubbles.on ? (sc)->bubbles.count : 0)
+#define WW_N_BUBBLES(sc) ((sc)->bubbles.on ? (sc)->bubbles.total : 0)
+#define WW_N_SOLIDS(sc)                                                                           \
+    ((sc)->boat.on || (sc)->cubes.on || (sc)->chest.on || (sc)->models.count > 0 ? 1 : 0)
 
 #define WW_FIELDS_REEF(X)                                                                         \
-    X(double, chest_pos, 3 * WW_N_CHEST(sc), "chest position on the seabed, m (3)")              \
+    X(double, chest_pos, 3 * WW_N_CHEST(sc), "chest position: centre of its base on the seabed, m (3)") \
     X(double, chest_state, WW_N_CHEST(sc), "0 none, 1 present (1)")                              \
-    X(double, prizes, WW_N_CHEST(sc), "chests collected so far (1)")
+    X(double, prizes, WW_N_CHEST(sc), "chests collected so far (1)")                             \
+    X(double, chest_t0, WW_N_CHEST(sc), "simulated time the present chest spawned, s (1)")      \
+    X(double, chest_next, WW_N_CHEST(sc), "simulated time of the next scheduled spawn, s (1)")  \
+    X(double, bubble_pos, 3 * WW_N_BUBBLES(sc), "bubble centres, m (3 per bubble)")             \
+    X(double, bubble_on, WW_N_BUBBLES(sc), "0 free slot, 1 rising (1 per bubble)")              \
+    X(double, bubble_t0, WW_N_BUBBLES(sc), "release time, s (1 per bubble)")                    \
+    X(double, bubble_wobble, 2 * WW_N_BUBBLES(sc), "zigzag phase, rad, and plane heading, rad (2 per bubble)") \
+    X(double, bubble_speed, WW_N_BUBBLES(sc), "rise speed, m/s (1 per bubble)")                 \
+    X(double, bubble_radius, WW_N_BUBBLES(sc), "radius, m (1 per bubble)")                      \
+    X(double, bubble_next, WW_N_EMITTERS(sc), "next release time, s (1 per emitter)")           \
+    X(double, collide_prev, 3 * WW_N_SOLIDS(sc), "camera position after collision, previous step, m (3)") \
+    X(double, collide_state, 2 * WW_N_SOLIDS(sc), "[0] what holds the camera back + 1 (0 free; what as in collide.h), [1] 1 when collide_prev may start a sweep (2)")
 
 #endif
