@@ -1,5 +1,5 @@
 /* args.c - option helpers shared by the subcommands: values, --set collection, --frames and
- * --size parsing, scene loading (which prints the scene's warnings to stderr). Errors are
+ * --size parsing, --script, scene loading (which prints the scene's warnings to stderr). Errors are
  * WW_E_USAGE naming the option.
  */
 #include <errno.h>
@@ -42,6 +42,7 @@ int ww_cli_scene_arg(int argc, char **argv, int *i, ww_cli_scene_opts *o, ww_res
     }
     if (ww_cli_opt(argc, argv, i, "--frames", &o->frames, r, err)) return 1;
     if (ww_cli_opt(argc, argv, i, "--size", &o->size, r, err)) return 1;
+    if (ww_cli_opt(argc, argv, i, "--script", &o->script, r, err)) return 1;
     const char *a = argv[*i];
     if (a[0] == '-' && a[1] != 0) return 0; /* someone else's option */
     if (o->scene_path) {
@@ -68,7 +69,7 @@ ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc
     if (!o->scene_path)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "%s needs a scene file (waterworld %s --help)",
                             cmd, cmd);
-    ww_result r = ww_scene_load(o->scene_path, o->sets, o->nsets, sc, err);
+    ww_result r = ww_scene_load_with_script(o->scene_path, o->script, o->sets, o->nsets, sc, err);
     if (r) return r;
     /* what the loader accepted but noticed (a folding sea under water.fold: warn, ...) */
     for (int i = 0; i < (*sc)->nwarnings; i++) fprintf(stderr, "%s\n", (*sc)->warnings[i]);

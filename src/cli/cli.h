@@ -18,6 +18,7 @@ typedef struct ww_cli_scene_opts {
     int nsets;
     const char *frames;      /* "N" or "A:B", NULL for all */
     const char *size;        /* "WxH", NULL for the scene's */
+    const char *script;      /* --script FILE: events merged with the scene's, NULL for none */
 } ww_cli_scene_opts;
 
 ww_result ww_cmd_render(int argc, char **argv, ww_error *err);
@@ -33,9 +34,9 @@ ww_result ww_cmd_sweep(int argc, char **argv, ww_error *err);
  * a missing argument is WW_E_USAGE */
 int ww_cli_opt(int argc, char **argv, int *i, const char *name, const char **val, ww_result *r,
                ww_error *err);
-/* the shared options: --set, --frames, --size and the scene path; returns 1 when argv[*i] was one */
+/* the shared options: --set, --frames, --size, --script and the scene path; returns 1 when argv[*i] was one */
 int ww_cli_scene_arg(int argc, char **argv, int *i, ww_cli_scene_opts *o, ww_result *r, ww_error *err);
-/* load the scene with the --set overrides and apply --size; WW_E_USAGE when no scene was named */
+/* load the scene with the --set overrides and the --script file, and apply --size; WW_E_USAGE when no scene was named */
 ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc, ww_error *err);
 /* "N" -> [0, N), "A:B" -> [A, B); checked against the scene's frame count */
 ww_result ww_cli_frames(const char *text, const ww_scene *sc, int64_t *first, int64_t *last,

@@ -36,6 +36,7 @@ static const char usage[] =
     "                    T0, T0 + DT, ... up to T1\n"
     "  --every DT        sample spacing, s (default: one frame, 1 / fps)\n"
     "  --set KEY=VALUE   override a scene value\n"
+    "  --script FILE     a YAML file with a script: list, merged with the scene's events\n"
     "\n"
     "A query that does not converge (a sea at its folding limit) still prints its best answer;\n"
     "a warning on stderr counts them.\n"

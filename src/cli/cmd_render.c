@@ -18,6 +18,7 @@ static const char usage[] =
     "  --size WxH           render size (default: the scene's render.size)\n"
     "  --backend B          auto (EGL, then OSMesa) | egl | osmesa\n"
     "  --set KEY=VALUE      override a scene value, e.g. --set water.waves.list[0].amplitude=0.4\n"
+    "  --script FILE        a YAML file with a script: list, merged with the scene's events\n"
     "  --quiet              no summary on stderr\n"
     "\n"
     "Exit: 0 done, 2 bad input (nothing written), 3 runtime failure (GL, I/O, NaN).\n"

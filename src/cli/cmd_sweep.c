@@ -123,6 +123,8 @@ ww_result ww_cmd_sweep(int argc, char **argv, ww_error *err) {
         r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "sweep: unknown option '%s' (see --help)", argv[i]);
     }
     if (r) return r;
+    if (so.script)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "sweep: --script does not apply (a point's statistics read no events)");
     if (so.frames || so.size)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "sweep: --%s does not apply (thumbnails take --thumb-frame and --thumb-size)",

@@ -1021,13 +1021,28 @@ static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev)
     return act->parse(c, &s, ww_node_find(s.map, act->key), ev);
 }
 
-static ww_result compile_script(ctx *c, const section *top) {
+/* the scene's script list, then the --script file's (extra: its top level, or NULL); both are
+ * validated alike, and the file's errors carry its own name and marks */
+static ww_result compile_script(ctx *c, const section *top, const section *extra) {
     ww_scene *sc = c->sc;
     const ww_node *list;
     TRY(wwc_get_list(c, top, "script", WW_MAX_EVENTS, &list));
     int n = 0;
     for (const ww_node *item = list ? list->first : NULL; item; item = item->next, n++)
         TRY(compile_event(c, item, n, &sc->events[n]));
+    if (extra) {
+        static const char *const keys[] = {"script", NULL};
+        TRY(wwc_check_keys(c, extra, keys));
+        TRY(wwc_lookup(c, extra, "script", REQUIRED, &list));
+        TRY(wwc_get_list(c, extra, "script", WW_MAX_EVENTS, &list));
+        if (n + list->n > WW_MAX_EVENTS)
+            return wwc_fail(c, WW_E_RANGE, list,
+                            "script has %d items and the scene %d: expected at most %d together",
+                            list->n, n, WW_MAX_EVENTS);
+        int i = 0;
+        for (const ww_node *item = list->first; item; item = item->next, i++, n++)
+            TRY(compile_event(c, item, i, &sc->events[n]));
+    }
     sc->nevents = n;
 
     /* stable insertion sort by time: equal times keep file order */
@@ -1134,7 +1149,8 @@ static void scene_names(ww_scene *sc, const char *path) {
     snprintf(sc->name, sizeof sc->name, "%.*s", n, base);
 }
 
-static ww_result compile_scene(ctx *c, const ww_node *root) {
+/* root: the scene file's tree; script_root: the --script file's, or NULL */
+static ww_result compile_scene(ctx *c, const ww_node *root, const ww_node *script_root) {
     static const char *const keys[] = {"seed", "time", "render", "sky", "fog", "water",
                                        "objects", "camera", "script", NULL};
     section top = {.map = root};
@@ -1149,13 +1165,15 @@ static ww_result compile_scene(ctx *c, const ww_node *root) {
     TRY(compile_water(c, &top));
     TRY(compile_objects(c, &top));
     TRY(compile_camera(c, &top));
-    TRY(compile_script(c, &top));
+    section script = {.map = script_root};
+    TRY(compile_script(c, &top, script_root ? &script : NULL));
     return wwc_check_world(c);
 }
 
-/* apply the sets, compile, free the tree; *out only on success */
-static ww_result load_tree(ww_tree *t, const char *path, const ww_set *sets, int nsets,
-                           ww_scene **out, ww_error *err) {
+/* apply the sets, compile, free the trees (script: the --script file's, may be NULL); *out only
+ * on success */
+static ww_result load_tree(ww_tree *t, ww_tree *script, const char *path, const ww_set *sets,
+                           int nsets, ww_scene **out, ww_error *err) {
     ww_result r = WW_OK;
     for (int i = 0; i < nsets && r == WW_OK; i++) {
         WW_ASSERT(sets[i].text);
@@ -1169,9 +1187,10 @@ static ww_result load_tree(ww_tree *t, const char *path, const ww_set *sets, int
         ww_scene_defaults(sc);
         sc->ncam = 0; /* the file's path, or the default key when it has none */
         scene_names(sc, path);
-        r = compile_scene(&c, ww_tree_root(t));
+        r = compile_scene(&c, ww_tree_root(t), script ? ww_tree_root(script) : NULL);
     }
     ww_tree_free(t);
+    if (script) ww_tree_free(script);
     if (r != WW_OK) {
         free(sc);
         return r;
@@ -1186,7 +1205,22 @@ ww_result ww_scene_load(const char *path, const ww_set *sets, int nsets, ww_scen
     *out = NULL;
     ww_tree *t = NULL;
     TRY(ww_tree_load(path, &t, err));
-    return load_tree(t, path, sets, nsets, out, err);
+    return load_tree(t, NULL, path, sets, nsets, out, err);
+}
+
+ww_result ww_scene_load_with_script(const char *path, const char *script_path, const ww_set *sets,
+                                    int nsets, ww_scene **out, ww_error *err) {
+    if (!script_path) return ww_scene_load(path, sets, nsets, out, err);
+    WW_ASSERT(path && out && nsets >= 0);
+    *out = NULL;
+    ww_tree *t = NULL, *script = NULL;
+    TRY(ww_tree_load(path, &t, err));
+    ww_result r = ww_tree_load(script_path, &script, err);
+    if (r != WW_OK) {
+        ww_tree_free(t);
+        return r;
+    }
+    return load_tree(t, script, path, sets, nsets, out, err);
 }
 
 ww_result ww_scene_load_string(const char *name, const char *text, size_t len, const ww_set *sets,
@@ -1195,7 +1229,7 @@ ww_result ww_scene_load_string(const char *name, const char *text, size_t len, c
     *out = NULL;
     ww_tree *t = NULL;
     TRY(ww_tree_parse(name, text, len, &t, err));
-    return load_tree(t, name, sets, nsets, out, err);
+    return load_tree(t, NULL, name, sets, nsets, out, err);
 }
 
 void ww_scene_free(ww_scene *sc) { free(sc); }

@@ -3,6 +3,7 @@
  * Call order:
  *   ww_scene *sc = NULL; ww_error err = {0};
  *   ww_scene_load(path, sets, nsets, &sc, &err);   // parse YAML, apply --set, compile, validate
+ *   (or ww_scene_load_with_script(path, script_path, sets, nsets, &sc, &err))
  *   ... ww_state_new(sc) / ww_step(sc, st) / ww_render_frame(r, sc, st) ...
  *   ww_scene_free(sc);                              // the caller frees what load returned
  *
@@ -220,6 +221,12 @@ typedef struct ww_set {
 
 ww_result ww_scene_load(const char *path, const ww_set *sets, int nsets, ww_scene **out,
                         ww_error *err);
+/* the same with a script file (`--script FILE`, NULL: none): a YAML mapping whose only key is
+ * `script:`, a list of events as in the scene; its events follow the scene's and the merged list
+ * is sorted stably by time (scene events first at equal times). Its errors name the script file
+ * with line and column. */
+ww_result ww_scene_load_with_script(const char *path, const char *script_path, const ww_set *sets,
+                                    int nsets, ww_scene **out, ww_error *err);
 /* same from a string in memory; name is used in messages in place of a file name */
 ww_result ww_scene_load_string(const char *name, const char *text, size_t len, const ww_set *sets,
                                int nsets, ww_scene **out, ww_error *err);

@@ -1,5 +1,358 @@
-/* fish.c - placeholder until its system lands (issue 4, in progress). */
+/* fish.c - the fish: seed 000's wander with steering away and seed 003's targets, both with
+ * bounded turn rates and separation (seed 003's future work: smooth turns, fish that do not pass
+ * through each other), first-order velocity filter, depth bounds against the exact surface,
+ * banking, and the bite / fight / catch / respawn cycle with the rod. Model in fish.h.
+ */
 #include "sim/fish.h"
 
-void ww_fish_reset(const ww_scene *sc, ww_state *st) { (void)sc; (void)st; }
-void ww_fish_step(const ww_scene *sc, ww_state *st) { (void)sc; (void)st; }
+#include <math.h>
+
+#include "core/mathx.h"
+#include "core/rng.h"
+#include "sim/events.h"
+#include "sim/rod.h"
+#include "sim/water.h"
+
+/* draw slots k of a fish (b = fish * 16 + k) */
+enum { K_JITTER = 0, K_BIG, K_BIG_ANGLE, K_SPAWN_ANGLE, K_SPAWN_R, K_CRUISE, K_YAW, K_PHASE,
+       K_FIGHT, K_TARGET_ANGLE, K_TARGET_R, K_TARGET_Y };
+
+#define SPAWN_TRIES 8            /* draws for a spawn point clear of the other fish */
+#define RETRY_STRIDE 4096        /* b offset per spawn retry (above every fish * 16 + k) */
+#define PAIR_BASE (1u << 24)     /* b of a pair's separation direction */
+#define AVOID_WEIGHT 3.0         /* steering away against the goal direction of weight 1 */
+#define HOME_WEIGHT 2.0          /* turning back into the region at its edge */
+#define HOME_START 0.8           /* fraction of the radius where turning back starts */
+#define VERTICAL_GAIN 1.0        /* 1/s: vertical speed per metre off the wanted depth */
+#define VERTICAL_MAX 0.5         /* of the speed: the steepest climb or dive */
+#define SLOW_TURN_MIN 0.3        /* speed fraction while the goal is behind */
+
+static double draw(const ww_scene *sc, const ww_state *st, int i, uint64_t k) {
+    return ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step, (uint64_t)i * 16u + k);
+}
+
+/* to (-pi, pi] */
+static double wrap_pi(double a) { return a - WW_TAU * floor((a + WW_PI) / WW_TAU); }
+
+void ww_fish_depth_bounds(const ww_scene *sc, double h, double *lo, double *hi) {
+    *lo = sc->water_level - sc->water_depth + sc->fish.margin;
+    *hi = h - sc->fish.margin;
+    if (*hi < *lo) *lo = *hi = 0.5 * (*lo + *hi); /* a trough down to the seabed */
+}
+
+static double surface(const ww_scene *sc, const ww_state *st, double x, double z) {
+    ww_water_sample w;
+    ww_water_at(sc, st, x, z, 0.0, &w);
+    return w.height;
+}
+
+/* the band where fish cruise and targets lie: center.y +- spread, under the highest crest */
+static void cruise_band(const ww_scene *sc, double *lo, double *hi) {
+    const ww_fish_desc *f = &sc->fish;
+    double crest = 0.0;
+    for (int w = 0; w < sc->nwaves; w++) crest += 2.0 * fabs(sc->waves[w].amplitude);
+    double bed = sc->water_level - sc->water_depth + f->margin;
+    double top = sc->water_level - f->margin - crest;
+    *lo = fmax(bed, f->center[1] - f->spread);
+    *hi = fmin(top, f->center[1] + f->spread);
+    if (*hi < *lo) *lo = *hi = ww_m_clamp(f->center[1], bed, fmax(bed, top));
+}
+
+/* a point of the region: uniform in the disc, height uniform in the band */
+static void region_point(const ww_scene *sc, const ww_state *st, int i, uint64_t ka, uint64_t kr,
+                         uint64_t ky, double p[3]) {
+    const ww_fish_desc *f = &sc->fish;
+    double lo, hi;
+    cruise_band(sc, &lo, &hi);
+    double a = WW_TAU * draw(sc, st, i, ka), r = f->radius * sqrt(draw(sc, st, i, kr));
+    p[0] = f->center[0] + r * cos(a);
+    p[1] = lo + (hi - lo) * draw(sc, st, i, ky);
+    p[2] = f->center[2] + r * sin(a);
+}
+
+static void new_target(const ww_scene *sc, const ww_state *st, int i) {
+    region_point(sc, st, i, K_TARGET_ANGLE, K_TARGET_R, K_TARGET_Y, st->fish_target + 3 * i);
+}
+
+/* place fish i: the scene's position at step 0 when given, else a drawn point at least one
+ * separation from the fish [0, others) that are in the water */
+static void spawn(const ww_scene *sc, ww_state *st, int i, int others, int first) {
+    const ww_fish_desc *f = &sc->fish;
+    double *p = st->fish_pos + 3 * i;
+    if (first && i < f->npositions) {
+        for (int k = 0; k < 3; k++) p[k] = f->positions[i][k];
+    } else {
+        for (int t = 0; t < SPAWN_TRIES; t++) {
+            uint64_t off = (uint64_t)t * RETRY_STRIDE;
+            region_point(sc, st, i, K_SPAWN_ANGLE + off, K_SPAWN_R + off, K_CRUISE + off, p);
+            int clear = 1;
+            for (int j = 0; j < others && clear; j++) {
+                if (j == i || st->fish_mode[j] == WW_FISH_AWAY) continue;
+                double d[3];
+                ww_m_sub3(p, st->fish_pos + 3 * j, d);
+                clear = ww_m_len3(d) >= f->separation;
+            }
+            if (clear) break;
+        }
+    }
+    double yaw = WW_TAU * draw(sc, st, i, K_YAW) - WW_PI;
+    st->fish_cruise[2 * i] = p[1];
+    st->fish_cruise[2 * i + 1] = WW_TAU * draw(sc, st, i, K_PHASE);
+    st->fish_yaw[i] = yaw;
+    st->fish_goal[i] = yaw;
+    st->fish_yaw_rate[i] = 0.0;
+    st->fish_bank[i] = 0.0;
+    st->fish_vel[3 * i] = f->speed * cos(yaw);
+    st->fish_vel[3 * i + 1] = 0.0;
+    st->fish_vel[3 * i + 2] = f->speed * sin(yaw);
+    st->fish_mode[i] = WW_FISH_SWIMMING;
+    st->fish_timer[i] = 0.0;
+    st->fish_reached[i] = 0.0;
+    new_target(sc, st, i);
+}
+
+void ww_fish_reset(const ww_scene *sc, ww_state *st) {
+    st->fish_caught[0] = 0.0;
+    for (int i = 0; i < sc->fish.count; i++) spawn(sc, st, i, i, 1);
+}
+
+/* a floating lure nobody has bitten this cast */
+static int lure_free(const ww_scene *sc, const ww_state *st) {
+    return sc->rod.on && (int)st->lure_state[0] == WW_LURE_FLOATING && st->rod_fish[0] < 0.0;
+}
+
+/* add the push away from q within radius R to rep (XZ); returns the weight (1 - d/R)^2 */
+static double push_away(const double p[3], const double q[3], double R, double rep[2]) {
+    double d[3];
+    ww_m_sub3(p, q, d);
+    double dist = ww_m_len3(d), h = hypot(d[0], d[2]);
+    if (!(dist < R) || h <= 0.0) return 0.0;
+    double w = (1.0 - dist / R) * (1.0 - dist / R);
+    rep[0] += w * d[0] / h;
+    rep[1] += w * d[2] / h;
+    return w;
+}
+
+/* the unit XZ direction fish i wants, and how alarmed it is (0..1) */
+static double goal_direction(const ww_scene *sc, ww_state *st, int i, double g[2]) {
+    const ww_fish_desc *f = &sc->fish;
+    double *p = st->fish_pos + 3 * i;
+    if (f->mode == WW_FISH_WANDER) {
+        double goal = st->fish_goal[i];
+        goal += f->jitter * sqrt(sc->dt) * sqrt(3.0) * (2.0 * draw(sc, st, i, K_JITTER) - 1.0);
+        if (draw(sc, st, i, K_BIG) < f->big_turn_rate * sc->dt)
+            goal += f->big_turn * (2.0 * draw(sc, st, i, K_BIG_ANGLE) - 1.0);
+        st->fish_goal[i] = wrap_pi(goal);
+        g[0] = cos(st->fish_goal[i]);
+        g[1] = sin(st->fish_goal[i]);
+    } else {
+        double *t = st->fish_target + 3 * i, d[3];
+        ww_m_sub3(t, p, d);
+        if (ww_m_len3(d) < f->reach) {
+            st->fish_reached[i] += 1.0;
+            new_target(sc, st, i);
+            ww_m_sub3(t, p, d);
+        }
+        double h = hypot(d[0], d[2]);
+        g[0] = h > 1e-9 ? d[0] / h : cos(st->fish_yaw[i]);
+        g[1] = h > 1e-9 ? d[2] / h : sin(st->fish_yaw[i]);
+    }
+
+    /* a free floating lure nearby wins over wandering */
+    if (lure_free(sc, st)) {
+        double dx = st->lure_pos[0] - p[0], dz = st->lure_pos[2] - p[2], h = hypot(dx, dz);
+        if (h < sc->rod.attract && h > 1e-9) {
+            g[0] = dx / h;
+            g[1] = dz / h;
+        }
+    }
+
+    /* away from the boat, the cubes and the camera */
+    double rep[2] = {0.0, 0.0}, alarm = 0.0;
+    if (f->avoid > 0.0) {
+        if (sc->boat.on) alarm = fmax(alarm, push_away(p, st->boat_pos, f->avoid, rep));
+        for (int c = 0; c < WW_N_CUBES(sc); c++)
+            alarm = fmax(alarm, push_away(p, st->cube_pos + 3 * c, f->avoid, rep));
+        alarm = fmax(alarm, push_away(p, st->cam_pos, f->avoid, rep));
+    }
+    g[0] += AVOID_WEIGHT * rep[0];
+    g[1] += AVOID_WEIGHT * rep[1];
+
+    /* back into the region near its edge */
+    double cx = f->center[0] - p[0], cz = f->center[2] - p[2], r = hypot(cx, cz);
+    if (r > HOME_START * f->radius) {
+        double w = HOME_WEIGHT * (r - HOME_START * f->radius) / ((1.0 - HOME_START) * f->radius);
+        g[0] += w * cx / r;
+        g[1] += w * cz / r;
+    }
+    double n = hypot(g[0], g[1]);
+    if (n > 1e-12) {
+        g[0] /= n;
+        g[1] /= n;
+    } else {
+        g[0] = cos(st->fish_yaw[i]);
+        g[1] = sin(st->fish_yaw[i]);
+    }
+    return alarm;
+}
+
+/* the push of the other fish closer than the separation, m/s */
+static void separation(const ww_scene *sc, const ww_state *st, int i, double push[3]) {
+    const ww_fish_desc *f = &sc->fish;
+    const double *p = st->fish_pos + 3 * i;
+    push[0] = push[1] = push[2] = 0.0;
+    if (!(f->separation > 0.0)) return;
+    for (int j = 0; j < f->count; j++) {
+        if (j == i || st->fish_mode[j] == WW_FISH_AWAY) continue;
+        double d[3];
+        ww_m_sub3(p, st->fish_pos + 3 * j, d);
+        double dist = ww_m_len3(d);
+        if (!(dist < f->separation)) continue;
+        double u[3];
+        if (dist > 1e-9) {
+            for (int k = 0; k < 3; k++) u[k] = d[k] / dist;
+        } else {
+            /* one point: a horizontal direction drawn for the pair, opposite for the two */
+            int lo = i < j ? i : j, hi = i < j ? j : i;
+            double a = WW_TAU * ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step,
+                                            PAIR_BASE + (uint64_t)lo * WW_MAX_FISH + (uint64_t)hi);
+            double s = i == lo ? 1.0 : -1.0;
+            u[0] = s * cos(a);
+            u[1] = 0.0;
+            u[2] = s * sin(a);
+        }
+        double m = f->max_speed * (1.0 - dist / f->separation);
+        for (int k = 0; k < 3; k++) push[k] += m * u[k];
+    }
+}
+
+/* y into the bounds at the fish's (x, z); the velocity into a bound is removed */
+static void keep_in_water(const ww_scene *sc, const ww_state *st, double p[3], double v[3]) {
+    double lo, hi;
+    ww_fish_depth_bounds(sc, surface(sc, st, p[0], p[2]), &lo, &hi);
+    if (p[1] > hi) {
+        p[1] = hi;
+        if (v[1] > 0.0) v[1] = 0.0;
+    }
+    if (p[1] < lo) {
+        p[1] = lo;
+        if (v[1] < 0.0) v[1] = 0.0;
+    }
+}
+
+static void swim(const ww_scene *sc, ww_state *st, int i) {
+    const ww_fish_desc *f = &sc->fish;
+    double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i, dt = sc->dt;
+    double g[2];
+    double alarm = goal_direction(sc, st, i, g);
+
+    /* bounded turn toward the goal */
+    double yaw0 = st->fish_yaw[i], want = atan2(g[1], g[0]);
+    double turn = ww_m_clamp(wrap_pi(want - yaw0), -f->turn_rate * dt, f->turn_rate * dt);
+    double yaw = wrap_pi(yaw0 + turn);
+    st->fish_yaw[i] = yaw;
+    if (f->mode == WW_FISH_WANDER) {
+        double off = ww_m_clamp(wrap_pi(st->fish_goal[i] - yaw), -0.5 * WW_PI, 0.5 * WW_PI);
+        st->fish_goal[i] = wrap_pi(yaw + off);
+    }
+
+    /* desired velocity: along the heading, toward the wanted depth, apart from the others */
+    double speed = f->speed + (f->max_speed - f->speed) * ww_m_clamp(alarm, 0.0, 1.0);
+    speed *= SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cos(wrap_pi(want - yaw)));
+    double y_want;
+    if (f->mode == WW_FISH_TARGETS) {
+        y_want = st->fish_target[3 * i + 1];
+    } else {
+        double T = f->swim[1] > 0.0 ? f->swim[1] : 1.0;
+        y_want = st->fish_cruise[2 * i] +
+                 f->swim[0] * sin(WW_TAU * st->t / T + st->fish_cruise[2 * i + 1]);
+    }
+    double vy_max = VERTICAL_MAX * f->speed;
+    double want_v[3] = {speed * cos(yaw), ww_m_clamp(VERTICAL_GAIN * (y_want - p[1]), -vy_max, vy_max),
+                        speed * sin(yaw)};
+    double push[3];
+    separation(sc, st, i, push);
+    for (int k = 0; k < 3; k++) want_v[k] += push[k];
+    double n = ww_m_len3(want_v);
+    if (n > f->max_speed)
+        for (int k = 0; k < 3; k++) want_v[k] *= f->max_speed / n;
+
+    /* seed 000's first-order filter, then move */
+    double a = -expm1(-f->response * dt);
+    for (int k = 0; k < 3; k++) {
+        v[k] += (want_v[k] - v[k]) * a;
+        p[k] += v[k] * dt;
+    }
+    keep_in_water(sc, st, p, v);
+
+    /* a coordinated turn's bank from the yaw rate */
+    st->fish_yaw_rate[i] = turn / dt;
+    double bank = atan(hypot(v[0], v[2]) * st->fish_yaw_rate[i] / WW_G);
+    st->fish_bank[i] = ww_m_clamp(bank, -f->max_bank, f->max_bank);
+}
+
+static void bite(const ww_scene *sc, ww_state *st, int i) {
+    const ww_fish_desc *f = &sc->fish;
+    const double *p = st->fish_pos + 3 * i;
+    st->fish_mode[i] = WW_FISH_FIGHTING;
+    st->fish_timer[i] = 0.0;
+    st->fish_fight[i] = f->fight[0] + (f->fight[1] - f->fight[0]) * draw(sc, st, i, K_FIGHT);
+    st->fish_goal[i] = atan2(st->lure_pos[2] - p[2], st->lure_pos[0] - p[0]);
+    st->rod_fish[0] = (double)i;
+    st->lure_state[0] = WW_LURE_HOOKED;
+    ww_emit(sc, st, WW_SE_BITE, i, p, 0.0, (double)i);
+}
+
+/* the mouth at the hook, heading wiggling; caught when the fight's time is up */
+static void fight(const ww_scene *sc, ww_state *st, int i) {
+    const ww_fish_desc *f = &sc->fish;
+    double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i;
+    double tau = st->fish_timer[i] += sc->dt;
+    double yaw0 = st->fish_yaw[i];
+    double yaw = wrap_pi(st->fish_goal[i] + f->wiggle[0] * sin(WW_TAU * f->wiggle[1] * tau));
+    double half = 0.5 * f->length;
+    p[0] = st->lure_pos[0] - half * cos(yaw);
+    p[1] = st->lure_pos[1] - sc->rod.hook_depth;
+    p[2] = st->lure_pos[2] - half * sin(yaw);
+    v[0] = v[1] = v[2] = 0.0;
+    keep_in_water(sc, st, p, v);
+    st->fish_yaw[i] = yaw;
+    st->fish_yaw_rate[i] = wrap_pi(yaw - yaw0) / sc->dt;
+    st->fish_bank[i] = 0.0;
+    if (tau < st->fish_fight[i]) return;
+
+    st->fish_caught[0] += 1.0;
+    ww_emit(sc, st, WW_SE_CATCH, i, p, st->fish_caught[0], 0.0);
+    st->fish_mode[i] = WW_FISH_AWAY;
+    st->fish_timer[i] = f->respawn;
+    ww_rod_reel(sc, st);
+}
+
+void ww_fish_step(const ww_scene *sc, ww_state *st) {
+    const ww_fish_desc *f = &sc->fish;
+    for (int i = 0; i < f->count; i++) {
+        switch ((int)st->fish_mode[i]) {
+        case WW_FISH_AWAY:
+            st->fish_timer[i] -= sc->dt;
+            if (st->fish_timer[i] <= 0.0) spawn(sc, st, i, f->count, 0);
+            break;
+        case WW_FISH_FIGHTING:
+            if (sc->rod.on && (int)st->lure_state[0] == WW_LURE_HOOKED &&
+                (int)st->rod_fish[0] == i) {
+                fight(sc, st, i);
+                break;
+            }
+            /* the line was reeled in under it */
+            st->fish_mode[i] = WW_FISH_SWIMMING;
+            ww_emit(sc, st, WW_SE_FISH_ESCAPE, i, st->fish_pos + 3 * i, 0.0, 0.0);
+            break;
+        default:
+            swim(sc, st, i);
+            if (lure_free(sc, st) &&
+                hypot(st->lure_pos[0] - st->fish_pos[3 * i],
+                      st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius)
+                bite(sc, st, i);
+            break;
+        }
+    }
+}

@@ -1,6 +1,6 @@
 /* bench.c - `waterworld bench`: each render configuration runs in a child process (fork), so its
  * peak RSS is its own and a crashing driver cannot take the table down; the child reports its
- * timings through a pipe.
+ * timings through a pipe. `bench sim` is in bench_sim.c.
  */
 #include "tools/bench.h"
 
@@ -13,8 +13,6 @@
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
 #include "scene/scene.h"
-#include "sim/state.h"
-#include "sim/step.h"
 #include "tools/job.h"
 
 typedef struct {
@@ -155,31 +153,16 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
     return WW_OK;
 }
 
-ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err) {
-    static const char *const default_scenes[] = {"scenes/minimal.yaml", "scenes/demo.yaml", NULL};
-    const char *const *scenes = o->scenes[0] ? o->scenes : default_scenes;
-    for (int s = 0; scenes[s]; s++) {
-        ww_scene *sc = NULL;
-        ww_result r = ww_scene_load(scenes[s], NULL, 0, &sc, err);
-        if (r) return r;
-        ww_state *st = ww_state_new(sc);
-        if (!st) {
-            ww_scene_free(sc);
-            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
-        }
-        int64_t steps = 200000;
-        double t0 = ww_now_seconds();
-        r = ww_sim_advance_to(sc, st, steps, err);
-        double dt = ww_now_seconds() - t0;
-        if (o->json)
-            fprintf(to, "{\"scene\":\"%s\",\"steps\":%lld,\"us_per_step\":%.4f,\"state_bytes\":%zu}\n",
-                    base_name(scenes[s]), (long long)steps, 1e6 * dt / (double)steps, st->bytes);
-        else
-            fprintf(to, "%-13s %lld steps  %.3f us/step  state %zu bytes\n", base_name(scenes[s]),
-                    (long long)steps, 1e6 * dt / (double)steps, st->bytes);
-        ww_state_free(st);
-        ww_scene_free(sc);
-        if (r) return r;
-    }
+ww_result ww_bench_render_once(const char *scene, int width, int height, int frames,
+                               ww_job_stats *stats, ww_error *err) {
+    char dir[128];
+    snprintf(dir, sizeof dir, "/tmp/waterworld-bench.%ld", (long)getpid());
+    child_report rep;
+    run_config(scene, WW_BACKEND_AUTO, width, height, frames, dir, &rep);
+    char cmdline[200];
+    snprintf(cmdline, sizeof cmdline, "rm -rf '%s'", dir);
+    if (system(cmdline) != 0) { /* best effort: the folder is in /tmp */ }
+    if (!rep.ok) return ww_error_set(err, WW_E_BACKEND, scene, 0, 0, "%s", rep.msg);
+    *stats = rep.s;
     return WW_OK;
 }

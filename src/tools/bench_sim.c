@@ -1,0 +1,399 @@
+/* bench_sim.c - `waterworld bench sim`: the simulation alone, measured and printed (never
+ * asserted). Three parts:
+ *   speed   steps per second and simulated seconds per wall second of each scene;
+ *   dt      the error of named metrics at dt = 1/30, 1/60, 1/120, 1/240 against a dt = 1/1920
+ *           reference of the same scene, next to the steps per second of each: cube heave (y of
+ *           cube 0), boat position (x, z) and stone landing points (where stone_skip and
+ *           stone_sink events happen, k-th landing of stone i against the reference's), as a table
+ *           and the figure DIR/sim.png (error and speed against 1 / dt, log-log);
+ *   share   the simulation's share of a frame of scenes/demo.yaml (sim ms / render ms, target
+ *           under 1%), from one render job in a child process (bench.c).
+ * Metrics read state fields by name (tools/sim_out.h), so they follow the X-macro tables; a
+ * metric whose system the scene lacks is skipped ("-"). The script's events fire on the first
+ * step at or after their time, so part of a coarse dt's error is that up-to-one-step delay.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "io/json.h"
+#include "io/writers.h"
+#include "scene/scene.h"
+#include "sim/events.h"
+#include "sim/state.h"
+#include "sim/step.h"
+#include "tools/bench.h"
+#include "tools/plot.h"
+#include "tools/sim_out.h"
+
+#define NDT 4
+static const int DT_DIVS[NDT] = {30, 60, 120, 240}; /* dt = 1 / div, s */
+#define REF_DIV 1920           /* the reference's dt = 1/1920 s: 8x finer than the finest row */
+#define SAMPLE_DIV 30          /* metrics compared at start + k / 30 s, a step of every dt */
+#define DT_SECONDS 20.0        /* simulated seconds of a dt run (at most the scene's duration) */
+#define DT_SECONDS_TINY 1.0
+#define SPEED_WALL_S 0.5       /* a speed row steps until this much wall time has passed */
+#define SPEED_WALL_S_TINY 0.02
+#define SPEED_CHUNK 500        /* steps between clock reads */
+#define SHARE_FRAMES 20        /* frames rendered for the share (bench --frames changes it) */
+#define MAX_LANDINGS 512       /* stone landings kept per run */
+#define NMETRICS 3
+
+static const char *const METRIC_NAMES[NMETRICS] = {"cube heave", "boat position", "stone landing"};
+
+static const char *base_name(const char *path) {
+    const char *s = strrchr(path, '/');
+    return s ? s + 1 : path;
+}
+
+/* ---- speed --------------------------------------------------------------------------------- */
+
+static ww_result part_speed(const ww_bench_opts *o, const char *const *scenes, FILE *to,
+                            ww_error *err) {
+    double budget = o->tiny ? SPEED_WALL_S_TINY : SPEED_WALL_S;
+    if (!o->json)
+        fprintf(to, "speed: steps of the whole simulation (every system the scene has)\n"
+                    "%-16s %10s %12s %12s %14s %10s\n",
+                "scene", "steps", "us/step", "steps/s", "sim s/wall s", "state B");
+    for (int s = 0; scenes[s]; s++) {
+        ww_scene *sc = NULL;
+        ww_result r = ww_scene_load(scenes[s], NULL, 0, &sc, err);
+        if (r) return r;
+        ww_state *st = ww_state_new(sc);
+        if (!st) {
+            ww_scene_free(sc);
+            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
+        }
+        double t0 = ww_now_seconds(), wall = 0;
+        while (!r && wall < budget) {
+            r = ww_sim_advance_to(sc, st, st->step + SPEED_CHUNK, err);
+            wall = ww_now_seconds() - t0;
+        }
+        double steps = (double)st->step, us = 1e6 * wall / steps;
+        double ratio = steps * sc->dt / wall;
+        if (!r && o->json)
+            fprintf(to, "{\"part\":\"speed\",\"scene\":\"%s\",\"steps\":%.0f,\"dt\":%.9g,"
+                        "\"us_per_step\":%.4f,\"steps_per_s\":%.1f,\"sim_s_per_wall_s\":%.2f,"
+                        "\"state_bytes\":%zu}\n",
+                    base_name(scenes[s]), steps, sc->dt, us, 1e6 / us, ratio, st->bytes);
+        else if (!r)
+            fprintf(to, "%-16s %10.0f %12.3f %12.0f %14.1f %10zu\n", base_name(scenes[s]), steps,
+                    us, 1e6 / us, ratio, st->bytes);
+        ww_state_free(st);
+        ww_scene_free(sc);
+        if (r) return r;
+    }
+    return WW_OK;
+}
+
+/* ---- one run at one dt --------------------------------------------------------------------- */
+
+typedef struct run {
+    int div;                 /* dt = 1 / div */
+    int64_t steps;
+    double wall_s;
+    int nsamples;
+    int has[NMETRICS];       /* the scene has the metric's system */
+    double *heave;           /* y of cube 0 at each sample, m */
+    double *boat;            /* boat (x, z) at each sample, m */
+    int nland;
+    double land[MAX_LANDINGS][4]; /* stone index, its k-th landing, x, z */
+} run;
+
+static void run_free(run *u) {
+    free(u->heave);
+    free(u->boat);
+    u->heave = u->boat = NULL;
+}
+
+/* the metrics of this state into sample k */
+static void sample(const ww_scene *sc, const ww_state *st, run *u, int k) {
+    long long n = 0;
+    const double *p = ww_state_field(sc, st, "cube_pos", &n);
+    if (u->has[0]) u->heave[k] = p[1];
+    p = ww_state_field(sc, st, "boat_pos", &n);
+    if (u->has[1]) {
+        u->boat[2 * k] = p[0];
+        u->boat[2 * k + 1] = p[2];
+    }
+}
+
+/* stone_skip and stone_sink events of this step, numbered per stone */
+static void landings(const ww_scene *sc, const ww_state *st, run *u) {
+    int n = ww_events_count(sc, st);
+    for (int i = 0; i < n && u->nland < MAX_LANDINGS; i++) {
+        const double *e = st->events + i * WW_SIM_EVENT_STRIDE;
+        int kind = (int)e[0];
+        if (kind != WW_SE_STONE_SKIP && kind != WW_SE_STONE_SINK) continue;
+        int k = 0;
+        for (int j = 0; j < u->nland; j++) k += u->land[j][0] == e[1];
+        double *l = u->land[u->nland++];
+        l[0] = e[1];
+        l[1] = k;
+        l[2] = e[2];
+        l[3] = e[4];
+    }
+}
+
+static ww_result run_dt(const char *path, int div, double seconds, run *u, ww_error *err) {
+    char dt_set[64];
+    snprintf(dt_set, sizeof dt_set, "time.dt=1/%d", div);
+    ww_set sets[2] = {{dt_set}, {"time.fps=30"}};
+    ww_scene *sc = NULL;
+    *u = (run){.div = div};
+    ww_result r = ww_scene_load(path, sets, 2, &sc, err);
+    if (r) return r;
+    ww_state *st = ww_state_new(sc);
+    u->nsamples = (int)floor(seconds * SAMPLE_DIV) + 1;
+    u->heave = calloc((size_t)u->nsamples, sizeof *u->heave);
+    u->boat = calloc(2 * (size_t)u->nsamples, sizeof *u->boat);
+    if (!st || !u->heave || !u->boat) {
+        r = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "bench sim: out of memory");
+        goto done;
+    }
+    long long n = 0;
+    u->has[0] = ww_state_field(sc, st, "cube_pos", &n) && n >= 3;
+    u->has[1] = ww_state_field(sc, st, "boat_pos", &n) && n >= 3;
+    u->has[2] = sc->stones.on;
+    int per_sample = div / SAMPLE_DIV;
+    u->steps = (int64_t)(u->nsamples - 1) * per_sample;
+    double t0 = ww_now_seconds();
+    sample(sc, st, u, 0);
+    landings(sc, st, u);
+    while (!r && st->step < u->steps) {
+        r = ww_step(sc, st, err);
+        if (r) break;
+        landings(sc, st, u);
+        if (st->step % per_sample == 0) sample(sc, st, u, (int)(st->step / per_sample));
+    }
+    u->wall_s = ww_now_seconds() - t0;
+    if (r == WW_E_NAN) ww_sim_nan_report(sc, st, err);
+done:
+    ww_state_free(st);
+    ww_scene_free(sc);
+    return r;
+}
+
+/* max over the samples (landings) of the distance to the reference's; -1 when skipped.
+ * *unpaired counts landings present in one run only. */
+static double metric_error(const run *u, const run *ref, int m, int *unpaired) {
+    if (!u->has[m]) return -1;
+    double e = 0;
+    if (m == 0)
+        for (int k = 0; k < u->nsamples; k++) e = fmax(e, fabs(u->heave[k] - ref->heave[k]));
+    if (m == 1)
+        for (int k = 0; k < u->nsamples; k++)
+            e = fmax(e, hypot(u->boat[2 * k] - ref->boat[2 * k],
+                              u->boat[2 * k + 1] - ref->boat[2 * k + 1]));
+    if (m == 2) {
+        int paired = 0;
+        for (int i = 0; i < u->nland; i++)
+            for (int j = 0; j < ref->nland; j++) {
+                if (u->land[i][0] != ref->land[j][0] || u->land[i][1] != ref->land[j][1]) continue;
+                e = fmax(e, hypot(u->land[i][2] - ref->land[j][2], u->land[i][3] - ref->land[j][3]));
+                paired++;
+            }
+        *unpaired = u->nland + ref->nland - 2 * paired;
+    }
+    return e;
+}
+
+/* ---- the dt table and its figure ----------------------------------------------------------- */
+
+typedef struct dt_table {
+    double dt[NDT], rate[NDT], steps_per_s[NDT], err[NMETRICS][NDT]; /* rate: 1 / dt, Hz */
+    double ref_steps_per_s;
+    int has[NMETRICS];
+} dt_table;
+
+static void print_metric(FILE *to, double e, int unpaired, int with_unpaired) {
+    if (e < 0) {
+        fprintf(to, " %16s", "-");
+        return;
+    }
+    if (!with_unpaired) {
+        fprintf(to, " %16.3e", e);
+        return;
+    }
+    char cell[40];
+    snprintf(cell, sizeof cell, "%.3e (%d)", e, unpaired);
+    fprintf(to, " %16s", cell);
+}
+
+static ww_result part_dt(const ww_bench_opts *o, const char *path, dt_table *tab, FILE *to,
+                         ww_error *err) {
+    ww_scene *sc = NULL;
+    ww_result r = ww_scene_load(path, NULL, 0, &sc, err);
+    if (r) return r;
+    double seconds = fmin(sc->duration, o->tiny ? DT_SECONDS_TINY : DT_SECONDS);
+    ww_scene_free(sc);
+
+    run ref = {0}, u = {0};
+    if ((r = run_dt(path, REF_DIV, seconds, &ref, err))) {
+        run_free(&ref);
+        return r;
+    }
+    memset(tab, 0, sizeof *tab);
+    tab->ref_steps_per_s = (double)ref.steps / ref.wall_s;
+    for (int m = 0; m < NMETRICS; m++) tab->has[m] = ref.has[m];
+    if (!o->json) {
+        fprintf(to, "\ndt: %s, %.3g s simulated, error against dt = 1/%d (%.0f steps/s); "
+                    "max over samples every 1/%d s\n",
+                base_name(path), seconds, REF_DIV, tab->ref_steps_per_s, SAMPLE_DIV);
+        fprintf(to, "%-8s %12s %12s |", "dt", "steps/s", "sim s/wall s");
+        for (int m = 0; m < NMETRICS; m++) fprintf(to, " %14s m", METRIC_NAMES[m]);
+        fputc('\n', to);
+    }
+    for (int d = 0; d < NDT && !r; d++) {
+        if ((r = run_dt(path, DT_DIVS[d], seconds, &u, err))) break;
+        tab->dt[d] = 1.0 / DT_DIVS[d];
+        tab->rate[d] = DT_DIVS[d];
+        tab->steps_per_s[d] = (double)u.steps / u.wall_s;
+        int unpaired = 0;
+        for (int m = 0; m < NMETRICS; m++) tab->err[m][d] = metric_error(&u, &ref, m, &unpaired);
+        if (o->json) {
+            fprintf(to, "{\"part\":\"dt\",\"scene\":\"%s\",\"dt\":%.9g,\"reference_dt\":%.9g,"
+                        "\"seconds\":%.6g,\"steps_per_s\":%.1f,\"sim_s_per_wall_s\":%.2f",
+                    base_name(path), tab->dt[d], 1.0 / REF_DIV, seconds, tab->steps_per_s[d],
+                    tab->steps_per_s[d] * tab->dt[d]);
+            static const char *const keys[NMETRICS] = {"cube_heave_m", "boat_position_m",
+                                                       "stone_landing_m"};
+            for (int m = 0; m < NMETRICS; m++) {
+                if (tab->err[m][d] < 0)
+                    fprintf(to, ",\"%s\":null", keys[m]);
+                else
+                    fprintf(to, ",\"%s\":%.6e", keys[m], tab->err[m][d]);
+            }
+            fprintf(to, ",\"stone_landings_unpaired\":%d}\n", unpaired);
+        } else {
+            char dts[16];
+            snprintf(dts, sizeof dts, "1/%d", DT_DIVS[d]);
+            fprintf(to, "%-8s %12.0f %12.1f |", dts, tab->steps_per_s[d],
+                    tab->steps_per_s[d] * tab->dt[d]);
+            for (int m = 0; m < NMETRICS; m++) print_metric(to, tab->err[m][d], unpaired, m == 2);
+            fputc('\n', to);
+        }
+        run_free(&u);
+    }
+    run_free(&u);
+    run_free(&ref);
+    if (!r && !o->json)
+        fprintf(to, "cube heave: |y - y_ref| of cube 0; boat position: XZ distance; stone "
+                    "landing: XZ distance of each stone's k-th skip or sink, (n) landings\n"
+                    "found in one run only; '-': the scene has no such system\n");
+    return r;
+}
+
+#define FIG_W 1200
+#define FIG_H 480
+
+static ww_result write_figure(const char *dir, const char *scene, const dt_table *tab,
+                              char *path, size_t cap, ww_error *err) {
+    ww_result r = ww_make_dirs(dir, err);
+    if (r) return r;
+    snprintf(path, cap, "%s/sim.png", dir);
+    ww_image im;
+    if (ww_image_alloc(&im, FIG_W, FIG_H, 3, WW_PIX_U8))
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the figure");
+    ww_plot_fill(&im, WW_PLOT_WHITE);
+
+    /* left: each metric's error against dt */
+    const ww_plot_rgb colors[NMETRICS] = {WW_PLOT_BLUE, WW_PLOT_ORANGE, WW_PLOT_GREEN};
+    char title[96];
+    snprintf(title, sizeof title, "error against dt = 1/%d, %.40s", REF_DIV, scene);
+    int any = 0;
+    for (int m = 0; m < NMETRICS; m++) any |= tab->has[m];
+    ww_plot ep = {.title = title, .xlabel = "steps per simulated second (1 / dt)", .ylabel = "max error, m", .log_x = 1,
+                  .log_y = 1, .nxticks = NDT,
+                  .note = any ? NULL : "no cubes, boat or stones in the scene"};
+    for (int d = 0; d < NDT; d++) ep.xticks[d] = tab->rate[d];
+    for (int m = 0; m < NMETRICS; m++)
+        if (tab->has[m]) ww_plot_add(&ep, METRIC_NAMES[m], tab->rate, tab->err[m], NDT, colors[m]);
+    ww_plot_draw(&ep, &im, 0, 0, FIG_W / 2, FIG_H);
+
+    /* right: the speed bought by each dt */
+    ww_plot sp = {.title = "simulation speed", .xlabel = "steps per simulated second (1 / dt)", .ylabel = "steps per second",
+                  .log_x = 1, .log_y = 1, .nxticks = NDT};
+    for (int d = 0; d < NDT; d++) sp.xticks[d] = tab->rate[d];
+    ww_plot_add(&sp, "steps per wall second", tab->rate, tab->steps_per_s, NDT, WW_PLOT_PURPLE);
+    ww_plot_draw(&sp, &im, FIG_W / 2, 0, FIG_W / 2, FIG_H);
+
+    r = ww_write_png(path, &im, err);
+    ww_image_free(&im);
+    return r;
+}
+
+/* ---- the share of a frame ------------------------------------------------------------------ */
+
+static void part_share(const ww_bench_opts *o, FILE *to) {
+    static const char demo[] = "scenes/demo.yaml";
+    int frames = o->frames > 0 ? o->frames : SHARE_FRAMES;
+    ww_job_stats s;
+    ww_error err = {0};
+    if (frames < 2) frames = 2;
+    if (ww_bench_render_once(demo, 1280, 720, frames, &s, &err) != WW_OK) {
+        if (o->json) {
+            fputs("{\"part\":\"share\",\"scene\":\"demo.yaml\",\"error\":", to);
+            ww_json_string(to, err.msg);
+            fputs("}\n", to);
+        } else {
+            fprintf(to, "\nshare of a frame: unavailable: %s\n", err.msg);
+        }
+        return;
+    }
+    /* the first frame pays for shader compilation: left out, as bench render does */
+    double n = (double)s.frames;
+    double sim = 1e3 * s.sim_s / n, ren = 1e3 * (s.render_s - s.first_render_s) / (n - 1);
+    double share = 100.0 * sim / ren;
+    if (o->json)
+        fprintf(to, "{\"part\":\"share\",\"scene\":\"demo.yaml\",\"backend\":\"%s\",\"frames\":%lld,"
+                    "\"sim_ms\":%.5f,\"render_ms\":%.4f,\"share_percent\":%.4f}\n",
+                s.backend, (long long)s.frames, sim, ren, share);
+    else
+        fprintf(to, "\nshare of a frame, demo.yaml at 1280x720 on %s (%s), %lld frames: sim %.4f ms, "
+                    "render %.3f ms: %.3f%% (target < 1%%)\n",
+                s.backend, s.renderer, (long long)s.frames, sim, ren, share);
+}
+
+/* ---- bench sim ----------------------------------------------------------------------------- */
+
+ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err) {
+    /* by default: the plain scenes, and the lake (every system of seed 000) where it exists */
+    const char *defaults[4] = {"scenes/minimal.yaml", "scenes/demo.yaml", NULL, NULL};
+    static const char lake[] = "scenes/lake.yaml";
+    int have_lake = access(lake, R_OK) == 0;
+    if (have_lake) defaults[2] = lake;
+    const char *const *scenes = o->scenes[0] ? o->scenes : defaults;
+
+    ww_result r = part_speed(o, scenes, to, err);
+    if (r) return r;
+
+    /* the dt table: each scene named, else the lake */
+    const char *const dt_default[2] = {have_lake ? lake : NULL, NULL};
+    const char *const *dt_scenes = o->scenes[0] ? o->scenes : dt_default;
+    if (!dt_scenes[0] && !o->json)
+        fprintf(to, "\ndt: skipped (%s not found; name a scene)\n", lake);
+    const char *dir = o->out_dir ? o->out_dir : "out/bench";
+    for (int s = 0; dt_scenes[s]; s++) {
+        dt_table tab;
+        if ((r = part_dt(o, dt_scenes[s], &tab, to, err))) return r;
+        if (s > 0) continue;
+        char path[700];
+        if ((r = write_figure(dir, base_name(dt_scenes[s]), &tab, path, sizeof path, err))) return r;
+        if (o->json) {
+            fputs("{\"part\":\"figure\",\"path\":", to);
+            ww_json_string(to, path);
+            fputs("}\n", to);
+        } else {
+            fprintf(to, "figure: %s\n", path);
+        }
+    }
+
+    if (o->tiny) {
+        if (!o->json) fprintf(to, "\nshare of a frame: skipped (--tiny)\n");
+        return WW_OK;
+    }
+    part_share(o, to);
+    return WW_OK;
+}

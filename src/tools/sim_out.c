@@ -1,0 +1,89 @@
+/* sim_out.c - the step's event outbox as JSON lines, state fields looked up by name and the
+ * system owning each field, all driven by the X-macro tables of sim/state.h and sim/fields_*.h
+ * (so a system's new fields are found without any change here).
+ */
+#include "tools/sim_out.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "sim/events.h"
+
+/* %.17g round-trips a double; JSON has no NaN */
+static void put_num(FILE *to, double v) {
+    if (isfinite(v))
+        fprintf(to, "%.17g", v);
+    else
+        fputs("null", to);
+}
+
+int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to) {
+    int n = ww_events_count(sc, st);
+    for (int i = 0; i < n; i++) {
+        const double *e = st->events + i * WW_SIM_EVENT_STRIDE;
+        fprintf(to, "{\"step\":%lld,\"t\":", (long long)st->step);
+        put_num(to, st->t);
+        fprintf(to, ",\"kind\":\"%s\",\"object\":%d,\"pos\":[",
+                ww_sim_event_name((ww_sim_event_kind)(int)e[0]), (int)e[1]);
+        put_num(to, e[2]);
+        fputc(',', to);
+        put_num(to, e[3]);
+        fputc(',', to);
+        put_num(to, e[4]);
+        fputs("],\"magnitude\":", to);
+        put_num(to, e[5]);
+        fputs(",\"aux\":", to);
+        put_num(to, e[6]);
+        fputs("}\n", to);
+    }
+    return n;
+}
+
+const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char *name,
+                             long long *count) {
+#define WW_FIELD_BY_NAME(type, fname, n, comment)                                                 \
+    if (strcmp(name, #fname) == 0) {                                                              \
+        *count = (long long)(n);                                                                  \
+        return st->fname;                                                                         \
+    }
+    WW_STATE_FIELDS(WW_FIELD_BY_NAME)
+#undef WW_FIELD_BY_NAME
+    *count = 0;
+    return NULL;
+}
+
+/* each system's field names, from its own table */
+#define WW_FIELD_NAME(type, fname, n, comment) #fname,
+static const char *const CUBES[] = {WW_FIELDS_CUBES(WW_FIELD_NAME) NULL};
+static const char *const STONES[] = {WW_FIELDS_STONES(WW_FIELD_NAME) NULL};
+static const char *const FISHING[] = {WW_FIELDS_FISHING(WW_FIELD_NAME) NULL};
+static const char *const REEF[] = {WW_FIELDS_REEF(WW_FIELD_NAME) NULL};
+static const char *const BOAT[] = {WW_FIELDS_BOAT(WW_FIELD_NAME) NULL};
+#undef WW_FIELD_NAME
+
+static const struct {
+    const char *system;
+    const char *const *fields;
+} SYSTEMS[] = {{"cubes", CUBES}, {"stones", STONES}, {"fishing", FISHING}, {"reef", REEF},
+               {"boat", BOAT}};
+
+const char *ww_state_field_system(const char *name) {
+    for (size_t s = 0; s < sizeof SYSTEMS / sizeof SYSTEMS[0]; s++)
+        for (const char *const *f = SYSTEMS[s].fields; *f; f++)
+            if (strcmp(*f, name) == 0) return SYSTEMS[s].system;
+    return "world";
+}
+
+ww_result ww_sim_nan_report(const ww_scene *sc, const ww_state *st, ww_error *err) {
+#define WW_FIELD_NAN(type, fname, n, comment)                                                     \
+    for (long long i = 0; i < (long long)(n); i++)                                                \
+        if (!isfinite(st->fname[i]))                                                              \
+            return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                    \
+                                "non-finite value in the %s system: %s[%lld] = %g at step %lld "  \
+                                "(t = %.6f s)",                                                   \
+                                ww_state_field_system(#fname), #fname, i, st->fname[i],           \
+                                (long long)st->step, st->t);
+    WW_STATE_FIELDS(WW_FIELD_NAN)
+#undef WW_FIELD_NAN
+    return WW_OK;
+}

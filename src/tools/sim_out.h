@@ -1,0 +1,37 @@
+/* sim_out.h - what the simulation tools read out of a state beyond the trace: the step's events as
+ * JSON lines (`simulate --events`), a state field by name (bench sim's metrics), and the system
+ * that owns a field (so a NaN report names system, field, index and step).
+ *
+ *   ww_step(sc, st, &err);
+ *   ww_sim_events_write(sc, st, file);          // one line per event in the outbox
+ *   long long n; const double *y = ww_state_field(sc, st, "cube_pos", &n);   // NULL: no such
+ *   if (r == WW_E_NAN) ww_sim_nan_report(sc, st, &err);   // re-words err with the system
+ *
+ * Nothing here allocates or writes the state.
+ */
+#ifndef WW_SIM_OUT_H
+#define WW_SIM_OUT_H
+
+#include <stdio.h>
+
+#include "sim/state.h"
+
+/* one JSON object per line for each event in the step's outbox:
+ *   {"step":S,"t":T,"kind":"stone_skip","object":I,"pos":[x,y,z],"magnitude":M,"aux":A}
+ * numbers as %.17g (non-finite: null); returns the number of lines written */
+int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to);
+
+/* the array of the state field `name` (WW_STATE_FIELDS) and its length in *count; NULL when no
+ * field has that name. A field of a system the scene lacks has *count 0. */
+const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char *name,
+                             long long *count);
+
+/* the system a field belongs to: "cubes", "stones", "fishing" (rod, lure, fish), "reef" (chest,
+ * bubbles, camera collision), "boat", or "world" (clock, sky, camera, waves, ripples, outbox) */
+const char *ww_state_field_system(const char *name);
+
+/* the first non-finite value of the state as WW_E_NAN: "non-finite value in the <system>
+ * system: <field>[<index>] = nan at step S (t = T s)"; WW_OK (err untouched) when all are finite */
+ww_result ww_sim_nan_report(const ww_scene *sc, const ww_state *st, ww_error *err);
+
+#endif

@@ -1,0 +1,531 @@
+/* test_simtools.c - the simulation's tools as a user meets them: a --script file merged with the
+ * scene's events (order, and errors that name the script file with line and column), the events
+ * JSON lines of `simulate --events` (each line parses, fields as emitted), state fields by name
+ * and the system that owns each, the short soak (60 s of scenes/soak.yaml: no NaN), and a tiny
+ * `bench sim` (the dt table and its figure). No timing is asserted.
+ */
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "scene/scene.h"
+#include "sim/events.h"
+#include "sim/state.h"
+#include "sim/step.h"
+#include "test.h"
+#include "tools/sim_out.h"
+
+/* the JSON lines print %.17g, which round-trips a double exactly */
+#define JSON_ROUND_TRIP_TOL 0.0
+
+static char cmd[4096];
+
+static int run_ww(const char *args, const char *out, const char *errf) {
+    snprintf(cmd, sizeof cmd, "%s %s", ww_test_bin(), args);
+    return ww_test_run(cmd, out, errf);
+}
+
+static void write_text(const char *path, const char *text) {
+    FILE *f = fopen(path, "w");
+    ENSURE(f != NULL);
+    if (!f) return;
+    fputs(text, f);
+    ENSURE(fclose(f) == 0);
+}
+
+static int file_contains(const char *path, const char *needle) {
+    char *s = ww_test_read_file(path, NULL);
+    int found = s && strstr(s, needle);
+    free(s);
+    return found;
+}
+
+/* ---- a small JSON validator (RFC 8259 grammar, no semantics) ------------------------------- */
+
+static const char *json_ws(const char *p) {
+    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
+    return p;
+}
+
+static const char *json_value(const char *p, int depth);
+
+static const char *json_string(const char *p) {
+    if (*p++ != '"') return NULL;
+    while (*p && *p != '"') {
+        if ((unsigned char)*p < 0x20) return NULL;
+        if (*p == '\\') {
+            p++;
+            if (*p == 'u') {
+                for (int i = 1; i <= 4; i++)
+                    if (!isxdigit((unsigned char)p[i])) return NULL;
+                p += 4;
+            } else if (!strchr("\"\\/bfnrt", *p) || !*p) {
+                return NULL;
+            }
+        }
+        p++;
+    }
+    return *p == '"' ? p + 1 : NULL;
+}
+
+static const char *json_number(const char *p) {
+    if (*p == '-') p++;
+    if (*p == '0') {
+        p++;
+    } else if (isdigit((unsigned char)*p)) {
+        while (isdigit((unsigned char)*p)) p++;
+    } else {
+        return NULL;
+    }
+    if (*p == '.') {
+        p++;
+        if (!isdigit((unsigned char)*p)) return NULL;
+        while (isdigit((unsigned char)*p)) p++;
+    }
+    if (*p == 'e' || *p == 'E') {
+        p++;
+        if (*p == '+' || *p == '-') p++;
+        if (!isdigit((unsigned char)*p)) return NULL;
+        while (isdigit((unsigned char)*p)) p++;
+    }
+    return p;
+}
+
+static const char *json_items(const char *p, char close, int is_object, int depth) {
+    p = json_ws(p + 1);
+    if (*p == close) return p + 1;
+    for (;;) {
+        if (is_object) {
+            if (!(p = json_string(json_ws(p)))) return NULL;
+            p = json_ws(p);
+            if (*p++ != ':') return NULL;
+        }
+        if (!(p = json_value(p, depth + 1))) return NULL;
+        p = json_ws(p);
+        if (*p == close) return p + 1;
+        if (*p++ != ',') return NULL;
+    }
+}
+
+static const char *json_value(const char *p, int depth) {
+    if (depth > 32) return NULL;
+    p = json_ws(p);
+    if (*p == '{') return json_items(p, '}', 1, depth);
+    if (*p == '[') return json_items(p, ']', 0, depth);
+    if (*p == '"') return json_string(p);
+    if (strncmp(p, "true", 4) == 0) return p + 4;
+    if (strncmp(p, "false", 5) == 0) return p + 5;
+    if (strncmp(p, "null", 4) == 0) return p + 4;
+    return json_number(p);
+}
+
+/* every line of text is one JSON object; returns the number of lines, -1 at the first bad one */
+static int json_lines(const char *text) {
+    int n = 0;
+    for (const char *p = text; *p;) {
+        const char *eol = strchr(p, '\n');
+        if (!eol) return -1; /* every line ends in a newline */
+        if (*json_ws(p) != '{') return -1;
+        const char *end = json_value(p, 0);
+        if (!end || end > eol) return -1;
+        while (end < eol && (*end == ' ' || *end == '\t' || *end == '\r')) end++;
+        if (end != eol) return -1;
+        n++;
+        p = eol + 1;
+    }
+    return n;
+}
+
+TEST(simtools_json_validator) {
+    ENSURE_EQ_INT(json_lines("{\"a\":[1,-2.5e3,null,true],\"b\":{\"c\":\"x\\n\"}}\n{}\n"), 2);
+    ENSURE_EQ_INT(json_lines("{\"a\":nan}\n"), -1);
+    ENSURE_EQ_INT(json_lines("{\"a\":1,}\n"), -1);
+    ENSURE_EQ_INT(json_lines("{\"a\":1}"), -1);
+    ENSURE_EQ_INT(json_lines("{\"a\":01}\n"), -1);
+}
+
+/* ---- --script -------------------------------------------------------------------------------- */
+
+static const char script_scene[] =
+    "time: {dt: 1/120, fps: 30, duration: 3}\n"
+    "script:\n"
+    "  - {t: 2, ripple: {at: [1, 1]}}\n"
+    "  - {t: 1, time_of_day: 5}\n";
+
+static const char script_file[] =
+    "# merged after the scene's events\n"
+    "script:\n"
+    "  - {t: 1, time_of_day: 9}\n"
+    "  - {t: 0.5, ripple: {at: [-1, 2], amplitude: 0.2}}\n";
+
+TEST(simtools_script_merge_order) {
+    const char *dir = ww_test_tmpdir("simtools_script_merge_order");
+    char scene[512], script[512];
+    snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
+    snprintf(script, sizeof script, "%s/script.yaml", dir);
+    write_text(scene, script_scene);
+    write_text(script, script_file);
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_scene_load_with_script(scene, script, NULL, 0, &sc, &err), WW_OK);
+    if (!sc) return;
+
+    /* by time; at t = 1 the scene's event (line 4 of the scene) before the script's (line 3) */
+    ENSURE_EQ_INT(sc->nevents, 4);
+    ENSURE(sc->events[0].t == 0.5 && sc->events[0].kind == WW_EV_RIPPLE);
+    ENSURE(sc->events[0].value == 0.2 && sc->events[0].line == 4);
+    ENSURE(sc->events[1].t == 1 && sc->events[1].value == 5 && sc->events[1].line == 4);
+    ENSURE(sc->events[2].t == 1 && sc->events[2].value == 9 && sc->events[2].line == 3);
+    ENSURE(sc->events[3].t == 2 && sc->events[3].kind == WW_EV_RIPPLE);
+    ENSURE(sc->ripples_on);
+    for (int i = 0; i < 4; i++) ENSURE(sc->events[i].step == llround(sc->events[i].t * 120));
+
+    /* both clock events fire on step 120, in that order: the script's 9 h is what stays */
+    ww_state *st = ww_state_new(sc);
+    ENSURE(st != NULL);
+    if (st) {
+        ENSURE_EQ_INT(ww_sim_advance_to(sc, st, 121, &err), WW_OK);
+        ENSURE(st->clock_anchor[0] == 9);
+        ENSURE(st->clock_anchor[1] == 1);
+    }
+    ww_state_free(st);
+    ww_scene_free(sc);
+
+    /* no script file: the plain load */
+    ENSURE_EQ_INT(ww_scene_load_with_script(scene, NULL, NULL, 0, &sc, &err), WW_OK);
+    if (sc) ENSURE_EQ_INT(sc->nevents, 2);
+    ww_scene_free(sc);
+}
+
+/* the scene with the script's events written into it steps to the same hash as scene + script */
+TEST(simtools_script_same_as_inline) {
+    const char *dir = ww_test_tmpdir("simtools_script_same_as_inline");
+    char scene[512], script[512], inline_scene[512], out1[512], out2[512];
+    snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
+    snprintf(script, sizeof script, "%s/script.yaml", dir);
+    snprintf(inline_scene, sizeof inline_scene, "%s/inline.yaml", dir);
+    snprintf(out1, sizeof out1, "%s/h1.txt", dir);
+    snprintf(out2, sizeof out2, "%s/h2.txt", dir);
+    write_text(scene, script_scene);
+    write_text(script, script_file);
+    write_text(inline_scene,
+               "time: {dt: 1/120, fps: 30, duration: 3}\n"
+               "script:\n"
+               "  - {t: 2, ripple: {at: [1, 1]}}\n"
+               "  - {t: 1, time_of_day: 5}\n"
+               "  - {t: 1, time_of_day: 9}\n"
+               "  - {t: 0.5, ripple: {at: [-1, 2], amplitude: 0.2}}\n");
+    char args[2048];
+    snprintf(args, sizeof args, "simulate %s --script %s --hash", scene, script);
+    ENSURE_EQ_INT(run_ww(args, out1, NULL), 0);
+    snprintf(args, sizeof args, "simulate %s --hash", inline_scene);
+    ENSURE_EQ_INT(run_ww(args, out2, NULL), 0);
+    char *a = ww_test_read_file(out1, NULL), *b = ww_test_read_file(out2, NULL);
+    ENSURE(a && b && strlen(a) == 17 && strcmp(a, b) == 0);
+    free(a);
+    free(b);
+    /* without the script the hash differs (the events do something) */
+    snprintf(args, sizeof args, "simulate %s --hash", scene);
+    ENSURE_EQ_INT(run_ww(args, out2, NULL), 0);
+    a = ww_test_read_file(out1, NULL);
+    b = ww_test_read_file(out2, NULL);
+    ENSURE(a && b && strcmp(a, b) != 0);
+    free(a);
+    free(b);
+}
+
+typedef struct {
+    const char *text;
+    ww_result code;
+    int line, column;
+} bad_script;
+
+TEST(simtools_script_errors) {
+    const char *dir = ww_test_tmpdir("simtools_script_errors");
+    char scene[512], script[512];
+    snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
+    snprintf(script, sizeof script, "%s/script.yaml", dir);
+    write_text(scene, script_scene);
+    static const bad_script cases[] = {
+        /* an action misspelt: unknown key at the key */
+        {"script:\n  - {t: 1, time_of_day: 3}\n  - {t: 2, rippel: {at: [0, 0]}}\n",
+         WW_E_UNKNOWN_KEY, 3, 12},
+        /* out of range: at the value */
+        {"script:\n  - {t: 1, time_of_day: 30}\n", WW_E_RANGE, 2, 25},
+        /* a negative time */
+        {"script:\n  - {t: -1, time_of_day: 3}\n", WW_E_RANGE, 2, 9},
+        /* an event with no time: at its mapping */
+        {"script:\n  - {time_of_day: 3}\n", WW_E_MISSING, 2, 5},
+        /* two actions in one event */
+        {"script:\n  - {t: 1, time_of_day: 3, ripple: {at: [0, 0]}}\n", WW_E_INCONSISTENT, 2,
+         28},
+        /* anything but script at the top */
+        {"script: []\nseed: 4\n", WW_E_UNKNOWN_KEY, 2, 1},
+        /* no script at all */
+        {"{}\n", WW_E_MISSING, 1, 1},
+        /* script not a list */
+        {"script: {t: 1}\n", WW_E_TYPE, 1, 9},
+        /* not YAML */
+        {"script: [\n", WW_E_SYNTAX, 0, 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        write_text(script, cases[i].text);
+        ww_scene *sc = NULL;
+        ww_error err = {0};
+        ww_result r = ww_scene_load_with_script(scene, script, NULL, 0, &sc, &err);
+        ENSURE_MSG(r == cases[i].code, "case %zu: %s, expected %s (%s)", i, ww_result_name(r),
+                   ww_result_name(cases[i].code), err.msg);
+        ENSURE(sc == NULL);
+        ENSURE_MSG(strcmp(err.file, script) == 0, "case %zu: error in '%s'", i, err.file);
+        if (cases[i].line)
+            ENSURE_MSG(err.line == cases[i].line && err.column == cases[i].column,
+                       "case %zu: at %d:%d, expected %d:%d (%s)", i, err.line, err.column,
+                       cases[i].line, cases[i].column, err.msg);
+        ww_scene_free(sc);
+    }
+
+    /* a file that is not there */
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    char missing[600];
+    snprintf(missing, sizeof missing, "%s/none.yaml", dir);
+    ENSURE_EQ_INT(ww_scene_load_with_script(scene, missing, NULL, 0, &sc, &err), WW_E_NOFILE);
+
+    /* more events than the scene can hold, scene and script together */
+    FILE *f = fopen(script, "w");
+    ENSURE(f != NULL);
+    if (f) {
+        fputs("script:\n", f);
+        for (int i = 0; i < WW_MAX_EVENTS - 1; i++) fprintf(f, "  - {t: %d, time_of_day: 3}\n", i);
+        fclose(f);
+    }
+    ENSURE_EQ_INT(ww_scene_load_with_script(scene, script, NULL, 0, &sc, &err), WW_E_RANGE);
+    ENSURE(strcmp(err.file, script) == 0 && err.line == 2);
+}
+
+TEST(simtools_script_cli) {
+    const char *dir = ww_test_tmpdir("simtools_script_cli");
+    char scene[512], script[512], errf[512], args[2048];
+    snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
+    snprintf(script, sizeof script, "%s/bad.yaml", dir);
+    snprintf(errf, sizeof errf, "%s/stderr.txt", dir);
+    write_text(scene, script_scene);
+    write_text(script, "script:\n  - {t: 1, time_of_day: 30}\n");
+
+    /* bad input: exit 2, "FILE:LINE:COL: error:" of the script file */
+    char where[600];
+    snprintf(where, sizeof where, "%s:2:25: error:", script);
+    snprintf(args, sizeof args, "simulate %s --script %s", scene, script);
+    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
+    ENSURE(file_contains(errf, where));
+    snprintf(args, sizeof args, "render %s --script %s --format none", scene, script);
+    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
+    ENSURE(file_contains(errf, where));
+    snprintf(args, sizeof args, "probe %s --script %s --at 0,0", scene, script);
+    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
+    ENSURE(file_contains(errf, where));
+    /* sweep does not take one */
+    snprintf(args, sizeof args, "sweep %s --script %s --vary seed=1,2", scene, script);
+    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
+    ENSURE(file_contains(errf, "--script"));
+    /* a missing value */
+    snprintf(args, sizeof args, "simulate %s --script", scene);
+    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
+}
+
+/* ---- events --------------------------------------------------------------------------------- */
+
+/* the writer, on an outbox filled by hand (a scene with the cubes system on and no cubes) */
+TEST(simtools_events_jsonl) {
+    const char *dir = ww_test_tmpdir("simtools_events_jsonl");
+    char path[512];
+    snprintf(path, sizeof path, "%s/events.jsonl", dir);
+    ww_scene *sc = calloc(1, sizeof *sc);
+    ENSURE(sc != NULL);
+    if (!sc) return;
+    ww_scene_defaults(sc);
+    sc->cubes.on = 1;
+    ww_state *st = ww_state_new(sc);
+    ENSURE(st != NULL);
+    if (!st) {
+        free(sc);
+        return;
+    }
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_sim_advance_to(sc, st, 7, &err), WW_OK);
+    ww_events_clear(sc, st);
+    const double p0[3] = {1.25, -0.5, 1.0 / 3.0}, p1[3] = {-2e-7, 0, 12345.678};
+    ww_emit(sc, st, WW_SE_STONE_SKIP, 3, p0, 4.5, 2);
+    ww_emit(sc, st, WW_SE_CHEST_COLLECT, 0, p1, 7, 0);
+    ww_emit(sc, st, WW_SE_BOAT_STOP, 0, NULL, NAN, 0);
+    FILE *f = fopen(path, "w");
+    ENSURE(f != NULL);
+    if (f) {
+        ENSURE_EQ_INT(ww_sim_events_write(sc, st, f), 3);
+        fclose(f);
+    }
+    char *text = ww_test_read_file(path, NULL);
+    ENSURE(text != NULL);
+    if (text) {
+        ENSURE_EQ_INT(json_lines(text), 3);
+        long long step = -1;
+        double t = -1, x, y, z, m, aux;
+        int object = -1;
+        char kind[32] = "";
+        ENSURE_EQ_INT(sscanf(text,
+                             "{\"step\":%lld,\"t\":%lf,\"kind\":\"%31[^\"]\",\"object\":%d,"
+                             "\"pos\":[%lf,%lf,%lf],\"magnitude\":%lf,\"aux\":%lf}",
+                             &step, &t, kind, &object, &x, &y, &z, &m, &aux),
+                      9);
+        ENSURE_EQ_INT(step, 7);
+        ENSURE_NEAR(t, st->t, JSON_ROUND_TRIP_TOL);
+        ENSURE(strcmp(kind, "stone_skip") == 0 && object == 3);
+        ENSURE_NEAR(x, p0[0], JSON_ROUND_TRIP_TOL);
+        ENSURE_NEAR(y, p0[1], JSON_ROUND_TRIP_TOL);
+        ENSURE_NEAR(z, p0[2], JSON_ROUND_TRIP_TOL);
+        ENSURE_NEAR(m, 4.5, JSON_ROUND_TRIP_TOL);
+        ENSURE_NEAR(aux, 2, JSON_ROUND_TRIP_TOL);
+        const char *second = strchr(text, '\n') + 1;
+        ENSURE(strstr(second, "\"kind\":\"chest_collect\"") != NULL);
+        char pos[128];
+        snprintf(pos, sizeof pos, "\"pos\":[%.17g,0,%.17g]", p1[0], p1[2]);
+        ENSURE(strstr(second, pos) != NULL);
+        /* JSON has no NaN: a non-finite magnitude is null */
+        ENSURE(strstr(second, "\"kind\":\"boat_stop\",\"object\":0,\"pos\":[0,0,0],"
+                              "\"magnitude\":null,\"aux\":0}") != NULL);
+    }
+    free(text);
+    ww_state_free(st);
+    free(sc);
+}
+
+/* simulate --events on a scene with no object system: an empty file; '-' is stdout */
+TEST(simtools_events_cli) {
+    const char *dir = ww_test_tmpdir("simtools_events_cli");
+    char path[512], out[512], args[2048];
+    snprintf(path, sizeof path, "%s/events.jsonl", dir);
+    snprintf(out, sizeof out, "%s/stdout.txt", dir);
+    snprintf(args, sizeof args, "simulate scenes/ripples.yaml --frames 10 --events %s", path);
+    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    size_t len = 99;
+    char *text = ww_test_read_file(path, &len);
+    ENSURE(text != NULL && len == 0);
+    free(text);
+    snprintf(args, sizeof args, "simulate scenes/ripples.yaml --frames 10 --events - --hash");
+    ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
+    text = ww_test_read_file(out, &len);
+    ENSURE(text != NULL && len == 17);
+    free(text);
+    /* trace and events into one file: refused */
+    snprintf(args, sizeof args, "simulate scenes/ripples.yaml --events %s --trace %s", path, path);
+    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 2);
+}
+
+/* the real systems of scenes/soak.yaml: every line parses and names a known kind; its stones
+ * skip and sink, its boat starts and its cubes are pressed */
+TEST(simtools_events_soak_scene) {
+    const char *dir = ww_test_tmpdir("simtools_events_soak_scene");
+    char path[512], args[2048];
+    snprintf(path, sizeof path, "%s/events.jsonl", dir);
+    snprintf(args, sizeof args, "simulate scenes/soak.yaml --frames 450 --events %s", path);
+    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    char *text = ww_test_read_file(path, NULL);
+    ENSURE(text != NULL);
+    if (!text) return;
+    int n = json_lines(text);
+    ENSURE(n > 0);
+    int known = 0;
+    for (const char *p = strstr(text, "\"kind\":\""); p; p = strstr(p + 1, "\"kind\":\"")) {
+        char kind[32] = "";
+        ENSURE_EQ_INT(sscanf(p, "\"kind\":\"%31[^\"]\"", kind), 1);
+        for (int k = 1; k < WW_SE_COUNT; k++)
+            if (strcmp(kind, ww_sim_event_name((ww_sim_event_kind)k)) == 0) known++;
+    }
+    ENSURE_EQ_INT(known, n);
+    ENSURE(strstr(text, "\"kind\":\"stone_skip\"") != NULL);
+    ENSURE(strstr(text, "\"kind\":\"stone_sink\"") != NULL);
+    ENSURE(strstr(text, "\"kind\":\"boat_start\"") != NULL);
+    ENSURE(strstr(text, "\"kind\":\"cube_press\"") != NULL);
+    free(text);
+}
+
+/* ---- fields by name, NaN reports ------------------------------------------------------------ */
+
+TEST(simtools_fields_by_name) {
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_scene_load("scenes/ripples.yaml", NULL, 0, &sc, &err), WW_OK);
+    if (!sc) return;
+    ww_state *st = ww_state_new(sc);
+    ENSURE(st != NULL);
+    if (!st) {
+        ww_scene_free(sc);
+        return;
+    }
+    long long n = -1;
+    ENSURE(ww_state_field(sc, st, "cam_pos", &n) == st->cam_pos && n == 3);
+    ENSURE(ww_state_field(sc, st, "wave_phase", &n) == st->wave_phase && n == sc->nwaves);
+    ENSURE(ww_state_field(sc, st, "ripple", &n) == st->ripple && n == 4 * sc->ripples.max);
+    /* a system the scene lacks: the field exists, with no values */
+    ENSURE(ww_state_field(sc, st, "cube_pos", &n) != NULL && n == 0);
+    ENSURE(ww_state_field(sc, st, "no_such_field", &n) == NULL && n == 0);
+
+    ENSURE(strcmp(ww_state_field_system("cube_pos"), "cubes") == 0);
+    ENSURE(strcmp(ww_state_field_system("boat_pos"), "boat") == 0);
+    ENSURE(strcmp(ww_state_field_system("stone_pos"), "stones") == 0);
+    ENSURE(strcmp(ww_state_field_system("fish_pos"), "fishing") == 0);
+    ENSURE(strcmp(ww_state_field_system("chest_pos"), "reef") == 0);
+    ENSURE(strcmp(ww_state_field_system("cam_pos"), "world") == 0);
+
+    /* the first non-finite value, named with its system, index and step */
+    ENSURE_EQ_INT(ww_sim_nan_report(sc, st, &err), WW_OK);
+    ENSURE_EQ_INT(ww_sim_advance_to(sc, st, 5, &err), WW_OK);
+    st->ripple[6] = INFINITY;
+    ENSURE_EQ_INT(ww_sim_nan_report(sc, st, &err), WW_E_NAN);
+    ENSURE(strstr(err.msg, "world system: ripple[6] = inf at step 5") != NULL);
+    ww_state_free(st);
+    ww_scene_free(sc);
+}
+
+/* ---- soak ------------------------------------------------------------------------------------ */
+
+/* the first minute of `make soak`: every system, 7200 steps at 120 Hz, no NaN or Inf */
+TEST(simtools_soak_short) {
+    const char *dir = ww_test_tmpdir("simtools_soak_short");
+    char errf[512];
+    snprintf(errf, sizeof errf, "%s/stderr.txt", dir);
+    ENSURE_EQ_INT(run_ww("simulate scenes/soak.yaml --set time.dt=1/120 --set time.fps=30 "
+                         "--set time.duration=60 --stats",
+                         NULL, errf),
+                  0);
+    ENSURE(file_contains(errf, "(7196 steps of 0.00833333 s)"));
+    ENSURE(file_contains(errf, "simulated s per wall s"));
+}
+
+/* ---- bench sim ------------------------------------------------------------------------------ */
+
+TEST(simtools_bench_sim_tiny) {
+    const char *dir = ww_test_tmpdir("simtools_bench_sim_tiny");
+    char out[512], png[512], args[2048];
+    snprintf(out, sizeof out, "%s/stdout.txt", dir);
+    snprintf(png, sizeof png, "%s/sim.png", dir);
+    snprintf(args, sizeof args, "bench sim --tiny scenes/soak.yaml -o %s", dir);
+    ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
+    ENSURE(file_contains(out, "dt: soak.yaml, 1 s simulated, error against dt = 1/1920"));
+    ENSURE(file_contains(out, "\n1/30 "));
+    ENSURE(file_contains(out, "\n1/240 "));
+    ENSURE(file_contains(out, "cube heave m"));
+    ENSURE(file_contains(out, "sim s/wall s"));
+    struct stat sb;
+    ENSURE(stat(png, &sb) == 0 && sb.st_size > 1000);
+
+    /* --json: one object per line */
+    snprintf(args, sizeof args, "bench sim --tiny --json scenes/soak.yaml -o %s", dir);
+    ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
+    char *text = ww_test_read_file(out, NULL);
+    ENSURE(text != NULL);
+    /* one speed line, four dt lines, the figure */
+    if (text) ENSURE_EQ_INT(json_lines(text), 6);
+    free(text);
+}
