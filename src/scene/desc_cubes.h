@@ -56,7 +56,7 @@ static inline ww_cube_desc ww_cube_default(void) {
                           .spring_stiffness = 20.0,
                           .spring_damping = 2.0,
                           .spring_offset = 0.0,
-                          .press_accel = 15.0,
+                          .press_accel = 8.0,
                           .press_j0 = 1.0,
                           .press_j1 = 2.0,
                           .press_max_hold = 1.5,
