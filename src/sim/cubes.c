@@ -153,7 +153,7 @@ void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water
     double U[3] = {sg * ax[a][0], sg * ax[a][1], sg * ax[a][2]};
     const double *P = ax[(a + 1) % 3], *Q = ax[(a + 2) % 3];
     double s = d->size, h = 0.5 * s;
-    int n = d->columns;
+    int n = d->columns > 0 ? d->columns : WW_CUBE_DEFAULT_COLUMNS;
     double cell = s / n, dA = cell * cell;
 
     *out = (ww_cube_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
@@ -268,7 +268,9 @@ void ww_cubes_reset(const ww_scene *sc, ww_state *st) {
             st->cube_vel[3 * i + k] = 0.0;
             st->cube_omega[3 * i + k] = 0.0;
         }
-        for (int k = 0; k < 4; k++) st->cube_rot[4 * i + k] = d->rotation[k];
+        const double *q = d->rotation;
+        int zero = q[0] == 0.0 && q[1] == 0.0 && q[2] == 0.0 && q[3] == 0.0;
+        for (int k = 0; k < 4; k++) st->cube_rot[4 * i + k] = zero ? (k == 0) : q[k];
         st->cube_press[2 * i] = st->cube_press[2 * i + 1] = 0.0;
         st->cube_submerged[i] = 0.0;
     }
