@@ -1,5 +1,6 @@
 /* fields_stones.h - the state fields of the stones, an X-macro table appended to
- * WW_STATE_FIELDS (sim/state.h), counts 0 without stones. */
+ * WW_STATE_FIELDS (sim/state.h), counts 0 without stones. stone_pos, stone_state and skips are
+ * read by others (renderer, HUD); the rest is sim/stones.c's own. */
 #ifndef WW_FIELDS_STONES_H
 #define WW_FIELDS_STONES_H
 
@@ -8,6 +9,10 @@
 #define WW_FIELDS_STONES(X)                                                                       \
     X(double, stone_pos, 3 * WW_N_STONES(sc), "stone positions, m (3 per slot)")                 \
     X(double, stone_state, WW_N_STONES(sc), "0 free slot, 1 flying, 2 sinking (1 per slot)")     \
-    X(double, skips, WW_N_STONES(sc) ? 1 : 0, "skips so far, all stones (1)")
+    X(double, skips, WW_N_STONES(sc) ? 1 : 0, "skips so far, all stones (1)")                    \
+    X(double, stone_vel, 3 * WW_N_STONES(sc), "stone velocities, m/s (3 per slot)")              \
+    X(double, stone_spin, WW_N_STONES(sc), "spin about the disc's axis, rad/s (1 per slot)")     \
+    X(double, stone_bounces, WW_N_STONES(sc), "skips of this stone so far (1 per slot)")         \
+    X(double, stone_t0, WW_N_STONES(sc), "time the stone was thrown, s (1 per slot)")
 
 #endif
