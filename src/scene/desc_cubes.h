@@ -1,13 +1,16 @@
 /* desc_cubes.h - objects.cubes: floating boxes with Archimedes or spring buoyancy (seed 000).
  * Read by compile_cubes.c; simulated by sim/cubes.c (the model and its formulas are there).
  * Other systems read position and size. Every setting is per cube; ww_cube_default() holds the
- * file format's defaults (zero is a real value for several of them, so they are explicit).
+ * file format's defaults (zero is a real value for several of them, so they are explicit); a
+ * desc written by hand with only position, size and density gets the identity orientation, the
+ * default columns and no drag.
  */
 #ifndef WW_DESC_CUBES_H
 #define WW_DESC_CUBES_H
 
 #define WW_MAX_CUBES 64
 #define WW_CUBE_MAX_COLUMNS 8  /* buoyancy columns per side of the box (columns^2 queries) */
+#define WW_CUBE_DEFAULT_COLUMNS 4
 
 typedef enum ww_cube_buoyancy {
     WW_CUBE_ARCHIMEDES = 0, /* submerged volume of the box against the exact surface */
@@ -16,11 +19,12 @@ typedef enum ww_cube_buoyancy {
 
 typedef struct ww_cube_desc {
     double position[3];  /* start, m */
-    double rotation[4];  /* start orientation, unit quaternion w x y z */
+    double rotation[4];  /* start orientation, unit quaternion w x y z; all 0: identity */
     double size;         /* edge length, m */
     double density;      /* kg/m^3 (water 1000) */
     ww_cube_buoyancy buoyancy;
-    int columns;         /* buoyancy columns per side (archimedes), 1..WW_CUBE_MAX_COLUMNS */
+    int columns;         /* buoyancy columns per side (archimedes), 1..WW_CUBE_MAX_COLUMNS;
+                          * 0: WW_CUBE_DEFAULT_COLUMNS */
     /* water drag, scaled by the submerged fraction, relative to the water's velocity */
     double drag_linear;    /* 1/s: dv/dt = -b (v - u) when fully submerged */
     double drag_quadratic; /* drag coefficient Cd of a face: F = 1/2 rho Cd s^2 |v - u| (v - u) */
@@ -49,14 +53,14 @@ static inline ww_cube_desc ww_cube_default(void) {
                           .size = 1.0,
                           .density = 500.0,
                           .buoyancy = WW_CUBE_ARCHIMEDES,
-                          .columns = 4,
+                          .columns = WW_CUBE_DEFAULT_COLUMNS,
                           .drag_linear = 0.8,
                           .drag_quadratic = 1.05, /* a flat plate face-on ~1.1-1.2, cube 1.05 */
                           .drag_angular = 1.5,
                           .spring_stiffness = 20.0,
                           .spring_damping = 2.0,
                           .spring_offset = 0.0,
-                          .press_accel = 15.0,
+                          .press_accel = 8.0,
                           .press_j0 = 1.0,
                           .press_j1 = 2.0,
                           .press_max_hold = 1.5,

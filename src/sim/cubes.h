@@ -13,9 +13,10 @@
  *   spring      seed 000: v_y += k (y_surface + offset - y) dt, v_y *= e^(-c dt); the up axis
  *               is pulled toward the surface normal by the same spring.
  * Water drag (linear and quadratic, relative to the water's velocity, scaled by the submerged
- * fraction), the ripple slope force, press and release. The heave is advanced by the exact
- * solution of the damped oscillator the forces linearise to over the step, so flat-water heave
- * and the spring are exact and stiff buoyancy cannot gain energy.
+ * fraction), the ripple slope force, press and release. The Archimedes heave is advanced by
+ * the implicit midpoint rule with the discrete gradient of the buoyancy's exact piecewise-linear
+ * potential, so stiff buoyancy cannot gain energy at any dt; the spring's heave by the exact
+ * solution of its damped oscillator.
  *
  * WW_EV_PRESS payload: ev->index = cube, ev->v[0] = hold (s). A new press restarts the hold.
  * Emits WW_SE_CUBE_PRESS (magnitude: hold s) and WW_SE_CUBE_RELEASE (magnitude: the release
@@ -42,6 +43,11 @@ typedef struct ww_cube_water {
     double waterplane;  /* -dV/dy: the waterline area the heave sees, m^2 */
     double waterplane_moment; /* sum over the waterline of area x horizontal offset^2, m^4 */
     double velocity[3]; /* volume-weighted water velocity, m/s */
+    /* the heave's exact buoyancy law over the step (surface and tilt held): raising the box by
+     * xi makes column c's wet length clamp(wet[c] - xi / up_y, 0, size) */
+    int ncolumns;
+    double up_y, cell_area;
+    double wet[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS]; /* unclamped wet lengths, m */
 } ww_cube_water;
 
 void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water *out);
