@@ -30,6 +30,8 @@
 /* a fish's height against its bounds (the clamp is exact) and its speed against max_speed */
 #define FISH_BOUND_TOL 1e-9
 #define FISH_SPEED_TOL 1e-12
+/* a fighting fish's mouth against the lure, XZ: one rounding of the anchor */
+#define FISH_MOUTH_TOL 1e-12
 /* the yaw rate against turn_rate: one rounding of the clamp, rad/s */
 #define FISH_TURN_RATE_TOL 1e-9
 
@@ -254,6 +256,33 @@ TEST(fishing_lure_never_tunnels_and_floats_on_waves) {
     printf(" s\n");
 }
 
+/* a charged cast from the camera: starts at the camera plus (forward, right, up) offset, flies
+ * along the camera's flattened forward at the mapped angle and speed */
+TEST(fishing_cast_from_the_camera) {
+    ww_scene *sc = load("time: {dt: 1/120, fps: 30, duration: 3}\n"
+                        "water: {waves: {model: flat}}\n"
+                        "objects: {rod: {angle: [10, 40], speed: [6, 16], drag: 0.4,"
+                        " offset: [0.5, 0.3, -0.2]}}\n"
+                        "camera: {path: [{t: 0, position: [2, 3, 4], look_at: [2, 0, 0]}]}\n"
+                        "script: [{t: 0.5, cast: {charge: 1}}]\n");
+    if (!sc) return;
+    ww_state *st = ww_state_new(sc);
+    const double *e = NULL;
+    while (st->t < 2.0 && step_ok(sc, st) && !events_of(sc, st, WW_SE_ROD_CAST, &e)) {}
+    ENSURE(e != NULL);
+    if (e) {
+        /* forward flattened: -z; right of -z (y up) is +x */
+        double start[3] = {2.0 + 0.3, 3.0 - 0.2, 4.0 - 0.5};
+        for (int i = 0; i < 3; i++) ENSURE_NEAR(e[2 + i], start[i], LURE_FLIGHT_TOL);
+        ENSURE_NEAR(e[5], 16.0, 0.0);
+        double a = ww_m_rad(10.0), v0[3] = {0.0, 16.0 * sin(a), -16.0 * cos(a)}, p[3];
+        closed_form(start, v0, WW_G, 0.4, sc->dt, p);
+        for (int i = 0; i < 3; i++) ENSURE_NEAR(st->lure_pos[i], p[i], LURE_FLIGHT_TOL);
+    }
+    ww_state_free(st);
+    ww_scene_free(sc);
+}
+
 TEST(fishing_charge_maps_longer_holds_to_flatter_faster_casts) {
     ww_scene *sc = load("objects: {rod: {angle: [10, 40], speed: [6, 16]}}\n");
     if (!sc) return;
@@ -324,7 +353,15 @@ static void run_pond(int count, double radius, double until, fishing_log *log) {
         log->reels += events_of(sc, st, WW_SE_REEL, NULL);
         log->escapes += events_of(sc, st, WW_SE_FISH_ESCAPE, NULL);
         int fighting = 0;
-        for (int i = 0; i < count; i++) fighting += st->fish_mode[i] == WW_FISH_FIGHTING;
+        for (int i = 0; i < count; i++) {
+            if (st->fish_mode[i] != WW_FISH_FIGHTING) continue;
+            fighting++;
+            /* the mouth, half a length ahead of the centre, at the lure (XZ) */
+            const double *p = st->fish_pos + 3 * i;
+            double half = 0.5 * sc->fish.length, yaw = st->fish_yaw[i];
+            ENSURE_NEAR(p[0] + half * cos(yaw), st->lure_pos[0], FISH_MOUTH_TOL);
+            ENSURE_NEAR(p[2] + half * sin(yaw), st->lure_pos[2], FISH_MOUTH_TOL);
+        }
         if (fighting > log->most_fighting) log->most_fighting = fighting;
         ENSURE((int)st->fish_caught[0] == log->catches);
     }
