@@ -48,7 +48,7 @@ static void rod_defaults(ww_rod_desc *r) {
                        .bite_radius = 2.0,
                        .attract = 6.0,
                        .float_height = 0.02,
-                       .float_drag = 2.0,
+                       .float_drag = 5.0,
                        .hook_depth = 0.4,
                        .splash = 0.03};
 }
@@ -178,12 +178,14 @@ static ww_result compile_fish(ctx *c, const section *objects) {
 
     /* values fine alone, wrong together */
     const ww_node *at = s.map;
+    const ww_node *max_speed = ww_node_find(s.map, "max_speed");
     if (f->max_speed < f->speed)
-        return wwc_fail(c, WW_E_INCONSISTENT, at, "%s: max_speed %g m/s is below speed %g m/s",
+        return wwc_fail(c, WW_E_INCONSISTENT, max_speed ? max_speed : at, "%s: max_speed %g m/s is below speed %g m/s",
                         s.what, f->max_speed, f->speed);
     double floor = c->sc->water_level - c->sc->water_depth;
+    const ww_node *center = ww_node_find(s.map, "center");
     if (!(f->center[1] < c->sc->water_level && f->center[1] > floor))
-        return wwc_fail(c, WW_E_INCONSISTENT, at,
+        return wwc_fail(c, WW_E_INCONSISTENT, center ? center : at,
                         "%s: center y %g m is not in the water (seabed %g m, level %g m)", s.what,
                         f->center[1], floor, c->sc->water_level);
     if (2.0 * f->margin >= c->sc->water_depth)

@@ -21,7 +21,7 @@
     X(double, fish_vel, 3 * WW_N_FISH(sc), "fish velocities, m/s (3 per fish)")                  \
     X(double, fish_yaw, WW_N_FISH(sc), "heading, rad, 0 = +x, pi/2 = +z (1 per fish)")           \
     X(double, fish_yaw_rate, WW_N_FISH(sc), "yaw rate of the last step, rad/s (1 per fish)")     \
-    X(double, fish_bank, WW_N_FISH(sc), "bank (roll) angle, rad, + rolls into a left turn (1 per fish)") \
+    X(double, fish_bank, WW_N_FISH(sc), "bank (roll) angle, rad, the sign of the yaw rate (1 per fish)") \
     X(double, fish_mode, WW_N_FISH(sc), "0 swimming, 1 fighting, 2 caught (away) (1 per fish)")  \
     X(double, fish_timer, WW_N_FISH(sc), "fighting: seconds fought; caught: seconds to respawn (1 per fish)") \
     X(double, fish_fight, WW_N_FISH(sc), "duration of this fight, s (1 per fish)")               \

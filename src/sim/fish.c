@@ -291,23 +291,10 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
     st->fish_bank[i] = ww_m_clamp(bank, -f->max_bank, f->max_bank);
 }
 
-static void bite(const ww_scene *sc, ww_state *st, int i) {
-    const ww_fish_desc *f = &sc->fish;
-    const double *p = st->fish_pos + 3 * i;
-    st->fish_mode[i] = WW_FISH_FIGHTING;
-    st->fish_timer[i] = 0.0;
-    st->fish_fight[i] = f->fight[0] + (f->fight[1] - f->fight[0]) * draw(sc, st, i, K_FIGHT);
-    st->fish_goal[i] = atan2(st->lure_pos[2] - p[2], st->lure_pos[0] - p[0]);
-    st->rod_fish[0] = (double)i;
-    st->lure_state[0] = WW_LURE_HOOKED;
-    ww_emit(sc, st, WW_SE_BITE, i, p, 0.0, (double)i);
-}
-
-/* the mouth at the hook, heading wiggling; caught when the fight's time is up */
-static void fight(const ww_scene *sc, ww_state *st, int i) {
+/* the mouth at the hook, the heading wiggling about the bite's direction, tau into the fight */
+static void anchor(const ww_scene *sc, ww_state *st, int i, double tau) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i;
-    double tau = st->fish_timer[i] += sc->dt;
     double yaw0 = st->fish_yaw[i];
     double yaw = wrap_pi(st->fish_goal[i] + f->wiggle[0] * sin(WW_TAU * f->wiggle[1] * tau));
     double half = 0.5 * f->length;
@@ -319,10 +306,30 @@ static void fight(const ww_scene *sc, ww_state *st, int i) {
     st->fish_yaw[i] = yaw;
     st->fish_yaw_rate[i] = wrap_pi(yaw - yaw0) / sc->dt;
     st->fish_bank[i] = 0.0;
+}
+
+static void bite(const ww_scene *sc, ww_state *st, int i) {
+    const ww_fish_desc *f = &sc->fish;
+    const double *p = st->fish_pos + 3 * i;
+    st->fish_mode[i] = WW_FISH_FIGHTING;
+    st->fish_timer[i] = 0.0;
+    st->fish_fight[i] = f->fight[0] + (f->fight[1] - f->fight[0]) * draw(sc, st, i, K_FIGHT);
+    st->fish_goal[i] = atan2(st->lure_pos[2] - p[2], st->lure_pos[0] - p[0]);
+    st->rod_fish[0] = (double)i;
+    st->lure_state[0] = WW_LURE_HOOKED;
+    ww_emit(sc, st, WW_SE_BITE, i, p, 0.0, (double)i);
+    anchor(sc, st, i, 0.0);
+}
+
+/* fighting on the line; caught when the fight's time is up */
+static void fight(const ww_scene *sc, ww_state *st, int i) {
+    const ww_fish_desc *f = &sc->fish;
+    double tau = st->fish_timer[i] += sc->dt;
+    anchor(sc, st, i, tau);
     if (tau < st->fish_fight[i]) return;
 
     st->fish_caught[0] += 1.0;
-    ww_emit(sc, st, WW_SE_CATCH, i, p, st->fish_caught[0], 0.0);
+    ww_emit(sc, st, WW_SE_CATCH, i, st->fish_pos + 3 * i, st->fish_caught[0], 0.0);
     st->fish_mode[i] = WW_FISH_AWAY;
     st->fish_timer[i] = f->respawn;
     ww_rod_reel(sc, st);
