@@ -1,9 +1,9 @@
 /* step.c - the fixed-step driver: t = start + n dt with an integer n, script events applied on
  * the first step at or after their time, then each system present in the scene, in seed 000's
  * order: cubes, stones, rod and lure, fish, chest, bubbles, boat (which pushes the cubes); then
- * the sky clock and the camera (boat seat, collision). The wave phases and the camera path are
- * taken first, so every system reads the surface at the step's own time and a throw or cast
- * starts from this step's camera.
+ * the sky clock and the camera (path, boat seat, collision). The wave phases are taken first, so
+ * every system reads the surface at the step's own time; systems read the camera of the step
+ * before (the final one: seat and collision included), and at step 0 the path's first pose.
  */
 #include "sim/step.h"
 
@@ -45,7 +45,6 @@ static void update_systems(const ww_scene *sc, ww_state *st) {
     ww_waves_phases(sc, st->t, st->wave_phase);
     ww_events_clear(sc, st);
     ww_ripples_prune(sc, st);
-    ww_camera_update(sc, st); /* the path first: a throw or cast at this step starts from it */
     apply_events(sc, st);
     if (sc->cubes.on) ww_cubes_step(sc, st);
     if (sc->stones.on) ww_stones_step(sc, st);
@@ -55,6 +54,7 @@ static void update_systems(const ww_scene *sc, ww_state *st) {
     if (sc->bubbles.on) ww_bubbles_step(sc, st);
     if (sc->boat.on) ww_boat_step(sc, st);
     ww_sky_update(sc, st);
+    ww_camera_update(sc, st);
     if (sc->boat.on) ww_boat_camera(sc, st);
     if (sc->camera_collide) ww_camera_collide(sc, st);
 }
@@ -62,6 +62,7 @@ static void update_systems(const ww_scene *sc, ww_state *st) {
 /* each system's step-0 state, before the step-0 events and updates */
 static void reset_systems(const ww_scene *sc, ww_state *st) {
     ww_waves_phases(sc, st->t, st->wave_phase);
+    ww_camera_update(sc, st); /* a throw or cast at step 0 starts from the path's first pose */
     if (sc->cubes.on) ww_cubes_reset(sc, st);
     if (sc->stones.on) ww_stones_reset(sc, st);
     if (sc->rod.on) ww_rod_reset(sc, st);
