@@ -160,13 +160,6 @@ static int sweep(const solid *s, const double p[3], const double d[3], double *u
     return 1;
 }
 
-/* the camera at the boat's seat: not where its path puts it */
-static int in_seat(const ww_scene *sc, const ww_state *st) {
-    double p[3], fwd[3], fov;
-    ww_camera_eval(sc, st->t, p, fwd, &fov);
-    return p[0] != st->cam_pos[0] || p[1] != st->cam_pos[1] || p[2] != st->cam_pos[2];
-}
-
 void ww_camera_collide(const ww_scene *sc, ww_state *st) {
     if (!WW_N_SOLIDS(sc)) return;
     double *prev = st->collide_prev, *cs = st->collide_state, m = sc->near_clip;
@@ -174,7 +167,8 @@ void ww_camera_collide(const ww_scene *sc, ww_state *st) {
     int n = solid_count(sc), what = -1, index = 0;
     solid s;
 
-    if (sc->boat.on && in_seat(sc, st)) {
+    /* in the boat's seat the camera rides inside the hull's sphere by design (sim/boat.h) */
+    if (sc->boat.on && st->boat_camera[0] == 1.0) {
         for (int a = 0; a < 3; a++) prev[a] = p1[a];
         cs[0] = cs[1] = 0.0;
         return;
