@@ -88,6 +88,7 @@ golden: $(BIN)
 bench: $(BIN)
 	./$(BIN) bench render
 	./$(BIN) bench waves
+	./$(BIN) bench sim
 
 # libFuzzer on the scene loader (clang; not part of test). FUZZ_SECONDS=60 by default.
 FUZZ_SECONDS ?= 60
