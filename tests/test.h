@@ -73,6 +73,12 @@ const char *ww_test_bin(void);
 const char *ww_test_tmpdir(const char *name);
 /* read a whole file; returns malloc'd NUL-terminated bytes and its length, or NULL */
 char *ww_test_read_file(const char *path, size_t *len);
+/* run the binary under test with args (a shell word list); exit status as ww_test_run */
+int ww_test_ww(const char *args, const char *out_path, const char *err_path);
+/* write text to path; 0 on success */
+int ww_test_write_text(const char *path, const char *text);
+/* 1 when the file exists and contains needle */
+int ww_test_file_contains(const char *path, const char *needle);
 /* 1 when a GL backend can be opened here */
 int ww_test_have_gl(void);
 

@@ -22,11 +22,6 @@
 
 static char cmd[2048];
 
-static int run_ww(const char *args, const char *out, const char *errf) {
-    snprintf(cmd, sizeof cmd, "%s %s", ww_test_bin(), args);
-    return ww_test_run(cmd, out, errf);
-}
-
 static int count_files(const char *dir) {
     DIR *d = opendir(dir);
     if (!d) return -1;
@@ -38,40 +33,33 @@ static int count_files(const char *dir) {
     return n;
 }
 
-static int file_contains(const char *path, const char *needle) {
-    char *s = ww_test_read_file(path, NULL);
-    int found = s && strstr(s, needle);
-    free(s);
-    return found;
-}
-
 TEST(cli_help_and_version) {
     char dir[512], out[600], args[1024];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_help"));
     snprintf(out, sizeof out, "%s/out.txt", dir);
-    ENSURE_EQ_INT(run_ww("--help", out, NULL), 0);
-    ENSURE(file_contains(out, "render"));
-    ENSURE_EQ_INT(run_ww("--version", out, NULL), 0);
-    ENSURE(file_contains(out, "waterworld 0."));
+    ENSURE_EQ_INT(ww_test_ww("--help", out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "render"));
+    ENSURE_EQ_INT(ww_test_ww("--version", out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "waterworld 0."));
     const char *cmds[] = {"render", "simulate", "plan", "bench"};
     for (int i = 0; i < 4; i++) {
         snprintf(args, sizeof args, "%s --help", cmds[i]);
-        ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
-        ENSURE(file_contains(out, "usage: waterworld"));
+        ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+        ENSURE(ww_test_file_contains(out, "usage: waterworld"));
     }
-    ENSURE_EQ_INT(run_ww("", NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("frobnicate", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("frobnicate", NULL, NULL), 2);
 }
 
 TEST(cli_usage_errors_exit_2) {
-    ENSURE_EQ_INT(run_ww("render", NULL, NULL), 2);                                   /* no scene */
-    ENSURE_EQ_INT(run_ww("render scenes/minimal.yaml --format gif", NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("render scenes/minimal.yaml --backend vulkan", NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("render scenes/minimal.yaml --size 10x10", NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("render scenes/minimal.yaml --frames 5:3", NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("render scenes/minimal.yaml --frames 0:31", NULL, NULL), 2); /* 30 frames */
-    ENSURE_EQ_INT(run_ww("simulate scenes/minimal.yaml --bogus", NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("simulate scenes/minimal.yaml --frames", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("render", NULL, NULL), 2);                                   /* no scene */
+    ENSURE_EQ_INT(ww_test_ww("render scenes/minimal.yaml --format gif", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("render scenes/minimal.yaml --backend vulkan", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("render scenes/minimal.yaml --size 10x10", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("render scenes/minimal.yaml --frames 5:3", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("render scenes/minimal.yaml --frames 0:31", NULL, NULL), 2); /* 30 frames */
+    ENSURE_EQ_INT(ww_test_ww("simulate scenes/minimal.yaml --bogus", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("simulate scenes/minimal.yaml --frames", NULL, NULL), 2);
 }
 
 TEST(cli_bad_scene_exit_2_with_place_and_nothing_written) {
@@ -85,17 +73,17 @@ TEST(cli_bad_scene_exit_2_with_place_and_nothing_written) {
     fputs("time: {fps: 30}\nwater:\n  waves:\n    list:\n      - {direction: 0, wavelenght: 3, amplitude: 0.1}\n", f);
     fclose(f);
     snprintf(args, sizeof args, "render build/cli_bad.yaml -o %s", outdir);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
-    ENSURE(file_contains(errf, "build/cli_bad.yaml:5:"));
-    ENSURE(file_contains(errf, "wavelength"));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, "build/cli_bad.yaml:5:"));
+    ENSURE(ww_test_file_contains(errf, "wavelength"));
     struct stat sb;
     ENSURE(stat(outdir, &sb) != 0); /* not even the folder */
     /* a --set error names the override */
     snprintf(args, sizeof args, "simulate scenes/minimal.yaml --set water.waves.list[0].amplitude=-1");
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
-    ENSURE(file_contains(errf, "--set[1]:1:"));
-    ENSURE_EQ_INT(run_ww("simulate does/not/exist.yaml", NULL, errf), 2);
-    ENSURE(file_contains(errf, "does/not/exist.yaml"));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, "--set[1]:1:"));
+    ENSURE_EQ_INT(ww_test_ww("simulate does/not/exist.yaml", NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, "does/not/exist.yaml"));
 }
 
 TEST(cli_runtime_failures_exit_3) {
@@ -104,14 +92,14 @@ TEST(cli_runtime_failures_exit_3) {
     snprintf(errf, sizeof errf, "%s/err.txt", dir);
     /* an output folder that cannot be made: a path component is a regular file */
     snprintf(args, sizeof args, "render scenes/minimal.yaml --frames 1 -o %s/err.txt/frames", dir);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 3);
-    ENSURE(file_contains(errf, "err.txt/frames"));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 3);
+    ENSURE(ww_test_file_contains(errf, "err.txt/frames"));
     /* a backend that cannot open: the message says why and what to do */
     if (!ww_test_have_gl()) return;
     snprintf(cmd, sizeof cmd, "WW_EGL_DEVICE=99 %s render scenes/minimal.yaml --frames 1 --backend egl -o %s/x",
              ww_test_bin(), dir);
     ENSURE_EQ_INT(ww_test_run(cmd, NULL, errf), 3);
-    ENSURE(file_contains(errf, "WW_EGL_DEVICE"));
+    ENSURE(ww_test_file_contains(errf, "WW_EGL_DEVICE"));
     ENSURE_EQ_INT(count_files(dir), 1); /* only err.txt: no frame folder */
 }
 
@@ -120,8 +108,8 @@ TEST(cli_simulate_hash_pinned_and_repeatable) {
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_hash"));
     snprintf(a, sizeof a, "%s/a.txt", dir);
     snprintf(b, sizeof b, "%s/b.txt", dir);
-    ENSURE_EQ_INT(run_ww("simulate scenes/demo.yaml --hash", a, NULL), 0);
-    ENSURE_EQ_INT(run_ww("simulate scenes/demo.yaml --hash", b, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww("simulate scenes/demo.yaml --hash", a, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww("simulate scenes/demo.yaml --hash", b, NULL), 0);
     char *ha = ww_test_read_file(a, NULL), *hb = ww_test_read_file(b, NULL);
     ENSURE(ha && hb);
     if (ha && hb) {
@@ -131,7 +119,7 @@ TEST(cli_simulate_hash_pinned_and_repeatable) {
     free(ha);
     free(hb);
     /* a --set that changes how the sea moves changes the hash */
-    ENSURE_EQ_INT(run_ww("simulate scenes/demo.yaml --hash --set water.waves.list[0].wavelength=17", b, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww("simulate scenes/demo.yaml --hash --set water.waves.list[0].wavelength=17", b, NULL), 0);
     ha = ww_test_read_file(a, NULL);
     hb = ww_test_read_file(b, NULL);
     ENSURE(ha && hb && strcmp(ha, hb) != 0);
@@ -144,7 +132,7 @@ TEST(cli_simulate_trace_one_line_per_frame) {
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_trace"));
     snprintf(tr, sizeof tr, "%s/trace.jsonl", dir);
     snprintf(args, sizeof args, "simulate scenes/demo.yaml --frames 10:20 --trace %s", tr);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
     char *s = ww_test_read_file(tr, NULL);
     ENSURE(s != NULL);
     if (!s) return;
@@ -162,16 +150,16 @@ TEST(cli_plan_lists_systems_and_passes) {
     char dir[512], out[600];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_plan"));
     snprintf(out, sizeof out, "%s/plan.txt", dir);
-    ENSURE_EQ_INT(run_ww("plan scenes/demo.yaml", out, NULL), 0);
-    ENSURE(file_contains(out, "waves"));
-    ENSURE(file_contains(out, "5 gerstner waves"));
-    ENSURE(file_contains(out, "main"));
-    ENSURE(file_contains(out, "tonemap"));
-    ENSURE(file_contains(out, "1280x720"));
-    ENSURE(file_contains(out, "gpu memory"));
+    ENSURE_EQ_INT(ww_test_ww("plan scenes/demo.yaml", out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "waves"));
+    ENSURE(ww_test_file_contains(out, "5 gerstner waves"));
+    ENSURE(ww_test_file_contains(out, "main"));
+    ENSURE(ww_test_file_contains(out, "tonemap"));
+    ENSURE(ww_test_file_contains(out, "1280x720"));
+    ENSURE(ww_test_file_contains(out, "gpu memory"));
     /* a flat sea runs no wave system */
-    ENSURE_EQ_INT(run_ww("plan scenes/minimal.yaml --set water.waves.model=flat", out, NULL), 0);
-    ENSURE(!file_contains(out, "gerstner waves"));
+    ENSURE_EQ_INT(ww_test_ww("plan scenes/minimal.yaml --set water.waves.model=flat", out, NULL), 0);
+    ENSURE(!ww_test_file_contains(out, "gerstner waves"));
 }
 
 TEST(cli_render_slice_is_byte_identical_to_full_run) {
@@ -181,9 +169,9 @@ TEST(cli_render_slice_is_byte_identical_to_full_run) {
     snprintf(full, sizeof full, "%s/full", dir);
     snprintf(part, sizeof part, "%s/part", dir);
     snprintf(args, sizeof args, "render scenes/demo.yaml --size 256x144 --frames 32 -o %s --quiet", full);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
     snprintf(args, sizeof args, "render scenes/demo.yaml --size 256x144 --frames 30:32 -o %s --quiet", part);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
     ENSURE_EQ_INT(count_files(full), 32);
     ENSURE_EQ_INT(count_files(part), 2);
     for (int f = 30; f < 32; f++) {
@@ -212,7 +200,7 @@ TEST(cli_render_exr_reads_back_linear_hdr) {
     char dir[512], args[1024], path[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_exr"));
     snprintf(args, sizeof args, "render scenes/minimal.yaml --format exr --frames 1 -o %s --quiet", dir);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
     snprintf(path, sizeof path, "%s/frame_00000.exr", dir);
     ww_image hdr, ldr;
     ww_error err = {0};
@@ -222,7 +210,7 @@ TEST(cli_render_exr_reads_back_linear_hdr) {
     ENSURE_EQ_INT(hdr.channels, 4);
     /* the same frame as PNG: the tone-mapped EXR pixel gives the PNG pixel */
     snprintf(args, sizeof args, "render scenes/minimal.yaml --format png --frames 1 -o %s --quiet", dir);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
     snprintf(path, sizeof path, "%s/frame_00000.png", dir);
     ENSURE_EQ_INT(ww_read_png(path, &ldr, &err), WW_OK);
     if (hdr.f32 && ldr.u8) {

@@ -56,14 +56,6 @@ static int is_dir(const char *path) {
     return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
 }
 
-static void write_text(const char *path, const char *text) {
-    FILE *f = fopen(path, "wb");
-    ENSURE(f != NULL);
-    if (!f) return;
-    fputs(text, f);
-    fclose(f);
-}
-
 /* ---- atomic writes and folders ---- */
 
 TEST(io_atomic_write_into_missing_folder_leaves_nothing) {
@@ -81,7 +73,7 @@ TEST(io_atomic_write_replaces_existing_file_whole) {
     char dir[512], path[600];
     tmpdir("io_atomic_replace", dir, sizeof dir);
     snprintf(path, sizeof path, "%s/f.txt", dir);
-    write_text(path, "the old content, longer than the new one\n");
+    ENSURE(ww_test_write_text(path, "the old content, longer than the new one\n") == 0);
     ww_error err;
     ENSURE_EQ_INT(ww_write_file_atomic(path, "new\n", 4, &err), WW_OK);
     size_t n = 0;
@@ -141,7 +133,7 @@ TEST(io_make_dirs_nested_existing_and_file_in_the_way) {
     ENSURE_EQ_INT(ww_make_dirs(deep, &err), WW_OK); /* already there */
     ENSURE_EQ_INT(ww_make_dirs(dir, &err), WW_OK);
 
-    write_text(file, "x");
+    ENSURE(ww_test_write_text(file, "x") == 0);
     ENSURE_EQ_INT(ww_make_dirs(under, &err), WW_E_IO);
     ENSURE(strstr(err.msg, "plain/x/y") != NULL);
     ENSURE(strstr(err.msg, strerror(ENOTDIR)) != NULL);
@@ -159,7 +151,7 @@ TEST(io_read_file_missing_and_folder) {
     ENSURE_EQ_INT(ww_read_file(path, &data, &len, &err), WW_E_NOFILE);
     ENSURE(data == NULL && len == 0);
     ENSURE_EQ_INT(ww_read_file(dir, &data, &len, &err), WW_E_NOFILE);
-    write_text(path, "hello");
+    ENSURE(ww_test_write_text(path, "hello") == 0);
     ENSURE_EQ_INT(ww_read_file(path, &data, &len, &err), WW_OK);
     ENSURE(data && len == 5 && memcmp(data, "hello", 6) == 0);
     free(data);
@@ -364,7 +356,7 @@ TEST(io_png_bad_inputs) {
     tmpdir("io_png_bad", dir, sizeof dir);
     snprintf(missing, sizeof missing, "%s/missing.png", dir);
     snprintf(text, sizeof text, "%s/text.png", dir);
-    write_text(text, "this is not a picture\n");
+    ENSURE(ww_test_write_text(text, "this is not a picture\n") == 0);
     ww_image im;
     ww_error err;
     ENSURE_EQ_INT(ww_read_png(missing, &im, &err), WW_E_NOFILE);
@@ -663,7 +655,7 @@ TEST(io_exr_bad_and_truncated_inputs_fail_cleanly) {
     ENSURE(strstr(err.msg, "missing.exr") != NULL);
     int frame;
     ENSURE_EQ_INT(ww_read_exr_meta(missing, &frame, NULL, NULL, 0, NULL, 0, &err), WW_E_NOFILE);
-    write_text(text, "this is not a picture\n");
+    ENSURE(ww_test_write_text(text, "this is not a picture\n") == 0);
     ENSURE_EQ_INT(ww_read_exr(text, &im, &err), WW_E_SYNTAX);
     ENSURE(im.f32 == NULL && im.u8 == NULL);
 

@@ -19,28 +19,6 @@
 /* the JSON lines print %.17g, which round-trips a double exactly */
 #define JSON_ROUND_TRIP_TOL 0.0
 
-static char cmd[4096];
-
-static int run_ww(const char *args, const char *out, const char *errf) {
-    snprintf(cmd, sizeof cmd, "%s %s", ww_test_bin(), args);
-    return ww_test_run(cmd, out, errf);
-}
-
-static void write_text(const char *path, const char *text) {
-    FILE *f = fopen(path, "w");
-    ENSURE(f != NULL);
-    if (!f) return;
-    fputs(text, f);
-    ENSURE(fclose(f) == 0);
-}
-
-static int file_contains(const char *path, const char *needle) {
-    char *s = ww_test_read_file(path, NULL);
-    int found = s && strstr(s, needle);
-    free(s);
-    return found;
-}
-
 /* ---- a small JSON validator (RFC 8259 grammar, no semantics) ------------------------------- */
 
 static const char *json_ws(const char *p) {
@@ -164,8 +142,8 @@ TEST(simtools_script_merge_order) {
     char scene[512], script[512];
     snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
     snprintf(script, sizeof script, "%s/script.yaml", dir);
-    write_text(scene, script_scene);
-    write_text(script, script_file);
+    ENSURE(ww_test_write_text(scene, script_scene) == 0);
+    ENSURE(ww_test_write_text(script, script_file) == 0);
     ww_scene *sc = NULL;
     ww_error err = {0};
     ENSURE_EQ_INT(ww_scene_load_with_script(scene, script, NULL, 0, &sc, &err), WW_OK);
@@ -207,27 +185,27 @@ TEST(simtools_script_same_as_inline) {
     snprintf(inline_scene, sizeof inline_scene, "%s/inline.yaml", dir);
     snprintf(out1, sizeof out1, "%s/h1.txt", dir);
     snprintf(out2, sizeof out2, "%s/h2.txt", dir);
-    write_text(scene, script_scene);
-    write_text(script, script_file);
-    write_text(inline_scene,
-               "time: {dt: 1/120, fps: 30, duration: 3}\n"
-               "script:\n"
-               "  - {t: 2, ripple: {at: [1, 1]}}\n"
-               "  - {t: 1, time_of_day: 5}\n"
-               "  - {t: 1, time_of_day: 9}\n"
-               "  - {t: 0.5, ripple: {at: [-1, 2], amplitude: 0.2}}\n");
+    ENSURE(ww_test_write_text(scene, script_scene) == 0);
+    ENSURE(ww_test_write_text(script, script_file) == 0);
+    ENSURE(ww_test_write_text(inline_scene, "time: {dt: 1/120, fps: 30, duration: 3}\n"
+                                            "script:\n"
+                                            "  - {t: 2, ripple: {at: [1, 1]}}\n"
+                                            "  - {t: 1, time_of_day: 5}\n"
+                                            "  - {t: 1, time_of_day: 9}\n"
+                                            "  - {t: 0.5, ripple: {at: [-1, 2], amplitude: 0.2}}\n") ==
+           0);
     char args[2048];
     snprintf(args, sizeof args, "simulate %s --script %s --hash", scene, script);
-    ENSURE_EQ_INT(run_ww(args, out1, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out1, NULL), 0);
     snprintf(args, sizeof args, "simulate %s --hash", inline_scene);
-    ENSURE_EQ_INT(run_ww(args, out2, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out2, NULL), 0);
     char *a = ww_test_read_file(out1, NULL), *b = ww_test_read_file(out2, NULL);
     ENSURE(a && b && strlen(a) == 17 && strcmp(a, b) == 0);
     free(a);
     free(b);
     /* without the script the hash differs (the events do something) */
     snprintf(args, sizeof args, "simulate %s --hash", scene);
-    ENSURE_EQ_INT(run_ww(args, out2, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out2, NULL), 0);
     a = ww_test_read_file(out1, NULL);
     b = ww_test_read_file(out2, NULL);
     ENSURE(a && b && strcmp(a, b) != 0);
@@ -246,7 +224,7 @@ TEST(simtools_script_errors) {
     char scene[512], script[512];
     snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
     snprintf(script, sizeof script, "%s/script.yaml", dir);
-    write_text(scene, script_scene);
+    ENSURE(ww_test_write_text(scene, script_scene) == 0);
     static const bad_script cases[] = {
         /* an action misspelt: unknown key at the key */
         {"script:\n  - {t: 1, time_of_day: 3}\n  - {t: 2, rippel: {at: [0, 0]}}\n",
@@ -270,7 +248,7 @@ TEST(simtools_script_errors) {
         {"script: [\n", WW_E_SYNTAX, 0, 0},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        write_text(script, cases[i].text);
+        ENSURE(ww_test_write_text(script, cases[i].text) == 0);
         ww_scene *sc = NULL;
         ww_error err = {0};
         ww_result r = ww_scene_load_with_script(scene, script, NULL, 0, &sc, &err);
@@ -310,28 +288,28 @@ TEST(simtools_script_cli) {
     snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
     snprintf(script, sizeof script, "%s/bad.yaml", dir);
     snprintf(errf, sizeof errf, "%s/stderr.txt", dir);
-    write_text(scene, script_scene);
-    write_text(script, "script:\n  - {t: 1, time_of_day: 30}\n");
+    ENSURE(ww_test_write_text(scene, script_scene) == 0);
+    ENSURE(ww_test_write_text(script, "script:\n  - {t: 1, time_of_day: 30}\n") == 0);
 
     /* bad input: exit 2, "FILE:LINE:COL: error:" of the script file */
     char where[600];
     snprintf(where, sizeof where, "%s:2:25: error:", script);
     snprintf(args, sizeof args, "simulate %s --script %s", scene, script);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
-    ENSURE(file_contains(errf, where));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, where));
     snprintf(args, sizeof args, "render %s --script %s --format none", scene, script);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
-    ENSURE(file_contains(errf, where));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, where));
     snprintf(args, sizeof args, "probe %s --script %s --at 0,0", scene, script);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
-    ENSURE(file_contains(errf, where));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, where));
     /* sweep does not take one */
     snprintf(args, sizeof args, "sweep %s --script %s --vary seed=1,2", scene, script);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
-    ENSURE(file_contains(errf, "--script"));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, "--script"));
     /* a missing value */
     snprintf(args, sizeof args, "simulate %s --script", scene);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
 }
 
 /* ---- events --------------------------------------------------------------------------------- */
@@ -407,19 +385,19 @@ TEST(simtools_events_cli) {
     snprintf(path, sizeof path, "%s/events.jsonl", dir);
     snprintf(out, sizeof out, "%s/stdout.txt", dir);
     snprintf(args, sizeof args, "simulate scenes/ripples.yaml --frames 10 --events %s", path);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
     size_t len = 99;
     char *text = ww_test_read_file(path, &len);
     ENSURE(text != NULL && len == 0);
     free(text);
     snprintf(args, sizeof args, "simulate scenes/ripples.yaml --frames 10 --events - --hash");
-    ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     text = ww_test_read_file(out, &len);
     ENSURE(text != NULL && len == 17);
     free(text);
     /* trace and events into one file: refused */
     snprintf(args, sizeof args, "simulate scenes/ripples.yaml --events %s --trace %s", path, path);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 2);
 }
 
 /* the real systems of scenes/soak.yaml: every line parses and names a known kind; its stones
@@ -429,7 +407,7 @@ TEST(simtools_events_soak_scene) {
     char path[512], args[2048];
     snprintf(path, sizeof path, "%s/events.jsonl", dir);
     snprintf(args, sizeof args, "simulate scenes/soak.yaml --frames 450 --events %s", path);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
     char *text = ww_test_read_file(path, NULL);
     ENSURE(text != NULL);
     if (!text) return;
@@ -495,12 +473,12 @@ TEST(simtools_soak_short) {
     const char *dir = ww_test_tmpdir("simtools_soak_short");
     char errf[512];
     snprintf(errf, sizeof errf, "%s/stderr.txt", dir);
-    ENSURE_EQ_INT(run_ww("simulate scenes/soak.yaml --set time.dt=1/120 --set time.fps=30 "
+    ENSURE_EQ_INT(ww_test_ww("simulate scenes/soak.yaml --set time.dt=1/120 --set time.fps=30 "
                          "--set time.duration=60 --stats",
                          NULL, errf),
                   0);
-    ENSURE(file_contains(errf, "(7196 steps of 0.00833333 s)"));
-    ENSURE(file_contains(errf, "simulated s per wall s"));
+    ENSURE(ww_test_file_contains(errf, "(7196 steps of 0.00833333 s)"));
+    ENSURE(ww_test_file_contains(errf, "simulated s per wall s"));
 }
 
 /* ---- bench sim ------------------------------------------------------------------------------ */
@@ -511,18 +489,18 @@ TEST(simtools_bench_sim_tiny) {
     snprintf(out, sizeof out, "%s/stdout.txt", dir);
     snprintf(png, sizeof png, "%s/sim.png", dir);
     snprintf(args, sizeof args, "bench sim --tiny scenes/soak.yaml -o %s", dir);
-    ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
-    ENSURE(file_contains(out, "dt: soak.yaml, 1 s simulated, error against dt = 1/1920"));
-    ENSURE(file_contains(out, "\n1/30 "));
-    ENSURE(file_contains(out, "\n1/240 "));
-    ENSURE(file_contains(out, "cube heave m"));
-    ENSURE(file_contains(out, "sim s/wall s"));
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "dt: soak.yaml, 1 s simulated, error against dt = 1/1920"));
+    ENSURE(ww_test_file_contains(out, "\n1/30 "));
+    ENSURE(ww_test_file_contains(out, "\n1/240 "));
+    ENSURE(ww_test_file_contains(out, "cube heave m"));
+    ENSURE(ww_test_file_contains(out, "sim s/wall s"));
     struct stat sb;
     ENSURE(stat(png, &sb) == 0 && sb.st_size > 1000);
 
     /* --json: one object per line */
     snprintf(args, sizeof args, "bench sim --tiny --json scenes/soak.yaml -o %s", dir);
-    ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     char *text = ww_test_read_file(out, NULL);
     ENSURE(text != NULL);
     /* one speed line, four dt lines, the figure */

@@ -28,27 +28,6 @@
  * amplitude is 0.1 m, damped by e^(-alpha r) e^(-beta age): far more than this) */
 #define RIPPLE_SEEN_MIN 1e-4
 
-static char cmd[4096];
-
-static int run_ww(const char *args, const char *out, const char *errf) {
-    snprintf(cmd, sizeof cmd, "%s %s", ww_test_bin(), args);
-    return ww_test_run(cmd, out, errf);
-}
-
-static int write_text(const char *path, const char *text) {
-    FILE *f = fopen(path, "w");
-    if (!f) return -1;
-    fputs(text, f);
-    return fclose(f);
-}
-
-static int file_contains(const char *path, const char *needle) {
-    char *s = ww_test_read_file(path, NULL);
-    int found = s && strstr(s, needle);
-    free(s);
-    return found;
-}
-
 static const char gerstner_scene[] =
     "time: {dt: 1/120, fps: 30, duration: 2}\n"
     "water:\n"
@@ -218,13 +197,13 @@ TEST(tools_probe_rows_match_water_height) {
     snprintf(scene, sizeof scene, "%s/sea.yaml", dir);
     snprintf(out, sizeof out, "%s/out.csv", dir);
     snprintf(errf, sizeof errf, "%s/err.txt", dir);
-    ENSURE(write_text(scene, gerstner_scene) == 0);
+    ENSURE(ww_test_write_text(scene, gerstner_scene) == 0);
 
     /* 0.037 s is no multiple of the step: samples fall between steps */
     const double x = 1.5, z = -2.25, t0 = 0.5, t1 = 1.5, every = 0.037;
     snprintf(args, sizeof args, "probe %s --at %g,%g --from %g --to %g --every %g", scene, x, z, t0,
              t1, every);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     csv_row rows[64];
     int n = read_csv(out, 5, "t,height,nx,ny,nz", rows, 64);
     ENSURE_EQ_INT(n, (int)floor((t1 - t0) / every) + 1); /* 28: t0, t0 + every, ... <= t1 */
@@ -252,13 +231,13 @@ TEST(tools_probe_rows_match_water_height) {
 
     /* defaults: start to start + duration, one row per frame */
     snprintf(args, sizeof args, "probe %s --at 0,0", scene);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     csv_row many[128];
     ENSURE_EQ_INT(read_csv(out, 5, "t,height,nx,ny,nz", many, 128), 61); /* 2 s at 30 fps, both ends */
 
     /* several points: x and z columns, one row per point per time */
     snprintf(args, sizeof args, "probe %s --at 0,0 --at=3,4 --from 1 --to 1.1 --every 0.05", scene);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     ENSURE_EQ_INT(read_csv(out, 7, "t,x,z,height,nx,ny,nz", many, 128), 6);
     ENSURE_NEAR(many[1].v[1], 3.0, CSV_PRINT_TOL);
     ENSURE_NEAR(many[1].v[2], 4.0, CSV_PRINT_TOL);
@@ -271,12 +250,12 @@ TEST(tools_probe_ripple_arrives_after_its_event) {
     snprintf(scene, sizeof scene, "%s/pond.yaml", dir);
     snprintf(out, sizeof out, "%s/out.csv", dir);
     snprintf(errf, sizeof errf, "%s/err.txt", dir);
-    ENSURE(write_text(scene, "time: {dt: 1/120, fps: 30, duration: 3}\n"
+    ENSURE(ww_test_write_text(scene, "time: {dt: 1/120, fps: 30, duration: 3}\n"
                              "water: {waves: {model: flat}}\n"
                              "script:\n"
                              "  - {t: 1, ripple: {at: [2, -1], amplitude: 0.1}}\n") == 0);
     snprintf(args, sizeof args, "probe %s --at 2.3,-1 --from 0 --to 2.5 --every 0.01", scene);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     csv_row rows[300];
     int n = read_csv(out, 5, "t,height,nx,ny,nz", rows, 300);
     ENSURE_EQ_INT(n, 251);
@@ -293,7 +272,7 @@ TEST(tools_probe_ripple_arrives_after_its_event) {
     /* at its centre it is there from the step of its event on: a sample between steps (0.995 s)
      * reads the step before, one at 1 s the event's step */
     snprintf(args, sizeof args, "probe %s --at 2,-1 --from 0.985 --to 1.0 --every 0.005", scene);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     ENSURE_EQ_INT(read_csv(out, 5, "t,height,nx,ny,nz", rows, 300), 4);
     ENSURE_NEAR(rows[2].v[0], 0.995, CSV_TIME_TOL);
     ENSURE_NEAR(rows[2].v[1], 0.0, FLAT_TOL);
@@ -301,7 +280,7 @@ TEST(tools_probe_ripple_arrives_after_its_event) {
                rows[3].v[1]);
     /* far away, in the same time, it has not arrived or has died out */
     snprintf(args, sizeof args, "probe %s --at 500,500 --from 0 --to 2.5 --every 0.01", scene);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     n = read_csv(out, 5, "t,height,nx,ny,nz", rows, 300);
     ENSURE_EQ_INT(n, 251);
     double far = 0.0;
@@ -314,7 +293,7 @@ TEST(tools_probe_and_waves_usage_errors_exit_2) {
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_usage"));
     snprintf(scene, sizeof scene, "%s/sea.yaml", dir);
     snprintf(errf, sizeof errf, "%s/err.txt", dir);
-    ENSURE(write_text(scene, gerstner_scene) == 0);
+    ENSURE(ww_test_write_text(scene, gerstner_scene) == 0);
     static const char *const bad[] = {
         "",                                    /* no --at */
         "--at 1",                              /* no z */
@@ -332,29 +311,29 @@ TEST(tools_probe_and_waves_usage_errors_exit_2) {
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         snprintf(args, sizeof args, "probe %s %s", scene, bad[i]);
-        ENSURE_MSG(run_ww(args, NULL, errf) == 2, "probe %s: exit is not 2", bad[i]);
+        ENSURE_MSG(ww_test_ww(args, NULL, errf) == 2, "probe %s: exit is not 2", bad[i]);
     }
-    ENSURE(file_contains(errf, "--bogus"));
-    ENSURE_EQ_INT(run_ww("probe --at 1,2", NULL, NULL), 2);                     /* no scene */
-    ENSURE_EQ_INT(run_ww("probe does/not/exist.yaml --at 1,2", NULL, NULL), 2); /* no file */
+    ENSURE(ww_test_file_contains(errf, "--bogus"));
+    ENSURE_EQ_INT(ww_test_ww("probe --at 1,2", NULL, NULL), 2);                     /* no scene */
+    ENSURE_EQ_INT(ww_test_ww("probe does/not/exist.yaml --at 1,2", NULL, NULL), 2); /* no file */
     snprintf(args, sizeof args, "waves %s", scene);
-    ENSURE_EQ_INT(run_ww(args, NULL, errf), 2); /* nothing asked */
-    ENSURE(file_contains(errf, "--stats"));
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2); /* nothing asked */
+    ENSURE(ww_test_file_contains(errf, "--stats"));
     snprintf(args, sizeof args, "waves %s --stats --bogus", scene);
-    ENSURE_EQ_INT(run_ww(args, NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("bench waves --frames 3", NULL, NULL), 2);
-    ENSURE_EQ_INT(run_ww("bench render -o somewhere", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench waves --frames 3", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench render -o somewhere", NULL, NULL), 2);
     /* help */
     char out[600];
     snprintf(out, sizeof out, "%s/help.txt", dir);
-    ENSURE_EQ_INT(run_ww("probe --help", out, NULL), 0);
-    ENSURE(file_contains(out, "usage: waterworld probe"));
-    ENSURE_EQ_INT(run_ww("waves --help", out, NULL), 0);
-    ENSURE(file_contains(out, "usage: waterworld waves"));
-    ENSURE_EQ_INT(run_ww("bench --help", out, NULL), 0);
-    ENSURE(file_contains(out, "bench waves"));
-    ENSURE_EQ_INT(run_ww("--help", out, NULL), 0);
-    ENSURE(file_contains(out, "probe") && file_contains(out, "waves"));
+    ENSURE_EQ_INT(ww_test_ww("probe --help", out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "usage: waterworld probe"));
+    ENSURE_EQ_INT(ww_test_ww("waves --help", out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "usage: waterworld waves"));
+    ENSURE_EQ_INT(ww_test_ww("bench --help", out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "bench waves"));
+    ENSURE_EQ_INT(ww_test_ww("--help", out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "probe") && ww_test_file_contains(out, "waves"));
 }
 
 /* ---- waves --stats ------------------------------------------------------------------------------ */
@@ -364,7 +343,7 @@ TEST(tools_waves_stats_json_of_sines) {
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_waves_stats"));
     snprintf(scene, sizeof scene, "%s/sines.yaml", dir);
     snprintf(out, sizeof out, "%s/out.json", dir);
-    ENSURE(write_text(scene, "water:\n"
+    ENSURE(ww_test_write_text(scene, "water:\n"
                              "  waves:\n"
                              "    model: sines\n"
                              "    list:\n"
@@ -372,7 +351,7 @@ TEST(tools_waves_stats_json_of_sines) {
                              "      - {direction: 45, wavelength: 4, amplitude: 0.1}\n"
                              "      - {direction: 100, wavelength: 25, amplitude: 0.5}\n") == 0);
     snprintf(args, sizeof args, "waves %s --stats", scene);
-    ENSURE_EQ_INT(run_ww(args, out, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     char *s = ww_test_read_file(out, NULL);
     ENSURE(s != NULL);
     if (!s) return;
@@ -444,13 +423,13 @@ TEST(tools_bench_waves_tiny_prints_its_tables_and_figure) {
     snprintf(errf, sizeof errf, "%s/err.txt", dir);
     snprintf(fig, sizeof fig, "%s/fig/waves.png", dir);
     snprintf(args, sizeof args, "bench waves --tiny -o %s/fig", dir);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     static const char *const heads[] = {"(a) CPU wave evaluation", "family", "sincos", "dbl/sc",
                                         "(b) exact height queries", "margin", "us/query",
                                         "(c) GPU frame", "figure:"};
     for (size_t i = 0; i < sizeof heads / sizeof heads[0]; i++)
-        ENSURE_MSG(file_contains(out, heads[i]), "no '%s' in the output", heads[i]);
-    ENSURE(file_contains(out, "steep_sines"));
+        ENSURE_MSG(ww_test_file_contains(out, heads[i]), "no '%s' in the output", heads[i]);
+    ENSURE(ww_test_file_contains(out, "steep_sines"));
     ww_image im;
     ww_error err = {0};
     ENSURE(ww_read_png(fig, &im, &err) == WW_OK);
@@ -459,7 +438,7 @@ TEST(tools_bench_waves_tiny_prints_its_tables_and_figure) {
 
     /* --json: every line one JSON object with its part */
     snprintf(args, sizeof args, "bench waves --tiny --json -o %s/fig", dir);
-    ENSURE_EQ_INT(run_ww(args, out, errf), 0);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     char *s = ww_test_read_file(out, NULL);
     ENSURE(s != NULL);
     int lines = 0, cpu = 0, query = 0;

@@ -56,3 +56,23 @@ char *ww_test_read_file(const char *path, size_t *len) {
     if (len) *len = n;
     return buf;
 }
+
+int ww_test_ww(const char *args, const char *out_path, const char *err_path) {
+    char cmdline[8192];
+    snprintf(cmdline, sizeof cmdline, "%s %s", ww_test_bin(), args);
+    return ww_test_run(cmdline, out_path, err_path);
+}
+
+int ww_test_write_text(const char *path, const char *text) {
+    FILE *f = fopen(path, "wb");
+    if (!f) return -1;
+    int bad = fputs(text, f) < 0;
+    return fclose(f) != 0 || bad ? -1 : 0;
+}
+
+int ww_test_file_contains(const char *path, const char *needle) {
+    char *s = ww_test_read_file(path, NULL);
+    int found = s && strstr(s, needle);
+    free(s);
+    return found;
+}
