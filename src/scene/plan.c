@@ -263,7 +263,19 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
         if (s == WW_SYS_CLOCK) fprintf(to, " %.2f h, day length %g s", sc->time_of_day, sc->day_length);
         if (s == WW_SYS_RIPPLES) fprintf(to, " pool of %d, lifetime %g s", sc->ripples.max, sc->ripples.lifetime);
         if (s == WW_SYS_CUBES) fprintf(to, " %d cubes", sc->cubes.count);
-        if (s == WW_SYS_FISH) fprintf(to, " %d fish", sc->fish.count);
+        if (s == WW_SYS_FISH)
+            fprintf(to, " %d fish, %s", sc->fish.count,
+                    sc->fish.mode == WW_FISH_TARGETS ? "swimming to targets" : "wandering");
+        if (s == WW_SYS_STONES) fprintf(to, " up to %d in flight", WW_MAX_STONES);
+        if (s == WW_SYS_ROD) fprintf(to, " lure active %g s after landing", sc->rod.window);
+        if (s == WW_SYS_CHEST)
+            fprintf(to, " first at %g s, every %g s, lasts %g s", sc->chest.first, sc->chest.every,
+                    sc->chest.ttl);
+        if (s == WW_SYS_BUBBLES) fprintf(to, " %d emitters", sc->bubbles.count);
+        if (s == WW_SYS_BOAT) fprintf(to, " radius %g m", sc->boat.radius);
+        if (s == WW_SYS_COLLIDE)
+            fprintf(to, " boat %d, cubes %d, chest %d, models %d", sc->boat.on,
+                    sc->cubes.on ? sc->cubes.count : 0, sc->chest.on, sc->models.count);
         fputc('\n', to);
     }
     print_water(sc, &p->water, to);
