@@ -8,6 +8,7 @@
 
 #include "scene/scene.h"
 #include "sim/events.h"
+#include "sim/floater_stats.h"
 #include "sim/state.h"
 #include "sim/step.h"
 #include "test.h"
@@ -113,4 +114,45 @@ TEST(world_fish_do_not_move_the_stones) {
         ww_scene_free(sc);
     }
     ENSURE(memcmp(final[0], final[1], sizeof final[0]) == 0);
+}
+
+/* heave of a floating body on a long swell of amplitude A: a small stable cube (and the boat)
+ * rides it, so its height RMS about the mean approaches the swell's A / sqrt(2); on flat water it
+ * is still. The tolerance allows the cube's response above 1 near its own heave period (an
+ * undamped oscillator driven at w: 1 / (1 - (w / wn)^2) = 1.077 for a 0.45 m draft on a 5.1 s
+ * swell; measured 1.089), the boat's lag and the bodies' size against a 40 m wavelength. */
+#define RIDES_THE_SWELL_REL_TOL 0.15
+#define STILL_WATER_HEAVE_TOL 1e-3 /* m */
+
+static void floaters_on_swell(double amplitude, ww_floater_stats *f) {
+    char text[1024];
+    snprintf(text, sizeof text,
+             "time: {dt: 1/120, fps: 30, duration: 24}\n"
+             "water: {waves: {model: sines, list: [{direction: 0, wavelength: 40, amplitude: %g}]}}\n"
+             "objects:\n"
+             "  cubes: [{position: [0, -0.2, 0], size: 0.5, density: 900}]   # at its draft of 0.45 m\n"
+             "  boat: {position: [10, 0.25, 10], heading: 0}   # bow into the swell\n",
+             amplitude);
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_MSG(ww_scene_load_string("swell.yaml", text, strlen(text), NULL, 0, &sc, &err) == WW_OK,
+               "%s", err.msg);
+    if (!sc) return;
+    ENSURE(ww_floater_stats_compute(sc, f, &err) == WW_OK);
+    ww_scene_free(sc);
+}
+
+TEST(world_floaters_heave_with_the_swell) {
+    ww_floater_stats calm = {0}, swell = {0};
+    floaters_on_swell(0.0, &calm);
+    floaters_on_swell(0.5, &swell);
+    ENSURE(calm.samples > 0 && swell.samples == calm.samples);
+    ENSURE_NEAR(calm.cube_heave_rms, 0.0, STILL_WATER_HEAVE_TOL);
+    ENSURE_NEAR(calm.boat_heave_rms, 0.0, STILL_WATER_HEAVE_TOL);
+    double expect = 0.5 / sqrt(2.0);
+    ENSURE_NEAR(swell.cube_heave_rms / expect, 1.0, RIDES_THE_SWELL_REL_TOL);
+    ENSURE_NEAR(swell.boat_heave_rms / expect, 1.0, RIDES_THE_SWELL_REL_TOL);
+    /* the boat pitches with the slope: 2 pi A / L = 0.079 rad at most, RMS about 0.055 */
+    ENSURE_MSG(swell.boat_pitch_rms > 0.02 && swell.boat_pitch_rms < 0.079, "pitch rms %g", swell.boat_pitch_rms);
+    ENSURE(calm.boat_pitch_rms < 1e-6);
 }

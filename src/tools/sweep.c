@@ -19,6 +19,7 @@
 #include "io/json.h"
 #include "io/stream.h"
 #include "io/writers.h"
+#include "sim/floater_stats.h"
 #include "sim/wave_stats.h"
 #include "tools/contact.h"
 #include "tools/job.h"
@@ -33,20 +34,27 @@
 
 /* ---- the row: what a point measures ------------------------------------------------------ */
 
-/* the metric columns, in order, read from the wave statistics (sim/wave_stats.h). Floating
- * objects' heave and pitch RMS (the floaters issue) join this table after total_amplitude, read
- * from the floaters system's own statistics; nothing stands in for them until then. */
+/* what a point measures: the wave statistics (sim/wave_stats.h) and, for scenes with floating
+ * objects, their response over the run (sim/floater_stats.h; empty cells without them) */
+typedef struct point_stats {
+    ww_wave_stats w;
+    ww_floater_stats f;
+} point_stats;
+
+/* the metric columns, in order */
 typedef struct metric {
     const char *name;
-    size_t offset;   /* in ww_wave_stats */
+    size_t offset;   /* in point_stats */
     int is_int;      /* an int field (else double) */
 } metric;
 
-#define METRIC(field, is_int) {#field, offsetof(ww_wave_stats, field), is_int}
+#define METRIC(part, field, is_int) {#field, offsetof(point_stats, part.field), is_int}
 static const metric METRICS[] = {
-    METRIC(count, 1),           METRIC(hs, 0),       METRIC(peak_period, 0),
-    METRIC(mean_wavelength, 0), METRIC(max_slope, 0), METRIC(fold_sum, 0),
-    METRIC(fold_margin, 0),     METRIC(total_amplitude, 0),
+    METRIC(w, count, 1),           METRIC(w, hs, 0),         METRIC(w, peak_period, 0),
+    METRIC(w, mean_wavelength, 0), METRIC(w, max_slope, 0),  METRIC(w, fold_sum, 0),
+    METRIC(w, fold_margin, 0),     METRIC(w, total_amplitude, 0),
+    METRIC(f, cube_heave_rms, 0),  METRIC(f, cube_tilt_rms, 0),
+    METRIC(f, boat_heave_rms, 0),  METRIC(f, boat_pitch_rms, 0),
 };
 #undef METRIC
 #define NMETRICS (sizeof METRICS / sizeof METRICS[0])
@@ -461,8 +469,15 @@ static void compute_row(const ww_sweep *s, long long i, row *rw) {
         return;
     }
 
-    ww_wave_stats st;
-    ww_wave_stats_compute(sc, 0, 0, &st);
+    point_stats st;
+    ww_wave_stats_compute(sc, 0, 0, &st.w);
+    r = ww_floater_stats_compute(sc, &st.f, &err);
+    if (r != WW_OK) { /* the simulation failed (a NaN): the row says so */
+        rw->status = ROW_ERROR;
+        rw->code = r;
+        error_text(&err, rw->msg, sizeof rw->msg);
+        st.f = (ww_floater_stats){NAN, NAN, NAN, NAN, 0};
+    }
     for (size_t m = 0; m < NMETRICS; m++) {
         const char *f = (const char *)&st + METRICS[m].offset;
         if (METRICS[m].is_int) {
@@ -473,7 +488,7 @@ static void compute_row(const ww_sweep *s, long long i, row *rw) {
             memcpy(&rw->metric[m], f, sizeof rw->metric[m]);
         }
     }
-    if (sc->nwarnings > 0) {
+    if (rw->status == ROW_OK && sc->nwarnings > 0) {
         rw->status = ROW_WARN;
         size_t n = 0;
         for (int w = 0; w < sc->nwarnings && n < sizeof rw->msg; w++) {
@@ -572,8 +587,8 @@ static void csv_row(const ww_sweep *s, const row *rw, char vals[][WW_SWEEP_VALUE
         if (isfinite(v)) {
             fmt_num(num, sizeof num, v);
             fputs(num, f);
-        } else {
-            fputs(isnan(v) ? "nan" : v > 0 ? "inf" : "-inf", f);
+        } else if (!isnan(v)) { /* NaN: nothing to measure (no floating objects): empty */
+            fputs(v > 0 ? "inf" : "-inf", f);
         }
     }
     fputc(',', f);
