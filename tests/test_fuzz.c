@@ -9,9 +9,12 @@
 
 #include "core/rng.h"
 #include "scene/scene.h"
+#include "sim/state.h"
+#include "sim/step.h"
 #include "test.h"
 
 #define MUTANTS_PER_FILE 1500
+#define STEPS_PER_MUTANT 24 /* steps each loadable mutant is simulated */
 
 static const char alphabet[] = "{}[]:,-#&*!|>'\"%@`. \n\t0123456789eE+-naif/xyz_";
 
@@ -79,6 +82,11 @@ static void fuzz_file(const char *path, uint64_t stream) {
         if (res == WW_OK) {
             loaded++;
             if (!scene_is_finite(sc)) bad++;
+            /* a scene that loads also steps: at worst a NaN report (exit 3), never a crash */
+            ww_state *st = ww_state_new(sc);
+            ww_result sr = st ? ww_sim_advance_to(sc, st, STEPS_PER_MUTANT, &err) : WW_E_NOMEM;
+            if (sr != WW_OK && sr != WW_E_NAN) bad++;
+            ww_state_free(st);
             ww_scene_free(sc);
         } else {
             rejected++;
@@ -122,3 +130,5 @@ TEST(fuzz_scene_set_mutations) {
 }
 TEST(fuzz_scene_loader_mutations_spectrum) { fuzz_file("scenes/spectrum.yaml", 3); }
 TEST(fuzz_scene_loader_mutations_ripples) { fuzz_file("scenes/ripples.yaml", 4); }
+TEST(fuzz_scene_loader_mutations_lake) { fuzz_file("scenes/lake.yaml", 5); }
+TEST(fuzz_scene_loader_mutations_reef) { fuzz_file("scenes/reef.yaml", 6); }
