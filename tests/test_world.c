@@ -156,3 +156,46 @@ TEST(world_floaters_heave_with_the_swell) {
     ENSURE_MSG(swell.boat_pitch_rms > 0.02 && swell.boat_pitch_rms < 0.079, "pitch rms %g", swell.boat_pitch_rms);
     ENSURE(calm.boat_pitch_rms < 1e-6);
 }
+
+/* passive floaters never gain energy: on flat water, cubes of every stability class (stable
+ * upright, turning onto an edge, dense and light) and the boat come to rest, and stay at rest:
+ * their largest speed over the last minute of ten is below this (m/s, rad/s) */
+#define AT_REST_SPEED_TOL 1e-3
+#define REST_RUN_SECONDS 600.0
+#define REST_WATCH_SECONDS 60.0
+
+TEST(world_passive_floaters_come_to_rest_and_stay) {
+    static const char text[] =
+        "time: {dt: 1/120, fps: 30, duration: 600}\n"
+        "water: {waves: {model: flat}}\n"
+        "objects:\n"
+        "  cubes:\n"
+        "    - {position: [0, 0.5, 0], size: 1, density: 500}\n"
+        "    - {position: [3, 0, 0], size: 0.6, density: 900, rotation: [20, 0, 10]}\n"
+        "    - {position: [-3, 0, 0], size: 0.8, density: 150}\n"
+        "    - {position: [0, 0, 3], size: 1.2, density: 300, buoyancy: spring}\n"
+        "    - {position: [0, -1, -3], size: 0.5, density: 700}\n"
+        "  boat: {position: [8, 1, 8], heading: 30}\n";
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_MSG(ww_scene_load_string("rest.yaml", text, strlen(text), NULL, 0, &sc, &err) == WW_OK,
+               "%s", err.msg);
+    if (!sc) return;
+    ww_state *st = ww_state_new(sc);
+    int64_t watch = (int64_t)((REST_RUN_SECONDS - REST_WATCH_SECONDS) / sc->dt);
+    int64_t end = (int64_t)(REST_RUN_SECONDS / sc->dt);
+    double vmax = 0.0;
+    for (int64_t s = 1; s <= end; s++) {
+        if (ww_step(sc, st, &err) != WW_OK) {
+            ENSURE_MSG(0, "%s", err.msg);
+            break;
+        }
+        if (s < watch) continue;
+        for (int i = 0; i < 3 * sc->cubes.count; i++)
+            vmax = fmax(vmax, fmax(fabs(st->cube_vel[i]), fabs(st->cube_omega[i])));
+        for (int i = 0; i < 3; i++) vmax = fmax(vmax, fabs(st->boat_vel[i]));
+    }
+    ENSURE_MSG(vmax < AT_REST_SPEED_TOL, "largest speed in the last minute %g", vmax);
+    ww_state_free(st);
+    ww_scene_free(sc);
+}
