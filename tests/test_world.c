@@ -199,3 +199,41 @@ TEST(world_passive_floaters_come_to_rest_and_stay) {
     ww_state_free(st);
     ww_scene_free(sc);
 }
+
+/* time.integrator: the exact boat run matches the closed form at any dt; the seeds' Euler is
+ * first order (its error halves when dt halves) */
+#define BOAT_EXACT_TOL 1e-9        /* m over 10 s: rounding */
+#define EULER_ORDER_TOL 0.1        /* on the error ratio 2 between dt and dt / 2 */
+
+static double boat_run_error(const char *integrator, int div) {
+    char text[1024];
+    snprintf(text, sizeof text,
+             "time: {dt: 1/%d, fps: %d, duration: 10, integrator: %s}\n"
+             "water: {waves: {model: flat}}\n"
+             "objects: {boat: {position: [0, 0.25, 0], heading: 0, acceleration: 6, drag: 1.2,"
+             " max_speed: 50}}\n"
+             "camera: {collide: false}\n"
+             "script: [{t: 0, boat: {throttle: 1}}]\n",
+             div, div, integrator);
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_MSG(ww_scene_load_string("run.yaml", text, strlen(text), NULL, 0, &sc, &err) == WW_OK,
+               "%s", err.msg);
+    if (!sc) return NAN;
+    ww_state *st = ww_state_new(sc);
+    double T = 10.0, k = 1.2, v = 6.0 / k;
+    ENSURE(ww_sim_advance_to(sc, st, (int64_t)div * 10, &err) == WW_OK);
+    double x = v * (T - (1.0 - exp(-k * T)) / k); /* dv/dt = a - k v from rest */
+    double e = fabs(st->boat_pos[0] - x);
+    ww_state_free(st);
+    ww_scene_free(sc);
+    return e;
+}
+
+TEST(world_integrator_knob_exact_and_euler) {
+    ENSURE_NEAR(boat_run_error("exact", 30), 0.0, BOAT_EXACT_TOL);
+    ENSURE_NEAR(boat_run_error("exact", 240), 0.0, BOAT_EXACT_TOL);
+    double e30 = boat_run_error("euler", 30), e60 = boat_run_error("euler", 60);
+    ENSURE(e30 > 1e-3);
+    ENSURE_NEAR(e30 / e60, 2.0, EULER_ORDER_TOL * 2.0);
+}

@@ -543,10 +543,15 @@ static void default_camera(ww_scene *sc) {
 /* ---- sections -------------------------------------------------------------------------------- */
 
 static ww_result compile_time(ctx *c, const section *top) {
-    static const char *const keys[] = {"dt", "fps", "duration", "start", NULL};
+    static const char *const keys[] = {"dt", "fps", "duration", "start", "integrator", NULL};
+    static const char *const integrators[] = {[WW_INTEGRATE_EXACT] = "exact",
+                                              [WW_INTEGRATE_EULER] = "euler", NULL};
     ww_scene *sc = c->sc;
     section s;
     TRY(wwc_open_section(c, top, "time", keys, &s));
+    int integrator = (int)sc->integrator;
+    TRY(wwc_get_word(c, &s, "integrator", integrators, &integrator));
+    sc->integrator = (ww_integrator)integrator;
     TRY(wwc_get_number(c, &s, "dt", &R_DT, OPTIONAL, &sc->dt));
     TRY(wwc_get_number(c, &s, "fps", &R_FPS, OPTIONAL, &sc->fps));
     TRY(wwc_get_number(c, &s, "duration", &R_DURATION, OPTIONAL, &sc->duration));

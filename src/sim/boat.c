@@ -110,6 +110,16 @@ static void move(const ww_scene *sc, ww_state *st, double dt) {
     double slip = -b->slip * steer; /* starboard speed per forward speed: outward */
     double arc = dt * sinc(0.5 * dh);
     double fx = cos(hm), fz = sin(hm);
+    if (sc->integrator == WW_INTEGRATE_EULER) {
+        /* seed 000's update, the baseline of time.integrator: v += a u dt, v <- v e^(-k dt),
+         * then a straight move along the new heading */
+        v1 = ww_m_clamp((st->boat_speed[0] + b->acceleration * u * dt) * exp(-b->drag * dt),
+                        -b->reverse_speed, b->max_speed);
+        mean = v1;
+        arc = dt;
+        fx = cos(h0 + dh);
+        fz = sin(h0 + dh);
+    }
     p[0] += arc * mean * (fx - slip * fz);
     p[2] += arc * mean * (fz + slip * fx);
     double h1 = wrap_pi(h0 + dh);

@@ -392,7 +392,10 @@ static void step_cube(const ww_scene *sc, ww_state *st, int i) {
 
     /* heave: the discrete-gradient midpoint rule (archimedes), the exact oscillator (spring) */
     double y = 0.0, vy = v[1];
-    if (F.archimedes) {
+    if (sc->integrator == WW_INTEGRATE_EULER) { /* the seeds' baseline (time.integrator) */
+        vy += dt * (F.ay - F.gamma * (vy - F.u[1]));
+        y = vy * dt;
+    } else if (F.archimedes) {
         double m = d->density * d->size * d->size * d->size;
         double a = F.ay - WW_WATER_RHO * WW_G * F.water.volume / m; /* all but buoyancy */
         y = heave_step(&F.water, d->size, WW_WATER_RHO * WW_G / m, a, F.gamma, F.u[1], dt, &vy);

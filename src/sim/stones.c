@@ -61,9 +61,19 @@ static void accel(double k, const double v[3], double a[3]) {
     a[2] = -s * v[2];
 }
 
-/* (p, v) after time h: the exact parabola without drag, one classical RK4 step with it */
-static void fly(double k, const double p[3], const double v[3], double h, double po[3],
-                double vo[3]) {
+/* (p, v) after time h: the exact parabola without drag, one classical RK4 step with it; with
+ * euler (time.integrator, the seeds' baseline) semi-implicit Euler: v += a h, p += v h */
+static void fly(double k, int euler, const double p[3], const double v[3], double h,
+                double po[3], double vo[3]) {
+    if (euler) {
+        double a[3];
+        accel(k, v, a);
+        for (int i = 0; i < 3; i++) {
+            vo[i] = v[i] + a[i] * h;
+            po[i] = p[i] + vo[i] * h;
+        }
+        return;
+    }
     if (k == 0.0) {
         for (int i = 0; i < 3; i++) {
             double g = i == 1 ? -WW_G : 0.0;
@@ -95,7 +105,7 @@ typedef struct path {
 
 static void path_at(const path *q, double s, double p[3], double v[3]) {
     if (q->exact) {
-        fly(0.0, q->p0, q->v0, s, p, v);
+        fly(0.0, 0, q->p0, q->v0, s, p, v);
         return;
     }
     double u = s / q->h, u2 = u * u, u3 = u2 * u, h = q->h;
@@ -375,9 +385,10 @@ static void step_stone(const ww_scene *sc, ww_state *st, int i) {
             start_sinking(sc, st, i, ww_m_len3(v), 0);
             break;
         }
-        path q = {.h = rem, .exact = k == 0.0};
+        int euler = sc->integrator == WW_INTEGRATE_EULER;
+        path q = {.h = rem, .exact = k == 0.0 && !euler};
         for (int j = 0; j < 3; j++) q.p0[j] = p[j], q.v0[j] = v[j];
-        fly(k, p, v, rem, q.p1, q.v1);
+        fly(k, euler, p, v, rem, q.p1, q.v1);
         contact c = first_contact(sc, st, &q, fa);
         if (c.kind == NONE) {
             for (int j = 0; j < 3; j++) p[j] = q.p1[j], v[j] = q.v1[j];

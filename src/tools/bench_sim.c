@@ -42,6 +42,10 @@ static const int DT_DIVS[NDT] = {30, 60, 120, 240}; /* dt = 1 / div, s */
 
 static const char *const METRIC_NAMES[NMETRICS] = {"cube heave", "boat position", "stone landing"};
 
+/* the rows of the dt table: each integrator of time.integrator (scene.h), the reference exact */
+#define NINTEG 2
+static const char *const INTEGRATORS[NINTEG] = {"exact", "euler"};
+
 static const char *base_name(const char *path) {
     const char *s = strrchr(path, '/');
     return s ? s + 1 : path;
@@ -136,13 +140,15 @@ static void landings(const ww_scene *sc, const ww_state *st, run *u) {
     }
 }
 
-static ww_result run_dt(const char *path, int div, double seconds, run *u, ww_error *err) {
-    char dt_set[64];
+static ww_result run_dt(const char *path, int div, int integ, double seconds, run *u,
+                        ww_error *err) {
+    char dt_set[64], integ_set[64];
     snprintf(dt_set, sizeof dt_set, "time.dt=1/%d", div);
-    ww_set sets[2] = {{dt_set}, {"time.fps=30"}};
+    snprintf(integ_set, sizeof integ_set, "time.integrator=%s", INTEGRATORS[integ]);
+    ww_set sets[3] = {{dt_set}, {"time.fps=30"}, {integ_set}};
     ww_scene *sc = NULL;
     *u = (run){.div = div};
-    ww_result r = ww_scene_load(path, sets, 2, &sc, err);
+    ww_result r = ww_scene_load(path, sets, 3, &sc, err);
     if (r) return r;
     ww_state *st = ww_state_new(sc);
     u->nsamples = (int)floor(seconds * SAMPLE_DIV) + 1;
@@ -202,7 +208,8 @@ static double metric_error(const run *u, const run *ref, int m, int *unpaired) {
 /* ---- the dt table and its figure ----------------------------------------------------------- */
 
 typedef struct dt_table {
-    double dt[NDT], rate[NDT], steps_per_s[NDT], err[NMETRICS][NDT]; /* rate: 1 / dt, Hz */
+    double dt[NDT], rate[NDT];                          /* rate: 1 / dt, Hz */
+    double steps_per_s[NINTEG][NDT], err[NINTEG][NMETRICS][NDT];
     double ref_steps_per_s;
     int has[NMETRICS];
 } dt_table;
@@ -230,7 +237,7 @@ static ww_result part_dt(const ww_bench_opts *o, const char *path, dt_table *tab
     ww_scene_free(sc);
 
     run ref = {0}, u = {0};
-    if ((r = run_dt(path, REF_DIV, seconds, &ref, err))) {
+    if ((r = run_dt(path, REF_DIV, 0, seconds, &ref, err))) {
         run_free(&ref);
         return r;
     }
@@ -241,47 +248,54 @@ static ww_result part_dt(const ww_bench_opts *o, const char *path, dt_table *tab
         fprintf(to, "\ndt: %s, %.3g s simulated, error against dt = 1/%d (%.0f steps/s); "
                     "max over samples every 1/%d s\n",
                 base_name(path), seconds, REF_DIV, tab->ref_steps_per_s, SAMPLE_DIV);
-        fprintf(to, "%-8s %12s %12s |", "dt", "steps/s", "sim s/wall s");
+        fprintf(to, "%-6s %-8s %12s %12s |", "integ", "dt", "steps/s", "sim s/wall s");
         for (int m = 0; m < NMETRICS; m++) fprintf(to, " %14s m", METRIC_NAMES[m]);
         fputc('\n', to);
     }
-    for (int d = 0; d < NDT && !r; d++) {
-        if ((r = run_dt(path, DT_DIVS[d], seconds, &u, err))) break;
-        tab->dt[d] = 1.0 / DT_DIVS[d];
-        tab->rate[d] = DT_DIVS[d];
-        tab->steps_per_s[d] = (double)u.steps / u.wall_s;
-        int unpaired = 0;
-        for (int m = 0; m < NMETRICS; m++) tab->err[m][d] = metric_error(&u, &ref, m, &unpaired);
-        if (o->json) {
-            fprintf(to, "{\"part\":\"dt\",\"scene\":\"%s\",\"dt\":%.9g,\"reference_dt\":%.9g,"
-                        "\"seconds\":%.6g,\"steps_per_s\":%.1f,\"sim_s_per_wall_s\":%.2f",
-                    base_name(path), tab->dt[d], 1.0 / REF_DIV, seconds, tab->steps_per_s[d],
-                    tab->steps_per_s[d] * tab->dt[d]);
-            static const char *const keys[NMETRICS] = {"cube_heave_m", "boat_position_m",
-                                                       "stone_landing_m"};
-            for (int m = 0; m < NMETRICS; m++) {
-                if (tab->err[m][d] < 0)
-                    fprintf(to, ",\"%s\":null", keys[m]);
-                else
-                    fprintf(to, ",\"%s\":%.6e", keys[m], tab->err[m][d]);
+    for (int g = 0; g < NINTEG && !r; g++) {
+        for (int d = 0; d < NDT && !r; d++) {
+            if ((r = run_dt(path, DT_DIVS[d], g, seconds, &u, err))) break;
+            tab->dt[d] = 1.0 / DT_DIVS[d];
+            tab->rate[d] = DT_DIVS[d];
+            tab->steps_per_s[g][d] = (double)u.steps / u.wall_s;
+            int unpaired = 0;
+            for (int m = 0; m < NMETRICS; m++)
+                tab->err[g][m][d] = metric_error(&u, &ref, m, &unpaired);
+            double sps = tab->steps_per_s[g][d];
+            if (o->json) {
+                fprintf(to, "{\"part\":\"dt\",\"scene\":\"%s\",\"integrator\":\"%s\",\"dt\":%.9g,"
+                            "\"reference_dt\":%.9g,\"seconds\":%.6g,\"steps_per_s\":%.1f,"
+                            "\"sim_s_per_wall_s\":%.2f",
+                        base_name(path), INTEGRATORS[g], tab->dt[d], 1.0 / REF_DIV, seconds, sps,
+                        sps * tab->dt[d]);
+                static const char *const keys[NMETRICS] = {"cube_heave_m", "boat_position_m",
+                                                           "stone_landing_m"};
+                for (int m = 0; m < NMETRICS; m++) {
+                    if (tab->err[g][m][d] < 0)
+                        fprintf(to, ",\"%s\":null", keys[m]);
+                    else
+                        fprintf(to, ",\"%s\":%.6e", keys[m], tab->err[g][m][d]);
+                }
+                fprintf(to, ",\"stone_landings_unpaired\":%d}\n", unpaired);
+            } else {
+                char dts[16];
+                snprintf(dts, sizeof dts, "1/%d", DT_DIVS[d]);
+                fprintf(to, "%-6s %-8s %12.0f %12.1f |", INTEGRATORS[g], dts, sps, sps * tab->dt[d]);
+                for (int m = 0; m < NMETRICS; m++)
+                    print_metric(to, tab->err[g][m][d], unpaired, m == 2);
+                fputc('\n', to);
             }
-            fprintf(to, ",\"stone_landings_unpaired\":%d}\n", unpaired);
-        } else {
-            char dts[16];
-            snprintf(dts, sizeof dts, "1/%d", DT_DIVS[d]);
-            fprintf(to, "%-8s %12.0f %12.1f |", dts, tab->steps_per_s[d],
-                    tab->steps_per_s[d] * tab->dt[d]);
-            for (int m = 0; m < NMETRICS; m++) print_metric(to, tab->err[m][d], unpaired, m == 2);
-            fputc('\n', to);
+            run_free(&u);
         }
-        run_free(&u);
     }
     run_free(&u);
     run_free(&ref);
     if (!r && !o->json)
         fprintf(to, "cube heave: |y - y_ref| of cube 0; boat position: XZ distance; stone "
                     "landing: XZ distance of each stone's k-th skip or sink, (n) landings\n"
-                    "found in one run only; '-': the scene has no such system\n");
+                    "found in one run only; '-': the scene has no such system; integ: time.integrator\n"
+                    "(exact: closed forms and the energy-keeping midpoint rule; euler: the seeds'\n"
+                    "semi-implicit Euler); the reference is exact\n");
     return r;
 }
 
@@ -308,15 +322,23 @@ static ww_result write_figure(const char *dir, const char *scene, const dt_table
                   .log_y = 1, .nxticks = NDT,
                   .note = any ? NULL : "no cubes, boat or stones in the scene"};
     for (int d = 0; d < NDT; d++) ep.xticks[d] = tab->rate[d];
-    for (int m = 0; m < NMETRICS; m++)
-        if (tab->has[m]) ww_plot_add(&ep, METRIC_NAMES[m], tab->rate, tab->err[m], NDT, colors[m]);
+    const ww_plot_rgb euler_colors[NMETRICS] = {WW_PLOT_RED, WW_PLOT_PURPLE, WW_PLOT_BROWN};
+    char names[NINTEG][NMETRICS][48];
+    for (int g = 0; g < NINTEG; g++)
+        for (int m = 0; m < NMETRICS; m++) {
+            if (!tab->has[m]) continue;
+            snprintf(names[g][m], sizeof names[g][m], "%s, %s", METRIC_NAMES[m], INTEGRATORS[g]);
+            ww_plot_add(&ep, names[g][m], tab->rate, tab->err[g][m], NDT,
+                        g == 0 ? colors[m] : euler_colors[m]);
+        }
     ww_plot_draw(&ep, &im, 0, 0, FIG_W / 2, FIG_H);
 
     /* right: the speed bought by each dt */
     ww_plot sp = {.title = "simulation speed", .xlabel = "steps per simulated second (1 / dt)", .ylabel = "steps per second",
                   .log_x = 1, .log_y = 1, .nxticks = NDT};
     for (int d = 0; d < NDT; d++) sp.xticks[d] = tab->rate[d];
-    ww_plot_add(&sp, "steps per wall second", tab->rate, tab->steps_per_s, NDT, WW_PLOT_PURPLE);
+    ww_plot_add(&sp, "exact", tab->rate, tab->steps_per_s[0], NDT, WW_PLOT_BLUE);
+    ww_plot_add(&sp, "euler", tab->rate, tab->steps_per_s[1], NDT, WW_PLOT_RED);
     ww_plot_draw(&sp, &im, FIG_W / 2, 0, FIG_W / 2, FIG_H);
 
     r = ww_write_png(path, &im, err);
