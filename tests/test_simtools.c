@@ -491,8 +491,10 @@ TEST(simtools_bench_sim_tiny) {
     snprintf(args, sizeof args, "bench sim --tiny scenes/soak.yaml -o %s", dir);
     ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     ENSURE(ww_test_file_contains(out, "dt: soak.yaml, 1 s simulated, error against dt = 1/1920"));
-    ENSURE(ww_test_file_contains(out, "\n1/30 "));
-    ENSURE(ww_test_file_contains(out, "\n1/240 "));
+    ENSURE(ww_test_file_contains(out, "\nexact  1/30 "));
+    ENSURE(ww_test_file_contains(out, "\nexact  1/240 "));
+    ENSURE(ww_test_file_contains(out, "\neuler  1/30 "));
+    ENSURE(ww_test_file_contains(out, "\neuler  1/240 "));
     ENSURE(ww_test_file_contains(out, "cube heave m"));
     ENSURE(ww_test_file_contains(out, "sim s/wall s"));
     struct stat sb;
@@ -503,7 +505,7 @@ TEST(simtools_bench_sim_tiny) {
     ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     char *text = ww_test_read_file(out, NULL);
     ENSURE(text != NULL);
-    /* one speed line, four dt lines, the figure */
-    if (text) ENSURE_EQ_INT(json_lines(text), 6);
+    /* one speed line, four dt lines for each of the two integrators, the figure */
+    if (text) ENSURE_EQ_INT(json_lines(text), 10);
     free(text);
 }
