@@ -79,6 +79,10 @@ int ww_test_ww(const char *args, const char *out_path, const char *err_path);
 int ww_test_write_text(const char *path, const char *text);
 /* 1 when the file exists and contains needle */
 int ww_test_file_contains(const char *path, const char *needle);
+/* tests/json_check.c: text is one JSON value (surrounding white space allowed) */
+int ww_test_json_valid(const char *text);
+/* every line of text is one JSON object ending in a newline; the count, or -1 at the first bad */
+int ww_test_json_lines(const char *text);
 /* 1 when a GL backend can be opened here */
 int ww_test_have_gl(void);
 

@@ -19,108 +19,12 @@
 /* the JSON lines print %.17g, which round-trips a double exactly */
 #define JSON_ROUND_TRIP_TOL 0.0
 
-/* ---- a small JSON validator (RFC 8259 grammar, no semantics) ------------------------------- */
-
-static const char *json_ws(const char *p) {
-    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n') p++;
-    return p;
-}
-
-static const char *json_value(const char *p, int depth);
-
-static const char *json_string(const char *p) {
-    if (*p++ != '"') return NULL;
-    while (*p && *p != '"') {
-        if ((unsigned char)*p < 0x20) return NULL;
-        if (*p == '\\') {
-            p++;
-            if (*p == 'u') {
-                for (int i = 1; i <= 4; i++)
-                    if (!isxdigit((unsigned char)p[i])) return NULL;
-                p += 4;
-            } else if (!strchr("\"\\/bfnrt", *p) || !*p) {
-                return NULL;
-            }
-        }
-        p++;
-    }
-    return *p == '"' ? p + 1 : NULL;
-}
-
-static const char *json_number(const char *p) {
-    if (*p == '-') p++;
-    if (*p == '0') {
-        p++;
-    } else if (isdigit((unsigned char)*p)) {
-        while (isdigit((unsigned char)*p)) p++;
-    } else {
-        return NULL;
-    }
-    if (*p == '.') {
-        p++;
-        if (!isdigit((unsigned char)*p)) return NULL;
-        while (isdigit((unsigned char)*p)) p++;
-    }
-    if (*p == 'e' || *p == 'E') {
-        p++;
-        if (*p == '+' || *p == '-') p++;
-        if (!isdigit((unsigned char)*p)) return NULL;
-        while (isdigit((unsigned char)*p)) p++;
-    }
-    return p;
-}
-
-static const char *json_items(const char *p, char close, int is_object, int depth) {
-    p = json_ws(p + 1);
-    if (*p == close) return p + 1;
-    for (;;) {
-        if (is_object) {
-            if (!(p = json_string(json_ws(p)))) return NULL;
-            p = json_ws(p);
-            if (*p++ != ':') return NULL;
-        }
-        if (!(p = json_value(p, depth + 1))) return NULL;
-        p = json_ws(p);
-        if (*p == close) return p + 1;
-        if (*p++ != ',') return NULL;
-    }
-}
-
-static const char *json_value(const char *p, int depth) {
-    if (depth > 32) return NULL;
-    p = json_ws(p);
-    if (*p == '{') return json_items(p, '}', 1, depth);
-    if (*p == '[') return json_items(p, ']', 0, depth);
-    if (*p == '"') return json_string(p);
-    if (strncmp(p, "true", 4) == 0) return p + 4;
-    if (strncmp(p, "false", 5) == 0) return p + 5;
-    if (strncmp(p, "null", 4) == 0) return p + 4;
-    return json_number(p);
-}
-
-/* every line of text is one JSON object; returns the number of lines, -1 at the first bad one */
-static int json_lines(const char *text) {
-    int n = 0;
-    for (const char *p = text; *p;) {
-        const char *eol = strchr(p, '\n');
-        if (!eol) return -1; /* every line ends in a newline */
-        if (*json_ws(p) != '{') return -1;
-        const char *end = json_value(p, 0);
-        if (!end || end > eol) return -1;
-        while (end < eol && (*end == ' ' || *end == '\t' || *end == '\r')) end++;
-        if (end != eol) return -1;
-        n++;
-        p = eol + 1;
-    }
-    return n;
-}
-
 TEST(simtools_json_validator) {
-    ENSURE_EQ_INT(json_lines("{\"a\":[1,-2.5e3,null,true],\"b\":{\"c\":\"x\\n\"}}\n{}\n"), 2);
-    ENSURE_EQ_INT(json_lines("{\"a\":nan}\n"), -1);
-    ENSURE_EQ_INT(json_lines("{\"a\":1,}\n"), -1);
-    ENSURE_EQ_INT(json_lines("{\"a\":1}"), -1);
-    ENSURE_EQ_INT(json_lines("{\"a\":01}\n"), -1);
+    ENSURE_EQ_INT(ww_test_json_lines("{\"a\":[1,-2.5e3,null,true],\"b\":{\"c\":\"x\\n\"}}\n{}\n"), 2);
+    ENSURE_EQ_INT(ww_test_json_lines("{\"a\":nan}\n"), -1);
+    ENSURE_EQ_INT(ww_test_json_lines("{\"a\":1,}\n"), -1);
+    ENSURE_EQ_INT(ww_test_json_lines("{\"a\":1}"), -1);
+    ENSURE_EQ_INT(ww_test_json_lines("{\"a\":01}\n"), -1);
 }
 
 /* ---- --script -------------------------------------------------------------------------------- */
@@ -346,7 +250,7 @@ TEST(simtools_events_jsonl) {
     char *text = ww_test_read_file(path, NULL);
     ENSURE(text != NULL);
     if (text) {
-        ENSURE_EQ_INT(json_lines(text), 3);
+        ENSURE_EQ_INT(ww_test_json_lines(text), 3);
         long long step = -1;
         double t = -1, x, y, z, m, aux;
         int object = -1;
@@ -411,7 +315,7 @@ TEST(simtools_events_soak_scene) {
     char *text = ww_test_read_file(path, NULL);
     ENSURE(text != NULL);
     if (!text) return;
-    int n = json_lines(text);
+    int n = ww_test_json_lines(text);
     ENSURE(n > 0);
     int known = 0;
     for (const char *p = strstr(text, "\"kind\":\""); p; p = strstr(p + 1, "\"kind\":\"")) {
@@ -506,6 +410,6 @@ TEST(simtools_bench_sim_tiny) {
     char *text = ww_test_read_file(out, NULL);
     ENSURE(text != NULL);
     /* one speed line, four dt lines for each of the two integrators, the figure */
-    if (text) ENSURE_EQ_INT(json_lines(text), 10);
+    if (text) ENSURE_EQ_INT(ww_test_json_lines(text), 10);
     free(text);
 }

@@ -39,87 +39,6 @@ static const char gerstner_scene[] =
 
 /* ---- a small JSON validator (RFC 8259 grammar, no semantics) ---------------------------------- */
 
-static const char *json_value(const char *s);
-
-static const char *json_ws(const char *s) {
-    while (*s == ' ' || *s == '\t' || *s == '\n' || *s == '\r') s++;
-    return s;
-}
-
-static const char *json_string(const char *s) {
-    if (*s++ != '"') return NULL;
-    for (; *s && *s != '"'; s++) {
-        if ((unsigned char)*s < 0x20) return NULL;
-        if (*s == '\\') {
-            s++;
-            if (*s == 'u') {
-                for (int i = 1; i <= 4; i++)
-                    if (!isxdigit((unsigned char)s[i])) return NULL;
-                s += 4;
-            } else if (!strchr("\"\\/bfnrt", *s) || !*s) {
-                return NULL;
-            }
-        }
-    }
-    return *s == '"' ? s + 1 : NULL;
-}
-
-static const char *json_number(const char *s) {
-    const char *p = s;
-    if (*p == '-') p++;
-    if (*p == '0') {
-        p++;
-    } else if (isdigit((unsigned char)*p)) {
-        while (isdigit((unsigned char)*p)) p++;
-    } else {
-        return NULL;
-    }
-    if (*p == '.') {
-        if (!isdigit((unsigned char)*++p)) return NULL;
-        while (isdigit((unsigned char)*p)) p++;
-    }
-    if (*p == 'e' || *p == 'E') {
-        p++;
-        if (*p == '+' || *p == '-') p++;
-        if (!isdigit((unsigned char)*p)) return NULL;
-        while (isdigit((unsigned char)*p)) p++;
-    }
-    return p;
-}
-
-static const char *json_items(const char *s, char close, int keyed) {
-    s = json_ws(s);
-    if (*s == close) return s + 1;
-    for (;;) {
-        s = json_ws(s);
-        if (keyed) {
-            if (!(s = json_string(s))) return NULL;
-            s = json_ws(s);
-            if (*s++ != ':') return NULL;
-        }
-        if (!(s = json_value(s))) return NULL;
-        s = json_ws(s);
-        if (*s == close) return s + 1;
-        if (*s++ != ',') return NULL;
-    }
-}
-
-static const char *json_value(const char *s) {
-    s = json_ws(s);
-    if (*s == '{') return json_items(s + 1, '}', 1);
-    if (*s == '[') return json_items(s + 1, ']', 0);
-    if (*s == '"') return json_string(s);
-    if (!strncmp(s, "true", 4)) return s + 4;
-    if (!strncmp(s, "false", 5)) return s + 5;
-    if (!strncmp(s, "null", 4)) return s + 4;
-    return json_number(s);
-}
-
-/* one JSON value and nothing but white space after it */
-static int json_valid(const char *s) {
-    const char *e = json_value(s);
-    return e && *json_ws(e) == 0;
-}
 
 /* the number after "key": (NAN when absent or not a number) */
 static double json_get(const char *s, const char *key) {
@@ -150,11 +69,11 @@ static int json_get_array(const char *s, const char *key, double *out, int cap) 
 }
 
 TEST(tools_json_validator_knows_bad_json) {
-    ENSURE(json_valid("{\"a\":[1,2.5e-3,-0.1],\"b\":null,\"c\":\"x\\\"y\"}\n"));
-    ENSURE(!json_valid("{\"a\":nan}"));
-    ENSURE(!json_valid("{\"a\":1,}"));
-    ENSURE(!json_valid("{\"a\":01}"));
-    ENSURE(!json_valid("{\"a\":1} x"));
+    ENSURE(ww_test_json_valid("{\"a\":[1,2.5e-3,-0.1],\"b\":null,\"c\":\"x\\\"y\"}\n"));
+    ENSURE(!ww_test_json_valid("{\"a\":nan}"));
+    ENSURE(!ww_test_json_valid("{\"a\":1,}"));
+    ENSURE(!ww_test_json_valid("{\"a\":01}"));
+    ENSURE(!ww_test_json_valid("{\"a\":1} x"));
 }
 
 /* ---- probe ------------------------------------------------------------------------------------ */
@@ -355,7 +274,7 @@ TEST(tools_waves_stats_json_of_sines) {
     char *s = ww_test_read_file(out, NULL);
     ENSURE(s != NULL);
     if (!s) return;
-    ENSURE_MSG(json_valid(s), "not JSON: %s", s);
+    ENSURE_MSG(ww_test_json_valid(s), "not JSON: %s", s);
     ENSURE(strstr(s, "\"model\":\"sines\"") != NULL);
     static const char *const keys[] = {"count", "hs", "m0", "peak_period", "mean_wavelength",
                                        "max_slope", "slope_bound", "fold_sum", "fold_margin",
@@ -445,7 +364,7 @@ TEST(tools_bench_waves_tiny_prints_its_tables_and_figure) {
     char *save = NULL;
     for (char *line = s ? strtok_r(s, "\n", &save) : NULL; line; line = strtok_r(NULL, "\n", &save)) {
         lines++;
-        ENSURE_MSG(json_valid(line), "not JSON: %s", line);
+        ENSURE_MSG(ww_test_json_valid(line), "not JSON: %s", line);
         ENSURE(strstr(line, "\"part\":") != NULL);
         cpu += strstr(line, "\"part\":\"cpu\"") != NULL;
         query += strstr(line, "\"part\":\"query\"") != NULL;
