@@ -395,7 +395,7 @@ TEST(stones_thud_on_the_boat) {
     const double *e = find_event(sc, st, WW_SE_STONE_THUD);
     ENSURE(e != NULL);
     if (e) {
-        double ms = 0.1, mb = WW_STONE_BOAT_MASS;
+        double ms = 0.1, mb = sc->boat.mass;
         ENSURE(e[6] == 1.0);
         /* met on the grown sphere, head on (the fall in 1.4 ms tilts the normal by ~1e-3) */
         double d[3] = {e[2] - 3, e[3] - 5, e[4]};

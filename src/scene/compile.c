@@ -1138,6 +1138,12 @@ void ww_scene_defaults(ww_scene *sc) {
     sc->far_clip = 5000.0;
     sc->interp = WW_INTERP_CATMULL_ROM;
     sc->camera_collide = 1;
+    /* each system's defaults, off: code that builds a scene and turns one on gets the format's */
+    ww_boat_defaults(&sc->boat);
+    ww_stones_defaults(&sc->stones);
+    ww_rod_defaults(&sc->rod);
+    ww_fish_defaults(&sc->fish);
+    ww_chest_defaults(&sc->chest);
     default_camera(sc);
     /* derived as compile_time derives them: 1 / (30 * 1/120) = 4 steps, 10 s * 30 fps */
     sc->steps_per_frame = 4;

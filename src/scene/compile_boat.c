@@ -9,6 +9,7 @@
 
 static const rule R_POSITION = FINITE("m");
 static const rule R_SIZE = OPEN_LO(0, 1e3, "m");
+static const rule R_MASS = OPEN_LO(0, 1e7, "kg");
 static const rule R_ACCELERATION = CLOSED(0, 1e3, "m/s^2");
 static const rule R_DRAG = CLOSED(0, 1e3, "1/s");
 static const rule R_SPEED = CLOSED(0, 1e3, "m/s");
@@ -26,7 +27,7 @@ static const char *const CAMERA_WORDS[] = {"free", "boat", NULL};
 
 ww_result wwc_boat(ctx *c, const section *objects) {
     static const char *const keys[] = {
-        "position",  "heading",       "radius",    "length", "beam",        "acceleration",
+        "position",  "heading",       "radius",    "mass",   "length", "beam", "acceleration",
         "drag",      "max_speed",     "reverse_speed", "turn_rate", "slip", "ride_height",
         "bob_time",  "seat",          "look_time", "look_pitch",  NULL};
     ww_boat_desc *b = &c->sc->boat;
@@ -38,6 +39,7 @@ ww_result wwc_boat(ctx *c, const section *objects) {
     TRY(wwc_get_vec(c, &s, "position", 3, &R_POSITION, OPTIONAL, b->position));
     TRY(wwc_get_heading(c, &s, "heading", OPTIONAL, &b->heading));
     TRY(wwc_get_number(c, &s, "radius", &R_SIZE, OPTIONAL, &b->radius));
+    TRY(wwc_get_number(c, &s, "mass", &R_MASS, OPTIONAL, &b->mass));
     TRY(wwc_get_number(c, &s, "length", &R_SIZE, OPTIONAL, &b->length));
     TRY(wwc_get_number(c, &s, "beam", &R_SIZE, OPTIONAL, &b->beam));
     TRY(wwc_get_number(c, &s, "acceleration", &R_ACCELERATION, OPTIONAL, &b->acceleration));

@@ -37,7 +37,7 @@ static const rule R_DURATION = OPEN_LO(0, 1e5, "s");
 static const rule R_WIGGLE = CLOSED(0, 1e3, "");
 static const rule R_REACH = OPEN_LO(0, 1e3, "m");
 
-static void rod_defaults(ww_rod_desc *r) {
+void ww_rod_defaults(ww_rod_desc *r) {
     *r = (ww_rod_desc){.on = 0,
                        .angle = {ww_m_rad(10.0), ww_m_rad(40.0)},
                        .speed = {6.0, 16.0},
@@ -53,7 +53,7 @@ static void rod_defaults(ww_rod_desc *r) {
                        .splash = 0.03};
 }
 
-static void fish_defaults(ww_fish_desc *f) {
+void ww_fish_defaults(ww_fish_desc *f) {
     *f = (ww_fish_desc){.on = 0,
                         .count = 12,
                         .mode = WW_FISH_WANDER,
@@ -196,8 +196,8 @@ static ww_result compile_fish(ctx *c, const section *objects) {
 }
 
 ww_result wwc_fishing(ctx *c, const section *objects) {
-    rod_defaults(&c->sc->rod);
-    fish_defaults(&c->sc->fish);
+    ww_rod_defaults(&c->sc->rod);
+    ww_fish_defaults(&c->sc->fish);
     TRY(compile_rod(c, objects));
     TRY(compile_fish(c, objects));
     if (c->sc->rod.on) c->sc->ripples_on = 1; /* the lure's splash */

@@ -27,7 +27,7 @@ static const char *const NEAR_WORDS[] = {[WW_CHEST_NEAR_AUTO] = "auto",
                                          [WW_CHEST_NEAR_CAMERA] = "camera", NULL};
 
 /* seed 000: the first chest about five minutes in, then every five minutes, 15 s to find it */
-static void chest_defaults(ww_chest_desc *d) {
+void ww_chest_defaults(ww_chest_desc *d) {
     *d = (ww_chest_desc){.first = 300.0,
                          .every = 300.0,
                          .ttl = 15.0,
@@ -42,7 +42,7 @@ static ww_result compile_chest(ctx *c, const section *objects) {
                                        NULL};
     ww_chest_desc *d = &c->sc->chest;
     int on = d->on; /* a chest event read earlier keeps it on */
-    chest_defaults(d);
+    ww_chest_defaults(d);
     d->on = on;
     section s;
     TRY(wwc_open_section(c, objects, "chest", keys, &s));

@@ -17,6 +17,7 @@ typedef struct ww_boat_desc {
     double position[3];  /* start, m: y is the hull centre's start height (it then floats) */
     double heading;      /* start, rad (0 = +x, 90 deg = +z, as wave directions) */
     double radius;       /* collision sphere and cube-pushing circle, m */
+    double mass;         /* kg: what a stone's impulse moves */
     double length;       /* hull length, m: bow and stern sample the surface at +-length/2;
                           * waves shorter than this are not followed */
     double beam;         /* hull width, m: port and starboard sample at +-beam/2 */
@@ -39,6 +40,7 @@ static inline void ww_boat_defaults(ww_boat_desc *b) {
         .position = {0.0, 0.25, 0.0},
         .heading = 0.0,
         .radius = 2.0,
+        .mass = 250.0,        /* a 4 m aluminium skiff with its driver */
         .length = 4.0,
         .beam = 1.6,
         .acceleration = 6.0,  /* terminal speed acceleration / drag = 5 m/s (18 km/h) */

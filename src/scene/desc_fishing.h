@@ -58,4 +58,8 @@ typedef struct ww_fish_desc {
     double reach;        /* targets: a target within this is reached, m */
 } ww_fish_desc;
 
+/* the file format's defaults (on stays 0); compile_fishing.c */
+void ww_rod_defaults(ww_rod_desc *r);
+void ww_fish_defaults(ww_fish_desc *f);
+
 #endif

@@ -60,4 +60,7 @@ typedef struct ww_models_desc {
     ww_model_desc model[WW_MAX_MODELS];
 } ww_models_desc;
 
+/* the file format's defaults (on stays 0); compile_reef.c */
+void ww_chest_defaults(ww_chest_desc *d);
+
 #endif

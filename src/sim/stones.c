@@ -338,7 +338,7 @@ static void thud(const ww_scene *sc, ww_state *st, int i, const contact *c) {
     const ww_stones_desc *d = &sc->stones;
     double *p = st->stone_pos + 3 * i, *v = st->stone_vel + 3 * i;
     double *bv = c->kind == CUBE ? st->cube_vel + 3 * c->body : st->boat_vel;
-    double mb = WW_STONE_BOAT_MASS;
+    double mb = sc->boat.mass;
     if (c->kind == CUBE) {
         double e = sc->cubes.cube[c->body].size;
         mb = sc->cubes.cube[c->body].density * e * e * e;

@@ -43,7 +43,7 @@
  *   faster, else a tiny one; it then relaxes to the sinking speed (time constant
  *   WW_STONE_SINK_TAU) and its slot is freed on the seabed.
  * - a thud: impulse J = (1 + e) m_red v_rel.n on the cube (mass density size^3, no spin) or the
- *   boat (WW_STONE_BOAT_MASS), a tiny ripple under it and a stone_thud event.
+ *   boat (objects.boat.mass), a tiny ripple under it and a stone_thud event.
  */
 #ifndef WW_STONES_H
 #define WW_STONES_H
@@ -52,7 +52,6 @@
 
 #define WW_STONE_CONTACTS_PER_STEP 8
 #define WW_STONE_SINK_TAU 0.25   /* s: a sinking stone's velocity relaxes with this time constant */
-#define WW_STONE_BOAT_MASS 250.0 /* kg: the boat's description has no mass */
 
 void ww_stones_reset(const ww_scene *sc, ww_state *st);
 void ww_stones_step(const ww_scene *sc, ww_state *st);
