@@ -237,3 +237,18 @@ TEST(world_integrator_knob_exact_and_euler) {
     ENSURE(e30 > 1e-3);
     ENSURE_NEAR(e30 / e60, 2.0, EULER_ORDER_TOL * 2.0);
 }
+
+/* a cross-check on an event written in a --script file names that file, not the scene */
+TEST(world_script_file_errors_name_the_script) {
+    char path[600];
+    snprintf(path, sizeof path, "%s/bad_press.yaml", ww_test_tmpdir("world_script"));
+    ENSURE(ww_test_write_text(path, "script:\n  - {t: 1, throw: {charge: 0.5}}\n"
+                                    "  - {t: 2, press: {cube: 9, hold: 1}}\n") == 0);
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_scene_load_with_script("scenes/lake.yaml", path, NULL, 0, &sc, &err),
+                  WW_E_INCONSISTENT);
+    ENSURE(sc == NULL);
+    ENSURE_MSG(strcmp(err.file, path) == 0 && err.line == 3 && err.column == 5, "%s:%d:%d: %s",
+               err.file, err.line, err.column, err.msg);
+}

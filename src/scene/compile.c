@@ -1002,7 +1002,9 @@ static ww_result compile_event(ctx *c, const ww_node *item, int i, ww_event *ev)
     keys[NACTIONS + 1] = NULL;
     section s;
     TRY(wwc_open_item(c, item, "script", i, keys, &s));
-    *ev = (ww_event){.line = s.map->mark.line, .column = s.map->mark.column};
+    *ev = (ww_event){.line = s.map->mark.line,
+                     .column = s.map->mark.column,
+                     .in_script = s.map->mark.file && strcmp(s.map->mark.file, c->file) != 0};
     TRY(wwc_get_number(c, &s, "t", &R_EVENT_TIME, REQUIRED, &ev->t));
 
     /* exactly one action */
@@ -1198,6 +1200,9 @@ static ww_result load_tree(ww_tree *t, ww_tree *script, const char *path, const 
         ww_scene_defaults(sc);
         sc->ncam = 0; /* the file's path, or the default key when it has none */
         scene_names(sc, path);
+        const ww_node *sroot = script ? ww_tree_root(script) : NULL;
+        if (sroot && sroot->mark.file)
+            snprintf(sc->script_path, sizeof sc->script_path, "%s", sroot->mark.file);
         r = compile_scene(&c, ww_tree_root(t), script ? ww_tree_root(script) : NULL);
     }
     ww_tree_free(t);

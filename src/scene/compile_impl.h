@@ -108,6 +108,9 @@ ww_result wwc_action_camera(ctx *c, const section *s, const ww_node *value, ww_e
 ww_result wwc_action_press(ctx *c, const section *s, const ww_node *value, ww_event *ev);
 ww_result wwc_action_chest(ctx *c, const section *s, const ww_node *value, ww_event *ev);
 
+/* the file an event was written in: the scene, or the --script file */
+const char *wwc_event_file(const ctx *c, const ww_event *ev);
+
 /* cross-checks once every section is read (e.g. press.cube < number of cubes) */
 ww_result wwc_check_world(ctx *c);                        /* compile_objects.c */
 

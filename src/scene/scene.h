@@ -147,6 +147,7 @@ typedef struct ww_event {
     int index;           /* the other actions' object index */
     int flags;           /* the other actions' options */
     int line, column;    /* where it was written, for messages */
+    int in_script;       /* written in the --script file (ww_scene.script_path), not the scene */
 } ww_event;
 
 typedef enum ww_tonemap_op { WW_TONEMAP_EXP = 0, WW_TONEMAP_ACES } ww_tonemap_op;
@@ -154,6 +155,7 @@ typedef enum ww_tonemap_op { WW_TONEMAP_EXP = 0, WW_TONEMAP_ACES } ww_tonemap_op
 typedef struct ww_scene {
     char path[256];            /* file it came from */
     char name[64];             /* file name without folder and extension */
+    char script_path[256];     /* the --script file merged into the timeline, "" for none */
     uint64_t seed;
 
     /* time */
