@@ -52,8 +52,4 @@ typedef struct ww_cube_water {
 
 void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water *out);
 
-/* x'' = acc - w2 x - gamma x' advanced by dt from (x, v), exactly (pure helper) */
-void ww_m_damped_oscillator(double w2, double gamma, double acc, double dt, double *x,
-                            double *v);
-
 #endif
