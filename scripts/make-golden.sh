@@ -11,5 +11,13 @@ trap 'rm -rf "$tmp"' EXIT
 mkdir -p golden/minimal golden/demo
 cp "$tmp/minimal/frame_00000.png" golden/minimal/
 cp "$tmp/demo/frame_00000.png" "$tmp/demo/frame_00150.png" golden/demo/
+# one golden per feature of the render pipeline: frame 0 of each scenes/features/NAME.yaml
+mkdir -p golden/features
+for s in scenes/features/*.yaml; do
+    [ -e "$s" ] || continue
+    n=$(basename "$s" .yaml)
+    "$BIN" render "$s" --frames 1 -o "$tmp/features/$n" --quiet
+    cp "$tmp/features/$n/frame_00000.png" "golden/features/$n.png"
+done
 "$BIN" backends --renderer > golden/RENDERER
 echo "golden: blessed with $(cat golden/RENDERER); review the PNGs, then commit them" >&2

@@ -86,4 +86,24 @@ int ww_test_json_lines(const char *text);
 /* 1 when a GL backend can be opened here */
 int ww_test_have_gl(void);
 
+/* tests/golden.c: images */
+/* this machine's GL renderer is the one that blessed golden/ (golden/RENDERER) */
+int ww_test_renderer_is_blessed(void);
+/* actual (PNG) against golden (PNG): exact on the blessing renderer, within a tolerance elsewhere;
+ * a failure names both files and says how to re-bless */
+void ww_test_check_golden(const char *golden, const char *actual);
+/* render frame 0 of scene into dir/frame_00000.png with extra arguments (e.g. "--set
+ * render.bloom=false"); the exit status */
+int ww_test_render(const char *scene, const char *args, const char *dir);
+/* where two PNGs of one size differ, inside and outside a rectangle given as fractions of the
+ * image (x0, y0, x1, y1; y from the top row): pixels whose largest channel difference exceeds
+ * thresh, and the largest difference on each side */
+typedef struct ww_test_region {
+    long inside, outside;       /* differing pixels */
+    long inside_px, outside_px; /* pixels on each side */
+    int max_inside, max_outside;
+} ww_test_region;
+int ww_test_region_diff(const char *a, const char *b, const double rect[4], int thresh,
+                        ww_test_region *d);
+
 #endif

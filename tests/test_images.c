@@ -10,78 +10,6 @@
 #include "io/writers.h"
 #include "test.h"
 
-/* on a renderer other than the one in golden/RENDERER (another Mesa, a GPU): every channel within
- * this many 8-bit levels, and the image's PSNR at least this many dB */
-#define GOLDEN_FOREIGN_MAX_DIFF 24
-#define GOLDEN_FOREIGN_PSNR_MIN 32.0
-
-typedef struct {
-    int max_diff;
-    double psnr;
-    long differing;
-} image_diff;
-
-static int diff_images(const ww_image *a, const ww_image *b, image_diff *d) {
-    if (a->width != b->width || a->height != b->height || a->channels != b->channels) return -1;
-    size_t n = (size_t)a->width * (size_t)a->height * (size_t)a->channels;
-    double se = 0;
-    *d = (image_diff){0};
-    for (size_t i = 0; i < n; i++) {
-        int e = abs((int)a->u8[i] - (int)b->u8[i]);
-        if (e > d->max_diff) d->max_diff = e;
-        d->differing += e != 0;
-        se += (double)e * e;
-    }
-    double mse = se / (double)n;
-    d->psnr = mse > 0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
-    return 0;
-}
-
-/* "GL_RENDERER | GL_VERSION" of the auto backend here, or "" without GL */
-static void current_renderer(char *out, size_t cap) {
-    out[0] = 0;
-    ww_backend *b = NULL;
-    ww_error err = {0};
-    if (ww_backend_open(WW_BACKEND_AUTO, &b, &err) != WW_OK) return;
-    snprintf(out, cap, "%s | %s", ww_backend_renderer(b), ww_backend_version(b));
-    ww_backend_close(b);
-}
-
-/* this machine renders with the renderer that blessed golden/ (same GL_RENDERER and version) */
-static int renderer_is_blessed(void) {
-    char here[512];
-    current_renderer(here, sizeof here);
-    char *blessed = ww_test_read_file("golden/RENDERER", NULL);
-    int same = blessed && here[0] && strncmp(blessed, here, strlen(here)) == 0;
-    free(blessed);
-    return same;
-}
-
-static void check_golden(const char *golden, const char *actual) {
-    ww_image g = {0}, a = {0};
-    ww_error err = {0};
-    ENSURE_MSG(ww_read_png(golden, &g, &err) == WW_OK, "%s: %s", golden, err.msg);
-    ENSURE_MSG(ww_read_png(actual, &a, &err) == WW_OK, "%s: %s", actual, err.msg);
-    if (!g.u8 || !a.u8) goto done;
-
-    int exact = renderer_is_blessed();
-    image_diff d = {0};
-    ENSURE(diff_images(&g, &a, &d) == 0);
-    if (exact) {
-        ENSURE_MSG(d.differing == 0, "%s: %ld channel values differ (max %d, PSNR %.1f dB); "
-                   "if the change is intended, look at %s and run make golden",
-                   golden, d.differing, d.max_diff, d.psnr, actual);
-    } else {
-        fprintf(stderr, "(renderer differs from golden/RENDERER: comparing with tolerance) ");
-        ENSURE_MSG(d.max_diff <= GOLDEN_FOREIGN_MAX_DIFF && d.psnr >= GOLDEN_FOREIGN_PSNR_MIN,
-                   "%s: max diff %d (allowed %d), PSNR %.1f dB (min %.1f)", golden, d.max_diff,
-                   GOLDEN_FOREIGN_MAX_DIFF, d.psnr, GOLDEN_FOREIGN_PSNR_MIN);
-    }
-done:
-    ww_image_free(&g);
-    ww_image_free(&a);
-}
-
 static int render(const char *args) {
     char c[2048];
     snprintf(c, sizeof c, "%s render %s --quiet", ww_test_bin(), args);
@@ -95,7 +23,7 @@ TEST(images_golden_minimal) {
     snprintf(args, sizeof args, "scenes/minimal.yaml --frames 1 -o %s", dir);
     ENSURE_EQ_INT(render(args), 0);
     snprintf(actual, sizeof actual, "%s/frame_00000.png", dir);
-    check_golden("golden/minimal/frame_00000.png", actual);
+    ww_test_check_golden("golden/minimal/frame_00000.png", actual);
 }
 
 TEST(images_golden_demo_two_frames) {
@@ -107,9 +35,9 @@ TEST(images_golden_demo_two_frames) {
     snprintf(args, sizeof args, "scenes/demo.yaml --size 256x144 --frames 150:151 -o %s", dir);
     ENSURE_EQ_INT(render(args), 0);
     snprintf(actual, sizeof actual, "%s/frame_00000.png", dir);
-    check_golden("golden/demo/frame_00000.png", actual);
+    ww_test_check_golden("golden/demo/frame_00000.png", actual);
     snprintf(actual, sizeof actual, "%s/frame_00150.png", dir);
-    check_golden("golden/demo/frame_00150.png", actual);
+    ww_test_check_golden("golden/demo/frame_00150.png", actual);
 }
 
 static void same_files(const char *pa, const char *pb) {
@@ -130,7 +58,7 @@ TEST(images_egl_and_osmesa_identical) {
     int have_osmesa = ww_backend_open(WW_BACKEND_OSMESA, &b, &err) == WW_OK;
     if (b) ww_backend_close(b);
     /* Mesa's llvmpipe (the renderer that blessed golden/) serves both; a GPU driver has no OSMesa */
-    if (!renderer_is_blessed() && !(have_egl && have_osmesa)) {
+    if (!ww_test_renderer_is_blessed() && !(have_egl && have_osmesa)) {
         fprintf(stderr, "(skipped: needs EGL and OSMesa; egl %d, osmesa %d) ", have_egl, have_osmesa);
         return;
     }

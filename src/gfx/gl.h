@@ -84,7 +84,33 @@
     X(PFNGLBINDBUFFERBASEPROC, BindBufferBase)                                                   \
     X(PFNGLGETUNIFORMBLOCKINDEXPROC, GetUniformBlockIndex)                                       \
     X(PFNGLUNIFORMBLOCKBINDINGPROC, UniformBlockBinding)                                         \
-    X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, GetActiveUniformBlockiv)
+    X(PFNGLGETACTIVEUNIFORMBLOCKIVPROC, GetActiveUniformBlockiv)                                 \
+    X(PFNGLVERTEXATTRIBDIVISORPROC, VertexAttribDivisor)                                         \
+    X(PFNGLDRAWELEMENTSINSTANCEDPROC, DrawElementsInstanced)                                     \
+    X(PFNGLDRAWARRAYSINSTANCEDPROC, DrawArraysInstanced)                                         \
+    X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                                                   \
+    X(PFNGLTEXSUBIMAGE2DPROC, TexSubImage2D)                                                     \
+    X(PFNGLTEXPARAMETERFPROC, TexParameterf)                                                     \
+    X(PFNGLTEXPARAMETERFVPROC, TexParameterfv)                                                   \
+    X(PFNGLTEXIMAGE2DMULTISAMPLEPROC, TexImage2DMultisample)                                     \
+    X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, RenderbufferStorageMultisample)                   \
+    X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                                                 \
+    X(PFNGLBLENDFUNCSEPARATEPROC, BlendFuncSeparate)                                             \
+    X(PFNGLBLENDEQUATIONPROC, BlendEquation)                                                     \
+    X(PFNGLCOLORMASKPROC, ColorMask)                                                             \
+    X(PFNGLPOLYGONOFFSETPROC, PolygonOffset)                                                     \
+    X(PFNGLFRONTFACEPROC, FrontFace)                                                             \
+    X(PFNGLDRAWBUFFERPROC, DrawBuffer)                                                           \
+    X(PFNGLUNIFORM1IVPROC, Uniform1iv)                                                           \
+    X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                               \
+    X(PFNGLVERTEXATTRIB4FPROC, VertexAttrib4f)                                                   \
+    X(PFNGLGENQUERIESPROC, GenQueries)                                                           \
+    X(PFNGLDELETEQUERIESPROC, DeleteQueries)                                                     \
+    X(PFNGLBEGINQUERYPROC, BeginQuery)                                                           \
+    X(PFNGLENDQUERYPROC, EndQuery)                                                               \
+    X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                                       \
+    X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                               \
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
 
 typedef struct ww_gl {
 #define WW_GL_DECL(type, name) type name;

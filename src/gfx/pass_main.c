@@ -1,5 +1,6 @@
 /* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the water
- * surface, then the sky on the far plane behind it (sky.c, water.c).
+ * surface and solid geometry, then the sky on the far plane behind it (sky.c, water.c,
+ * geometry.c).
  */
 #include <stdlib.h>
 
@@ -47,6 +48,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->DepthMask(GL_TRUE);
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     /* opaque geometry first: the sky then shades only what it leaves uncovered (early depth) */
+    if (r->geometry) ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
     ww_water_draw(p->water, gl, f);
     ww_sky_draw(p->sky, gl, r->empty_vao, f);
     return WW_OK;

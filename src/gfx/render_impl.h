@@ -40,7 +40,19 @@ typedef struct ww_frame {
     float pixel_angle;  /* angle one pixel spans at the image centre, rad */
     double fwd[3], right[3], up[3]; /* camera basis, world, unit */
     double tan_half[2]; /* tangent of half the horizontal and vertical field of view */
+    double surface_y;   /* water surface height over the camera, world m (exact query) */
+    int underwater;     /* the camera is below that surface */
+    int64_t frame;      /* frames rendered by this renderer before this one */
 } ww_frame;
+
+/* what one pass leaves for later passes of the same frame (renderer.c clears it each frame) */
+typedef struct ww_shared {
+    mat4 sun_view_proj;  /* shadow pass: camera-relative world -> the shadow map's clip space */
+    GLuint shadow_map;   /* its depth texture (compare mode on); 0 when there is no shadow pass */
+    int reflection;      /* reflection pass drew this frame (0 under water or when absent) */
+    GLuint reflection_tex; /* its mipmapped colour */
+    GLuint scene_color, scene_depth; /* prepass: solid geometry under the water; 0 when absent */
+} ww_shared;
 
 typedef struct ww_pass_ops {
     /* build programs and meshes; rt is the pass's own targets, already made, and stays valid
@@ -61,12 +73,37 @@ typedef struct ww_pass {
     ww_rt rt;
 } ww_pass;
 
+typedef struct ww_geometry ww_geometry;
+
 struct ww_renderer {
     const ww_gl *gl;
     int npasses;
     ww_pass passes[WW_PASS_COUNT];
     GLuint empty_vao; /* full-screen triangles take their corners from gl_VertexID */
+    ww_plan plan;     /* what the renderer was built from */
+    ww_geometry *geometry; /* solid geometry shared by the passes that draw it; NULL: none */
+    ww_shared shared; /* per frame, written by earlier passes for later ones */
+    int64_t frames;   /* frames rendered so far */
 };
+
+/* geometry.c: the scene's solid geometry (seabed, objects, models), its meshes uploaded once and
+ * its instances once per frame, drawn by every pass that needs it in one of these modes:
+ *   SHADOW      depth only, from the sun (view_proj: the shadow map's)
+ *   PREPASS     lit colour + depth of what lies under the water (clip plane keeps y < level)
+ *   REFLECTION  lit colour of what lies above the water, mirrored (clip plane keeps y > level)
+ *   MAIN        lit colour, everything
+ * view_proj maps camera-relative world positions to clip space; clip is a world plane
+ * (a, b, c, d) in camera-relative coordinates, kept where a x + b y + c z + d >= 0, or NULL. */
+typedef enum ww_geom_mode {
+    WW_GEOM_SHADOW = 0,
+    WW_GEOM_PREPASS,
+    WW_GEOM_REFLECTION,
+    WW_GEOM_MAIN
+} ww_geom_mode;
+ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err);
+void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
+                      mat4 view_proj, const float *clip);
+void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 
 /* renderer.c: the targets of pass `id`, or NULL when the plan has no such pass */
 const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id);

@@ -9,6 +9,7 @@
 
 #include "core/mathx.h"
 #include "gfx/render_impl.h"
+#include "sim/water.h"
 
 /* the passes a plan may name; a new pass is a pass_xxx.c and one line here */
 static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
@@ -42,6 +43,7 @@ void ww_renderer_free(ww_renderer *r) {
         if (p->self) p->ops->destroy(p->self, gl);
         ww_gfx_rt_destroy(gl, &p->rt);
     }
+    ww_geometry_free(r->geometry, gl);
     if (r->empty_vao) gl->DeleteVertexArrays(1, &r->empty_vao);
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
     free(r);
@@ -55,10 +57,12 @@ ww_result ww_renderer_new(const ww_gl *gl, const ww_scene *sc, const ww_plan *pl
     ww_renderer *r = calloc(1, sizeof *r);
     if (!r) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "renderer: out of memory");
     r->gl = gl;
+    r->plan = *plan;
     gl->GenVertexArrays(1, &r->empty_vao);
 
     /* every pass's targets first, so a pass can find the outputs it reads when created */
     ww_result rc = WW_OK;
+    if (plan->geometry) rc = ww_geometry_new(r, sc, &r->geometry, err);
     for (int i = 0; i < plan->npasses && rc == WW_OK; i++) {
         const ww_pass_desc *d = &plan->passes[i];
         WW_ASSERT(d->id >= 0 && d->id < WW_PASS_COUNT && pass_table[d->id] && d->name);
@@ -66,7 +70,7 @@ ww_result ww_renderer_new(const ww_gl *gl, const ww_scene *sc, const ww_plan *pl
         ww_pass *p = &r->passes[r->npasses++];
         p->id = d->id;
         p->ops = pass_table[d->id];
-        rc = ww_gfx_rt_create(gl, d, &p->rt, err);
+        if (d->ntargets > 0) rc = ww_gfx_rt_create(gl, d, &p->rt, err);
     }
     for (int i = 0; i < r->npasses && rc == WW_OK; i++) {
         ww_pass *p = &r->passes[i];
@@ -132,6 +136,12 @@ static void frame_camera(ww_frame *f, const ww_renderer *r) {
     }
     glm_mat4_mul(f->proj, f->view, f->view_proj);
     glm_mat4_inv(f->view_proj, f->inv_view_proj);
+
+    /* under water: below the exact surface over the camera (waves and ripples of the state) */
+    ww_water_sample ws;
+    ww_water_at(sc, st, st->cam_pos[0], st->cam_pos[2], 0.0, &ws);
+    f->surface_y = ws.height;
+    f->underwater = st->cam_pos[1] < ws.height;
 }
 
 ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st, ww_error *err) {
@@ -139,7 +149,9 @@ ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st
     ww_frame f;
     f.sc = sc;
     f.st = st;
+    f.frame = r->frames++;
     frame_camera(&f, r);
+    r->shared = (ww_shared){0};
 
     for (int i = 0; i < r->npasses; i++) {
         ww_pass *p = &r->passes[i];

@@ -2,6 +2,7 @@
  * and compiled into a ww_scene. One function per section over a shared layer of getters, each
  * value checked by a one-line rule (sokol's _SG_VALIDATE); the first error stops the load.
  */
+#include <errno.h>
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -36,14 +37,7 @@ static const rule R_DT = OPEN_LO(0, 1, "s");
 static const rule R_FPS = OPEN_LO(0, 1000, "frames/s");
 static const rule R_DURATION = OPEN_LO(0, 1e7, "s");
 static const rule R_START = CLOSED(0, 1e9, "s");
-static const rule R_SIZE = WHOLE(16, 16384, "px");
-static const rule R_EXPOSURE = OPEN_LO(0, 100, "");
-static const rule R_GAMMA = CLOSED(0.5, 5, "");
 static const rule R_HOURS = CLOSED(0, 24, "h");
-static const rule R_DAY_LENGTH = CLOSED(0, 1e9, "s");
-static const rule R_SUN_MAX = CLOSED(0, 90, "deg");
-static const rule R_FOG_COLOR = CLOSED(0, 100, "");
-static const rule R_FOG_DENSITY = CLOSED(0, 10, "1/m");
 static const rule R_LEVEL = CLOSED(-1e6, 1e6, "m");
 static const rule R_DEPTH = OPEN_LO(0, 1e4, "m");
 static const rule R_WATER_COLOR = CLOSED(0, 1, "");
@@ -103,9 +97,6 @@ static const action ACTIONS[] = {
 #define NACTIONS ((int)(sizeof ACTIONS / sizeof ACTIONS[0]))
 
 /* enum words, indexed by the enum value */
-static const char *const TONEMAP_WORDS[] = {[WW_TONEMAP_EXP] = "exp", [WW_TONEMAP_ACES] = "aces",
-                                            NULL};
-static const char *const SKY_WORDS[] = {"gradient", NULL};
 static const char *const WAVE_WORDS[] = {[WW_WAVES_FLAT] = "flat",
                                          [WW_WAVES_GERSTNER] = "gerstner",
                                          [WW_WAVES_SINES] = "sines",
@@ -405,6 +396,23 @@ ww_result wwc_lookup(ctx *c, const section *s, const char *key, need nd, const w
     return wwc_fail(c, WW_E_MISSING, s->map, "%s is missing required key '%s'", wwc_where(s), key);
 }
 
+ww_result wwc_resolve_path(ctx *c, const ww_node *n, char *out, size_t size) {
+    WW_ASSERT(n && n->kind == WW_NODE_SCALAR);
+    const char *from = n->mark.file ? n->mark.file : c->file;
+    const char *slash = from ? strrchr(from, '/') : NULL;
+    int dir = n->text[0] == '/' || !slash ? 0 : (int)(slash - from) + 1;
+    int len = snprintf(out, size, "%.*s%s", dir, from ? from : "", n->text);
+    if (n->len == 0)
+        return wwc_fail(c, WW_E_TYPE, n, "expected a file name, got an empty string");
+    if (len < 0 || (size_t)len >= size)
+        return wwc_fail(c, WW_E_RANGE, n, "the file name '%.60s...' is longer than %zu characters",
+                        n->text, size - 1);
+    FILE *f = fopen(out, "rb");
+    if (!f) return wwc_fail(c, WW_E_NOFILE, n, "cannot open '%s': %s", out, strerror(errno));
+    fclose(f);
+    return WW_OK;
+}
+
 /* the getters leave *out alone when an optional key is absent: it holds the default */
 ww_result wwc_get_number(ctx *c, const section *s, const char *key, const rule *r, need nd,
                             double *out) {
@@ -584,49 +592,6 @@ static ww_result compile_time(ctx *c, const section *top) {
                     "duration * fps = %g frames: expected at least 1 frame (duration >= %g s)",
                     sc->duration * sc->fps, 0.5 / sc->fps);
     return WW_OK;
-}
-
-static ww_result compile_render(ctx *c, const section *top) {
-    static const char *const keys[] = {"size", "tonemap", NULL};
-    static const char *const tonemap_keys[] = {"operator", "exposure", "gamma", NULL};
-    ww_scene *sc = c->sc;
-    section s, tm;
-    TRY(wwc_open_section(c, top, "render", keys, &s));
-    double size[2] = {sc->width, sc->height};
-    TRY(wwc_get_vec(c, &s, "size", 2, &R_SIZE, OPTIONAL, size));
-    sc->width = (int)size[0];
-    sc->height = (int)size[1];
-
-    TRY(wwc_open_section(c, &s, "tonemap", tonemap_keys, &tm));
-    int op = (int)sc->tonemap;
-    TRY(wwc_get_word(c, &tm, "operator", TONEMAP_WORDS, &op));
-    sc->tonemap = (ww_tonemap_op)op;
-    TRY(wwc_get_number(c, &tm, "exposure", &R_EXPOSURE, OPTIONAL, &sc->exposure));
-    return wwc_get_number(c, &tm, "gamma", &R_GAMMA, OPTIONAL, &sc->gamma);
-}
-
-static ww_result compile_sky(ctx *c, const section *top) {
-    static const char *const keys[] = {"model", "time_of_day", "day_length",
-                                       "sun_max_elevation", NULL};
-    ww_scene *sc = c->sc;
-    section s;
-    TRY(wwc_open_section(c, top, "sky", keys, &s));
-    int model = 0; /* gradient, the only sky so far: checked, nothing to store */
-    TRY(wwc_get_word(c, &s, "model", SKY_WORDS, &model));
-    TRY(wwc_get_number(c, &s, "time_of_day", &R_HOURS, OPTIONAL, &sc->time_of_day));
-    TRY(wwc_get_number(c, &s, "day_length", &R_DAY_LENGTH, OPTIONAL, &sc->day_length));
-    return wwc_get_angle(c, &s, "sun_max_elevation", &R_SUN_MAX, OPTIONAL, &sc->sun_max_elevation);
-}
-
-static ww_result compile_fog(ctx *c, const section *top) {
-    static const char *const keys[] = {"above", NULL};
-    static const char *const above_keys[] = {"color", "density", NULL};
-    ww_scene *sc = c->sc;
-    section s, above;
-    TRY(wwc_open_section(c, top, "fog", keys, &s));
-    TRY(wwc_open_section(c, &s, "above", above_keys, &above));
-    TRY(wwc_get_vec(c, &above, "color", 3, &R_FOG_COLOR, OPTIONAL, sc->fog_color));
-    return wwc_get_number(c, &above, "density", &R_FOG_DENSITY, OPTIONAL, &sc->fog_density);
 }
 
 /* what the model makes of a component's steepness and exponent: each is checked whatever the
@@ -892,7 +857,7 @@ static ww_result compile_ripples(ctx *c, const section *water) {
 
 static ww_result compile_water(ctx *c, const section *top) {
     static const char *const keys[] = {"level", "depth", "color", "fold", "waves", "ripples",
-                                       NULL};
+                                       "look", NULL};
     ww_scene *sc = c->sc;
     section s;
     TRY(wwc_open_section(c, top, "water", keys, &s));
@@ -903,7 +868,8 @@ static ww_result compile_water(ctx *c, const section *top) {
     TRY(wwc_get_word(c, &s, "fold", FOLD_WORDS, &fold));
     sc->fold = (ww_fold_policy)fold;
     TRY(compile_waves(c, &s));
-    return compile_ripples(c, &s);
+    TRY(compile_ripples(c, &s));
+    return wwc_water_look(c, &s);
 }
 
 static ww_result compile_camera_key(ctx *c, const ww_node *item, int i, ww_camera_key *k) {
@@ -1104,6 +1070,7 @@ void ww_scene_defaults(ww_scene *sc) {
     sc->sun_max_elevation = ww_m_rad(60.0);
     for (int i = 0; i < 3; i++) sc->fog_color[i] = -1.0;
     sc->fog_density = 0.0012;
+    ww_render_defaults(&sc->render);
     sc->water_level = 0.0;
     sc->water_depth = 8.0;
     sc->water_color[0] = 0.02;
@@ -1165,21 +1132,23 @@ static void scene_names(ww_scene *sc, const char *path) {
 /* root: the scene file's tree; script_root: the --script file's, or NULL */
 static ww_result compile_scene(ctx *c, const ww_node *root, const ww_node *script_root) {
     static const char *const keys[] = {"seed", "time", "render", "sky", "fog", "water",
-                                       "objects", "camera", "script", NULL};
+                                       "lights", "objects", "camera", "script", NULL};
     section top = {.map = root};
     TRY(wwc_check_keys(c, &top, keys));
     double seed = (double)c->sc->seed;
     TRY(wwc_get_number(c, &top, "seed", &R_SEED, OPTIONAL, &seed));
     c->sc->seed = (uint64_t)seed;
     TRY(compile_time(c, &top));
-    TRY(compile_render(c, &top));
-    TRY(compile_sky(c, &top));
-    TRY(compile_fog(c, &top));
+    TRY(wwc_render(c, &top));
+    TRY(wwc_sky(c, &top));
+    TRY(wwc_fog(c, &top));
     TRY(compile_water(c, &top));
+    TRY(wwc_lights(c, &top));
     TRY(compile_objects(c, &top));
     TRY(compile_camera(c, &top));
     section script = {.map = script_root};
     TRY(compile_script(c, &top, script_root ? &script : NULL));
+    TRY(wwc_check_lights(c, root));
     return wwc_check_world(c);
 }
 
@@ -1208,7 +1177,7 @@ static ww_result load_tree(ww_tree *t, ww_tree *script, const char *path, const 
     ww_tree_free(t);
     if (script) ww_tree_free(script);
     if (r != WW_OK) {
-        free(sc);
+        ww_scene_free(sc);
         return r;
     }
     *out = sc;

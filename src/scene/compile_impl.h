@@ -90,6 +90,20 @@ ww_result wwc_get_word(ctx *c, const section *s, const char *key, const char *co
 ww_result wwc_get_list(ctx *c, const section *s, const char *key, int max,
                        const ww_node **out);
 
+/* a file name written at node n, resolved against the folder of the file n was written in
+ * (absolute names stay), checked to be readable: an error at n otherwise */
+ww_result wwc_resolve_path(ctx *c, const ww_node *n, char *out, size_t size);
+
+/* ---- how the scene is drawn (compile_render.c) ------------------------------------------- */
+
+ww_result wwc_render(ctx *c, const section *top);        /* render.* */
+ww_result wwc_sky(ctx *c, const section *top);           /* sky.* */
+ww_result wwc_fog(ctx *c, const section *top);           /* fog.above, fog.below */
+ww_result wwc_water_look(ctx *c, const section *water);  /* water.look */
+ww_result wwc_lights(ctx *c, const section *top);        /* lights */
+/* each light's parent names the boat or a model (once objects are read) */
+ww_result wwc_check_lights(ctx *c, const ww_node *root);
+
 /* ---- the scripted world's sections (compile_<system>.c) ---------------------------------- */
 
 /* objects.<key> of each system; `objects` may have map NULL (no objects section) */

@@ -1,6 +1,6 @@
 /* plan.c - from a compiled scene to the list of systems that run and render passes that exist.
- * A scene pays only for what it uses: no waves, no wave system; later issues add passes here
- * (shadow map, reflection, bloom, shafts, FXAA) each behind the scene key that asks for it.
+ * A scene pays only for what it uses: no waves, no wave system; no casters, no shadow map; each
+ * pass exists behind the scene key that asks for it (scene/desc_render.h).
  */
 #include "scene/plan.h"
 
@@ -41,6 +41,18 @@ const char *ww_format_name(ww_format f) {
     case WW_FMT_RGBA8: return "rgba8";
     }
     return "?";
+}
+
+/* a target side at a fraction of the frame's, at least one texel */
+static int scaled(int side, double f) {
+    int n = (int)lround(side * f);
+    return n > 0 ? n : 1;
+}
+
+const ww_pass_desc *ww_plan_pass(const ww_plan *p, ww_pass_id id) {
+    for (int i = 0; i < p->npasses; i++)
+        if (p->passes[i].id == id) return &p->passes[i];
+    return NULL;
 }
 
 static void add_pass(ww_plan *p, ww_pass_id id, const char *name, const char *what) {
@@ -172,12 +184,51 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     p->system_on[WW_SYS_BOAT] = sc->boat.on;
     p->system_on[WW_SYS_COLLIDE] = sc->camera_collide && ww_scene_has_objects(sc);
 
-    add_pass(p, WW_PASS_MAIN, "main", "HDR: gradient sky with sun disc, water surface");
+    /* solid geometry: what casts shadows and what refraction and shafts see under the water */
+    const ww_render_desc *rd = &sc->render;
+    p->geometry = ww_scene_has_objects(sc) || rd->seabed;
+    int casters = ww_scene_has_objects(sc);
+
+    if (rd->shadows.on && casters) {
+        add_pass(p, WW_PASS_SHADOW, "shadow", "sun depth map, orthographic, fitted to the view; PCF");
+        add_target(p, "depth", WW_FMT_DEPTH24, rd->shadows.size, rd->shadows.size);
+    }
+    if (rd->refraction && p->geometry) {
+        add_pass(p, WW_PASS_PREPASS, "prepass", "solid geometry under the water: colour + depth");
+        add_target(p, "color", WW_FMT_RGBA16F, width, height);
+        add_target(p, "depth", WW_FMT_DEPTH24, width, height);
+    }
+    if (rd->reflection.on) {
+        int rw = scaled(width, rd->reflection.scale), rh = scaled(height, rd->reflection.scale);
+        add_pass(p, WW_PASS_REFLECTION, "reflection",
+                 "camera mirrored about the water plane, clip plane, mipmapped; skipped under water");
+        add_target(p, "color", WW_FMT_RGBA16F, rw, rh);
+        add_target(p, "depth", WW_FMT_DEPTH24, rw, rh);
+    }
+    add_pass(p, WW_PASS_MAIN, "main",
+             p->geometry ? "HDR: sky, lit geometry, water" : "HDR: sky with sun disc, water");
     add_target(p, "hdr", WW_FMT_RGBA16F, width, height);
     add_target(p, "depth", WW_FMT_DEPTH24, width, height);
+    if (rd->bloom.on) {
+        int bw = scaled(width, rd->bloom.scale), bh = scaled(height, rd->bloom.scale);
+        add_pass(p, WW_PASS_BLOOM, "bloom", "bright pass, separable Gaussian ping-pong");
+        add_target(p, "ping", WW_FMT_RGBA16F, bw, bh);
+        add_target(p, "pong", WW_FMT_RGBA16F, bw, bh);
+    }
+    if (rd->shafts.on) {
+        int sw = scaled(width, rd->shafts.scale), sh = scaled(height, rd->shafts.scale);
+        add_pass(p, WW_PASS_SHAFTS, "shafts", "radial blur toward the sun over the masked scene");
+        add_target(p, "shafts", WW_FMT_RGBA16F, sw, sh);
+    }
     add_pass(p, WW_PASS_TONEMAP, "tonemap",
              sc->tonemap == WW_TONEMAP_ACES ? "HDR -> sRGB8, ACES fit" : "HDR -> sRGB8, 1 - exp(-E c)");
     add_target(p, "ldr", WW_FMT_RGBA8, width, height);
+    if (rd->fxaa) {
+        add_pass(p, WW_PASS_FXAA, "fxaa", "edge anti-aliasing of the sRGB8 image");
+        add_target(p, "ldr", WW_FMT_RGBA8, width, height);
+    }
+    if (rd->hud.clock || rd->hud.counters || rd->hud.chest_marker)
+        add_pass(p, WW_PASS_HUD, "hud", "text and markers over the final image");
     plan_water(sc, height, &p->water);
 }
 

@@ -28,9 +28,17 @@ typedef enum ww_system {
     WW_SYS_COUNT
 } ww_system;
 
+/* in the order they run; each exists only when the scene needs it (ww_plan_build) */
 typedef enum ww_pass_id {
-    WW_PASS_MAIN = 0,   /* HDR: sky, water */
-    WW_PASS_TONEMAP,    /* HDR -> sRGB8 */
+    WW_PASS_SHADOW = 0, /* sun depth map (render.shadows, with geometry to cast) */
+    WW_PASS_PREPASS,    /* colour + depth of solid geometry for refraction and shafts */
+    WW_PASS_REFLECTION, /* the scene mirrored about the water plane (render.reflection) */
+    WW_PASS_MAIN,       /* HDR: sky, lit geometry, water */
+    WW_PASS_BLOOM,      /* bright pass + separable Gaussian, half resolution */
+    WW_PASS_SHAFTS,     /* radial blur toward the sun over the depth-masked scene */
+    WW_PASS_TONEMAP,    /* HDR (+ bloom + shafts) -> sRGB8 */
+    WW_PASS_FXAA,       /* edge anti-aliasing of the sRGB8 image */
+    WW_PASS_HUD,        /* text and markers drawn into the last sRGB8 image (no target) */
     WW_PASS_COUNT
 } ww_pass_id;
 
@@ -48,7 +56,7 @@ typedef struct ww_pass_desc {
     ww_pass_id id;
     const char *name;
     const char *what;                      /* one line for `plan` */
-    int ntargets;
+    int ntargets;                          /* 0: draws into an earlier pass's image */
     ww_target_desc targets[WW_PLAN_MAX_TARGETS];
 } ww_pass_desc;
 
@@ -110,12 +118,15 @@ typedef struct ww_plan_water {
 
 typedef struct ww_plan {
     int system_on[WW_SYS_COUNT];
+    int geometry;      /* the scene has solid geometry (objects, models, seabed) to draw */
     int npasses;
     ww_pass_desc passes[WW_PASS_COUNT];
     ww_plan_water water;
 } ww_plan;
 
 void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p);
+/* the planned pass id, or NULL */
+const ww_pass_desc *ww_plan_pass(const ww_plan *p, ww_pass_id id);
 const char *ww_system_name(ww_system s);
 size_t ww_format_bytes_per_pixel(ww_format f);
 const char *ww_format_name(ww_format f);

@@ -21,6 +21,7 @@
 #include "scene/desc_cubes.h"
 #include "scene/desc_fishing.h"
 #include "scene/desc_reef.h"
+#include "scene/desc_render.h"
 #include "scene/desc_stones.h"
 
 #define WW_MAX_WAVES 256
@@ -177,6 +178,10 @@ typedef struct ww_scene {
     double time_of_day;        /* hours at start, 0..24 */
     double day_length;         /* simulated seconds per 24 h; 0 keeps the clock still */
     double sun_max_elevation;  /* elevation of the sun at noon, rad */
+
+    /* how it is drawn: the passes' switches and knobs, sky model, fog below, water optics,
+     * lights (scene/desc_render.h) */
+    ww_render_desc render;
 
     /* fog above water (exp2) */
     double fog_color[3];       /* linear RGB; all < 0 means "use the sky horizon colour" */

@@ -1,0 +1,127 @@
+/* golden.c - image checks shared by the test files: a rendered frame against its golden (exact
+ * on the renderer that blessed golden/, within a tolerance elsewhere), rendering one frame of a
+ * scene, and where two images differ relative to a rectangle (the toggle tests).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gfx/backend.h"
+#include "io/writers.h"
+#include "test.h"
+
+/* on a renderer other than the one in golden/RENDERER (another Mesa, a GPU): every channel within
+ * this many 8-bit levels, and the image's PSNR at least this many dB */
+#define GOLDEN_FOREIGN_MAX_DIFF 24
+#define GOLDEN_FOREIGN_PSNR_MIN 32.0
+
+typedef struct {
+    int max_diff;
+    double psnr;
+    long differing;
+} image_diff;
+
+static int diff_images(const ww_image *a, const ww_image *b, image_diff *d) {
+    if (a->width != b->width || a->height != b->height || a->channels != b->channels) return -1;
+    size_t n = (size_t)a->width * (size_t)a->height * (size_t)a->channels;
+    double se = 0;
+    *d = (image_diff){0};
+    for (size_t i = 0; i < n; i++) {
+        int e = abs((int)a->u8[i] - (int)b->u8[i]);
+        if (e > d->max_diff) d->max_diff = e;
+        d->differing += e != 0;
+        se += (double)e * e;
+    }
+    double mse = se / (double)n;
+    d->psnr = mse > 0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
+    return 0;
+}
+
+/* "GL_RENDERER | GL_VERSION" of the auto backend here, or "" without GL */
+static void current_renderer(char *out, size_t cap) {
+    out[0] = 0;
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    if (ww_backend_open(WW_BACKEND_AUTO, &b, &err) != WW_OK) return;
+    snprintf(out, cap, "%s | %s", ww_backend_renderer(b), ww_backend_version(b));
+    ww_backend_close(b);
+}
+
+/* this machine renders with the renderer that blessed golden/ (same GL_RENDERER and version) */
+int ww_test_renderer_is_blessed(void) {
+    char here[512];
+    current_renderer(here, sizeof here);
+    char *blessed = ww_test_read_file("golden/RENDERER", NULL);
+    int same = blessed && here[0] && strncmp(blessed, here, strlen(here)) == 0;
+    free(blessed);
+    return same;
+}
+
+void ww_test_check_golden(const char *golden, const char *actual) {
+    ww_image g = {0}, a = {0};
+    ww_error err = {0};
+    ENSURE_MSG(ww_read_png(golden, &g, &err) == WW_OK, "%s: %s", golden, err.msg);
+    ENSURE_MSG(ww_read_png(actual, &a, &err) == WW_OK, "%s: %s", actual, err.msg);
+    if (!g.u8 || !a.u8) goto done;
+
+    int exact = ww_test_renderer_is_blessed();
+    image_diff d = {0};
+    ENSURE(diff_images(&g, &a, &d) == 0);
+    if (exact) {
+        ENSURE_MSG(d.differing == 0, "%s: %ld channel values differ (max %d, PSNR %.1f dB); "
+                   "if the change is intended, look at %s and run make golden",
+                   golden, d.differing, d.max_diff, d.psnr, actual);
+    } else {
+        fprintf(stderr, "(renderer differs from golden/RENDERER: comparing with tolerance) ");
+        ENSURE_MSG(d.max_diff <= GOLDEN_FOREIGN_MAX_DIFF && d.psnr >= GOLDEN_FOREIGN_PSNR_MIN,
+                   "%s: max diff %d (allowed %d), PSNR %.1f dB (min %.1f)", golden, d.max_diff,
+                   GOLDEN_FOREIGN_MAX_DIFF, d.psnr, GOLDEN_FOREIGN_PSNR_MIN);
+    }
+done:
+    ww_image_free(&g);
+    ww_image_free(&a);
+}
+
+int ww_test_render(const char *scene, const char *args, const char *dir) {
+    char c[4096];
+    snprintf(c, sizeof c, "%s render %s --frames 1 -o %s --quiet %s", ww_test_bin(), scene, dir,
+             args ? args : "");
+    return ww_test_run(c, NULL, NULL);
+}
+
+int ww_test_region_diff(const char *a_path, const char *b_path, const double rect[4], int thresh,
+                        ww_test_region *d) {
+    ww_image a = {0}, b = {0};
+    ww_error err = {0};
+    *d = (ww_test_region){0};
+    int rc = -1;
+    if (ww_read_png(a_path, &a, &err) != WW_OK || ww_read_png(b_path, &b, &err) != WW_OK) goto done;
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels) goto done;
+    int x0 = (int)floor(rect[0] * a.width), x1 = (int)ceil(rect[2] * a.width);
+    int y0 = (int)floor(rect[1] * a.height), y1 = (int)ceil(rect[3] * a.height);
+    for (int y = 0; y < a.height; y++) {
+        for (int x = 0; x < a.width; x++) {
+            int e = 0;
+            for (int c = 0; c < a.channels; c++) {
+                size_t i = ((size_t)y * (size_t)a.width + (size_t)x) * (size_t)a.channels + (size_t)c;
+                int dc = abs((int)a.u8[i] - (int)b.u8[i]);
+                if (dc > e) e = dc;
+            }
+            int in = x >= x0 && x < x1 && y >= y0 && y < y1;
+            if (in) {
+                d->inside_px++;
+                d->inside += e > thresh;
+                if (e > d->max_inside) d->max_inside = e;
+            } else {
+                d->outside_px++;
+                d->outside += e > thresh;
+                if (e > d->max_outside) d->max_outside = e;
+            }
+        }
+    }
+    rc = 0;
+done:
+    ww_image_free(&a);
+    ww_image_free(&b);
+    return rc;
+}
