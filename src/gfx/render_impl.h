@@ -82,6 +82,8 @@ struct ww_renderer {
     GLuint empty_vao; /* full-screen triangles take their corners from gl_VertexID */
     ww_plan plan;     /* what the renderer was built from */
     ww_geometry *geometry; /* solid geometry shared by the passes that draw it; NULL: none */
+    GLuint sky_cubemap; /* the sky's cubemap texture (sky.model cubemap), 0 otherwise; set
+                         * when the pass drawing the sky is created, for the water to reflect */
     ww_shared shared; /* per frame, written by earlier passes for later ones */
     int64_t frames;   /* frames rendered so far */
 };

@@ -13,6 +13,7 @@
 
 #include "core/mathx.h"
 #include "core/rng.h"
+#include "scene/assets.h"
 #include "scene/compile_impl.h"
 #include "scene/spectrum.h"
 
@@ -1217,4 +1218,11 @@ ww_result ww_scene_load_string(const char *name, const char *text, size_t len, c
     return load_tree(t, NULL, name, sets, nsets, out, err);
 }
 
-void ww_scene_free(ww_scene *sc) { free(sc); }
+void ww_scene_free(ww_scene *sc) {
+    if (!sc) return;
+    if (sc->assets) {
+        ww_assets_free(sc->assets);
+        free(sc->assets);
+    }
+    free(sc);
+}

@@ -50,10 +50,39 @@ typedef struct ww_bubbles_desc {
     ww_emitter_desc emitter[WW_MAX_EMITTERS];
 } ww_bubbles_desc;
 
+/* the shapes the renderer generates (gfx/meshgen.h), each within the unit box [-0.5, 0.5]^3 */
+typedef enum ww_mesh_kind {
+    WW_MESH_NONE = 0, /* bounds only: solid to the camera, not drawn */
+    WW_MESH_BOX,
+    WW_MESH_SPHERE,
+    WW_MESH_STONE,
+    WW_MESH_HULL,
+    WW_MESH_FISH,
+    WW_MESH_LURE,
+    WW_MESH_CHEST,
+    WW_MESH_GRID,
+    WW_MESH_OBJ       /* an OBJ file: ww_model_desc.asset */
+} ww_mesh_kind;
+
 typedef struct ww_model_desc {
     char name[32];   /* for messages and the renderer; "" when not given */
-    double min[3], max[3]; /* axis-aligned bounds, m */
+    double min[3], max[3]; /* axis-aligned bounds, m (given, or the transformed mesh's) */
+    ww_mesh_kind mesh;
+    int asset;       /* WW_MESH_OBJ: index into the scene's assets' meshes */
+    double position[3];    /* relative to the parent, m */
+    double rotation[3];    /* yaw (about y), pitch (about x), roll (about z), rad, applied roll
+                            * first, then pitch, then yaw */
+    double scale[3];
+    double color[3];       /* linear RGB albedo (multiplies an OBJ's materials) */
+    int parent;            /* index of the parent model, -1 world, WW_PARENT_BOAT the boat */
+    double local[16];      /* model -> parent, column-major */
+    double world[16];      /* model -> world for static chains (parent -1 up the chain),
+                            * column-major; relative to the boat's frame when the chain ends at
+                            * the boat (the renderer composes it with the boat's pose per frame) */
+    int line, column;      /* where it was written */
 } ww_model_desc;
+
+#define WW_PARENT_BOAT (-2)
 
 typedef struct ww_models_desc {
     int count;       /* static models (their bounds are solid to the camera) */

@@ -182,6 +182,8 @@ typedef struct ww_scene {
     /* how it is drawn: the passes' switches and knobs, sky model, fog below, water optics,
      * lights (scene/desc_render.h) */
     ww_render_desc render;
+    struct ww_assets *assets;  /* decoded files the scene names (scene/assets.h); NULL: none;
+                                * owned, freed by ww_scene_free */
 
     /* fog above water (exp2) */
     double fog_color[3];       /* linear RGB; all < 0 means "use the sky horizon colour" */
