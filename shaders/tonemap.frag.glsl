@@ -1,12 +1,20 @@
 #version 330 core
-// tonemap.frag.glsl - HDR to display: exposure, a tone curve, gamma encoding; alpha is 1.
+// tonemap.frag.glsl - HDR to display (seed 000's composite): the main pass's colour plus the
+// blurred bloom times its strength plus the light shafts, both upsampled bilinearly from their
+// smaller targets; then exposure, a tone curve and gamma encoding; alpha is 1.
 
-uniform sampler2D u_hdr;  // linear HDR colour, same size as the output
+uniform sampler2D u_hdr;    // linear HDR colour, same size as the output
+uniform sampler2D u_bloom;  // blurred bright light (bilinear), when u_bloom_on
+uniform sampler2D u_shafts; // light shafts (bilinear), when u_shafts_on
+uniform int u_bloom_on, u_shafts_on;
+uniform float u_bloom_strength;
 uniform float u_exposure; // E
 uniform float u_gamma;    // display gamma
 uniform int u_op;         // 0: exponential, 1: ACES (Narkowicz fit)
 
 out vec4 o_color;
+
+const float HDR_MAX = 65000.0; // a half float's overflow must not reach the curve as inf
 
 // Narkowicz 2015, "ACES Filmic Tone Mapping Curve"
 vec3 aces(vec3 x) {
@@ -14,7 +22,11 @@ vec3 aces(vec3 x) {
 }
 
 void main() {
-    vec3 hdr = max(texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb, vec3(0.0));
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec3 hdr = clamp(texelFetch(u_hdr, px, 0).rgb, 0.0, HDR_MAX);
+    vec2 uv = gl_FragCoord.xy / vec2(textureSize(u_hdr, 0));
+    if (u_bloom_on != 0) hdr += u_bloom_strength * max(texture(u_bloom, uv).rgb, vec3(0.0));
+    if (u_shafts_on != 0) hdr += max(texture(u_shafts, uv).rgb, vec3(0.0));
     vec3 x = u_exposure * hdr;
     vec3 c = u_op == 1 ? aces(x) : vec3(1.0) - exp(-x); // exp: 1 - e^(-E c), seed 000
     o_color = vec4(pow(c, vec3(1.0 / u_gamma)), 1.0);

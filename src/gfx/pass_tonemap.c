@@ -1,5 +1,7 @@
-/* pass_tonemap.c - HDR to display: reads the main pass's RGBA16F colour, applies exposure, the
- * scene's tone curve (exp or ACES) and gamma, and writes RGBA8 with alpha 1 (tonemap.frag.glsl).
+/* pass_tonemap.c - HDR to display: reads the main pass's RGBA16F colour, adds the bloom
+ * (pass_bloom.c's `ping`, times render.bloom.strength) and the light shafts (pass_shafts.c) when
+ * those passes exist, applies exposure, the scene's tone curve (exp or ACES) and gamma, and
+ * writes RGBA8 with alpha 1 (tonemap.frag.glsl). The smaller inputs are upsampled bilinearly.
  */
 #include <stdlib.h>
 
@@ -8,8 +10,10 @@
 typedef struct tonemap_pass {
     const ww_rt *rt;
     GLuint hdr_tex;
+    GLuint bloom_tex, shafts_tex; /* 0 when the pass is not planned */
     GLuint prog;
     GLint hdr, exposure, gamma, op;
+    GLint bloom, bloom_on, bloom_strength, shafts, shafts_on;
 } tonemap_pass;
 
 static void tonemap_destroy(void *self, const ww_gl *gl) {
@@ -38,6 +42,10 @@ static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "tonemap pass: out of memory");
     p->rt = rt;
     p->hdr_tex = hdr;
+    const ww_rt *bloom = ww_renderer_output(r, WW_PASS_BLOOM);
+    const ww_rt *shafts = ww_renderer_output(r, WW_PASS_SHAFTS);
+    p->bloom_tex = bloom ? bloom->tex[0] : 0; /* the blur ends in ping */
+    p->shafts_tex = shafts ? shafts->tex[0] : 0;
     ww_result rc = ww_gfx_program(r->gl, "fullscreen.vert.glsl", "tonemap.frag.glsl", NULL,
                                   &p->prog, err);
     if (rc != WW_OK) {
@@ -48,6 +56,11 @@ static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     p->exposure = ww_gfx_uniform(r->gl, p->prog, "u_exposure");
     p->gamma = ww_gfx_uniform(r->gl, p->prog, "u_gamma");
     p->op = ww_gfx_uniform(r->gl, p->prog, "u_op");
+    p->bloom = ww_gfx_uniform(r->gl, p->prog, "u_bloom");
+    p->bloom_on = ww_gfx_uniform(r->gl, p->prog, "u_bloom_on");
+    p->bloom_strength = ww_gfx_uniform(r->gl, p->prog, "u_bloom_strength");
+    p->shafts = ww_gfx_uniform(r->gl, p->prog, "u_shafts");
+    p->shafts_on = ww_gfx_uniform(r->gl, p->prog, "u_shafts_on");
     *self = p;
     return WW_OK;
 }
@@ -64,8 +77,22 @@ static ww_result tonemap_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
     gl->Uniform1f(p->exposure, (float)f->sc->exposure);
     gl->Uniform1f(p->gamma, (float)f->sc->gamma);
     gl->Uniform1i(p->op, f->sc->tonemap == WW_TONEMAP_ACES ? 1 : 0);
+    /* every sampler on its own unit, bound or not, so none aliases u_hdr's */
+    gl->ActiveTexture(GL_TEXTURE1);
+    gl->BindTexture(GL_TEXTURE_2D, p->bloom_tex);
+    gl->Uniform1i(p->bloom, 1);
+    gl->Uniform1i(p->bloom_on, p->bloom_tex != 0);
+    gl->Uniform1f(p->bloom_strength, (float)f->sc->render.bloom.strength);
+    gl->ActiveTexture(GL_TEXTURE2);
+    gl->BindTexture(GL_TEXTURE_2D, p->shafts_tex);
+    gl->Uniform1i(p->shafts, 2);
+    gl->Uniform1i(p->shafts_on, p->shafts_tex != 0);
     gl->BindVertexArray(r->empty_vao);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->ActiveTexture(GL_TEXTURE1);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->ActiveTexture(GL_TEXTURE0);
     gl->BindTexture(GL_TEXTURE_2D, 0);
     return WW_OK;
 }

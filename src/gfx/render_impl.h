@@ -65,6 +65,17 @@ typedef struct ww_pass_ops {
 
 extern const ww_pass_ops ww_pass_main_ops;    /* pass_main.c */
 extern const ww_pass_ops ww_pass_tonemap_ops; /* pass_tonemap.c */
+/* post: bloom, light shafts, FXAA, HUD */
+extern const ww_pass_ops ww_pass_bloom_ops;   /* pass_bloom.c */
+extern const ww_pass_ops ww_pass_shafts_ops;  /* pass_shafts.c */
+extern const ww_pass_ops ww_pass_fxaa_ops;    /* pass_fxaa.c */
+extern const ww_pass_ops ww_pass_hud_ops;     /* pass_hud.c */
+
+/* pass_bloom.c: the blur's 9-tap binomial kernel as 5 bilinear fetches: the centre weight and
+ * offset 0, then two (weight, offset in texels) each fetched on both sides; the 9 weights sum
+ * to weight[0] + 2 (weight[1] + weight[2]) = 1 */
+#define WW_BLOOM_FETCHES 3
+void ww_bloom_kernel(float weight[WW_BLOOM_FETCHES], float offset[WW_BLOOM_FETCHES]);
 
 typedef struct ww_pass {
     ww_pass_id id;

@@ -14,7 +14,11 @@
 /* the passes a plan may name; a new pass is a pass_xxx.c and one line here */
 static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
     [WW_PASS_MAIN] = &ww_pass_main_ops,
+    [WW_PASS_BLOOM] = &ww_pass_bloom_ops,
+    [WW_PASS_SHAFTS] = &ww_pass_shafts_ops,
     [WW_PASS_TONEMAP] = &ww_pass_tonemap_ops,
+    [WW_PASS_FXAA] = &ww_pass_fxaa_ops,
+    [WW_PASS_HUD] = &ww_pass_hud_ops,
 };
 
 const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id) {

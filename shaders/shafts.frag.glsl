@@ -1,0 +1,63 @@
+#version 330 core
+// shafts.frag.glsl - light shafts as a post-process (Mitchell, "Volumetric Light Scattering as a
+// Post-Process", GPU Gems 3 ch. 13; seed 000): every pixel marches `samples` steps toward the
+// light's screen position, summing an occlusion mask with a decaying weight:
+//   delta = (uv - light) * density / samples;  L = exposure * sum_i decay^i * weight * mask(uv_i)
+// Above water the mask is the sky (depth 1 in the main pass's depth) glowing with the sun's
+// colour by its angle to the sun; geometry and water block it. Under water the light is the sun
+// refracted through the surface (Snell's window): the mask is the surface seen from below (rays
+// going up), as bright as the main pass drew it, weighted by the angle to the refracted sun.
+// Seed 000 marches the whole way to the light; here the march is at most MARCH_MAX of the
+// screen, so a light far off screen (the refracted sun seen while looking level under water)
+// still gives parallel shafts coming down instead of a few samples spread over the screen.
+
+uniform sampler2D u_depth;  // main pass depth (nearest)
+uniform sampler2D u_hdr;    // main pass colour (nearest)
+uniform vec2 u_light_uv;    // the light's position on screen, texture coordinates
+uniform vec3 u_light_dir;   // unit vector toward the light, world
+uniform vec3 u_light_color; // its radiance, linear RGB
+uniform vec3 u_ray00, u_ray_dx, u_ray_dy; // view ray at uv (0,0) and per unit of uv, world
+uniform int u_samples;
+uniform float u_decay, u_density, u_weight, u_exposure; // exposure includes the fades
+uniform int u_underwater;
+uniform vec2 u_inv_size;    // 1 / the target's size
+
+out vec4 o_color;
+
+const float MARCH_MAX = 0.75;       // longest march, in screen widths
+const float SUN_CORE = 400.0;       // glow exp((cos - 1) k): k = 2 / sigma^2, sigma 4 deg
+const float SUN_HALO = 40.0;        //   and a halo of sigma 13 deg
+const float HALO_SHARE = 0.15;
+const float WINDOW_GLOW = 12.0;     // under water: the refracted sun smeared by the waves, 23 deg
+const float SURFACE_MAX = 8.0;      // bright surface pixels clamped so the sun glint cannot burn
+const vec3 LUMA = vec3(0.2126, 0.7152, 0.0722);
+
+vec3 mask(vec2 uv) {
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);
+    vec3 d = normalize(u_ray00 + uv.x * u_ray_dx + uv.y * u_ray_dy);
+    float c = dot(d, u_light_dir);
+    if (u_underwater == 0) {
+        if (texture(u_depth, uv).r < 1.0) return vec3(0.0); // geometry and water block
+        return u_light_color * (exp((c - 1.0) * SUN_CORE) + HALO_SHARE * exp((c - 1.0) * SUN_HALO));
+    }
+    if (d.y <= 0.0) return vec3(0.0);
+    vec3 s = texture(u_hdr, uv).rgb;
+    float l = dot(s, LUMA);
+    s *= min(l, SURFACE_MAX) / max(l, 1e-4);
+    return s * exp((c - 1.0) * WINDOW_GLOW);
+}
+
+void main() {
+    vec2 uv = gl_FragCoord.xy * u_inv_size;
+    vec2 delta = uv - u_light_uv;
+    float len = length(delta) * u_density;
+    delta *= (len > MARCH_MAX ? MARCH_MAX / len : 1.0) * u_density / float(u_samples);
+    vec3 sum = vec3(0.0);
+    float w = u_weight;
+    for (int i = 0; i < u_samples; i++) {
+        uv -= delta;
+        sum += w * mask(uv);
+        w *= u_decay;
+    }
+    o_color = vec4(u_exposure * sum, 1.0);
+}

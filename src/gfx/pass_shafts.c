@@ -1,0 +1,169 @@
+/* pass_shafts.c - light shafts (seed 000, after Mitchell, GPU Gems 3 ch. 13): projects the light
+ * to the screen, then one full-screen pass into the shafts target (render.god_rays.scale of the
+ * frame) marches from each pixel toward it over an occlusion mask built from the main pass's
+ * depth and colour (shafts.frag.glsl). The tone mapping pass adds the result.
+ * Above water the light is the sun and the mask the sky around it; under water it is the sun
+ * refracted into the water (Snell, n = 1.333) and the mask the lit surface seen from below,
+ * with exposure x render.god_rays.underwater. The shafts fade out as the light goes behind the
+ * camera and, above water, as the sun leaves the screen (nothing on screen would glow).
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "gfx/render_impl.h"
+
+#define SHAFT_WATER_IOR 1.333      /* refractive index of water */
+#define SHAFT_BEHIND_COS0 0.0      /* fade by the cosine between forward and the light: 0 here */
+#define SHAFT_BEHIND_COS1 0.3      /*   full from here */
+#define SHAFT_OFFSCREEN0 1.2       /* above water: fade by the light's NDC distance from the centre */
+#define SHAFT_OFFSCREEN1 2.5
+
+typedef struct shafts_pass {
+    const ww_rt *rt;
+    GLuint depth_tex, hdr_tex;
+    GLuint prog;
+    GLint depth, hdr, light_uv, light_dir, light_color, ray00, ray_dx, ray_dy, samples, decay,
+        density, weight, exposure, underwater, inv_size;
+} shafts_pass;
+
+static void shafts_destroy(void *self, const ww_gl *gl) {
+    shafts_pass *p = self;
+    if (!p) return;
+    if (p->prog) gl->DeleteProgram(p->prog);
+    free(p);
+}
+
+static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
+                               const ww_rt *rt, void **self, ww_error *err) {
+    (void)sc;
+    const ww_gl *gl = r->gl;
+    const ww_rt *in = ww_renderer_output(r, WW_PASS_MAIN);
+    GLuint hdr = in ? ww_gfx_rt_texture(in, WW_FMT_RGBA16F) : 0;
+    GLuint depth = in ? ww_gfx_rt_texture(in, WW_FMT_DEPTH24) : 0;
+    if (!hdr || !depth || !ww_gfx_rt_texture(rt, WW_FMT_RGBA16F))
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass %s: needs the main pass's colour and depth and an RGBA16F target",
+                            d->name);
+    shafts_pass *p = calloc(1, sizeof *p);
+    if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "shafts pass: out of memory");
+    p->rt = rt;
+    p->hdr_tex = hdr;
+    p->depth_tex = depth;
+    /* the tone mapping upsamples the shafts bilinearly */
+    gl->BindTexture(GL_TEXTURE_2D, rt->tex[0]);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "shafts.frag.glsl", NULL, &p->prog,
+                                  err);
+    if (rc != WW_OK) {
+        shafts_destroy(p, gl);
+        return rc;
+    }
+    GLuint g = p->prog;
+    p->depth = ww_gfx_uniform(gl, g, "u_depth");
+    p->hdr = ww_gfx_uniform(gl, g, "u_hdr");
+    p->light_uv = ww_gfx_uniform(gl, g, "u_light_uv");
+    p->light_dir = ww_gfx_uniform(gl, g, "u_light_dir");
+    p->light_color = ww_gfx_uniform(gl, g, "u_light_color");
+    p->ray00 = ww_gfx_uniform(gl, g, "u_ray00");
+    p->ray_dx = ww_gfx_uniform(gl, g, "u_ray_dx");
+    p->ray_dy = ww_gfx_uniform(gl, g, "u_ray_dy");
+    p->samples = ww_gfx_uniform(gl, g, "u_samples");
+    p->decay = ww_gfx_uniform(gl, g, "u_decay");
+    p->density = ww_gfx_uniform(gl, g, "u_density");
+    p->weight = ww_gfx_uniform(gl, g, "u_weight");
+    p->exposure = ww_gfx_uniform(gl, g, "u_exposure");
+    p->underwater = ww_gfx_uniform(gl, g, "u_underwater");
+    p->inv_size = ww_gfx_uniform(gl, g, "u_inv_size");
+    *self = p;
+    return WW_OK;
+}
+
+static double smooth01(double e0, double e1, double x) {
+    double t = (x - e0) / (e1 - e0);
+    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+    return t * t * (3.0 - 2.0 * t);
+}
+
+/* the direction light arrives from under a flat surface: Snell's law on the sun's zenith angle,
+ * sin(theta_w) = sin(theta_a) / n, keeping its azimuth */
+static void refracted_sun(const double s[3], double out[3]) {
+    double h = sqrt(s[0] * s[0] + s[2] * s[2]);
+    double hw = h / SHAFT_WATER_IOR;
+    out[1] = sqrt(1.0 - hw * hw);
+    out[0] = h > 0.0 ? s[0] / h * hw : 0.0;
+    out[2] = h > 0.0 ? s[2] / h * hw : 0.0;
+}
+
+static ww_result shafts_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
+    (void)err;
+    shafts_pass *p = self;
+    const ww_gl *gl = r->gl;
+    const ww_shafts_desc *sd = &f->sc->render.shafts;
+    const ww_state *st = f->st;
+    ww_gfx_begin_pass(gl, p->rt);
+    gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    gl->Clear(GL_COLOR_BUFFER_BIT);
+
+    /* the light: the sun, or under water the sun refracted through the surface */
+    double L[3] = {st->sun_dir[0], st->sun_dir[1], st->sun_dir[2]};
+    double exposure = sd->exposure;
+    if (f->underwater) {
+        refracted_sun(st->sun_dir, L);
+        exposure *= sd->underwater;
+    }
+    if (st->sun_dir[1] <= 0.0) return WW_OK; /* below the horizon: no light to scatter */
+
+    /* project it: a direction is a point at infinity (w = 0) in camera-relative coordinates */
+    vec4 dir = {(float)L[0], (float)L[1], (float)L[2], 0.0f}, clip;
+    glm_mat4_mulv((vec4 *)f->view_proj, dir, clip);
+    double cosf = L[0] * f->fwd[0] + L[1] * f->fwd[1] + L[2] * f->fwd[2];
+    double fade = smooth01(SHAFT_BEHIND_COS0, SHAFT_BEHIND_COS1, cosf);
+    if (fade <= 0.0 || clip[3] <= 0.0f) return WW_OK;
+    double nx = clip[0] / clip[3], ny = clip[1] / clip[3];
+    if (!f->underwater) {
+        double e = fmax(fabs(nx), fabs(ny));
+        fade *= 1.0 - smooth01(SHAFT_OFFSCREEN0, SHAFT_OFFSCREEN1, e);
+        if (fade <= 0.0) return WW_OK;
+    }
+
+    /* view rays across the screen: fwd + (2u - 1) tan_x right + (2v - 1) tan_y up */
+    float r00[3], rdx[3], rdy[3];
+    for (int i = 0; i < 3; i++) {
+        double ax = f->tan_half[0] * f->right[i], ay = f->tan_half[1] * f->up[i];
+        r00[i] = (float)(f->fwd[i] - ax - ay);
+        rdx[i] = (float)(2.0 * ax);
+        rdy[i] = (float)(2.0 * ay);
+    }
+
+    gl->UseProgram(p->prog);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindTexture(GL_TEXTURE_2D, p->depth_tex);
+    gl->Uniform1i(p->depth, 0);
+    gl->ActiveTexture(GL_TEXTURE1);
+    gl->BindTexture(GL_TEXTURE_2D, p->hdr_tex);
+    gl->Uniform1i(p->hdr, 1);
+    gl->Uniform2f(p->light_uv, (float)(0.5 * nx + 0.5), (float)(0.5 * ny + 0.5));
+    gl->Uniform3f(p->light_dir, (float)L[0], (float)L[1], (float)L[2]);
+    gl->Uniform3f(p->light_color, (float)st->sun_color[0], (float)st->sun_color[1],
+                  (float)st->sun_color[2]);
+    gl->Uniform3fv(p->ray00, 1, r00);
+    gl->Uniform3fv(p->ray_dx, 1, rdx);
+    gl->Uniform3fv(p->ray_dy, 1, rdy);
+    gl->Uniform1i(p->samples, sd->samples);
+    gl->Uniform1f(p->decay, (float)sd->decay);
+    gl->Uniform1f(p->density, (float)sd->density);
+    gl->Uniform1f(p->weight, (float)sd->weight);
+    gl->Uniform1f(p->exposure, (float)(exposure * fade));
+    gl->Uniform1i(p->underwater, f->underwater);
+    gl->Uniform2f(p->inv_size, 1.0f / (float)p->rt->width, 1.0f / (float)p->rt->height);
+    gl->BindVertexArray(r->empty_vao);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    return WW_OK;
+}
+
+const ww_pass_ops ww_pass_shafts_ops = {shafts_create, shafts_run, shafts_destroy};
