@@ -6,7 +6,10 @@
 // Above water the mask is the sky (depth 1 in the main pass's depth) glowing with the sun's
 // colour by its angle to the sun; geometry and water block it. Under water the light is the sun
 // refracted through the surface (Snell's window): the mask is the surface seen from below (rays
-// going up), as bright as the main pass drew it, weighted by the angle to the refracted sun.
+// going up), as bright as the main pass drew it, weighted by the angle to the refracted sun and
+// by a caustic pattern where the view ray meets the rest plane of the surface, so the light
+// comes down in separate shafts (where the waves focus it) that drift with time; a uniformly
+// bright surface would only blur into a haze.
 // Seed 000 marches the whole way to the light; here the march is at most MARCH_MAX of the
 // screen, so a light far off screen (the refracted sun seen while looking level under water)
 // still gives parallel shafts coming down instead of a few samples spread over the screen.
@@ -21,6 +24,9 @@ uniform int u_samples;
 uniform float u_decay, u_density, u_weight, u_exposure; // exposure includes the fades
 uniform int u_underwater;
 uniform vec2 u_inv_size;    // 1 / the target's size
+uniform float u_surface_up; // under water: height of the surface over the camera, m
+uniform vec2 u_cam_xz;      // camera x, z wrapped to the pattern's period, m
+uniform vec3 u_phase;       // the pattern's three phases at this time, rad
 
 out vec4 o_color;
 
@@ -28,9 +34,22 @@ const float MARCH_MAX = 0.75;       // longest march, in screen widths
 const float SUN_CORE = 400.0;       // glow exp((cos - 1) k): k = 2 / sigma^2, sigma 4 deg
 const float SUN_HALO = 40.0;        //   and a halo of sigma 13 deg
 const float HALO_SHARE = 0.15;
-const float WINDOW_GLOW = 12.0;     // under water: the refracted sun smeared by the waves, 23 deg
+const float WINDOW_GLOW = 6.0;      // under water: the refracted sun smeared by the waves, 33 deg
 const float SURFACE_MAX = 8.0;      // bright surface pixels clamped so the sun glint cannot burn
 const vec3 LUMA = vec3(0.2126, 0.7152, 0.0722);
+// caustic pattern: three crossed sine trains, wavenumbers 2 pi n / 64 m so it tiles every
+// 64 m (pass_shafts.c wraps the camera to that period); sharpened by a power
+const vec3 CAUSTIC_K = vec3(21.0, 27.0, 17.0) * (6.28318530718 / 64.0);
+const float CAUSTIC_SHARP = 4.0;
+
+float caustic(vec2 p) {
+    float v = sin(CAUSTIC_K.x * p.x + u_phase.x + sin(CAUSTIC_K.z * p.y))
+            + sin(CAUSTIC_K.y * p.y + u_phase.y + sin(CAUSTIC_K.x * p.x))
+            + sin(CAUSTIC_K.z * (p.x + p.y) + u_phase.z);
+    float c = 0.5 + v / 6.0;
+    c *= c;
+    return CAUSTIC_SHARP * c * c; // c^4, mean ~ 1 / CAUSTIC_SHARP before the factor
+}
 
 vec3 mask(vec2 uv) {
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);
@@ -44,7 +63,8 @@ vec3 mask(vec2 uv) {
     vec3 s = texture(u_hdr, uv).rgb;
     float l = dot(s, LUMA);
     s *= min(l, SURFACE_MAX) / max(l, 1e-4);
-    return s * exp((c - 1.0) * WINDOW_GLOW);
+    vec2 hit = u_cam_xz + d.xz * (u_surface_up / d.y);
+    return s * exp((c - 1.0) * WINDOW_GLOW) * caustic(hit);
 }
 
 void main() {

@@ -17,13 +17,15 @@
 #define SHAFT_BEHIND_COS1 0.3      /*   full from here */
 #define SHAFT_OFFSCREEN0 1.2       /* above water: fade by the light's NDC distance from the centre */
 #define SHAFT_OFFSCREEN1 2.5
+#define SHAFT_PATTERN_PERIOD 64.0  /* m: shafts.frag.glsl's caustic pattern tiles this often */
+static const double SHAFT_PATTERN_RATE[3] = {0.9, -0.7, 0.5}; /* its phase speeds, rad/s */
 
 typedef struct shafts_pass {
     const ww_rt *rt;
     GLuint depth_tex, hdr_tex;
     GLuint prog;
     GLint depth, hdr, light_uv, light_dir, light_color, ray00, ray_dx, ray_dy, samples, decay,
-        density, weight, exposure, underwater, inv_size;
+        density, weight, exposure, underwater, inv_size, surface_up, cam_xz, phase;
 } shafts_pass;
 
 static void shafts_destroy(void *self, const ww_gl *gl) {
@@ -76,6 +78,9 @@ static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass
     p->exposure = ww_gfx_uniform(gl, g, "u_exposure");
     p->underwater = ww_gfx_uniform(gl, g, "u_underwater");
     p->inv_size = ww_gfx_uniform(gl, g, "u_inv_size");
+    p->surface_up = ww_gfx_uniform(gl, g, "u_surface_up");
+    p->cam_xz = ww_gfx_uniform(gl, g, "u_cam_xz");
+    p->phase = ww_gfx_uniform(gl, g, "u_phase");
     *self = p;
     return WW_OK;
 }
@@ -158,6 +163,15 @@ static ww_result shafts_run(void *self, ww_renderer *r, const ww_frame *f, ww_er
     gl->Uniform1f(p->exposure, (float)(exposure * fade));
     gl->Uniform1i(p->underwater, f->underwater);
     gl->Uniform2f(p->inv_size, 1.0f / (float)p->rt->width, 1.0f / (float)p->rt->height);
+    /* the caustic pattern in double: camera wrapped to its period, phases wrapped to 2 pi */
+    double level = f->sc->water_level - f->cam_pos[1];
+    gl->Uniform1f(p->surface_up, (float)(level > 0.0 ? level : 0.0));
+    gl->Uniform2f(p->cam_xz, (float)fmod(f->cam_pos[0], SHAFT_PATTERN_PERIOD),
+                  (float)fmod(f->cam_pos[2], SHAFT_PATTERN_PERIOD));
+    double tau = 2.0 * 3.14159265358979323846;
+    gl->Uniform3f(p->phase, (float)fmod(SHAFT_PATTERN_RATE[0] * st->t, tau),
+                  (float)fmod(SHAFT_PATTERN_RATE[1] * st->t, tau),
+                  (float)fmod(SHAFT_PATTERN_RATE[2] * st->t, tau));
     gl->BindVertexArray(r->empty_vao);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
     gl->BindTexture(GL_TEXTURE_2D, 0);
