@@ -1,0 +1,307 @@
+/* test_post.c - the post-processing passes (bloom, light shafts, FXAA, MSAA, HUD): a golden per
+ * feature scene (scenes/features/NAME.yaml), and toggle tests: the feature switched off changes
+ * the picture where the feature acts and nowhere else, and removes its pass from `plan`.
+ * The regions are computed from the pictures themselves: the bright areas for bloom, an edge
+ * mask of the input for FXAA and MSAA, the HUD's boxes for the HUD.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gfx/render_impl.h"
+#include "io/writers.h"
+#include "test.h"
+
+#define BLOOM_KERNEL_TOL 1e-6
+/* what may bloom: pixels whose exposed luminance reaches the knee's start, threshold 1 - knee
+ * 0.5, which the scene's exp curve and gamma 2.2 put at 255 (1 - e^-0.5)^(1 / 2.2) = 165 */
+#define BLOOM_BRIGHT_LUMA 165
+#define BLOOM_REACH_PX 28          /* bloom spreads about 3 sigma: 3 passes of sigma 1.7 at half res */
+#define BLOOM_MIN_CHANGED 0.01     /* at least this share of the frame blooms */
+#define SHAFTS_MIN_CHANGED 0.25    /* under water the shafts light at least this share */
+#define EDGE_SOBEL_MIN 24.0        /* Sobel magnitude (8-bit luma) that makes a pixel an edge */
+#define EDGE_NEAR_PX 1             /* "on or near an edge": within this many pixels */
+#define FXAA_ON_EDGES_MIN 0.95     /* share of the pixels FXAA changed that lie on/near edges */
+#define FXAA_MIN_CHANGED 0.005
+#define MSAA_ON_EDGES_MIN 0.95
+#define MSAA_MIN_CHANGED 0.005
+#define HUD_BOX_RECT_PX 170        /* the text box: the boat line, ~150 px wide, plus margins */
+#define HUD_BOX_RECT_PY 44
+static const double HUD_MARKER_RECT[4] = {0.35, 0.7, 0.65, 1.0}; /* x0 y0 x1 y1, image fractions */
+#define HUD_MARKER_MIN_PX 60       /* the diamond, its glow and the arrow */
+
+#define REQUIRE_GL()                                                                            \
+    do {                                                                                        \
+        if (!ww_test_have_gl()) {                                                               \
+            fprintf(stderr, "(skipped: no GL backend here) ");                                  \
+            return;                                                                             \
+        }                                                                                       \
+    } while (0)
+
+/* render frame 0 of scene with args into tmp dir `name`; the PNG's path in out */
+static int render_to(const char *scene, const char *args, const char *name, char *out, size_t cap) {
+    char dir[768];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(name));
+    int rc = ww_test_render(scene, args, dir);
+    snprintf(out, cap, "%s/frame_00000.png", dir);
+    ENSURE_MSG(rc == 0, "render %s %s: exit %d", scene, args ? args : "", rc);
+    return rc;
+}
+
+/* `plan scene args` lists pass `what` (a phrase of its line) */
+static int plan_lists(const char *scene, const char *args, const char *what) {
+    char out[1024], c[2048];
+    snprintf(out, sizeof out, "%s/plan.txt", ww_test_tmpdir("post_plan"));
+    snprintf(c, sizeof c, "plan %s %s", scene, args ? args : "");
+    ENSURE(ww_test_ww(c, out, NULL) == 0);
+    return ww_test_file_contains(out, what);
+}
+
+static void golden(const char *name) {
+    char scene[256], gold[256], got[1024], dir[64];
+    snprintf(scene, sizeof scene, "scenes/features/%s.yaml", name);
+    snprintf(gold, sizeof gold, "golden/features/%s.png", name);
+    snprintf(dir, sizeof dir, "post_golden_%s", name);
+    if (render_to(scene, NULL, dir, got, sizeof got) != 0) return;
+    ww_test_check_golden(gold, got);
+}
+
+typedef struct pic {
+    ww_image im;
+    int w, h;
+} pic;
+
+static int load(const char *path, pic *p) {
+    ww_error err = {0};
+    *p = (pic){0};
+    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
+    p->w = p->im.width;
+    p->h = p->im.height;
+    return p->im.u8 != NULL;
+}
+
+static double luma(const pic *p, int x, int y) {
+    x = x < 0 ? 0 : x >= p->w ? p->w - 1 : x;
+    y = y < 0 ? 0 : y >= p->h ? p->h - 1 : y;
+    const uint8_t *c = p->im.u8 + ((size_t)y * (size_t)p->w + (size_t)x) * (size_t)p->im.channels;
+    return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+}
+
+/* largest channel difference of pixel (x, y) */
+static int pixel_diff(const pic *a, const pic *b, int x, int y) {
+    int e = 0;
+    for (int c = 0; c < a->im.channels; c++) {
+        size_t i = ((size_t)y * (size_t)a->w + (size_t)x) * (size_t)a->im.channels + (size_t)c;
+        int d = abs((int)a->im.u8[i] - (int)b->im.u8[i]);
+        if (d > e) e = d;
+    }
+    return e;
+}
+
+/* mask[i] = 1 where some pixel within r (Chebyshev) has src[] set */
+static void dilate(const unsigned char *src, unsigned char *dst, int w, int h, int r) {
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            unsigned char m = 0;
+            for (int dy = -r; dy <= r && !m; dy++)
+                for (int dx = -r; dx <= r && !m; dx++) {
+                    int u = x + dx, v = y + dy;
+                    if (u >= 0 && u < w && v >= 0 && v < h) m = src[v * w + u];
+                }
+            dst[y * w + x] = m;
+        }
+}
+
+/* Sobel edge mask of p's luma, dilated by EDGE_NEAR_PX */
+static unsigned char *edge_mask(const pic *p) {
+    size_t n = (size_t)p->w * (size_t)p->h;
+    unsigned char *e = calloc(n, 1), *d = calloc(n, 1);
+    if (!e || !d) {
+        free(e);
+        free(d);
+        return NULL;
+    }
+    for (int y = 0; y < p->h; y++)
+        for (int x = 0; x < p->w; x++) {
+            double gx = luma(p, x + 1, y - 1) + 2 * luma(p, x + 1, y) + luma(p, x + 1, y + 1) -
+                        luma(p, x - 1, y - 1) - 2 * luma(p, x - 1, y) - luma(p, x - 1, y + 1);
+            double gy = luma(p, x - 1, y + 1) + 2 * luma(p, x, y + 1) + luma(p, x + 1, y + 1) -
+                        luma(p, x - 1, y - 1) - 2 * luma(p, x, y - 1) - luma(p, x + 1, y - 1);
+            /* /4: the kernel's gain, so the threshold is in luma levels per pixel */
+            e[(size_t)y * p->w + x] = sqrt(gx * gx + gy * gy) / 4.0 >= EDGE_SOBEL_MIN;
+        }
+    dilate(e, d, p->w, p->h, EDGE_NEAR_PX);
+    free(e);
+    return d;
+}
+
+typedef struct masked {
+    long changed, in_mask, mask_px;
+} masked;
+
+/* pixels that differ between a and b, and how many of them lie inside mask */
+static masked count_in_mask(const pic *a, const pic *b, const unsigned char *mask) {
+    masked m = {0};
+    for (int y = 0; y < a->h; y++)
+        for (int x = 0; x < a->w; x++) {
+            int in = mask[(size_t)y * a->w + x];
+            m.mask_px += in;
+            if (pixel_diff(a, b, x, y) == 0) continue;
+            m.changed++;
+            m.in_mask += in;
+        }
+    return m;
+}
+
+TEST(post_bloom_kernel_sums_to_one) {
+    float w[WW_BLOOM_FETCHES], o[WW_BLOOM_FETCHES];
+    ww_bloom_kernel(w, o);
+    ENSURE_NEAR(w[0] + 2.0 * (w[1] + w[2]), 1.0, BLOOM_KERNEL_TOL);
+    /* Rakos 2010's published figures for the same kernel */
+    ENSURE_NEAR(w[0], 0.2270270270, BLOOM_KERNEL_TOL);
+    ENSURE_NEAR(w[1], 0.3162162162, BLOOM_KERNEL_TOL);
+    ENSURE_NEAR(w[2], 0.0702702703, BLOOM_KERNEL_TOL);
+    ENSURE_NEAR(o[1], 1.3846153846, BLOOM_KERNEL_TOL);
+    ENSURE_NEAR(o[2], 3.2307692308, BLOOM_KERNEL_TOL);
+}
+
+TEST(post_bloom_golden) {
+    REQUIRE_GL();
+    golden("bloom");
+}
+
+/* bloom off: the pixels that change lie around what is bright (the sun and its glitter) */
+TEST(post_bloom_toggle) {
+    REQUIRE_GL();
+    const char *scene = "scenes/features/bloom.yaml";
+    char on[1024], off[1024];
+    if (render_to(scene, NULL, "post_bloom_on", on, sizeof on) ||
+        render_to(scene, "--set render.bloom=false", "post_bloom_off", off, sizeof off))
+        return;
+    pic a, b;
+    if (!load(on, &a) || !load(off, &b)) goto done;
+    size_t n = (size_t)a.w * (size_t)a.h;
+    unsigned char *bright = calloc(n, 1), *near = calloc(n, 1);
+    if (bright && near) {
+        for (int y = 0; y < b.h; y++)
+            for (int x = 0; x < b.w; x++) bright[(size_t)y * b.w + x] = luma(&b, x, y) >= BLOOM_BRIGHT_LUMA;
+        dilate(bright, near, b.w, b.h, BLOOM_REACH_PX);
+        masked m = count_in_mask(&a, &b, near);
+        fprintf(stderr, "(%ld changed, %ld near bright of %ld px) ", m.changed, m.in_mask, (long)n);
+        ENSURE_MSG(m.changed >= BLOOM_MIN_CHANGED * (double)n, "bloom changed only %ld px", m.changed);
+        ENSURE_MSG(m.in_mask == m.changed, "%ld px changed away from bright areas",
+                   m.changed - m.in_mask);
+        ENSURE(m.mask_px < (long)n); /* the region is a region, not the whole frame */
+    }
+    free(bright);
+    free(near);
+    ENSURE(plan_lists(scene, NULL, "bright pass, separable Gaussian"));
+    ENSURE(!plan_lists(scene, "--set render.bloom=false", "bright pass, separable Gaussian"));
+done:
+    ww_image_free(&a.im);
+    ww_image_free(&b.im);
+}
+
+TEST(post_shafts_golden) {
+    REQUIRE_GL();
+    golden("shafts");
+}
+
+/* shafts off under water: a large share of the frame loses light, and no pixel gains any
+ * (the shafts only add) */
+TEST(post_shafts_toggle) {
+    REQUIRE_GL();
+    const char *scene = "scenes/features/shafts.yaml";
+    char on[1024], off[1024];
+    if (render_to(scene, NULL, "post_shafts_on", on, sizeof on) ||
+        render_to(scene, "--set render.god_rays=false", "post_shafts_off", off, sizeof off))
+        return;
+    pic a, b;
+    if (!load(on, &a) || !load(off, &b)) goto done;
+    long changed = 0, darker = 0, n = (long)a.w * a.h;
+    for (int y = 0; y < a.h; y++)
+        for (int x = 0; x < a.w; x++) {
+            changed += pixel_diff(&a, &b, x, y) > 0;
+            darker += luma(&a, x, y) < luma(&b, x, y);
+        }
+    fprintf(stderr, "(%ld of %ld px lit by shafts) ", changed, n);
+    ENSURE_MSG(changed >= SHAFTS_MIN_CHANGED * (double)n, "shafts changed only %ld px", changed);
+    ENSURE_MSG(darker == 0, "%ld px darker with shafts on", darker);
+    ENSURE(plan_lists(scene, NULL, "radial blur toward the sun"));
+    ENSURE(!plan_lists(scene, "--set render.god_rays=false", "radial blur toward the sun"));
+done:
+    ww_image_free(&a.im);
+    ww_image_free(&b.im);
+}
+
+TEST(post_fxaa_golden) {
+    REQUIRE_GL();
+    golden("fxaa");
+}
+
+/* FXAA changes pixels on or next to luma edges of its input, and only those */
+TEST(post_fxaa_toggle) {
+    REQUIRE_GL();
+    const char *scene = "scenes/features/fxaa.yaml";
+    char on[1024], off[1024];
+    if (render_to(scene, NULL, "post_fxaa_on", on, sizeof on) ||
+        render_to(scene, "--set render.fxaa=false", "post_fxaa_off", off, sizeof off))
+        return;
+    pic a, b;
+    if (!load(on, &a) || !load(off, &b)) goto done;
+    unsigned char *edges = edge_mask(&b);
+    if (edges) {
+        long n = (long)a.w * a.h;
+        masked m = count_in_mask(&a, &b, edges);
+        fprintf(stderr, "(%ld changed, %ld on edges; edge mask %ld of %ld px) ", m.changed,
+                m.in_mask, m.mask_px, n);
+        ENSURE_MSG(m.changed >= FXAA_MIN_CHANGED * (double)n, "FXAA changed only %ld px", m.changed);
+        ENSURE_MSG(m.in_mask >= FXAA_ON_EDGES_MIN * (double)m.changed,
+                   "only %ld of %ld changed px on edges", m.in_mask, m.changed);
+        ENSURE(m.mask_px < n / 2);
+    }
+    free(edges);
+    ENSURE(plan_lists(scene, NULL, "edge anti-aliasing"));
+    ENSURE(!plan_lists(scene, "--set render.fxaa=false", "edge anti-aliasing"));
+done:
+    ww_image_free(&a.im);
+    ww_image_free(&b.im);
+}
+
+TEST(post_hud_golden) {
+    REQUIRE_GL();
+    golden("hud");
+}
+
+/* the HUD changes only its text box (top left) and the chest marker; the scene's chest lies
+ * under the camera, so the marker sits at the bottom edge, near the middle */
+TEST(post_hud_toggle) {
+    REQUIRE_GL();
+    const char *scene = "scenes/features/hud.yaml";
+    char on[1024], off[1024];
+    if (render_to(scene, "--set render.hud=[clock,counters]", "post_hud_on", on, sizeof on) ||
+        render_to(scene, "--set render.hud=[]", "post_hud_off", off, sizeof off))
+        return;
+    pic a, b;
+    if (!load(on, &a) || !load(off, &b)) goto done;
+    double box[4] = {0.0, 0.0, (double)HUD_BOX_RECT_PX / a.w, (double)HUD_BOX_RECT_PY / a.h};
+    ww_test_region d;
+    ENSURE(ww_test_region_diff(on, off, box, 0, &d) == 0);
+    fprintf(stderr, "(text box: %ld px changed inside, %ld outside) ", d.inside, d.outside);
+    ENSURE(d.inside > d.inside_px / 2); /* the translucent box darkens the whole corner */
+    ENSURE(d.outside == 0);
+    ww_image_free(&a.im);
+    if (render_to(scene, "--set render.hud=[chest_marker]", "post_hud_marker", on, sizeof on))
+        goto done;
+    double marker[4] = {HUD_MARKER_RECT[0], HUD_MARKER_RECT[1], HUD_MARKER_RECT[2],
+                        HUD_MARKER_RECT[3]};
+    ENSURE(ww_test_region_diff(on, off, marker, 0, &d) == 0);
+    fprintf(stderr, "(marker: %ld px changed inside, %ld outside) ", d.inside, d.outside);
+    ENSURE(d.inside >= HUD_MARKER_MIN_PX);
+    ENSURE(d.outside == 0);
+    ENSURE(plan_lists(scene, NULL, "text and markers"));
+    ENSURE(!plan_lists(scene, "--set render.hud=[]", "text and markers"));
+done:
+    ww_image_free(&a.im);
+    ww_image_free(&b.im);
+}
