@@ -25,6 +25,10 @@
 #define FXAA_MIN_CHANGED 0.005
 #define MSAA_ON_EDGES_MIN 0.95
 #define MSAA_MIN_CHANGED 0.005
+/* MSAA also averages the two shadings of a pixel that an edge between two triangles of one
+ * smooth surface crosses (each shaded at the pixel centre): changes of up to three levels that
+ * no edge in the image explains; what counts as a change for MSAA */
+#define MSAA_LEVELS 3
 #define HUD_BOX_RECT_PX 170        /* the text box: the boat line, ~150 px wide, plus margins */
 #define HUD_BOX_RECT_PY 44
 static const double HUD_MARKER_RECT[4] = {0.35, 0.7, 0.65, 1.0}; /* x0 y0 x1 y1, image fractions */
@@ -139,14 +143,15 @@ typedef struct masked {
     long changed, in_mask, mask_px;
 } masked;
 
-/* pixels that differ between a and b, and how many of them lie inside mask */
-static masked count_in_mask(const pic *a, const pic *b, const unsigned char *mask) {
+/* pixels that differ between a and b by more than thresh levels, and how many of them lie
+ * inside mask */
+static masked count_in_mask(const pic *a, const pic *b, const unsigned char *mask, int thresh) {
     masked m = {0};
     for (int y = 0; y < a->h; y++)
         for (int x = 0; x < a->w; x++) {
             int in = mask[(size_t)y * a->w + x];
             m.mask_px += in;
-            if (pixel_diff(a, b, x, y) == 0) continue;
+            if (pixel_diff(a, b, x, y) <= thresh) continue;
             m.changed++;
             m.in_mask += in;
         }
@@ -186,7 +191,7 @@ TEST(post_bloom_toggle) {
         for (int y = 0; y < b.h; y++)
             for (int x = 0; x < b.w; x++) bright[(size_t)y * b.w + x] = luma(&b, x, y) >= BLOOM_BRIGHT_LUMA;
         dilate(bright, near, b.w, b.h, BLOOM_REACH_PX);
-        masked m = count_in_mask(&a, &b, near);
+        masked m = count_in_mask(&a, &b, near, 0);
         fprintf(stderr, "(%ld changed, %ld near bright of %ld px) ", m.changed, m.in_mask, (long)n);
         ENSURE_MSG(m.changed >= BLOOM_MIN_CHANGED * (double)n, "bloom changed only %ld px", m.changed);
         ENSURE_MSG(m.in_mask == m.changed, "%ld px changed away from bright areas",
@@ -252,7 +257,7 @@ TEST(post_fxaa_toggle) {
     unsigned char *edges = edge_mask(&b);
     if (edges) {
         long n = (long)a.w * a.h;
-        masked m = count_in_mask(&a, &b, edges);
+        masked m = count_in_mask(&a, &b, edges, 0);
         fprintf(stderr, "(%ld changed, %ld on edges; edge mask %ld of %ld px) ", m.changed,
                 m.in_mask, m.mask_px, n);
         ENSURE_MSG(m.changed >= FXAA_MIN_CHANGED * (double)n, "FXAA changed only %ld px", m.changed);
@@ -301,6 +306,37 @@ TEST(post_hud_toggle) {
     ENSURE(d.outside == 0);
     ENSURE(plan_lists(scene, NULL, "text and markers"));
     ENSURE(!plan_lists(scene, "--set render.hud=[]", "text and markers"));
+done:
+    ww_image_free(&a.im);
+    ww_image_free(&b.im);
+}
+
+/* MSAA 4 against none: only pixels on or next to edges change (the resolve averages samples
+ * only where a triangle's edge crosses the pixel); `plan` shows the samples and their bytes */
+TEST(post_msaa_toggle) {
+    REQUIRE_GL();
+    const char *scene = "scenes/features/fxaa.yaml";
+    char on[1024], off[1024];
+    if (render_to(scene, "--set render.fxaa=false --set render.msaa=4", "post_msaa_on", on,
+                  sizeof on) ||
+        render_to(scene, "--set render.fxaa=false --set render.msaa=0", "post_msaa_off", off,
+                  sizeof off))
+        return;
+    pic a, b;
+    if (!load(on, &a) || !load(off, &b)) goto done;
+    unsigned char *edges = edge_mask(&b);
+    if (edges) {
+        long n = (long)a.w * a.h;
+        masked m = count_in_mask(&a, &b, edges, MSAA_LEVELS);
+        fprintf(stderr, "(%ld changed, %ld on edges) ", m.changed, m.in_mask);
+        ENSURE_MSG(m.changed >= MSAA_MIN_CHANGED * (double)n, "MSAA changed only %ld px", m.changed);
+        ENSURE_MSG(m.in_mask >= MSAA_ON_EDGES_MIN * (double)m.changed,
+                   "only %ld of %ld changed px on edges", m.in_mask, m.changed);
+    }
+    free(edges);
+    /* 256 x 144 x 8 bytes x 4 samples */
+    ENSURE(plan_lists(scene, "--set render.msaa=4", "1179648 bytes  msaa x4"));
+    ENSURE(!plan_lists(scene, "--set render.msaa=0", "msaa x"));
 done:
     ww_image_free(&a.im);
     ww_image_free(&b.im);

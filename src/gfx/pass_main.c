@@ -1,6 +1,7 @@
 /* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the water
  * surface and solid geometry, then the sky on the far plane behind it (sky.c, water.c,
- * geometry.c).
+ * geometry.c). With MSAA (render.msaa) it draws into the multisampled framebuffer and resolves
+ * colour and depth into its textures at the end (post).
  */
 #include <stdlib.h>
 
@@ -43,6 +44,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     main_pass *p = self;
     const ww_gl *gl = r->gl;
     ww_gfx_begin_pass(gl, p->rt);
+    if (p->rt->fbo_ms) gl->BindFramebuffer(GL_FRAMEBUFFER, p->rt->fbo_ms); /* post: MSAA */
     gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     gl->ClearDepth(1.0);
     gl->DepthMask(GL_TRUE);
@@ -51,6 +53,16 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     if (r->geometry) ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
     ww_water_draw(p->water, gl, f);
     ww_sky_draw(p->sky, gl, r->empty_vao, f);
+    if (p->rt->fbo_ms) {
+        /* post: resolve the samples: colour averaged, depth one sample per pixel (NEAREST, the
+         * only filter a depth blit allows) */
+        int w = p->rt->width, h = p->rt->height;
+        gl->BindFramebuffer(GL_READ_FRAMEBUFFER, p->rt->fbo_ms);
+        gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, p->rt->fbo);
+        gl->BlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT,
+                            GL_NEAREST);
+        gl->BindFramebuffer(GL_FRAMEBUFFER, p->rt->fbo);
+    }
     return WW_OK;
 }
 

@@ -26,6 +26,11 @@ typedef struct ww_rt {
     int ntex;
     GLuint tex[WW_PLAN_MAX_TARGETS];
     ww_format fmt[WW_PLAN_MAX_TARGETS];
+    /* post: the multisampled targets (samples > 1) as renderbuffers of a second framebuffer,
+     * which the pass draws into and resolves into fbo (MSAA); fbo_ms 0 when there are none */
+    GLuint fbo_ms;
+    int nrb, samples;
+    GLuint rb[WW_PLAN_MAX_TARGETS];
 } ww_rt;
 
 /* what every pass needs to draw one frame */

@@ -1,6 +1,9 @@
 /* targets.c - a pass's render targets: one texture per planned target (colour attachments in
  * plan order, a depth texture when one is planned) in one framebuffer, checked for completeness.
  * Depth is a texture rather than a renderbuffer so later passes (light shafts) can read it.
+ * Multisampled targets (MSAA, samples > 1 in the plan) are renderbuffers in a second framebuffer
+ * (fbo_ms) that the pass draws into and then resolves into the plain textures; their sample
+ * count is clamped to what the driver offers (GL_MAX_SAMPLES).
  */
 #include "gfx/render_impl.h"
 
@@ -35,6 +38,40 @@ static const char *status_name(GLenum s) {
     }
 }
 
+/* the multisampled targets of d as renderbuffers in rt->fbo_ms, attachments in the same order
+ * as the plain ones; the framebuffer's status (complete when there are none) */
+static GLenum create_ms(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt) {
+    int want = 0;
+    for (int i = 0; i < d->ntargets; i++)
+        if (d->samples[i] > want) want = d->samples[i];
+    if (want <= 1) return GL_FRAMEBUFFER_COMPLETE;
+    GLint max = 1;
+    gl->GetIntegerv(GL_MAX_SAMPLES, &max);
+    rt->samples = want < max ? want : max;
+    gl->GenFramebuffers(1, &rt->fbo_ms);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, rt->fbo_ms);
+    GLenum draw[WW_PLAN_MAX_TARGETS];
+    int ncolor = 0;
+    for (int i = 0; i < d->ntargets; i++) {
+        const ww_target_desc *t = &d->targets[i];
+        if (d->samples[i] <= 1) continue;
+        tex_format tf = format_of(t->format);
+        GLuint rb = 0;
+        gl->GenRenderbuffers(1, &rb);
+        gl->BindRenderbuffer(GL_RENDERBUFFER, rb);
+        gl->RenderbufferStorageMultisample(GL_RENDERBUFFER, rt->samples, (GLenum)tf.internal,
+                                           t->width, t->height);
+        GLenum attach = tf.is_depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0 + (GLenum)ncolor;
+        if (!tf.is_depth) draw[ncolor++] = attach;
+        gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, attach, GL_RENDERBUFFER, rb);
+        rt->rb[rt->nrb++] = rb;
+    }
+    gl->BindRenderbuffer(GL_RENDERBUFFER, 0);
+    gl->DrawBuffers(ncolor, draw);
+    gl->ReadBuffer(ncolor ? GL_COLOR_ATTACHMENT0 : GL_NONE);
+    return gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+}
+
 ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww_error *err) {
     WW_ASSERT(d->ntargets >= 1 && d->ntargets <= WW_PLAN_MAX_TARGETS);
     *rt = (ww_rt){0};
@@ -48,6 +85,7 @@ ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww
     int ncolor = 0;
     for (int i = 0; i < d->ntargets; i++) {
         const ww_target_desc *t = &d->targets[i];
+        if (d->samples[i] > 1) continue; /* create_ms: in their own framebuffer */
         /* one framebuffer means one size for all of a pass's targets */
         WW_ASSERT(t->width == rt->width && t->height == rt->height);
         WW_ASSERT(t->width > 0 && t->height > 0);
@@ -73,6 +111,7 @@ ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww
     gl->ReadBuffer(ncolor ? GL_COLOR_ATTACHMENT0 : GL_NONE);
 
     GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status == GL_FRAMEBUFFER_COMPLETE) status = create_ms(gl, d, rt);
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         ww_gfx_rt_destroy(gl, rt);
@@ -93,6 +132,8 @@ ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww
 
 void ww_gfx_rt_destroy(const ww_gl *gl, ww_rt *rt) {
     if (rt->ntex) gl->DeleteTextures(rt->ntex, rt->tex);
+    if (rt->nrb) gl->DeleteRenderbuffers(rt->nrb, rt->rb);
+    if (rt->fbo_ms) gl->DeleteFramebuffers(1, &rt->fbo_ms);
     if (rt->fbo) gl->DeleteFramebuffers(1, &rt->fbo);
     *rt = (ww_rt){0};
 }

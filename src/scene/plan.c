@@ -61,11 +61,19 @@ static void add_pass(ww_plan *p, ww_pass_id id, const char *name, const char *wh
     d->name = name;
     d->what = what;
     d->ntargets = 0;
+    for (int t = 0; t < WW_PLAN_MAX_TARGETS; t++) d->samples[t] = 0;
 }
 
 static void add_target(ww_plan *p, const char *name, ww_format f, int w, int h) {
     ww_pass_desc *d = &p->passes[p->npasses - 1];
     d->targets[d->ntargets++] = (ww_target_desc){name, f, w, h};
+}
+
+/* post: a multisampled target (render.msaa samples per pixel) */
+static void add_target_ms(ww_plan *p, const char *name, ww_format f, int w, int h, int samples) {
+    add_target(p, name, f, w, h);
+    ww_pass_desc *d = &p->passes[p->npasses - 1];
+    d->samples[d->ntargets - 1] = samples;
 }
 
 /* ring growth q such that rings s0, s0 q, s0 q^2, ... apart end at radius reach after n rings:
@@ -209,6 +217,11 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
              p->geometry ? "HDR: sky, lit geometry, water" : "HDR: sky with sun disc, water");
     add_target(p, "hdr", WW_FMT_RGBA16F, width, height);
     add_target(p, "depth", WW_FMT_DEPTH24, width, height);
+    if (rd->msaa > 1) {
+        /* post: drawn multisampled, resolved into hdr and depth at the end of the pass */
+        add_target_ms(p, "hdr_ms", WW_FMT_RGBA16F, width, height, rd->msaa);
+        add_target_ms(p, "depth_ms", WW_FMT_DEPTH24, width, height, rd->msaa);
+    }
     if (rd->bloom.on) {
         int bw = scaled(width, rd->bloom.scale), bh = scaled(height, rd->bloom.scale);
         add_pass(p, WW_PASS_BLOOM, "bloom", "bright pass, separable Gaussian ping-pong");
@@ -338,9 +351,12 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
         for (int t = 0; t < d->ntargets; t++) {
             const ww_target_desc *td = &d->targets[t];
             size_t bytes = (size_t)td->width * (size_t)td->height * ww_format_bytes_per_pixel(td->format);
+            if (d->samples[t] > 1) bytes *= (size_t)d->samples[t]; /* post: every sample stored */
             total += bytes;
-            fprintf(to, "      %-8s %-8s %5dx%-5d %10zu bytes\n", td->name, ww_format_name(td->format),
+            fprintf(to, "      %-8s %-8s %5dx%-5d %10zu bytes", td->name, ww_format_name(td->format),
                     td->width, td->height, bytes);
+            if (d->samples[t] > 1) fprintf(to, "  msaa x%d", d->samples[t]);
+            fputc('\n', to);
         }
     }
     fprintf(to, "gpu memory %zu bytes (%.1f MiB) in render targets\n", total, (double)total / 1048576.0);

@@ -58,6 +58,9 @@ typedef struct ww_pass_desc {
     const char *what;                      /* one line for `plan` */
     int ntargets;                          /* 0: draws into an earlier pass's image */
     ww_target_desc targets[WW_PLAN_MAX_TARGETS];
+    /* per target, > 1: a multisampled buffer that the pass draws into and resolves into its
+     * plain targets (MSAA, render.msaa); 0 for the plain ones */
+    int samples[WW_PLAN_MAX_TARGETS];
 } ww_pass_desc;
 
 /* the water mesh (gfx/water.c): a static polar grid re-centred on the camera. Its rings are
