@@ -1,7 +1,8 @@
 /* pass_shafts.c - light shafts (seed 000, after Mitchell, GPU Gems 3 ch. 13): projects the light
  * to the screen, then one full-screen pass into the shafts target (render.god_rays.scale of the
  * frame) marches from each pixel toward it over an occlusion mask built from the main pass's
- * depth and colour (shafts.frag.glsl). The tone mapping pass adds the result.
+ * depth and colour (shafts.frag.glsl). The mask is drawn first into the pass's `mask` target,
+ * so the march reads one bilinear texel per sample. The tone mapping pass adds the result.
  * Above water the light is the sun and the mask the sky around it; under water it is the sun
  * refracted into the water (Snell, n = 1.333) and the mask the lit surface seen from below,
  * with exposure x render.god_rays.underwater. The shafts fade out as the light goes behind the
@@ -20,19 +21,53 @@
 #define SHAFT_PATTERN_PERIOD 64.0  /* m: shafts.frag.glsl's caustic pattern tiles this often */
 static const double SHAFT_PATTERN_RATE[3] = {0.9, -0.7, 0.5}; /* its phase speeds, rad/s */
 
+/* the uniforms of one of the two programs (-1 where it has none) */
+typedef struct shaft_locs {
+    GLint mask, depth, hdr, light_uv, light_dir, light_color, ray00, ray_dx, ray_dy, samples,
+        decay, density, weight, exposure, underwater, inv_size, surface_up, cam_xz, phase;
+} shaft_locs;
+
+enum { SHAFT_MASK = 0, SHAFT_BLUR = 1 }; /* programs, and the framebuffers they draw into */
+
 typedef struct shafts_pass {
     const ww_rt *rt;
     GLuint depth_tex, hdr_tex;
-    GLuint prog;
-    GLint depth, hdr, light_uv, light_dir, light_color, ray00, ray_dx, ray_dy, samples, decay,
-        density, weight, exposure, underwater, inv_size, surface_up, cam_xz, phase;
+    GLuint prog[2];
+    shaft_locs loc[2];
+    GLuint fbo[2];  /* mask -> the mask target; blur -> the shafts target */
+    GLuint tex[2];
 } shafts_pass;
 
 static void shafts_destroy(void *self, const ww_gl *gl) {
     shafts_pass *p = self;
     if (!p) return;
-    if (p->prog) gl->DeleteProgram(p->prog);
+    for (int i = 0; i < 2; i++) {
+        if (p->prog[i]) gl->DeleteProgram(p->prog[i]);
+        if (p->fbo[i]) gl->DeleteFramebuffers(1, &p->fbo[i]);
+    }
     free(p);
+}
+
+static void shaft_locs_init(const ww_gl *gl, GLuint g, shaft_locs *l) {
+    l->mask = ww_gfx_uniform(gl, g, "u_mask");
+    l->depth = ww_gfx_uniform(gl, g, "u_depth");
+    l->hdr = ww_gfx_uniform(gl, g, "u_hdr");
+    l->light_uv = ww_gfx_uniform(gl, g, "u_light_uv");
+    l->light_dir = ww_gfx_uniform(gl, g, "u_light_dir");
+    l->light_color = ww_gfx_uniform(gl, g, "u_light_color");
+    l->ray00 = ww_gfx_uniform(gl, g, "u_ray00");
+    l->ray_dx = ww_gfx_uniform(gl, g, "u_ray_dx");
+    l->ray_dy = ww_gfx_uniform(gl, g, "u_ray_dy");
+    l->samples = ww_gfx_uniform(gl, g, "u_samples");
+    l->decay = ww_gfx_uniform(gl, g, "u_decay");
+    l->density = ww_gfx_uniform(gl, g, "u_density");
+    l->weight = ww_gfx_uniform(gl, g, "u_weight");
+    l->exposure = ww_gfx_uniform(gl, g, "u_exposure");
+    l->underwater = ww_gfx_uniform(gl, g, "u_underwater");
+    l->inv_size = ww_gfx_uniform(gl, g, "u_inv_size");
+    l->surface_up = ww_gfx_uniform(gl, g, "u_surface_up");
+    l->cam_xz = ww_gfx_uniform(gl, g, "u_cam_xz");
+    l->phase = ww_gfx_uniform(gl, g, "u_phase");
 }
 
 static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
@@ -42,45 +77,49 @@ static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass
     const ww_rt *in = ww_renderer_output(r, WW_PASS_MAIN);
     GLuint hdr = in ? ww_gfx_rt_texture(in, WW_FMT_RGBA16F) : 0;
     GLuint depth = in ? ww_gfx_rt_texture(in, WW_FMT_DEPTH24) : 0;
-    if (!hdr || !depth || !ww_gfx_rt_texture(rt, WW_FMT_RGBA16F))
+    if (!hdr || !depth || rt->ntex != 2 || rt->fmt[0] != WW_FMT_RGBA16F ||
+        rt->fmt[1] != WW_FMT_RGBA16F)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
-                            "pass %s: needs the main pass's colour and depth and an RGBA16F target",
-                            d->name);
+                            "pass %s: needs the main pass's colour and depth and two RGBA16F "
+                            "targets (shafts, mask)", d->name);
     shafts_pass *p = calloc(1, sizeof *p);
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "shafts pass: out of memory");
     p->rt = rt;
     p->hdr_tex = hdr;
     p->depth_tex = depth;
-    /* the tone mapping upsamples the shafts bilinearly */
-    gl->BindTexture(GL_TEXTURE_2D, rt->tex[0]);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    /* both read bilinearly (the march; the tone mapping's upsample); a framebuffer each */
+    p->tex[SHAFT_BLUR] = rt->tex[0];
+    p->tex[SHAFT_MASK] = rt->tex[1];
+    gl->GenFramebuffers(2, p->fbo);
+    for (int i = 0; i < 2; i++) {
+        gl->BindTexture(GL_TEXTURE_2D, p->tex[i]);
+        gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[i]);
+        gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->tex[i], 0);
+        GLenum draw = GL_COLOR_ATTACHMENT0;
+        gl->DrawBuffers(1, &draw);
+        GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+            shafts_destroy(p, gl);
+            return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                                "pass %s: framebuffer %d incomplete (0x%04x)", d->name, i,
+                                (unsigned)status);
+        }
+    }
     gl->BindTexture(GL_TEXTURE_2D, 0);
-    ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "shafts.frag.glsl", NULL, &p->prog,
-                                  err);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "shafts.frag.glsl", NULL,
+                                       "#define MASK 1\n", &p->prog[SHAFT_MASK], err);
+    if (rc == WW_OK)
+        rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "shafts.frag.glsl", NULL,
+                            &p->prog[SHAFT_BLUR], err);
     if (rc != WW_OK) {
         shafts_destroy(p, gl);
         return rc;
     }
-    GLuint g = p->prog;
-    p->depth = ww_gfx_uniform(gl, g, "u_depth");
-    p->hdr = ww_gfx_uniform(gl, g, "u_hdr");
-    p->light_uv = ww_gfx_uniform(gl, g, "u_light_uv");
-    p->light_dir = ww_gfx_uniform(gl, g, "u_light_dir");
-    p->light_color = ww_gfx_uniform(gl, g, "u_light_color");
-    p->ray00 = ww_gfx_uniform(gl, g, "u_ray00");
-    p->ray_dx = ww_gfx_uniform(gl, g, "u_ray_dx");
-    p->ray_dy = ww_gfx_uniform(gl, g, "u_ray_dy");
-    p->samples = ww_gfx_uniform(gl, g, "u_samples");
-    p->decay = ww_gfx_uniform(gl, g, "u_decay");
-    p->density = ww_gfx_uniform(gl, g, "u_density");
-    p->weight = ww_gfx_uniform(gl, g, "u_weight");
-    p->exposure = ww_gfx_uniform(gl, g, "u_exposure");
-    p->underwater = ww_gfx_uniform(gl, g, "u_underwater");
-    p->inv_size = ww_gfx_uniform(gl, g, "u_inv_size");
-    p->surface_up = ww_gfx_uniform(gl, g, "u_surface_up");
-    p->cam_xz = ww_gfx_uniform(gl, g, "u_cam_xz");
-    p->phase = ww_gfx_uniform(gl, g, "u_phase");
+    for (int i = 0; i < 2; i++) shaft_locs_init(gl, p->prog[i], &p->loc[i]);
     *self = p;
     return WW_OK;
 }
@@ -108,6 +147,7 @@ static ww_result shafts_run(void *self, ww_renderer *r, const ww_frame *f, ww_er
     const ww_shafts_desc *sd = &f->sc->render.shafts;
     const ww_state *st = f->st;
     ww_gfx_begin_pass(gl, p->rt);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[SHAFT_BLUR]);
     gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     gl->Clear(GL_COLOR_BUFFER_BIT);
 
@@ -142,41 +182,51 @@ static ww_result shafts_run(void *self, ww_renderer *r, const ww_frame *f, ww_er
         rdy[i] = (float)(2.0 * ay);
     }
 
-    gl->UseProgram(p->prog);
-    gl->ActiveTexture(GL_TEXTURE0);
-    gl->BindTexture(GL_TEXTURE_2D, p->depth_tex);
-    gl->Uniform1i(p->depth, 0);
-    gl->ActiveTexture(GL_TEXTURE1);
-    gl->BindTexture(GL_TEXTURE_2D, p->hdr_tex);
-    gl->Uniform1i(p->hdr, 1);
-    gl->Uniform2f(p->light_uv, (float)(0.5 * nx + 0.5), (float)(0.5 * ny + 0.5));
-    gl->Uniform3f(p->light_dir, (float)L[0], (float)L[1], (float)L[2]);
-    gl->Uniform3f(p->light_color, (float)st->sun_color[0], (float)st->sun_color[1],
-                  (float)st->sun_color[2]);
-    gl->Uniform3fv(p->ray00, 1, r00);
-    gl->Uniform3fv(p->ray_dx, 1, rdx);
-    gl->Uniform3fv(p->ray_dy, 1, rdy);
-    gl->Uniform1i(p->samples, sd->samples);
-    gl->Uniform1f(p->decay, (float)sd->decay);
-    gl->Uniform1f(p->density, (float)sd->density);
-    gl->Uniform1f(p->weight, (float)sd->weight);
-    gl->Uniform1f(p->exposure, (float)(exposure * fade));
-    gl->Uniform1i(p->underwater, f->underwater);
-    gl->Uniform2f(p->inv_size, 1.0f / (float)p->rt->width, 1.0f / (float)p->rt->height);
     /* the caustic pattern in double: camera wrapped to its period, phases wrapped to 2 pi */
     double level = f->sc->water_level - f->cam_pos[1];
-    gl->Uniform1f(p->surface_up, (float)(level > 0.0 ? level : 0.0));
-    gl->Uniform2f(p->cam_xz, (float)fmod(f->cam_pos[0], SHAFT_PATTERN_PERIOD),
-                  (float)fmod(f->cam_pos[2], SHAFT_PATTERN_PERIOD));
     double tau = 2.0 * 3.14159265358979323846;
-    gl->Uniform3f(p->phase, (float)fmod(SHAFT_PATTERN_RATE[0] * st->t, tau),
-                  (float)fmod(SHAFT_PATTERN_RATE[1] * st->t, tau),
-                  (float)fmod(SHAFT_PATTERN_RATE[2] * st->t, tau));
-    gl->BindVertexArray(r->empty_vao);
-    gl->DrawArrays(GL_TRIANGLES, 0, 3);
-    gl->BindTexture(GL_TEXTURE_2D, 0);
+    float phase[3];
+    for (int i = 0; i < 3; i++) phase[i] = (float)fmod(SHAFT_PATTERN_RATE[i] * st->t, tau);
+
     gl->ActiveTexture(GL_TEXTURE0);
-    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->BindTexture(GL_TEXTURE_2D, p->depth_tex);
+    gl->ActiveTexture(GL_TEXTURE1);
+    gl->BindTexture(GL_TEXTURE_2D, p->hdr_tex);
+    gl->ActiveTexture(GL_TEXTURE2);
+    gl->BindVertexArray(r->empty_vao);
+    for (int i = SHAFT_MASK; i <= SHAFT_BLUR; i++) {
+        const shaft_locs *l = &p->loc[i];
+        /* the blur reads the mask: unit 2 holds it only then, never while it is drawn */
+        gl->BindTexture(GL_TEXTURE_2D, i == SHAFT_BLUR ? p->tex[SHAFT_MASK] : 0);
+        gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[i]);
+        gl->UseProgram(p->prog[i]);
+        gl->Uniform1i(l->depth, 0);
+        gl->Uniform1i(l->hdr, 1);
+        gl->Uniform1i(l->mask, 2);
+        gl->Uniform2f(l->light_uv, (float)(0.5 * nx + 0.5), (float)(0.5 * ny + 0.5));
+        gl->Uniform3f(l->light_dir, (float)L[0], (float)L[1], (float)L[2]);
+        gl->Uniform3f(l->light_color, (float)st->sun_color[0], (float)st->sun_color[1],
+                      (float)st->sun_color[2]);
+        gl->Uniform3fv(l->ray00, 1, r00);
+        gl->Uniform3fv(l->ray_dx, 1, rdx);
+        gl->Uniform3fv(l->ray_dy, 1, rdy);
+        gl->Uniform1i(l->samples, sd->samples);
+        gl->Uniform1f(l->decay, (float)sd->decay);
+        gl->Uniform1f(l->density, (float)sd->density);
+        gl->Uniform1f(l->weight, (float)sd->weight);
+        gl->Uniform1f(l->exposure, (float)(exposure * fade));
+        gl->Uniform1i(l->underwater, f->underwater);
+        gl->Uniform2f(l->inv_size, 1.0f / (float)p->rt->width, 1.0f / (float)p->rt->height);
+        gl->Uniform1f(l->surface_up, (float)(level > 0.0 ? level : 0.0));
+        gl->Uniform2f(l->cam_xz, (float)fmod(f->cam_pos[0], SHAFT_PATTERN_PERIOD),
+                      (float)fmod(f->cam_pos[2], SHAFT_PATTERN_PERIOD));
+        gl->Uniform3fv(l->phase, 1, phase);
+        gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    for (int u = 2; u >= 0; u--) {
+        gl->ActiveTexture(GL_TEXTURE0 + (GLenum)u);
+        gl->BindTexture(GL_TEXTURE_2D, 0);
+    }
     return WW_OK;
 }
 
