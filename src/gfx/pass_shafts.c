@@ -163,8 +163,8 @@ static ww_result shafts_run(void *self, ww_renderer *r, const ww_frame *f, ww_er
     /* project it: a direction is a point at infinity (w = 0) in camera-relative coordinates */
     vec4 dir = {(float)L[0], (float)L[1], (float)L[2], 0.0f}, clip;
     glm_mat4_mulv((vec4 *)f->view_proj, dir, clip);
-    double cosf = L[0] * f->fwd[0] + L[1] * f->fwd[1] + L[2] * f->fwd[2];
-    double fade = smooth01(SHAFT_BEHIND_COS0, SHAFT_BEHIND_COS1, cosf);
+    double facing = L[0] * f->fwd[0] + L[1] * f->fwd[1] + L[2] * f->fwd[2];
+    double fade = smooth01(SHAFT_BEHIND_COS0, SHAFT_BEHIND_COS1, facing);
     if (fade <= 0.0 || clip[3] <= 0.0f) return WW_OK;
     double nx = clip[0] / clip[3], ny = clip[1] / clip[3];
     if (!f->underwater) {
