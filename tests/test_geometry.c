@@ -172,3 +172,102 @@ TEST(meshgen_fish_tail_weight) {
     ENSURE_MSG(tail > 0.9, "the tail tip must swing fully (weight %g)", tail);
     ww_meshgen_free(&m);
 }
+
+/* ---- pictures ---- */
+
+#define TOGGLE_THRESH 2 /* LDR codes: a pixel differs when a channel moves by more than this */
+
+static void golden_of(const char *name) {
+    if (!ww_test_have_gl()) return;
+    char scene[256], gold[256], dir[512], actual[600];
+    snprintf(scene, sizeof scene, "scenes/features/%s.yaml", name);
+    snprintf(gold, sizeof gold, "golden/features/%s.png", name);
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(name));
+    ENSURE(ww_test_render(scene, NULL, dir) == 0);
+    snprintf(actual, sizeof actual, "%s/frame_00000.png", dir);
+    ww_test_check_golden(gold, actual);
+}
+
+TEST(geometry_golden_shadows) { golden_of("shadows"); }
+TEST(geometry_golden_caustics) { golden_of("caustics"); }
+TEST(geometry_golden_lights) { golden_of("lights"); }
+TEST(geometry_golden_fog) { golden_of("fog"); }
+TEST(geometry_golden_lake_dusk) { golden_of("lake_dusk"); }
+
+/* scene rendered twice, with and without `set`, into a and b; diff within rect */
+static int toggle(const char *name, const char *set, const double rect[4], ww_test_region *d,
+                  char *a, char *b, size_t n) {
+    char scene[256], da[512], db[512], args[256];
+    snprintf(scene, sizeof scene, "scenes/features/%s.yaml", name);
+    snprintf(da, sizeof da, "%s", ww_test_tmpdir("toggle_on"));
+    snprintf(db, sizeof db, "%s", ww_test_tmpdir("toggle_off"));
+    snprintf(args, sizeof args, "--set %s", set);
+    if (ww_test_render(scene, NULL, da) != 0 || ww_test_render(scene, args, db) != 0) return -1;
+    snprintf(a, n, "%s/frame_00000.png", da);
+    snprintf(b, n, "%s/frame_00000.png", db);
+    return ww_test_region_diff(a, b, rect, TOGGLE_THRESH, d);
+}
+
+/* the shadow scene looks down from under water: the seabed fills the lower 55% of the image, the
+ * surface seen from below the top; shadows fall only on the seabed */
+TEST(geometry_shadows_toggle) {
+    if (!ww_test_have_gl()) return;
+    const double seabed[4] = {0.0, 0.45, 1.0, 1.0};
+    ww_test_region d;
+    char a[600], b[600];
+    ENSURE(toggle("shadows", "render.shadows=false", seabed, &d, a, b, sizeof a) == 0);
+    double frac = (double)d.inside / (double)d.inside_px;
+    ENSURE_MSG(frac > 0.05, "shadows off changed only %.3f of the seabed", frac);
+    /* the surface seen from below, between the cubes (top 10%) and the seabed */
+    const double top[4] = {0.0, 0.10, 1.0, 0.18};
+    ENSURE(ww_test_region_diff(a, b, top, TOGGLE_THRESH, &d) == 0);
+    ENSURE_MSG(d.inside == 0, "shadows off changed %ld pixels at the top (surface, sky)", d.inside);
+    /* and the plan loses the pass */
+    char on[600], off[600];
+    snprintf(on, sizeof on, "%s/on.txt", ww_test_tmpdir("geometry_plan"));
+    snprintf(off, sizeof off, "%s/off.txt", ww_test_tmpdir("geometry_plan"));
+    ENSURE(ww_test_ww("plan scenes/features/shadows.yaml", on, NULL) == 0);
+    ENSURE(ww_test_file_contains(on, " shadow "));
+    ENSURE(ww_test_ww("plan scenes/features/shadows.yaml --set render.shadows=false", off, NULL) == 0);
+    ENSURE(!ww_test_file_contains(off, " shadow "));
+}
+
+/* caustics light the seabed under water and nothing above it */
+TEST(geometry_caustics_toggle) {
+    if (!ww_test_have_gl()) return;
+    const double seabed[4] = {0.0, 0.45, 1.0, 1.0};
+    ww_test_region d;
+    char a[600], b[600];
+    ENSURE(toggle("caustics", "water.look.caustics=false", seabed, &d, a, b, sizeof a) == 0);
+    double frac = (double)d.inside / (double)d.inside_px;
+    ENSURE_MSG(frac > 0.2, "caustics off changed only %.3f of the seabed", frac);
+    /* the surface seen from below, between the floating cubes (whose submerged faces do catch
+     * caustics) and the seabed */
+    const double top[4] = {0.0, 0.10, 1.0, 0.18};
+    ENSURE(ww_test_region_diff(a, b, top, TOGGLE_THRESH, &d) == 0);
+    ENSURE_MSG(d.inside == 0, "caustics off changed %ld pixels of the surface", d.inside);
+}
+
+/* the lights light the boat and the cubes, not the sky */
+TEST(geometry_lights_toggle) {
+    if (!ww_test_have_gl()) return;
+    const double sky[4] = {0.0, 0.0, 1.0, 0.2};
+    ww_test_region d;
+    char a[600], b[600];
+    ENSURE(toggle("lights", "lights[0].intensity=0 --set lights[1].intensity=0", sky, &d, a, b,
+                  sizeof a) == 0);
+    ENSURE_MSG(d.inside == 0, "lights off changed %ld sky pixels", d.inside);
+    ENSURE_MSG(d.outside > 200, "lights off changed only %ld pixels of the boat and cubes",
+               d.outside);
+}
+
+/* fog: denser fog moves the geometry's pixels; the sky keeps its colour */
+TEST(geometry_fog_toggle) {
+    if (!ww_test_have_gl()) return;
+    const double sky[4] = {0.0, 0.0, 1.0, 0.25};
+    ww_test_region d;
+    char a[600], b[600];
+    ENSURE(toggle("fog", "fog.below.density=0 --set fog.above.density=0", sky, &d, a, b,
+                  sizeof a) == 0);
+    ENSURE_MSG(d.outside > 100, "fog off changed only %ld pixels", d.outside);
+}
