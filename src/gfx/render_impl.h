@@ -65,6 +65,8 @@ typedef struct ww_pass_ops {
 
 extern const ww_pass_ops ww_pass_main_ops;    /* pass_main.c */
 extern const ww_pass_ops ww_pass_tonemap_ops; /* pass_tonemap.c */
+extern const ww_pass_ops ww_pass_shadow_ops;  /* pass_shadow.c */
+extern const ww_pass_ops ww_pass_prepass_ops; /* pass_prepass.c */
 
 typedef struct ww_pass {
     ww_pass_id id;
@@ -106,6 +108,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
 void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
                       mat4 view_proj, const float *clip);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
+/* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
+int ww_geometry_draw_count(const ww_geometry *g);
 
 /* renderer.c: the targets of pass `id`, or NULL when the plan has no such pass */
 const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id);
