@@ -13,6 +13,7 @@
 
 /* the passes a plan may name; a new pass is a pass_xxx.c and one line here */
 static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
+    [WW_PASS_REFLECTION] = &ww_pass_reflection_ops,
     [WW_PASS_MAIN] = &ww_pass_main_ops,
     [WW_PASS_TONEMAP] = &ww_pass_tonemap_ops,
 };
