@@ -49,7 +49,13 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     /* opaque geometry first: the sky then shades only what it leaves uncovered (early depth) */
     if (r->geometry) ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
-    ww_water_draw(p->water, gl, f);
+    if (f->sc->render.water.alpha_blend && !f->underwater) {
+        /* seed 004: the water blends over whatever lies behind it, the sky included */
+        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        ww_water_draw(p->water, r, f);
+        return WW_OK;
+    }
+    ww_water_draw(p->water, r, f);
     ww_sky_draw(p->sky, gl, r->empty_vao, f);
     return WW_OK;
 }

@@ -67,6 +67,7 @@ extern const ww_pass_ops ww_pass_main_ops;    /* pass_main.c */
 extern const ww_pass_ops ww_pass_tonemap_ops; /* pass_tonemap.c */
 extern const ww_pass_ops ww_pass_shadow_ops;  /* pass_shadow.c */
 extern const ww_pass_ops ww_pass_prepass_ops; /* pass_prepass.c */
+extern const ww_pass_ops ww_pass_reflection_ops; /* pass_reflection.c */
 
 typedef struct ww_pass {
     ww_pass_id id;
@@ -209,11 +210,14 @@ void ww_water_ubos_upload(const ww_gl *gl, const ww_water_ubos *u, const ww_wate
 void ww_water_ubos_bind(const ww_gl *gl, const ww_water_ubos *u);
 void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u);
 
-/* water.c: the camera-centred polar mesh of the wave field, depth tested */
+/* water.c: the camera-centred polar mesh of the wave field, depth tested; its density is
+ * render.grid (scene/plan.h: ww_water_mesh_layout) */
 typedef struct ww_water ww_water;
 ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err);
-/* uploads the frame's phases and ripples, then draws */
-void ww_water_draw(ww_water *w, const ww_gl *gl, const ww_frame *f);
+/* uploads the frame's phases and ripples, then draws, reading what earlier passes left in
+ * r->shared (reflection, prepass) and r->sky_cubemap; alpha-blended over what the target holds
+ * when render.water.alpha_blend */
+void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f);
 void ww_water_free(ww_water *w, const ww_gl *gl);
 
 #endif

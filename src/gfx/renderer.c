@@ -15,6 +15,7 @@
 static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
     [WW_PASS_SHADOW] = &ww_pass_shadow_ops,
     [WW_PASS_PREPASS] = &ww_pass_prepass_ops,
+    [WW_PASS_REFLECTION] = &ww_pass_reflection_ops,
     [WW_PASS_MAIN] = &ww_pass_main_ops,
     [WW_PASS_TONEMAP] = &ww_pass_tonemap_ops,
 };
