@@ -156,9 +156,12 @@ static void mat_mul(const double a[16], const double b[16], double out[16]) {
         }
 }
 
-/* T(p) Ry(yaw) Rx(pitch) Rz(roll) S(s), column-major */
+/* T(p) Ry(yaw) Rx(pitch) Rz(roll) S(s), column-major. Yaw turns like the boat's heading and the
+ * camera's yaw (positive: +x toward +z, -z toward +x, clockwise seen from above), i.e. the
+ * right-handed rotation about +y by -yaw; pitch and roll are right-handed about +x and +z
+ * (positive pitch lifts a -z nose, as the camera's). */
 static void local_matrix(const ww_model_desc *m, double out[16]) {
-    double cy = cos(m->rotation[0]), sy = sin(m->rotation[0]);
+    double cy = cos(m->rotation[0]), sy = -sin(m->rotation[0]);
     double cp = cos(m->rotation[1]), sp = sin(m->rotation[1]);
     double cr = cos(m->rotation[2]), sr = sin(m->rotation[2]);
     /* R = Ry Rx Rz, rows */

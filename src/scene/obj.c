@@ -344,9 +344,10 @@ static ww_result parse_corner(cur *c, obj *o, const char *s, size_t n, corner *k
     return index_of(c, q, (size_t)(s + n - q), col + (int)(q - s), o->nrm.n, "normal", &k->n, err);
 }
 
-static ww_result parse_face(cur *c, obj *o, ww_error *err) {
-    corner first, prev, k;
-    int count = 0, col = column(c);
+/* col: the column of the line's `f`, for errors about the whole polygon */
+static ww_result parse_face(cur *c, obj *o, int col, ww_error *err) {
+    corner first = {0, 0, 0}, prev = {0, 0, 0}, k;
+    int count = 0;
     const char *s;
     size_t n;
     while ((n = token(c, &s)) > 0) {
@@ -564,7 +565,7 @@ ww_result ww_obj_parse(ww_assets *a, const char *path, const char *text, size_t 
             r = numbers(&c, "vn", 3, f, err);
             into = &o.nrm;
         } else if (n == 1 && kw[0] == 'f') {
-            r = parse_face(&c, &o, err);
+            r = parse_face(&c, &o, col, err);
         } else if (n == 6 && memcmp(kw, "mtllib", 6) == 0) {
             r = parse_mtllib(&c, a, &o, err);
         } else if (n == 6 && memcmp(kw, "usemtl", 6) == 0) {
