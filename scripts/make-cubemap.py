@@ -16,6 +16,7 @@ import zlib
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 SIDE = 128  # texels per face side
+AA = 3  # samples per texel side
 
 
 def write_png(path, w, h, rows):
@@ -77,8 +78,9 @@ def sky(d):
     az = math.atan2(z, x)
     if y < 0.0:  # the sea, darker toward the nadir
         return mix((0.16, 0.27, 0.33), (0.05, 0.10, 0.14), min(1.0, -y * 3.0))
-    # islands: a ridge whose height follows the azimuth (periodic noise around the ring)
-    ridge = 0.035 + 0.05 * fbm(3.0 * math.cos(az) + 7.0, 3.0 * math.sin(az) + 7.0) ** 2 * 2.0
+    # islands: peaks where the noise around the ring (periodic in the azimuth) rises above a
+    # level, open sea between them
+    ridge = 0.22 * max(0.0, fbm(4.0 * math.cos(az) + 7.0, 4.0 * math.sin(az) + 7.0) - 0.5)
     if y < ridge:
         haze = y / ridge
         return mix((0.42, 0.50, 0.50), (0.30, 0.40, 0.36), haze)
@@ -101,9 +103,15 @@ def skybox(folder):
         for j in range(SIDE):
             row = []
             for i in range(SIDE):
-                d = face_dir(face, (i + 0.5) / SIDE, (j + 0.5) / SIDE)
-                n = math.sqrt(sum(c * c for c in d))
-                row.append(to8(sky(tuple(c / n for c in d))))
+                # 3x3 samples per texel: the islands' hard edge without stairs
+                acc = [0.0, 0.0, 0.0]
+                for a in range(AA):
+                    for b in range(AA):
+                        d = face_dir(face, (i + (a + 0.5) / AA) / SIDE, (j + (b + 0.5) / AA) / SIDE)
+                        n = math.sqrt(sum(c * c for c in d))
+                        col = sky(tuple(c / n for c in d))
+                        acc = [acc[k] + col[k] / (AA * AA) for k in range(3)]
+                row.append(to8(acc))
             rows.append(row)
         write_png(os.path.join(folder, name + ".png"), SIDE, SIDE, rows)
 
