@@ -28,7 +28,7 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     main_pass *p = calloc(1, sizeof *p);
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "main pass: out of memory");
     p->rt = rt;
-    ww_result rc = ww_sky_new(r->gl, &p->sky, err);
+    ww_result rc = ww_sky_new(r, sc, &p->sky, err);
     if (rc == WW_OK) rc = ww_water_new(r->gl, sc, &p->water, err);
     if (rc != WW_OK) {
         main_destroy(p, r->gl);

@@ -141,9 +141,12 @@ typedef struct ww_sky_locs {
 void ww_sky_locs_init(const ww_gl *gl, GLuint prog, ww_sky_locs *l);
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);
 
-/* sky.c: the gradient sky and sun disc as a full-screen triangle, depth test off */
+/* sky.c: the scene's sky (gradient, cubemap or dome) and the sun disc as a full-screen triangle
+ * on the far plane. A cubemap sky uploads the scene's six faces once per renderer and sets
+ * r->sky_cubemap (the first sky created owns it and must outlive its readers; later skies of
+ * the same renderer draw it). */
 typedef struct ww_sky ww_sky;
-ww_result ww_sky_new(const ww_gl *gl, ww_sky **out, ww_error *err);
+ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error *err);
 void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f);
 void ww_sky_free(ww_sky *s, const ww_gl *gl);
 
