@@ -6,7 +6,7 @@
 #   make asan       the test suite under AddressSanitizer + UBSan only
 #   make golden     re-render the golden images in golden/ (read README first)
 #   make bench      speed and memory figures (not part of test)
-#   make fuzz       libFuzzer on the scene loader for FUZZ_SECONDS (not part of test)
+#   make fuzz       libFuzzer on the scene loader, then the OBJ reader, FUZZ_SECONDS each
 #   make soak       one hour of simulated time at 120 Hz with every system on (not part of test)
 
 BUILD   ?= build
@@ -90,7 +90,8 @@ bench: $(BIN)
 	./$(BIN) bench waves
 	./$(BIN) bench sim
 
-# libFuzzer on the scene loader (clang; not part of test). FUZZ_SECONDS=60 by default.
+# libFuzzer on the scene loader and the OBJ reader (clang; not part of test). FUZZ_SECONDS=60
+# each by default.
 FUZZ_SECONDS ?= 60
 fuzz: deps
 	@command -v clang >/dev/null || sh scripts/install-deps.sh --fuzz
@@ -98,6 +99,11 @@ fuzz: deps
 	clang -g -O1 -std=c11 -fsanitize=fuzzer,address,undefined -D_DEFAULT_SOURCE -Isrc \
 	    -o build/fuzz/fuzz_scene tests/fuzz/fuzz_scene.c src/scene/*.c src/core/*.c -lyaml -lm
 	build/fuzz/fuzz_scene -max_total_time=$(FUZZ_SECONDS) build/fuzz/corpus
+	@mkdir -p build/fuzz/corpus_obj && cp tests/data/*.obj build/fuzz/corpus_obj/
+	clang -g -O1 -std=c11 -fsanitize=fuzzer,address,undefined -D_DEFAULT_SOURCE -Isrc \
+	    -o build/fuzz/fuzz_obj tests/fuzz/fuzz_obj.c src/scene/obj.c src/scene/assets.c \
+	    src/core/*.c -lm
+	build/fuzz/fuzz_obj -max_total_time=$(FUZZ_SECONDS) build/fuzz/corpus_obj
 
 # one hour at 120 Hz of SOAK_SCENE (every system on): exit 3 names the system, field, index and
 # step of a NaN or Inf; --stats prints simulated seconds per wall second. A 60 s version runs in

@@ -35,3 +35,69 @@ vec3 ww_sun_disc(vec3 d) {
     return u_sun_color * WW_SUN_RADIANCE *
            (1.0 - smoothstep(0.8 * WW_SUN_RADIUS, 1.2 * WW_SUN_RADIUS, a));
 }
+
+// ---- procedural skydome (sky.model dome) ------------------------------------------------------
+// Seed 003 maps a painted texture onto a hemisphere around the camera; here the dome is
+// procedural so no file is needed: the time-of-day gradient above, a scattering-like band of
+// haze along the horizon (brighter toward the sun, after the forward lobe of Mie scattering) and
+// clouds on a plane above the camera, drifting with the simulated time. The noise hashes integer
+// lattice points (no sin() hashes), so it is the same on every driver.
+
+const int WW_DOME_PERIOD = 256;          // the cloud noise repeats every this many units
+const float WW_DOME_CLOUD_SCALE = 1.6;   // noise units per unit of the cloud plane
+const float WW_DOME_CLOUD_HEIGHT = 0.12; // keeps the plane's projection finite at the horizon
+const float WW_DOME_BAND = 9.0;          // sharpness of the horizon band (1/elevation)
+
+// a hash of an integer lattice point in [0, 1) (after Jarzynski and Olano, "Hash Functions for
+// GPU Rendering", JCGT 2020, pcg2d), periodic with WW_DOME_PERIOD
+float ww_hash2(ivec2 p) {
+    uvec2 v = uvec2(p & (WW_DOME_PERIOD - 1)) * 1664525u + 1013904223u;
+    v.x += v.y * 1664525u; v.y += v.x * 1664525u;
+    v ^= v >> 16u;
+    v.x += v.y * 1664525u; v.y += v.x * 1664525u;
+    v ^= v >> 16u;
+    return float(v.x >> 8u) * (1.0 / 16777216.0);
+}
+
+// value noise with smoothstep weights, in [0, 1)
+float ww_value_noise(vec2 x) {
+    vec2 i = floor(x), f = x - i;
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    ivec2 c = ivec2(i);
+    float a = ww_hash2(c), b = ww_hash2(c + ivec2(1, 0));
+    float d = ww_hash2(c + ivec2(0, 1)), e = ww_hash2(c + ivec2(1, 1));
+    return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
+}
+
+// four octaves; the octave scales are whole, so the sum keeps the period
+float ww_fbm(vec2 x) {
+    float s = 0.0, w = 0.5;
+    for (int o = 0; o < 4; o++) {
+        s += w * ww_value_noise(x);
+        x *= 2.0;
+        w *= 0.5;
+    }
+    return s;
+}
+
+// the dome along unit direction d, without the sun disc; drift: the clouds' offset in noise
+// units (wrapped to the period by the caller, in double). Returns (colour, cloud cover).
+vec4 ww_sky_dome(vec3 d, vec2 drift) {
+    vec3 c = ww_sky(d);
+    if (d.y <= 0.0) return vec4(c, 0.0);
+    // scattering-like horizon band: haze whiter than the horizon colour, lifted toward the sun
+    float mu = dot(d.xz, u_sun_dir.xz) / max(length(d.xz) * length(u_sun_dir.xz), 1e-6);
+    float phase = 0.25 * (1.0 + mu) * (1.0 + mu);
+    float band = exp(-WW_DOME_BAND * d.y);
+    vec3 haze = mix(u_sky_horizon, vec3(dot(u_sky_horizon, vec3(0.3333))), 0.5) * 1.2 +
+                u_sun_color * 0.12 * phase;
+    c = mix(c, haze, 0.6 * band);
+    // clouds on a plane above: where the ray meets it, in noise units
+    vec2 p = d.xz / (d.y + WW_DOME_CLOUD_HEIGHT) * WW_DOME_CLOUD_SCALE + drift;
+    float n = ww_fbm(p);
+    float cover = smoothstep(0.47, 0.72, n) * smoothstep(0.0, 0.12, d.y);
+    // lit tops toward the sun, darker thick cores; the sky's own light fills the shadows
+    vec3 light = u_sun_color * (0.45 + 0.35 * phase) + 0.5 * (u_sky_zenith + u_sky_horizon);
+    vec3 cloud = light * (1.0 - 0.4 * smoothstep(0.62, 0.85, n));
+    return vec4(mix(c, cloud, cover), cover);
+}

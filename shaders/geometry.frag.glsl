@@ -1,36 +1,152 @@
 #version 330 core
-// geometry.frag.glsl - lit solid geometry: the sun (Lambert) and the sky's ambient, with exp2
-// fog toward the above- or below-water fog colour by which side of the water the camera and the
-// point are on.
+// geometry.frag.glsl - lit solid geometry (gfx/geometry.c), after common.glsl, gerstner.glsl and
+// shadow.glsl:
+//   sun: Lambert + a little Blinn-Phong specular, shadowed (shadow.glsl), dimmed under water by
+//        the column of water above the point, and focused into caustics by the wave field;
+//   sky: hemisphere ambient (brighter on faces turned up);
+//   lights: point and spot lights (seed 003's lantern) with the smooth range window of Karis,
+//        "Real Shading in Unreal Engine 4" (SIGGRAPH 2013 course): (1 - (d/r)^4)^2 / (d^2 + 1),
+//        spots fading over the outer `softness` of their cone;
+//   fog: exp2 above and below the water (seeds 000, 003). Seed 000 fogs a point by the medium
+//        the camera is in; here the segment camera -> point is split where it crosses the water
+//        plane and each part is fogged by its own medium, far part first.
+// Modes (u_mode): 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive).
+// Defines: WW_CAUSTICS 1 when water.look.caustics is on.
 
+#ifndef WW_CAUSTICS
+#define WW_CAUSTICS 0
+#endif
+#define WW_NLIGHTS_MAX 8
+
+uniform int u_mode;
 uniform vec3 u_ambient;        // sky ambient, linear RGB
-uniform vec3 u_cam;            // camera position relative to the water's rest level (0, y, 0)
+uniform vec3 u_eye;            // the eye, camera-relative (the mirrored camera in reflections)
+uniform float u_water_y;       // the water plane (surface over the camera), camera-relative y
 uniform vec3 u_fog_color;      // above water, linear RGB
 uniform float u_fog_density;   // above water, 1/m
 uniform vec3 u_fog_below_color;
 uniform float u_fog_below_density;
-uniform int u_depth_only;      // shadow pass: no colour
+uniform vec3 u_extinction;     // sunlight lost per metre of water it crosses, 1/m per channel
+uniform float u_caustics;      // strength (0 off)
+uniform int u_nlights;
+uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
+uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
+uniform vec3 u_light_color[WW_NLIGHTS_MAX]; // colour x intensity x flicker of this frame
+uniform vec4 u_light_param[WW_NLIGHTS_MAX]; // (range m, cos outer, cos inner, 1 spot / 0 point)
 
 in vec3 v_pos;
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_color;
+in float v_spec;
 out vec4 o_color;
 
+const float WW_SHININESS = 48.0;
+const float WW_ETA_WATER = 1.333;
+const float WW_CAUSTIC_MIN_DET = 0.12; // caps the focus at about 8x (the sun is not a point)
+
+#if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
+// caustics: the refracted sun through the surface above lands at x = q + d T(n(q)); to first
+// order in the slope T_xz = -kappa grad h with kappa = 1 - 1 / eta, so the landing map is
+// q -> q - d kappa grad h(q) and the light it carries spreads by its Jacobian determinant
+// det(I - d kappa H), H the Hessian of the height (the irradiance is 1 / |det|, mean 1).
+// H = -sum A k^2 D D^T sin(phi) for every family taken as sines; components shorter than the
+// blur of the sun's disc over the depth (and the pixel) are faded out.
+float ww_caustic(vec2 q, float depth) {
+    float kappa = 1.0 - 1.0 / WW_ETA_WATER;
+    float blur = depth * 2.0 * WW_SUN_RADIUS + 0.05;
+    mat2 H = mat2(0.0);
+    for (int i = 0; i < u_nwaves; i++) {
+        vec4 w = u_wave[i];
+        float k = length(w.xy), L = 2.0 * WW_PI / k;
+        float f = smoothstep(2.0 * blur, 6.0 * blur, L);
+        if (f == 0.0) break; // sorted by k: the rest are shorter still
+        vec2 d = w.xy / k;
+        H -= (f * w.z * k * k * sin(ww_wave_phi(i, q))) * outerProduct(d, d);
+    }
+    mat2 J = mat2(1.0) - (depth * kappa) * H;
+    return 1.0 / max(abs(determinant(J)), WW_CAUSTIC_MIN_DET);
+}
+#endif
+
+// exp2 fog of colour c over length l in the medium above (below = false) or below the water
+vec3 ww_fog(vec3 c, float l, bool below) {
+    float k = (below ? u_fog_below_density : u_fog_density) * l;
+    return mix(below ? u_fog_below_color : u_fog_color, c, exp(-k * k));
+}
+
+// the segment eye -> p split at the water plane: the far part first, then the near part
+vec3 ww_fog_segment(vec3 c, vec3 p) {
+    vec3 e = u_eye;
+    float he = e.y - u_water_y, hp = p.y - u_water_y, len = length(p - e);
+    bool eye_below = he < 0.0, p_below = hp < 0.0;
+    if (eye_below == p_below) return ww_fog(c, len, eye_below);
+    float near = len * he / (he - hp); // where the segment crosses the plane
+    c = ww_fog(c, len - near, p_below);
+    return ww_fog(c, near, eye_below);
+}
+
 void main() {
-    if (u_depth_only != 0) {
+    if (u_mode == 0) {
         o_color = vec4(0.0);
         return;
     }
-    vec3 n = normalize(v_normal);
-    float sun_up = smoothstep(-0.02, 0.02, u_sun_dir.y);
-    vec3 lit = v_color.rgb * (u_ambient + u_sun_color * max(dot(n, u_sun_dir), 0.0) * sun_up);
-    lit += v_color.rgb * v_color.a;
+    vec3 p = v_pos;
+    vec3 v = normalize(u_eye - p);
+    float depth = u_water_y - p.y; // below the water plane, m (negative above)
 
-    // fog: below the water when the camera is, above otherwise
-    float dist = length(v_pos);
-    bool below = u_cam.y < 0.0;
-    float k = (below ? u_fog_below_density : u_fog_density) * dist;
-    vec3 fog = below ? u_fog_below_color : u_fog_color;
-    o_color = vec4(mix(fog, lit, exp(-k * k)), 1.0);
+    if (u_mode == 2) {
+        // the glow column: brightest on the axis seen face-on, fading toward its top
+        vec3 n = normalize(v_normal);
+        float face = abs(dot(n, v));
+        float glow = face * face * (1.0 - v_uv.y) * (1.0 - v_uv.y);
+        vec3 c = v_color.rgb * v_color.a * glow;
+        // additive: the fog only takes light away
+        vec3 fogged = ww_fog_segment(c, p) - ww_fog_segment(vec3(0.0), p);
+        o_color = vec4(max(fogged, vec3(0.0)), 1.0);
+        return;
+    }
+
+    vec3 n = normalize(v_normal);
+    if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
+    vec3 albedo = v_color.rgb;
+
+    // sunlight, through the water column above when under water
+    float sun_up = smoothstep(-0.02, 0.02, u_sun_dir.y);
+    vec3 sun = u_sun_color * sun_up;
+    vec3 amb = u_ambient * (0.65 + 0.35 * n.y);
+    if (depth > 0.0) {
+        vec3 t = exp(-u_extinction * depth);
+        sun *= exp(-u_extinction * depth / max(u_sun_dir.y, 0.2));
+        amb *= t;
+#if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
+        // the surface point the refracted sun ray through p left from (camera-relative xz)
+        vec3 tr = refract(-u_sun_dir, vec3(0.0, 1.0, 0.0), 1.0 / WW_ETA_WATER);
+        vec2 q = p.xz - tr.xz * (depth / min(tr.y, -0.05));
+        float caustic = ww_caustic(q, depth);
+        sun *= max(1.0 + u_caustics * (caustic - 1.0), 0.0);
+#endif
+    }
+    float lit = ww_shadow(p, n);
+    float ndl = max(dot(n, u_sun_dir), 0.0);
+    vec3 h = normalize(u_sun_dir + v);
+    float spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), WW_SHININESS) * v_spec : 0.0;
+    vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
+
+    for (int i = 0; i < u_nlights; i++) {
+        vec3 d = u_light_pos[i] - p;
+        float dist = length(d);
+        vec3 l = d / max(dist, 1e-4);
+        vec4 q = u_light_param[i];
+        float x = dist / q.x, x2 = x * x;
+        float win = clamp(1.0 - x2 * x2, 0.0, 1.0);
+        float att = win * win / (dist * dist + 1.0);
+        if (q.w > 0.5) att *= smoothstep(q.y, q.z, dot(-l, u_light_dir[i]));
+        float nl = max(dot(n, l), 0.0);
+        vec3 hl = normalize(l + v);
+        float sl = nl > 0.0 ? pow(max(dot(n, hl), 0.0), WW_SHININESS) * v_spec : 0.0;
+        c += u_light_color[i] * att * (albedo * nl + sl);
+    }
+    c += albedo * v_color.a; // emission
+    o_color = vec4(ww_fog_segment(c, p), 1.0);
 }

@@ -1,13 +1,17 @@
 #version 330 core
 // geometry.vert.glsl - solid geometry (gfx/geometry.c): one mesh, drawn once per instance with
-// the instance's model matrix and colour as per-instance attributes. Positions are
+// the instance's model matrix, colour and extras as per-instance attributes. Positions are
 // camera-relative: the model matrix's translation is the instance's position minus the camera's.
+// Fish swim: a travelling wave runs down the body, weighted by the tail weight in uv.x
+// (gfx/meshgen.h), swinging vertices sideways (mesh z); a fish's phase and amplitude come per
+// instance, so the whole school is one draw.
 
 layout(location = 0) in vec3 a_pos;      // mesh space, m
 layout(location = 1) in vec3 a_normal;   // mesh space
 layout(location = 2) in vec2 a_uv;
 layout(location = 3) in mat4 a_model;    // mesh -> camera-relative world (locations 3..6)
 layout(location = 7) in vec4 a_color;    // linear RGB albedo, a: emission factor
+layout(location = 8) in vec4 a_extra;    // (wiggle phase rad, wiggle amplitude, specular, 0)
 
 uniform mat4 u_view_proj;  // camera-relative world -> clip
 uniform vec4 u_clip;       // keep a.x + b.y + c.z + d >= 0 (camera-relative), when enabled
@@ -16,13 +20,27 @@ out vec3 v_pos;     // camera-relative world, m
 out vec3 v_normal;  // world
 out vec2 v_uv;
 out vec4 v_color;
+out float v_spec;
+
+const float WW_WIGGLE_K = 9.0; // rad per mesh unit: about 1.4 waves along the body
 
 void main() {
-    vec4 p = a_model * vec4(a_pos, 1.0);
+    vec3 q = a_pos;
+    vec3 nrm = a_normal;
+    if (a_extra.y != 0.0) {
+        // z += w A sin(phase - K x): the body bends; its normal tilts by the slope dz/dx
+        float w = a_uv.x, arg = a_extra.x - WW_WIGGLE_K * a_pos.x;
+        q.z += w * a_extra.y * sin(arg);
+        float slope = -w * a_extra.y * WW_WIGGLE_K * cos(arg);
+        nrm = normalize(vec3(nrm.x - slope * nrm.z, nrm.y, nrm.z));
+    }
+    vec4 p = a_model * vec4(q, 1.0);
     v_pos = p.xyz;
-    v_normal = mat3(a_model) * a_normal; // uniform scales only: no inverse transpose needed
+    // the inverse transpose: models may scale unevenly (chest, OBJ models)
+    v_normal = transpose(inverse(mat3(a_model))) * nrm;
     v_uv = a_uv;
     v_color = a_color;
+    v_spec = a_extra.z;
     gl_ClipDistance[0] = dot(vec4(p.xyz, 1.0), u_clip);
     gl_Position = u_view_proj * p;
 }

@@ -1,7 +1,20 @@
 #version 330 core
-// sky.frag.glsl - the gradient sky and the sun disc behind everything, one view ray per pixel.
+// sky.frag.glsl - the sky behind everything, one view ray per pixel: the gradient (seed 000), a
+// cubemap skybox (seed 004; WW_SKY_CUBEMAP) or the procedural dome (seed 003; WW_SKY_DOME), with
+// the sun disc on top.
+//
+// Seed 004 draws a unit cube with gl_Position = pos.xyww and samples (x, y, -z); here a
+// full-screen triangle on the far plane gives the same depth, and the cubemap is sampled along
+// the world direction unflipped, so the face named +z is what the camera sees looking along +z.
 
 uniform mat4 u_inv_view_proj; // inverse of projection * camera rotation (camera at the origin)
+uniform float u_intensity;    // sky.intensity: radiance scale of the cubemap and the dome
+#ifdef WW_SKY_CUBEMAP
+uniform samplerCube u_cubemap; // sRGB faces, decoded to linear by the sampler
+#endif
+#ifdef WW_SKY_DOME
+uniform vec2 u_drift;          // cloud drift, noise units, wrapped to the noise period
+#endif
 
 in vec2 v_ndc;
 out vec4 o_color;
@@ -10,5 +23,12 @@ void main() {
     // the camera sits at the origin, so a point on the far plane is a point along the ray
     vec4 p = u_inv_view_proj * vec4(v_ndc, 1.0, 1.0);
     vec3 d = normalize(p.xyz / p.w);
+#if defined(WW_SKY_CUBEMAP)
+    o_color = vec4(texture(u_cubemap, d).rgb * u_intensity + ww_sun_disc(d), 1.0);
+#elif defined(WW_SKY_DOME)
+    vec4 dome = ww_sky_dome(d, u_drift);
+    o_color = vec4(dome.rgb * u_intensity + ww_sun_disc(d) * (1.0 - dome.a), 1.0);
+#else
     o_color = vec4(ww_sky(d) + ww_sun_disc(d), 1.0);
+#endif
 }

@@ -1,7 +1,29 @@
 #version 330 core
-// water.frag.glsl - per-pixel analytic normal of the wave field and ripples (gerstner.glsl:
-// ww_partials, components filtered by the pixel footprint) and water shading: Schlick Fresnel
-// between the lit deep-water colour and the reflected sky, Blinn-Phong sun glitter, exp2 fog.
+// water.frag.glsl - water shading. Per-pixel analytic normal of the wave field and ripples
+// (gerstner.glsl: ww_partials, components filtered by the pixel footprint), then:
+//   reflection  the planar reflection pass's texture by projective texture mapping from the
+//               fragment's window position (seed 002; the mirror camera of pass_reflection.c
+//               images the water plane where the main camera does, so no flip), else the sky
+//               function, or the sky cubemap (seed 004)
+//   refraction  the prepass's colour by the same mapping, depth-aware (seed 000): the water's
+//               thickness along the view ray from both depths linearised drives Beer-Lambert
+//               murk exp(-murk d) toward the lit water colour and shrinks the distortion at the
+//               shore; without a prepass the lit deep-water colour
+//   Fresnel     bias + scale (1 - v.n)^power (seed 000) or Schlick F0 + (1 - F0)(1 - v.n)^5
+//   DuDv        seed 002's distortion map generated here instead of read from a file: two
+//               layers of value noise drifting apart, seeded by world position only; the noise
+//               gradient is the DuDv vector and, as a normal-map perturbation, specular detail
+//   foam        steep surface, grazing view, and where the Gerstner surface folds: the
+//               Jacobian of the horizontal map J = (1 + dDx/dx)(1 + dDz/dz) - dDx/dz dDz/dx
+//               falls to 0 (Tessendorf, "Simulating Ocean Water", 2001), broken up by noise
+//   under water the surface from below: Snell's window (transmitted sky within the critical
+//               angle asin(1 / 1.333) = 48.6 deg), total internal reflection of the water below
+//               outside it, then the below-water exp2 fog
+//   alpha blend seed 004's mode: alpha from Fresnel and the opacity at normal incidence
+// Improvements on the seeds: seed 002's DuDv texture and seed 000's normal/DuDv maps are
+// procedural and fade with the pixel footprint (no shimmer far away); seed 002 uses one constant
+// distortion everywhere, which pulls objects above the water into the refraction at the shore:
+// here a distorted lookup that lands in front of the water falls back to the undistorted one.
 
 uniform vec3 u_water_color; // deep-water scattering colour, linear RGB
 uniform vec3 u_ambient;     // sky ambient, linear RGB
@@ -9,16 +31,91 @@ uniform vec3 u_fog_color;   // linear RGB (the CPU substitutes the horizon colou
 uniform float u_fog_density; // 1/m
 uniform float u_pixel_angle; // angle one pixel spans, rad
 
+uniform vec4 u_fresnel;     // (0 bias + scale, 1 Schlick; bias or F0; scale; power)
+uniform float u_specular;   // sun highlight strength
+uniform vec3 u_distort;     // (strength, screen fraction; pattern cells per metre; 1: DuDv on)
+uniform vec4 u_dudv_m[2];   // per layer, the mat2 (column-major) from rest offset (m) to cells
+uniform vec2 u_dudv_o[2];   // per layer: the centre's cells plus the drift, wrapped (CPU, double)
+uniform vec4 u_cam_axes;    // camera right and forward, horizontal parts (x, z, x, z), unit
+uniform vec2 u_inv_size;    // 1 / the main target's size, 1/px
+uniform vec2 u_clip_range;  // near, far clip, m
+uniform int u_reflect_tex;  // 1: u_reflection holds this frame's mirrored scene
+uniform int u_refract_tex;  // 1: u_scene_color / u_scene_depth hold the prepass
+uniform int u_cube;         // 1: the sky is u_sky_cube (times u_sky_intensity)
+uniform sampler2D u_reflection;
+uniform sampler2D u_scene_color;
+uniform sampler2D u_scene_depth;
+uniform samplerCube u_sky_cube;
+uniform float u_sky_intensity;
+uniform float u_murk;       // extinction, 1/m
+uniform float u_foam;       // amount, 0: off
+uniform int u_underwater;   // the camera is below the surface
+uniform vec3 u_fog_below_color;
+uniform float u_fog_below_density; // 1/m
+uniform vec2 u_alpha;       // (1: alpha-blended, opacity at normal incidence)
+
 in vec2 v_local;
 in vec3 v_pos;
 out vec4 o_color;
 
-const float F0 = 0.02;          // reflectance of water at normal incidence
-const float SPEC_POWER = 600.0; // Blinn-Phong exponent of a calm surface
+const float SPEC_POWER = 600.0;   // Blinn-Phong exponent of a calm surface
+const float ETA_WATER = 1.333;    // refractive index of water over air's
+const int NOISE_MASK = 255;       // the noise lattice repeats every 256 cells (water.c wraps)
+const float LAYER_WEIGHT0 = 0.6;  // the two DuDv layers' shares
+const float LAYER_WEIGHT1 = 0.4;
+const float DETAIL_SLOPE = 0.06;  // normal-map slope per unit DuDv (seed 002's specular detail)
+const float WAVE_DISTORT = 1.0;   // lookup offset per unit of the wave normal's horizontal part
+const float SHORE_DEPTH = 1.0;    // m of water along the ray over which distortion grows in
+const float EDGE = 0.002;         // keep projective lookups off the texture border
+const float FOLD_J_FULL = 0.35;   // Jacobian at which the fold foam is whole ...
+const float FOLD_J_NONE = 0.75;   // ... and where it starts
+const float STEEP_LO = 0.25;      // 1 - n.y where slope foam starts ...
+const float STEEP_HI = 0.55;      // ... and is whole
+const float GRAZE_BOOST = 0.5;    // slope foam grows by this much seen edge-on
+const float FOAM_CELLS = 2.3;     // foam noise cells per DuDv cell
+const float FOAM_ALBEDO = 0.85;
 
-float schlick(float c) {
-    float m = 1.0 - clamp(c, 0.0, 1.0), m2 = m * m;
-    return F0 + (1.0 - F0) * (m2 * m2 * m);
+// integer hash of a lattice point (PCG output permutation), in [0, 1]: positions only, no time
+float ww_hash(ivec2 c) {
+    uvec2 q = uvec2(c & NOISE_MASK);
+    uint h = q.x + q.y * 256u;
+    h = h * 747796405u + 2891336453u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    return float(h) * (1.0 / 4294967295.0);
+}
+
+// value noise in [-1, 1] with its analytic gradient (Quilez, "value noise derivatives"):
+// (n, dn/dx, dn/dy) in cells
+vec3 ww_noise(vec2 x) {
+    vec2 i = floor(x), f = x - i;
+    vec2 u = f * f * (3.0 - 2.0 * f), du = 6.0 * f * (1.0 - f);
+    ivec2 c = ivec2(i);
+    float a = ww_hash(c), b = ww_hash(c + ivec2(1, 0));
+    float d = ww_hash(c + ivec2(0, 1)), e = ww_hash(c + ivec2(1, 1));
+    float k = a - b - d + e;
+    float n = a + (b - a) * u.x + (d - a) * u.y + k * u.x * u.y;
+    vec2 g = du * vec2(b - a + k * u.y, d - a + k * u.x);
+    return 2.0 * vec3(n - 0.5, g);
+}
+
+float ww_fresnel(float c) {
+    float m = 1.0 - clamp(c, 0.0, 1.0);
+    if (u_fresnel.x < 0.5) return clamp(u_fresnel.y + u_fresnel.z * pow(m, u_fresnel.w), 0.0, 1.0);
+    float m2 = m * m;
+    return u_fresnel.y + (1.0 - u_fresnel.y) * (m2 * m2 * m);
+}
+
+// the sky along d: the cubemap when the sky is one, else the gradient
+vec3 ww_sky_any(vec3 d) {
+    if (u_cube != 0) return u_sky_intensity * texture(u_sky_cube, d).rgb;
+    return ww_sky(d);
+}
+
+// eye-space depth of a window depth (perspective, default depth range), m
+float ww_linear_depth(float z) {
+    float n = u_clip_range.x, f = u_clip_range.y;
+    return 2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n));
 }
 
 void main() {
@@ -42,17 +139,83 @@ void main() {
     float removed;
     ww_partials(v_local, ww_footprint_make(along, across, stretch, pix), dpdx, dpdz, removed);
     vec3 n = normalize(cross(dpdz, dpdx));
+    vec3 nw = n; // the waves' normal, without the detail
+
+    // DuDv: the gradient of two drifting noise layers, per metre then per cell; each layer
+    // fades out where a cell spans fewer than 4 footprints along the view (as the waves)
+    vec2 dudv = vec2(0.0);
+    if (u_distort.z > 0.5) {
+        float cell = 1.0 / u_distort.y, inv_fp = 1.0 / max(pix * stretch, 1e-6);
+        vec2 g = vec2(0.0);
+        for (int j = 0; j < 2; j++) {
+            mat2 m = mat2(u_dudv_m[j].xy, u_dudv_m[j].zw);
+            float fade = ww_wave_fade(1.0 / length(m[0]), inv_fp); // a cell, m
+            if (fade == 0.0) continue;
+            vec3 nz = ww_noise(m * v_local + u_dudv_o[j]);
+            // the chain rule: d noise(M p + o) / dp = M^T grad noise
+            g += (j == 0 ? LAYER_WEIGHT0 : LAYER_WEIGHT1) * fade * (transpose(m) * nz.yz);
+        }
+        dudv = g * cell;
+        // normal-map detail: the DuDv as the slope of a small height field (seed 002)
+        n = normalize(n - DETAIL_SLOPE * vec3(dudv.x, 0.0, dudv.y));
+    }
+    // the lookups' offset on screen: DuDv plus the waves' tilt, horizontal world directions
+    // taken to screen x (camera right) and y (farther is higher)
+    vec2 tilt = dudv + WAVE_DISTORT * nw.xz;
+    vec2 off = u_distort.x * vec2(dot(tilt, u_cam_axes.xy), dot(tilt, u_cam_axes.zw));
+    vec2 uv0 = gl_FragCoord.xy * u_inv_size;
 
     vec3 l = u_sun_dir;
-    float ndv = max(dot(n, v), 0.0);
-    float ndl = max(dot(n, l), 0.0);
     float sun_up = smoothstep(-0.02, 0.02, l.y); // the horizon hides the sun
 
-    // refraction: deep water lit by the sky and a little sun; reflection: the sky
+    if (u_underwater != 0) {
+        // from below: the normal facing the camera; Snell's window, else total internal
+        // reflection of the water below (its fog colour)
+        vec3 nd = -n;
+        vec3 t = refract(-v, nd, ETA_WATER);
+        vec3 below = u_fog_below_color;
+        vec3 c;
+        if (dot(t, t) == 0.0) {
+            c = below;
+        } else {
+            // Fresnel on the air side's angle, the larger one: 1 at the window's edge
+            float fr = ww_fresnel(max(dot(t, n), 0.0));
+            c = mix(ww_sky_any(t) + ww_sun_disc(t) * sun_up, below, fr);
+        }
+        float k = u_fog_below_density * dist;
+        o_color = vec4(mix(u_fog_below_color, c, exp(-k * k)), 1.0);
+        return;
+    }
+
+    float ndv = max(dot(n, v), 0.0);
+    float ndl = max(dot(n, l), 0.0);
+    float fr = ww_fresnel(ndv);
+    vec3 rdir = reflect(-v, n);
+
+    // reflection: the mirrored scene, or the sky
+    vec3 refl;
+    if (u_reflect_tex != 0) {
+        vec4 t = texture(u_reflection, clamp(uv0 + off, EDGE, 1.0 - EDGE));
+        refl = mix(ww_sky_any(rdir), t.rgb, t.a);
+    } else {
+        refl = ww_sky_any(rdir);
+    }
+
+    // refraction: deep water lit by the sky and a little sun, or what lies below through murk
     vec3 deep = u_water_color * (u_ambient + 0.1 * sun_up * ndl * u_sun_color);
-    vec3 sky = ww_sky(reflect(-v, n));
-    float fr = schlick(ndv);
-    vec3 c = mix(deep, sky, fr);
+    vec3 refr = deep;
+    if (u_refract_tex != 0 && u_alpha.x < 0.5) {
+        float zw = ww_linear_depth(gl_FragCoord.z), ray = dist / zw; // eye depth -> ray length
+        float zs = ww_linear_depth(texture(u_scene_depth, uv0).r);
+        float shore = 1.0 - exp(-max(zs - zw, 0.0) * ray / SHORE_DEPTH);
+        vec2 uv = clamp(uv0 + off * shore, EDGE, 1.0 - EDGE);
+        float zd = ww_linear_depth(texture(u_scene_depth, uv).r);
+        if (zd < zw) uv = uv0; // the distorted lookup found something in front of the water
+        else zs = zd;
+        float thick = max(zs - zw, 0.0) * ray;
+        refr = mix(deep, texture(u_scene_color, uv).rgb, exp(-u_murk * thick));
+    }
+    vec3 c = mix(refr, refl, fr);
 
     // sun glitter: normalised Blinn-Phong whose roughness grows with the removed slopes
     // (Beckmann m^2 ~ slope variance; exponent n = 2 / m^2 - 2). No n.l factor: a mirror
@@ -61,9 +224,39 @@ void main() {
     float m2 = 2.0 / (SPEC_POWER + 2.0) + removed;
     float pw = 2.0 / m2 - 2.0;
     float spec = (pw + 8.0) / (8.0 * WW_PI) * pow(max(dot(n, h), 0.0), pw);
-    c += u_sun_color * (spec * schlick(dot(h, v)) * sun_up);
+    vec3 sun = u_sun_color * (u_specular * spec * ww_fresnel(dot(h, v)) * sun_up);
 
-    // exp2 fog toward the fog colour lit by the sun glow along the view
+    // foam: folding (J -> 0), steep, steeper-looking edge-on; broken up by noise
+    float foam = 0.0;
+    vec3 foam_lit = vec3(0.0);
+    if (u_foam > 0.0) {
+        float jac = dpdx.x * dpdz.z - dpdx.z * dpdz.x;
+        float fold = 1.0 - smoothstep(FOLD_J_FULL, FOLD_J_NONE, jac);
+        float graze = 1.0 - ndv;
+        float steep = smoothstep(STEEP_LO, STEEP_HI, 1.0 - nw.y) * (1.0 + GRAZE_BOOST * graze);
+        float mask = clamp(max(fold, steep), 0.0, 1.0);
+        float inv_fp = 1.0 / max(pix * stretch, 1e-6), cells = FOAM_CELLS * u_distort.y;
+        float fade = ww_wave_fade(1.0 / cells, inv_fp);
+        float nz = 0.5 + 0.5 * fade * ww_noise(cells * v_local + u_dudv_o[0] * FOAM_CELLS).x;
+        foam = u_foam * mask * smoothstep(1.0 - mask, 1.3 - mask, nz);
+        foam_lit = FOAM_ALBEDO * (u_ambient + u_sun_color * max(dot(nw, l), 0.0) * sun_up);
+        c = mix(c, foam_lit, foam);
+        sun *= 1.0 - foam;
+    }
+
     float fog = exp(-(u_fog_density * dist) * (u_fog_density * dist));
-    o_color = vec4(mix(u_fog_color + ww_sun_glow(-v), c, fog), 1.0);
+    vec3 fogc = u_fog_color + ww_sun_glow(-v);
+    if (u_alpha.x > 0.5) {
+        // seed 004's blend over what was drawn below: out = a C + (1 - a) below with
+        // (1 - a) = (1 - F)(1 - alpha) the light let through, a C = F refl + (1 - F) alpha deep
+        // foam is opaque
+        float a = 1.0 - (1.0 - fr) * (1.0 - u_alpha.y);
+        vec3 ca = (fr * refl + (1.0 - fr) * u_alpha.y * deep + sun) / a;
+        ca = mix(ca, foam_lit, foam);
+        a = mix(a, 1.0, foam);
+        o_color = vec4(mix(fogc, ca, fog), mix(1.0, a, fog));
+        return;
+    }
+    // exp2 fog toward the fog colour lit by the sun glow along the view
+    o_color = vec4(mix(fogc, c + sun, fog), 1.0);
 }

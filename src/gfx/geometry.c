@@ -1,20 +1,67 @@
 /* geometry.c - the scene's solid geometry, shared by the passes that draw it (shadow, prepass,
- * reflection, main): meshes uploaded once, per-instance model matrices and colours uploaded once
- * per frame, one instanced draw per mesh (shaders/geometry.*). Positions are camera-relative.
- * What it holds now: the seabed, a grid plane water.depth below the rest level that follows the
- * camera.
+ * reflection, main): procedural meshes (gfx/meshgen.h) and OBJ models uploaded once, per-instance
+ * model matrices, colours and extras uploaded once per frame from the state (cubes, boat,
+ * stones, lure, fish, chest, bubbles, models), one instanced draw per mesh; the scene's lights
+ * composed with their parents per frame; the chest's glow column drawn additively after the
+ * opaque geometry in the colour modes. Positions are camera-relative (shaders/geometry.*).
+ *
+ * Matrices are composed in double from the state and the camera is subtracted before they are
+ * rounded to float, so geometry 1e5 m from the origin stays exact.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/mathx.h"
+#include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
 
 #define SEABED_CELLS 64      /* grid cells per side */
 #define SEABED_HALF 400.0    /* half its side, m (snapped to the camera) */
 #define SEABED_SNAP 16.0     /* the plane moves on this grid, m */
 
-/* one mesh on the GPU with its per-instance buffer (mat4 model + vec4 colour per instance) */
+/* sizes and looks of the things the state moves (the simulation has no sizes for them) */
+#define FISH_LENGTH 0.45          /* m, nose to tail */
+#define FISH_WIGGLE 0.07          /* tail swing at the tip, mesh units */
+#define FISH_WIGGLE_HZ 1.2        /* tail beats per second when still */
+#define FISH_WIGGLE_PER_SPEED 2.5 /* more beats per second per m/s of speed */
+#define FISH_MAX_PITCH 0.6        /* rad: how far a fish noses up or down */
+#define LURE_SIZE 0.09            /* m, the bobber's height */
+#define GLOW_RADIUS 0.7           /* m, the chest's glow column */
+#define GLOW_ABOVE 1.5            /* m: the column rises this far above the water's rest level */
+#define GLOW_FADE_IN 1.0          /* s: the column grows brighter over this after a spawn */
+#define GLOW_INTENSITY 3.0        /* emission of the column */
+#define WW_TEX_SHADOW 3            /* texture unit of the shadow map (shaders/shadow.glsl) */
+#define SPEC_DEFAULT 0.25         /* sun highlight on most things */
+#define SPEC_WET 0.6              /* on fish and bubbles */
+/* sunlight lost per metre of water (red goes first): seed 003's green-blue under water */
+#define WATER_EXTINCTION_R 0.45
+#define WATER_EXTINCTION_G 0.09
+#define WATER_EXTINCTION_B 0.07
+
+/* the shared slots: one instanced draw each */
+enum {
+    SLOT_SEABED = 0,
+    SLOT_BOX,
+    SLOT_SPHERE,
+    SLOT_STONE,
+    SLOT_HULL,
+    SLOT_FISH,
+    SLOT_LURE,
+    SLOT_CHEST,
+    SLOT_GRID,
+    SLOT_COLUMN, /* glow: drawn additively, never into depth */
+    SLOT_COUNT
+};
+
+static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
+    [SLOT_BOX] = WW_MESH_BOX,     [SLOT_SPHERE] = WW_MESH_SPHERE, [SLOT_STONE] = WW_MESH_STONE,
+    [SLOT_HULL] = WW_MESH_HULL,   [SLOT_FISH] = WW_MESH_FISH,     [SLOT_LURE] = WW_MESH_LURE,
+    [SLOT_CHEST] = WW_MESH_CHEST, [SLOT_GRID] = WW_MESH_GRID,     [SLOT_COLUMN] = WW_MESHGEN_COLUMN,
+};
+
+/* one mesh on the GPU with its per-instance buffer */
 typedef struct gmesh {
     GLuint vao, vbo, ibo, inst;
     GLsizei nindex;
@@ -22,20 +69,129 @@ typedef struct gmesh {
 } gmesh;
 
 typedef struct instance {
-    float model[16]; /* column-major */
+    float model[16]; /* column-major, camera-relative */
     float color[4];  /* albedo, emission factor */
+    float extra[4];  /* wiggle phase rad, wiggle amplitude, specular, 0 */
 } instance;
+
+typedef struct light_locs {
+    GLint n, pos, dir, color, param;
+} light_locs;
 
 struct ww_geometry {
     GLuint prog;
     ww_sky_locs sky;
-    GLint view_proj, clip, ambient, cam, fog_color, fog_density, fog_below_color,
-        fog_below_density, depth_only;
+    GLint view_proj, clip, ambient, eye, water_y, fog_color, fog_density, fog_below_color,
+        fog_below_density, extinction, caustics_loc, mode;
+    GLint shadow_map, shadow_on, sun_view_proj, shadow_filter;
+    light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
-    gmesh seabed;
+    gmesh slot[SLOT_COUNT];
+    int nobj;         /* OBJ models: one mesh per model */
+    gmesh obj[WW_MAX_MODELS];
+    int obj_model[WW_MAX_MODELS];
+    instance *scratch; /* the largest slot's instances, filled per frame */
+    int scratch_cap;
+    int draws;         /* instanced draws of the last ww_geometry_draw (tests) */
+    ww_water_waves waves; /* caustics: the wave field's phases at the camera */
+    ww_water_ubos ubos;
+    int caustics;
+    /* this frame's lights, camera-relative */
+    int nlights;
+    float light_pos[WW_MAX_LIGHTS][3], light_dir[WW_MAX_LIGHTS][3], light_color[WW_MAX_LIGHTS][3],
+        light_param[WW_MAX_LIGHTS][4];
 };
 
-/* vertex layout: position, normal, uv */
+/* ---- small double matrices (column-major 4x4: m[c * 4 + r]) ---- */
+
+static void m4_identity(double m[16]) {
+    memset(m, 0, 16 * sizeof *m);
+    m[0] = m[5] = m[10] = m[15] = 1.0;
+}
+
+static void m4_mul(const double a[16], const double b[16], double out[16]) {
+    double r[16];
+    for (int c = 0; c < 4; c++)
+        for (int k = 0; k < 4; k++) {
+            double s = 0.0;
+            for (int j = 0; j < 4; j++) s += a[j * 4 + k] * b[c * 4 + j];
+            r[c * 4 + k] = s;
+        }
+    memcpy(out, r, sizeof r);
+}
+
+/* translation t, rotation R (3x3 column-major), scale s: T R S */
+static void m4_trs(double m[16], const double t[3], const double R[9], const double s[3]) {
+    m4_identity(m);
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++) m[c * 4 + r] = R[c * 3 + r] * s[c];
+    for (int r = 0; r < 3; r++) m[12 + r] = t[r];
+}
+
+static void m3_mul(const double a[9], const double b[9], double out[9]) {
+    double r[9];
+    for (int c = 0; c < 3; c++)
+        for (int k = 0; k < 3; k++) {
+            double s = 0.0;
+            for (int j = 0; j < 3; j++) s += a[j * 3 + k] * b[c * 3 + j];
+            r[c * 3 + k] = s;
+        }
+    memcpy(out, r, sizeof r);
+}
+
+/* heading h (0 = +x, pi/2 = +z, as the simulation's), then pitch (nose up +, about the body's
+ * z) and roll (starboard +z down +, about the body's x): R = Ry(-h) Rz(pitch) Rx(roll) */
+static void m3_hpr(double h, double pitch, double roll, double R[9]) {
+    double ch = cos(-h), sh = sin(-h), cp = cos(pitch), sp = sin(pitch), cr = cos(roll),
+           sr = sin(roll);
+    double ry[9] = {ch, 0, -sh, 0, 1, 0, sh, 0, ch};
+    double rz[9] = {cp, sp, 0, -sp, cp, 0, 0, 0, 1};
+    double rx[9] = {1, 0, 0, 0, cr, sr, 0, -sr, cr};
+    double t[9];
+    m3_mul(ry, rz, t);
+    m3_mul(t, rx, R);
+}
+
+/* unit quaternion w x y z -> rotation */
+static void m3_quat(const double q[4], double R[9]) {
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    double n = w * w + x * x + y * y + z * z;
+    if (!(n > 0.0)) {
+        double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+        memcpy(R, I, sizeof I);
+        return;
+    }
+    double s = 2.0 / n;
+    R[0] = 1 - s * (y * y + z * z); R[1] = s * (x * y + w * z);     R[2] = s * (x * z - w * y);
+    R[3] = s * (x * y - w * z);     R[4] = 1 - s * (x * x + z * z); R[5] = s * (y * z + w * x);
+    R[6] = s * (x * z + w * y);     R[7] = s * (y * z - w * x);     R[8] = 1 - s * (x * x + y * y);
+}
+
+/* the boat's pose (no scale): hull centre, heading, pitch and roll of the state */
+static void boat_pose(const ww_state *st, double m[16]) {
+    double R[9], one[3] = {1, 1, 1};
+    m3_hpr(st->boat_heading[0], st->boat_tilt[0], st->boat_tilt[1], R);
+    m4_trs(m, st->boat_pos, R, one);
+}
+
+/* a model's world matrix this frame (composed with the boat's pose when its chain ends there) */
+static void model_world(const ww_scene *sc, const ww_state *st, int i, double m[16]) {
+    const ww_model_desc *d = &sc->models.model[i];
+    int p = d->parent;
+    while (p >= 0) p = sc->models.model[p].parent; /* the root of the chain */
+    if (p == WW_PARENT_BOAT && sc->boat.on) {
+        double b[16];
+        boat_pose(st, b);
+        m4_mul(b, d->world, m);
+    } else {
+        memcpy(m, d->world, 16 * sizeof *m);
+    }
+}
+
+/* ---- GL meshes ---- */
+
+/* vertex layout: position, normal, uv; instances: model matrix in locations 3..6, colour in 7,
+ * extras in 8, one per instance */
 static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert,
                         const GLuint *idx, int nindex, int cap) {
     gl->GenVertexArrays(1, &m->vao);
@@ -56,12 +212,11 @@ static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert
                    GL_STATIC_DRAW);
     m->nindex = nindex;
 
-    /* instances: model matrix in locations 3..6, colour in 7, one per instance */
     gl->GenBuffers(1, &m->inst);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)cap * (GLsizeiptr)sizeof(instance), NULL,
                    GL_DYNAMIC_DRAW);
-    for (int c = 0; c < 5; c++) {
+    for (int c = 0; c < 6; c++) {
         GLuint loc = 3 + (GLuint)c;
         gl->EnableVertexAttribArray(loc);
         gl->VertexAttribPointer(loc, 4, GL_FLOAT, GL_FALSE, sizeof(instance),
@@ -75,7 +230,7 @@ static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert
 static void mesh_free(const ww_gl *gl, gmesh *m) {
     if (m->vao) gl->DeleteVertexArrays(1, &m->vao);
     GLuint b[3] = {m->vbo, m->ibo, m->inst};
-    gl->DeleteBuffers(3, b);
+    if (m->vbo) gl->DeleteBuffers(3, b);
     *m = (gmesh){0};
 }
 
@@ -118,72 +273,366 @@ static ww_result seabed_new(const ww_gl *gl, gmesh *m, ww_error *err) {
     return WW_OK;
 }
 
+/* how many instances each slot may hold in this scene */
+static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
+    memset(cap, 0, SLOT_COUNT * sizeof *cap);
+    cap[SLOT_SEABED] = sc->render.seabed ? 1 : 0;
+    cap[SLOT_BOX] = sc->cubes.on ? sc->cubes.count : 0;
+    cap[SLOT_HULL] = sc->boat.on ? 1 : 0;
+    cap[SLOT_STONE] = sc->stones.on ? WW_MAX_STONES : 0;
+    cap[SLOT_FISH] = sc->fish.on ? sc->fish.count : 0;
+    cap[SLOT_LURE] = sc->rod.on ? 1 : 0;
+    cap[SLOT_CHEST] = sc->chest.on ? 1 : 0;
+    cap[SLOT_COLUMN] = sc->chest.on ? 1 : 0;
+    cap[SLOT_SPHERE] = sc->bubbles.on ? sc->bubbles.total : 0;
+    for (int i = 0; i < sc->models.count; i++) {
+        ww_mesh_kind k = sc->models.model[i].mesh;
+        for (int s = 1; s < SLOT_COUNT; s++)
+            if (SLOT_KIND[s] == k && k != WW_MESH_NONE && k != WW_MESH_OBJ) cap[s]++;
+    }
+}
+
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     if (!g) return;
     if (g->prog) gl->DeleteProgram(g->prog);
-    mesh_free(gl, &g->seabed);
+    for (int s = 0; s < SLOT_COUNT; s++) mesh_free(gl, &g->slot[s]);
+    for (int i = 0; i < g->nobj; i++) mesh_free(gl, &g->obj[i]);
+    ww_water_ubos_free(gl, &g->ubos);
+    free(g->scratch);
     free(g);
 }
 
+/* the shader's wave family, as gfx/water.c chooses it */
+static int wave_family(ww_wave_model m) {
+    switch (m) {
+    case WW_WAVES_FLAT: return 0;
+    case WW_WAVES_GERSTNER:
+    case WW_WAVES_SPECTRUM: return 1;
+    case WW_WAVES_SINES: return 2;
+    case WW_WAVES_STEEP_SINES: return 3;
+    }
+    return 0;
+}
+
+static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc,
+                              ww_error *err) {
+    static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
+    char defs[192];
+    snprintf(defs, sizeof defs,
+             "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
+             "#define WW_CAUSTICS %d\n",
+             wave_family(sc->wave_model), g->caustics);
+    ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
+                                       defs, &g->prog, err);
+    if (rc != WW_OK) return rc;
+    GLuint idx = gl->GetUniformBlockIndex(g->prog, "WwWaves");
+    if (idx != GL_INVALID_INDEX) gl->UniformBlockBinding(g->prog, idx, WW_UBO_WAVES);
+    return WW_OK;
+}
+
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err) {
-    static const char *const includes[] = {"common.glsl", NULL};
     const ww_gl *gl = r->gl;
-    (void)sc;
     ww_geometry *g = calloc(1, sizeof *g);
     if (!g) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
     g->uploaded = -1;
-    ww_result rc = ww_gfx_program(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
-                                  &g->prog, err);
-    if (rc == WW_OK) rc = seabed_new(gl, &g->seabed, err);
+    g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
+    ww_result rc = make_program(g, gl, sc, err);
+    if (rc == WW_OK && g->caustics) {
+        ww_water_waves_init(sc, &g->waves);
+        rc = ww_water_ubos_new(gl, sc, &g->waves, &g->ubos, err);
+    }
+    int cap[SLOT_COUNT], most = 1;
+    slot_caps(sc, cap);
+    if (rc == WW_OK && cap[SLOT_SEABED]) rc = seabed_new(gl, &g->slot[SLOT_SEABED], err);
+    for (int s = 1; s < SLOT_COUNT && rc == WW_OK; s++) {
+        if (cap[s] > most) most = cap[s];
+        if (!cap[s]) continue;
+        ww_mesh_data m;
+        rc = ww_meshgen(SLOT_KIND[s], &m, err);
+        if (rc != WW_OK) break;
+        mesh_upload(gl, &g->slot[s], m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
+        ww_meshgen_free(&m);
+    }
+    /* OBJ models: their own mesh each (the assets helper decodes them) */
+    for (int i = 0; i < sc->models.count && rc == WW_OK; i++) {
+        const ww_model_desc *d = &sc->models.model[i];
+        if (d->mesh != WW_MESH_OBJ || !sc->assets || d->asset < 0 || d->asset >= sc->assets->nmesh)
+            continue;
+        const ww_mesh_data *m = &sc->assets->mesh[d->asset];
+        mesh_upload(gl, &g->obj[g->nobj], m->vertex, m->nvert, m->index, (int)m->nindex, 1);
+        g->obj_model[g->nobj++] = i;
+    }
+    if (rc == WW_OK) {
+        g->scratch = malloc((size_t)most * sizeof *g->scratch);
+        g->scratch_cap = most;
+        if (!g->scratch) rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
+    }
     if (rc != WW_OK) {
         ww_geometry_free(g, gl);
         return rc;
     }
-    ww_sky_locs_init(gl, g->prog, &g->sky);
-    g->view_proj = ww_gfx_uniform(gl, g->prog, "u_view_proj");
-    g->clip = ww_gfx_uniform(gl, g->prog, "u_clip");
-    g->ambient = ww_gfx_uniform(gl, g->prog, "u_ambient");
-    g->cam = ww_gfx_uniform(gl, g->prog, "u_cam");
-    g->fog_color = ww_gfx_uniform(gl, g->prog, "u_fog_color");
-    g->fog_density = ww_gfx_uniform(gl, g->prog, "u_fog_density");
-    g->fog_below_color = ww_gfx_uniform(gl, g->prog, "u_fog_below_color");
-    g->fog_below_density = ww_gfx_uniform(gl, g->prog, "u_fog_below_density");
-    g->depth_only = ww_gfx_uniform(gl, g->prog, "u_depth_only");
+    GLuint p = g->prog;
+    ww_sky_locs_init(gl, p, &g->sky);
+    g->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
+    g->clip = ww_gfx_uniform(gl, p, "u_clip");
+    g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
+    g->eye = ww_gfx_uniform(gl, p, "u_eye");
+    g->water_y = ww_gfx_uniform(gl, p, "u_water_y");
+    g->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
+    g->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
+    g->fog_below_color = ww_gfx_uniform(gl, p, "u_fog_below_color");
+    g->fog_below_density = ww_gfx_uniform(gl, p, "u_fog_below_density");
+    g->extinction = ww_gfx_uniform(gl, p, "u_extinction");
+    g->caustics_loc = ww_gfx_uniform(gl, p, "u_caustics");
+    g->mode = ww_gfx_uniform(gl, p, "u_mode");
+    g->shadow_map = ww_gfx_uniform(gl, p, "u_shadow_map");
+    g->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
+    g->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
+    g->shadow_filter = ww_gfx_uniform(gl, p, "u_shadow_filter");
+    g->lights.n = ww_gfx_uniform(gl, p, "u_nlights");
+    g->lights.pos = ww_gfx_uniform(gl, p, "u_light_pos");
+    g->lights.dir = ww_gfx_uniform(gl, p, "u_light_dir");
+    g->lights.color = ww_gfx_uniform(gl, p, "u_light_color");
+    g->lights.param = ww_gfx_uniform(gl, p, "u_light_param");
     *out = g;
     return WW_OK;
+}
+
+/* ---- per frame ---- */
+
+static void put(instance *in, const double m[16], const double cam[3], const double color[3],
+                double emission, double spec) {
+    for (int i = 0; i < 16; i++) {
+        double v = m[i];
+        if (i >= 12 && i < 15) v -= cam[i - 12];
+        in->model[i] = (float)v;
+    }
+    for (int c = 0; c < 3; c++) in->color[c] = (float)color[c];
+    in->color[3] = (float)emission;
+    in->extra[0] = in->extra[1] = in->extra[3] = 0.0f;
+    in->extra[2] = (float)spec;
+}
+
+static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
+    WW_ASSERT(n <= m->cap);
+    m->ninst = n;
+    if (n <= 0) return;
+    gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
+    gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)n * (GLsizeiptr)sizeof *in, in);
+}
+
+/* models of a procedural kind join that kind's slot */
+static int add_models(const ww_scene *sc, const ww_state *st, ww_mesh_kind kind,
+                      const double cam[3], instance *in, int n) {
+    for (int i = 0; i < sc->models.count; i++) {
+        const ww_model_desc *d = &sc->models.model[i];
+        if (d->mesh != kind) continue;
+        double m[16];
+        model_world(sc, st, i, m);
+        put(&in[n++], m, cam, d->color, 0.0, SPEC_DEFAULT);
+    }
+    return n;
+}
+
+/* the flicker of light i at time t: 1 - depth (1 + s) / 2 with s a sum of three sines at
+ * incommensurate multiples of the rate (1, golden ratio, e), phases from the index: never a
+ * clock, the same frame gives the same light */
+static double flicker(const ww_light_desc *l, int i, double t) {
+    if (l->flicker <= 0.0) return 1.0;
+    double w = 2.0 * WW_PI * l->flicker_rate * t;
+    double s = 0.5 * sin(w + 1.3 * i) + 0.3 * sin(1.6180339887 * w + 2.1 * i + 0.4) +
+               0.2 * sin(2.7182818285 * w + 0.7 * i + 1.9);
+    return 1.0 - l->flicker * 0.5 * (1.0 + s);
+}
+
+/* each light's world position and axis, composed with its parent this frame */
+static void frame_lights(ww_geometry *g, const ww_scene *sc, const ww_state *st,
+                         const double cam[3]) {
+    g->nlights = sc->render.nlights;
+    for (int i = 0; i < g->nlights; i++) {
+        const ww_light_desc *l = &sc->render.light[i];
+        double m[16];
+        m4_identity(m);
+        if (strcmp(l->parent, "boat") == 0 && sc->boat.on) {
+            boat_pose(st, m);
+        } else if (l->parent[0]) {
+            for (int k = 0; k < sc->models.count; k++)
+                if (strcmp(sc->models.model[k].name, l->parent) == 0) model_world(sc, st, k, m);
+        }
+        double d[3];
+        for (int r = 0; r < 3; r++) {
+            double p = m[12 + r];
+            d[r] = 0.0;
+            for (int c = 0; c < 3; c++) {
+                p += m[c * 4 + r] * l->position[c];
+                d[r] += m[c * 4 + r] * l->direction[c];
+            }
+            g->light_pos[i][r] = (float)(p - cam[r]);
+        }
+        ww_m_normalize3(d);
+        double f = flicker(l, i, st->t) * l->intensity;
+        for (int r = 0; r < 3; r++) {
+            g->light_dir[i][r] = (float)d[r];
+            g->light_color[i][r] = (float)(l->color[r] * f);
+        }
+        double cos_outer = cos(l->angle), cos_inner = cos(l->angle * (1.0 - l->softness));
+        g->light_param[i][0] = (float)l->range;
+        g->light_param[i][1] = (float)cos_outer;
+        g->light_param[i][2] = (float)(cos_inner > cos_outer + 1e-4 ? cos_inner : cos_outer + 1e-4);
+        g->light_param[i][3] = l->kind == WW_LIGHT_SPOT ? 1.0f : 0.0f;
+    }
 }
 
 /* this frame's instances (once per frame, whichever pass draws first) */
 static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
+    const ww_state *st = f->st;
     if (g->uploaded == f->frame) return;
     g->uploaded = f->frame;
-    g->seabed.ninst = 0;
-    if (sc->render.seabed) {
+    const double *cam = f->cam_pos;
+    instance *in = g->scratch;
+    double one[3] = {1, 1, 1};
+
+    if (g->slot[SLOT_SEABED].cap) {
         /* centred on the camera snapped to a grid, so the grid does not swim */
-        double cx = SEABED_SNAP * floor(f->cam_pos[0] / SEABED_SNAP + 0.5);
-        double cz = SEABED_SNAP * floor(f->cam_pos[2] / SEABED_SNAP + 0.5);
-        double y = sc->water_level - sc->water_depth;
-        instance in = {{0}, {0}};
-        in.model[0] = (float)SEABED_HALF;
-        in.model[5] = 1.0f;
-        in.model[10] = (float)SEABED_HALF;
-        in.model[12] = (float)(cx - f->cam_pos[0]);
-        in.model[13] = (float)(y - f->cam_pos[1]);
-        in.model[14] = (float)(cz - f->cam_pos[2]);
-        in.model[15] = 1.0f;
-        for (int c = 0; c < 3; c++) in.color[c] = (float)sc->render.seabed_color[c];
-        gl->BindBuffer(GL_ARRAY_BUFFER, g->seabed.inst);
-        gl->BufferSubData(GL_ARRAY_BUFFER, 0, sizeof in, &in);
-        g->seabed.ninst = 1;
+        double c[3] = {SEABED_SNAP * floor(cam[0] / SEABED_SNAP + 0.5),
+                       sc->water_level - sc->water_depth,
+                       SEABED_SNAP * floor(cam[2] / SEABED_SNAP + 0.5)};
+        double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, s[3] = {SEABED_HALF, 1.0, SEABED_HALF}, m[16];
+        m4_trs(m, c, I, s);
+        put(&in[0], m, cam, sc->render.seabed_color, 0.0, 0.0);
+        slot_upload(gl, &g->slot[SLOT_SEABED], in, 1);
+    }
+    if (g->slot[SLOT_BOX].cap) {
+        int n = 0;
+        for (int i = 0; sc->cubes.on && i < sc->cubes.count; i++) {
+            double R[9], m[16], s = sc->cubes.cube[i].size, sz[3] = {s, s, s};
+            static const double wood[3] = {0.62, 0.42, 0.24};
+            m3_quat(st->cube_rot + 4 * i, R);
+            m4_trs(m, st->cube_pos + 3 * i, R, sz);
+            put(&in[n++], m, cam, wood, 0.0, SPEC_DEFAULT);
+        }
+        slot_upload(gl, &g->slot[SLOT_BOX], in, add_models(sc, st, WW_MESH_BOX, cam, in, n));
+    }
+    if (g->slot[SLOT_HULL].cap) {
+        int n = 0;
+        if (sc->boat.on) {
+            double m[16], s[16], S[3] = {sc->boat.length, sc->boat.length, sc->boat.length};
+            static const double paint[3] = {0.55, 0.16, 0.08};
+            double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, zero[3] = {0, 0, 0};
+            boat_pose(st, m);
+            m4_trs(s, zero, I, S);
+            m4_mul(m, s, m);
+            put(&in[n++], m, cam, paint, 0.0, SPEC_DEFAULT);
+        }
+        slot_upload(gl, &g->slot[SLOT_HULL], in, add_models(sc, st, WW_MESH_HULL, cam, in, n));
+    }
+    if (g->slot[SLOT_STONE].cap) {
+        int n = 0;
+        for (int i = 0; sc->stones.on && i < WW_MAX_STONES; i++) {
+            if (st->stone_state[i] == 0.0) continue;
+            double R[9], m[16], d = 2.0 * sc->stones.radius, s[3] = {d, d, d};
+            static const double grey[3] = {0.42, 0.41, 0.39};
+            m3_hpr(st->stone_spin[i] * (st->t - st->stone_t0[i]), 0.0, 0.0, R);
+            m4_trs(m, st->stone_pos + 3 * i, R, s);
+            put(&in[n++], m, cam, grey, 0.0, SPEC_DEFAULT);
+        }
+        slot_upload(gl, &g->slot[SLOT_STONE], in, add_models(sc, st, WW_MESH_STONE, cam, in, n));
+    }
+    if (g->slot[SLOT_FISH].cap) {
+        int n = 0;
+        for (int i = 0; sc->fish.on && i < sc->fish.count; i++) {
+            if (st->fish_mode[i] == 2.0) continue; /* caught: away */
+            const double *v = st->fish_vel + 3 * i;
+            double sp = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            double pitch = ww_m_clamp(atan2(v[1], hypot(v[0], v[2])), -FISH_MAX_PITCH, FISH_MAX_PITCH);
+            double R[9], m[16], s[3] = {FISH_LENGTH, FISH_LENGTH, FISH_LENGTH};
+            /* each fish a little different: hue and size from its index */
+            double u = (double)((i * 7919) % 97) / 97.0;
+            double col[3] = {0.45 + 0.25 * u, 0.5 + 0.1 * u, 0.45 - 0.15 * u};
+            for (int k = 0; k < 3; k++) s[k] *= 0.85 + 0.3 * u;
+            m3_hpr(st->fish_yaw[i], pitch, st->fish_bank[i], R);
+            m4_trs(m, st->fish_pos + 3 * i, R, s);
+            put(&in[n], m, cam, col, 0.0, SPEC_WET);
+            double hz = FISH_WIGGLE_HZ + FISH_WIGGLE_PER_SPEED * sp;
+            double ph = fmod(2.0 * WW_PI * hz * st->t + 2.399963 * i, 2.0 * WW_PI);
+            in[n].extra[0] = (float)ph;
+            in[n].extra[1] = (float)(FISH_WIGGLE * (st->fish_mode[i] == 1.0 ? 2.0 : 1.0));
+            n++;
+        }
+        slot_upload(gl, &g->slot[SLOT_FISH], in, add_models(sc, st, WW_MESH_FISH, cam, in, n));
+    }
+    if (g->slot[SLOT_LURE].cap) {
+        int n = 0;
+        if (sc->rod.on && st->lure_state[0] != 0.0) {
+            double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, m[16], s[3] = {LURE_SIZE, LURE_SIZE, LURE_SIZE};
+            static const double red[3] = {0.85, 0.12, 0.08};
+            m4_trs(m, st->lure_pos, I, s);
+            put(&in[n++], m, cam, red, 0.15, SPEC_WET);
+        }
+        slot_upload(gl, &g->slot[SLOT_LURE], in, add_models(sc, st, WW_MESH_LURE, cam, in, n));
+    }
+    if (g->slot[SLOT_CHEST].cap) {
+        int n = 0, nglow = 0;
+        instance glow;
+        if (sc->chest.on && st->chest_state[0] != 0.0) {
+            const double *b = st->chest_pos, *sz = sc->chest.size;
+            double c[3] = {b[0], b[1] + 0.5 * sz[1], b[2]}, I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, m[16];
+            static const double gold[3] = {0.75, 0.52, 0.16};
+            m4_trs(m, c, I, sz);
+            put(&in[n++], m, cam, gold, 0.05, SPEC_WET);
+            /* the glow column from the chest up through the surface */
+            double top = sc->water_level + GLOW_ABOVE, h = fmax(top - b[1], 1.0);
+            double gc[3] = {b[0], b[1] + 0.5 * h, b[2]}, gs[3] = {2 * GLOW_RADIUS, h, 2 * GLOW_RADIUS};
+            static const double warm[3] = {1.0, 0.8, 0.35};
+            m4_trs(m, gc, I, gs);
+            double age = st->t - st->chest_t0[0];
+            put(&glow, m, cam, warm, GLOW_INTENSITY * ww_m_smoothstep(0.0, GLOW_FADE_IN, age), 0.0);
+            nglow = 1;
+        }
+        slot_upload(gl, &g->slot[SLOT_CHEST], in, add_models(sc, st, WW_MESH_CHEST, cam, in, n));
+        slot_upload(gl, &g->slot[SLOT_COLUMN], &glow, nglow);
+    }
+    if (g->slot[SLOT_SPHERE].cap) {
+        int n = 0;
+        for (int i = 0; sc->bubbles.on && i < sc->bubbles.total; i++) {
+            if (st->bubble_on[i] == 0.0) continue;
+            double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, m[16], d = 2.0 * st->bubble_radius[i];
+            double s[3] = {d, d, d};
+            static const double air[3] = {0.75, 0.88, 0.92};
+            m4_trs(m, st->bubble_pos + 3 * i, I, s);
+            put(&in[n++], m, cam, air, 0.35, SPEC_WET);
+        }
+        slot_upload(gl, &g->slot[SLOT_SPHERE], in, add_models(sc, st, WW_MESH_SPHERE, cam, in, n));
+    }
+    if (g->slot[SLOT_GRID].cap)
+        slot_upload(gl, &g->slot[SLOT_GRID], in, add_models(sc, st, WW_MESH_GRID, cam, in, 0));
+    for (int i = 0; i < g->nobj; i++) {
+        const ww_model_desc *d = &sc->models.model[g->obj_model[i]];
+        double m[16];
+        model_world(sc, st, g->obj_model[i], m);
+        put(&in[0], m, cam, d->color, 0.0, SPEC_DEFAULT);
+        slot_upload(gl, &g->obj[i], in, 1);
+    }
+    (void)one;
+    frame_lights(g, sc, st, cam);
+
+    if (g->caustics) {
+        /* the wave field's phases at the camera: the shader's positions are camera-relative */
+        double centre[2] = {cam[0], cam[2]};
+        ww_water_waves_phases(sc, st, centre, &g->waves);
+        ww_water_ubos_upload(gl, &g->ubos, &g->waves, NULL, 0);
     }
 }
 
-static void draw_mesh(const ww_gl *gl, const gmesh *m) {
-    if (m->ninst <= 0) return;
+static int draw_mesh(const ww_gl *gl, const gmesh *m) {
+    if (m->ninst <= 0) return 0;
     gl->BindVertexArray(m->vao);
     gl->DrawElementsInstanced(GL_TRIANGLES, m->nindex, GL_UNSIGNED_INT, NULL, m->ninst);
+    return 1;
 }
+
+int ww_geometry_draw_count(const ww_geometry *g) { return g ? g->draws : 0; }
 
 void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
                       mat4 view_proj, const float *clip) {
@@ -202,20 +651,69 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
         gl->Disable(GL_CLIP_DISTANCE0);
         gl->Uniform4f(g->clip, 0.0f, 0.0f, 0.0f, 1.0f);
     }
+    float water_y = (float)(f->surface_y - f->cam_pos[1]);
     gl->Uniform3f(g->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
-    gl->Uniform3f(g->cam, 0.0f, (float)(f->cam_pos[1] - f->surface_y), 0.0f);
+    /* reflections see the world from the camera mirrored about the water plane */
+    gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
+    gl->Uniform1f(g->water_y, water_y);
     const double *fog = sc->fog_color[0] < 0.0 ? st->sky_horizon : sc->fog_color;
     gl->Uniform3f(g->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
     gl->Uniform1f(g->fog_density, (float)sc->fog_density);
     const double *fb = sc->render.fog_below_color;
     gl->Uniform3f(g->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
     gl->Uniform1f(g->fog_below_density, (float)sc->render.fog_below_density);
-    gl->Uniform1i(g->depth_only, mode == WW_GEOM_SHADOW);
+    gl->Uniform3f(g->extinction, (float)WATER_EXTINCTION_R, (float)WATER_EXTINCTION_G,
+                  (float)WATER_EXTINCTION_B);
+    gl->Uniform1f(g->caustics_loc, g->caustics ? (float)sc->render.water.caustics_strength : 0.0f);
+    gl->Uniform1i(g->mode, mode == WW_GEOM_SHADOW ? 0 : 1);
+
+    /* the sun's shadow map, when the shadow pass drew one this frame */
+    int shadowed = mode != WW_GEOM_SHADOW && r->shared.shadow_map != 0;
+    gl->Uniform1i(g->shadow_on, shadowed);
+    gl->Uniform1i(g->shadow_map, WW_TEX_SHADOW);
+    if (shadowed) {
+        int size = sc->render.shadows.size;
+        gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_SHADOW);
+        gl->BindTexture(GL_TEXTURE_2D, r->shared.shadow_map);
+        gl->ActiveTexture(GL_TEXTURE0);
+        gl->UniformMatrix4fv(g->sun_view_proj, 1, GL_FALSE, (const GLfloat *)r->shared.sun_view_proj);
+        /* a texel in metres: the orthographic map spans 2 / |row 0| of its matrix */
+        const float(*m)[4] = (const float(*)[4])r->shared.sun_view_proj;
+        float row = sqrtf(m[0][0] * m[0][0] + m[1][0] * m[1][0] + m[2][0] * m[2][0]);
+        gl->Uniform3f(g->shadow_filter, 1.0f / (float)size, (float)sc->render.shadows.softness,
+                      2.0f / (row * (float)size));
+    }
+    gl->Uniform1i(g->lights.n, mode == WW_GEOM_SHADOW ? 0 : g->nlights);
+    if (g->nlights > 0 && mode != WW_GEOM_SHADOW) {
+        gl->Uniform3fv(g->lights.pos, g->nlights, &g->light_pos[0][0]);
+        gl->Uniform3fv(g->lights.dir, g->nlights, &g->light_dir[0][0]);
+        gl->Uniform3fv(g->lights.color, g->nlights, &g->light_color[0][0]);
+        gl->Uniform4fv(g->lights.param, g->nlights, &g->light_param[0][0]);
+    }
+    if (g->caustics) gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
 
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
     gl->DepthMask(GL_TRUE);
-    draw_mesh(gl, &g->seabed);
+    int draws = 0;
+    /* the seabed receives shadows but casts none worth a map */
+    for (int s = 0; s < SLOT_COUNT; s++) {
+        if (s == SLOT_COLUMN || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW)) continue;
+        draws += draw_mesh(gl, &g->slot[s]);
+    }
+    for (int i = 0; i < g->nobj; i++) draws += draw_mesh(gl, &g->obj[i]);
+
+    /* the glow column: additive light after the opaque geometry, never into depth */
+    if ((mode == WW_GEOM_MAIN || mode == WW_GEOM_REFLECTION) && g->slot[SLOT_COLUMN].ninst > 0) {
+        gl->Uniform1i(g->mode, 2);
+        gl->Enable(GL_BLEND);
+        gl->BlendFunc(GL_ONE, GL_ONE);
+        gl->DepthMask(GL_FALSE);
+        draws += draw_mesh(gl, &g->slot[SLOT_COLUMN]);
+        gl->DepthMask(GL_TRUE);
+        gl->Disable(GL_BLEND);
+    }
+    g->draws = draws;
     gl->BindVertexArray(0);
     gl->Disable(GL_CLIP_DISTANCE0);
 }

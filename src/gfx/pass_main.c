@@ -29,7 +29,7 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     main_pass *p = calloc(1, sizeof *p);
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "main pass: out of memory");
     p->rt = rt;
-    ww_result rc = ww_sky_new(r->gl, &p->sky, err);
+    ww_result rc = ww_sky_new(r, sc, &p->sky, err);
     if (rc == WW_OK) rc = ww_water_new(r->gl, sc, &p->water, err);
     if (rc != WW_OK) {
         main_destroy(p, r->gl);
@@ -51,8 +51,14 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     /* opaque geometry first: the sky then shades only what it leaves uncovered (early depth) */
     if (r->geometry) ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
-    ww_water_draw(p->water, gl, f);
-    ww_sky_draw(p->sky, gl, r->empty_vao, f);
+    if (f->sc->render.water.alpha_blend && !f->underwater) {
+        /* seed 004: the water blends over whatever lies behind it, the sky included */
+        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        ww_water_draw(p->water, r, f);
+    } else {
+        ww_water_draw(p->water, r, f);
+        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+    }
     if (p->rt->fbo_ms) {
         /* post: resolve the samples: colour averaged, depth one sample per pixel (NEAREST, the
          * only filter a depth blit allows) */

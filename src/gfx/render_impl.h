@@ -70,6 +70,9 @@ typedef struct ww_pass_ops {
 
 extern const ww_pass_ops ww_pass_main_ops;    /* pass_main.c */
 extern const ww_pass_ops ww_pass_tonemap_ops; /* pass_tonemap.c */
+extern const ww_pass_ops ww_pass_shadow_ops;  /* pass_shadow.c */
+extern const ww_pass_ops ww_pass_prepass_ops; /* pass_prepass.c */
+extern const ww_pass_ops ww_pass_reflection_ops; /* pass_reflection.c */
 /* post: bloom, light shafts, FXAA, HUD */
 extern const ww_pass_ops ww_pass_bloom_ops;   /* pass_bloom.c */
 extern const ww_pass_ops ww_pass_shafts_ops;  /* pass_shafts.c */
@@ -122,6 +125,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
 void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
                       mat4 view_proj, const float *clip);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
+/* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
+int ww_geometry_draw_count(const ww_geometry *g);
 
 /* renderer.c: the targets of pass `id`, or NULL when the plan has no such pass */
 const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id);
@@ -152,9 +157,12 @@ typedef struct ww_sky_locs {
 void ww_sky_locs_init(const ww_gl *gl, GLuint prog, ww_sky_locs *l);
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);
 
-/* sky.c: the gradient sky and sun disc as a full-screen triangle, depth test off */
+/* sky.c: the scene's sky (gradient, cubemap or dome) and the sun disc as a full-screen triangle
+ * on the far plane. A cubemap sky uploads the scene's six faces once per renderer and sets
+ * r->sky_cubemap (the first sky created owns it and must outlive its readers; later skies of
+ * the same renderer draw it). */
 typedef struct ww_sky ww_sky;
-ww_result ww_sky_new(const ww_gl *gl, ww_sky **out, ww_error *err);
+ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error *err);
 void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f);
 void ww_sky_free(ww_sky *s, const ww_gl *gl);
 
@@ -221,11 +229,14 @@ void ww_water_ubos_upload(const ww_gl *gl, const ww_water_ubos *u, const ww_wate
 void ww_water_ubos_bind(const ww_gl *gl, const ww_water_ubos *u);
 void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u);
 
-/* water.c: the camera-centred polar mesh of the wave field, depth tested */
+/* water.c: the camera-centred polar mesh of the wave field, depth tested; its density is
+ * render.grid (scene/plan.h: ww_water_mesh_layout) */
 typedef struct ww_water ww_water;
 ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err);
-/* uploads the frame's phases and ripples, then draws */
-void ww_water_draw(ww_water *w, const ww_gl *gl, const ww_frame *f);
+/* uploads the frame's phases and ripples, then draws, reading what earlier passes left in
+ * r->shared (reflection, prepass) and r->sky_cubemap; alpha-blended over what the target holds
+ * when render.water.alpha_blend */
+void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f);
 void ww_water_free(ww_water *w, const ww_gl *gl);
 
 #endif

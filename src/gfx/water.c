@@ -19,12 +19,16 @@ struct ww_water {
     GLuint prog, vao, vbo, ibo;
     GLsizei ninner;     /* indices of the inner disc (drawn whole), first in the buffer */
     GLsizei per_seg;    /* indices of one angular segment of the outer rings, after the disc */
+    int nseg;           /* segments around the mesh (render.grid) */
     double inner_r;     /* radius of the inner disc's outer ring, m */
     int cull;           /* draw only the segments in view (WW_WATER_CULL=0 turns it off) */
     float grid[3]; /* (s0, q - 1, angular step) for the shaders' spacing estimate */
     ww_sky_locs sky;
     GLint view_proj, origin, ugrid;
     GLint water_color, ambient, fog_color, fog_density, pixel_angle;
+    GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
+    GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube;
+    GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
     ww_water_ubos ubos;
     ww_water_waves waves;    /* the components in upload order; phases set per frame */
     ww_ripple_block ripples; /* filled per frame when the scene has ripples */
@@ -227,15 +231,17 @@ static size_t quad(GLuint *idx, size_t k, int nseg, int j, int i) {
     return k;
 }
 
-/* centre vertex, then WW_WATER_RINGS rings of WW_WATER_SEGMENTS vertices; indexed triangles in
+/* centre vertex, then m.rings rings of m.segments vertices; indexed triangles in
  * two blocks: the inner disc (a fan and the rings within WW_WATER_INNER_R), then the outer rings
  * one angular segment after another, so that a wedge of segments is one contiguous range and the
  * draw can skip what lies outside the view (water_draw). The layout is the plan's (scene/plan.h),
  * which reports where the spacing fades each wave. */
-static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, ww_error *err) {
-    const int nseg = WW_WATER_SEGMENTS, nring = WW_WATER_RINGS;
+static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, double grid,
+                            ww_error *err) {
     ww_water_mesh m;
-    ww_water_mesh_layout(far_clip, &m);
+    ww_water_mesh_layout(far_clip, grid, &m);
+    const int nseg = m.segments, nring = m.rings;
+    w->nseg = nseg;
     double q = m.q, s0 = m.s0, dtheta = m.dtheta;
     w->grid[0] = (float)s0;
     w->grid[1] = (float)(q - 1.0);
@@ -309,7 +315,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     ww_water_waves_init(sc, &w->waves);
     ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
                                     !(fade && strcmp(fade, "0") == 0), &w->prog, err);
-    if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, err);
+    if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
     if (rc != WW_OK) {
         ww_water_free(w, gl);
@@ -324,6 +330,28 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->fog_color = ww_gfx_uniform(gl, w->prog, "u_fog_color");
     w->fog_density = ww_gfx_uniform(gl, w->prog, "u_fog_density");
     w->pixel_angle = ww_gfx_uniform(gl, w->prog, "u_pixel_angle");
+    w->fresnel = ww_gfx_uniform(gl, w->prog, "u_fresnel");
+    w->specular = ww_gfx_uniform(gl, w->prog, "u_specular");
+    w->distort = ww_gfx_uniform(gl, w->prog, "u_distort");
+    w->dudv_m = ww_gfx_uniform(gl, w->prog, "u_dudv_m");
+    w->dudv_o = ww_gfx_uniform(gl, w->prog, "u_dudv_o");
+    w->cam_axes = ww_gfx_uniform(gl, w->prog, "u_cam_axes");
+    w->inv_size = ww_gfx_uniform(gl, w->prog, "u_inv_size");
+    w->clip_range = ww_gfx_uniform(gl, w->prog, "u_clip_range");
+    w->reflect_tex = ww_gfx_uniform(gl, w->prog, "u_reflect_tex");
+    w->refract_tex = ww_gfx_uniform(gl, w->prog, "u_refract_tex");
+    w->cube = ww_gfx_uniform(gl, w->prog, "u_cube");
+    w->reflection = ww_gfx_uniform(gl, w->prog, "u_reflection");
+    w->scene_color = ww_gfx_uniform(gl, w->prog, "u_scene_color");
+    w->scene_depth = ww_gfx_uniform(gl, w->prog, "u_scene_depth");
+    w->sky_cube = ww_gfx_uniform(gl, w->prog, "u_sky_cube");
+    w->sky_intensity = ww_gfx_uniform(gl, w->prog, "u_sky_intensity");
+    w->murk = ww_gfx_uniform(gl, w->prog, "u_murk");
+    w->foam = ww_gfx_uniform(gl, w->prog, "u_foam");
+    w->underwater = ww_gfx_uniform(gl, w->prog, "u_underwater");
+    w->fog_below_color = ww_gfx_uniform(gl, w->prog, "u_fog_below_color");
+    w->fog_below_density = ww_gfx_uniform(gl, w->prog, "u_fog_below_density");
+    w->alpha = ww_gfx_uniform(gl, w->prog, "u_alpha");
     *out = w;
     return WW_OK;
 }
@@ -334,7 +362,7 @@ static void draw_segments(const ww_water *w, const ww_gl *gl, int first, int cou
     gl->DrawElements(GL_TRIANGLES, count * w->per_seg, GL_UNSIGNED_INT, (const void *)offset);
 }
 
-/* the wedge of outer segments the view can see: [first, first + count) modulo WW_WATER_SEGMENTS.
+/* the wedge of outer segments the view can see: [first, first + count) modulo w->nseg.
  * The frustum is the cone of its four corner rays; unless it holds the vertical (then every
  * azimuth is in view) its shadow on the water plane is a wedge bounded by the corners' azimuths.
  * The margin covers the mesh centre's snap offset and the waves' sideways displacement, both
@@ -342,13 +370,13 @@ static void draw_segments(const ww_water *w, const ww_gl *gl, int first, int cou
 static void visible_segments(const ww_water *w, const ww_frame *f, const double centre[2],
                              int *first, int *count) {
     *first = 0;
-    *count = WW_WATER_SEGMENTS;
+    *count = w->nseg;
     if (!w->cull) return;
     double corner = atan(sqrt(f->tan_half[0] * f->tan_half[0] + f->tan_half[1] * f->tan_half[1]));
     double off = hypot(centre[0] - f->cam_pos[0], centre[1] - f->cam_pos[2]);
     off += w->waves.sideways;
     if (off >= w->inner_r) return;
-    double margin = asin(off / w->inner_r) + 2.0 * WW_TAU / WW_WATER_SEGMENTS;
+    double margin = asin(off / w->inner_r) + 2.0 * WW_TAU / w->nseg;
     double vert = acos(ww_m_clamp(fabs(f->fwd[1]), 0.0, 1.0)); /* angle to the nearest vertical */
     if (vert <= corner + margin) return;
 
@@ -362,16 +390,114 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
         if (da < lo) lo = da;
         if (da > hi) hi = da;
     }
-    double step = WW_TAU / WW_WATER_SEGMENTS;
+    double step = WW_TAU / w->nseg;
     double from = floor((a0 + lo - margin) / step), to = floor((a0 + hi + margin) / step);
     int n = (int)(to - from) + 1;
-    if (n >= WW_WATER_SEGMENTS) return;
-    int s = (int)fmod(from, (double)WW_WATER_SEGMENTS);
-    *first = s < 0 ? s + WW_WATER_SEGMENTS : s;
+    if (n >= w->nseg) return;
+    int s = (int)fmod(from, (double)w->nseg);
+    *first = s < 0 ? s + w->nseg : s;
     *count = n;
 }
 
-void ww_water_draw(ww_water *w, const ww_gl *gl, const ww_frame *f) {
+/* the DuDv pattern's two layers (water.frag.glsl): layer j maps a rest offset p (m) to lattice
+ * cells M_j p + o_j, with M_j = cells per metre x a rotation and o_j = M_j (centre + drift_j t)
+ * wrapped to the lattice period in double, so the pattern is fixed to the world, drifts, and
+ * stays exact in float far from the origin and at large t (seed 002 scrolls its DuDv map the
+ * same way, in two directions) */
+#define DUDV_PERIOD 256.0           /* lattice cells before the noise repeats (NOISE_MASK + 1) */
+static const double dudv_scale[2] = {1.0, 1.93};  /* cells per metre over distortion_scale */
+static const double dudv_angle[2] = {0.0, 2.14};  /* rotation of each layer, rad */
+static const double dudv_drift[2][2] = {{0.8, 0.6}, {-0.45, 0.89}}; /* unit drift directions */
+
+static void dudv_layers(const ww_scene *sc, const ww_state *st, const double centre[2],
+                        float m[2][4], float o[2][2]) {
+    const ww_water_look *lk = &sc->render.water;
+    for (int j = 0; j < 2; j++) {
+        double s = lk->distortion_scale * dudv_scale[j], c = cos(dudv_angle[j]), n = sin(dudv_angle[j]);
+        double r[2][2] = {{s * c, -s * n}, {s * n, s * c}}; /* row-major */
+        double x = centre[0] + dudv_drift[j][0] * lk->distortion_speed * st->t;
+        double z = centre[1] + dudv_drift[j][1] * lk->distortion_speed * st->t;
+        for (int k = 0; k < 2; k++) {
+            double v = r[k][0] * x + r[k][1] * z;
+            o[j][k] = (float)(v - DUDV_PERIOD * floor(v / DUDV_PERIOD));
+        }
+        /* GLSL mat2 is column-major: (m00, m10, m01, m11) */
+        m[j][0] = (float)r[0][0];
+        m[j][1] = (float)r[1][0];
+        m[j][2] = (float)r[0][1];
+        m[j][3] = (float)r[1][1];
+    }
+}
+
+/* texture units of the water program */
+enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SKY_CUBE };
+
+static void bind_unit(const ww_gl *gl, int unit, GLenum target, GLuint tex) {
+    gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
+    gl->BindTexture(target, tex);
+}
+
+/* the optics' uniforms and textures: what the earlier passes of the frame left (r->shared) */
+static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *f,
+                       const double centre[2]) {
+    const ww_gl *gl = r->gl;
+    const ww_scene *sc = f->sc;
+    const ww_water_look *lk = &sc->render.water;
+    const ww_shared *sh = &r->shared;
+    int refl = sh->reflection && sh->reflection_tex;
+    int refr = sh->scene_color && sh->scene_depth;
+
+    gl->Uniform4f(w->fresnel, lk->fresnel == WW_FRESNEL_SCHLICK ? 1.0f : 0.0f,
+                  (float)lk->fresnel_bias, (float)lk->fresnel_scale, (float)lk->fresnel_power);
+    gl->Uniform1f(w->specular, (float)lk->specular);
+    /* DuDv only distorts and details what it has a texture to distort */
+    int dudv = lk->distortion > 0.0 && (refl || refr);
+    gl->Uniform3f(w->distort, (float)lk->distortion, (float)lk->distortion_scale, dudv ? 1.0f : 0.0f);
+    float m[2][4], o[2][2];
+    dudv_layers(sc, f->st, centre, m, o);
+    gl->Uniform4fv(w->dudv_m, 2, &m[0][0]);
+    gl->Uniform2fv(w->dudv_o, 2, &o[0][0]);
+
+    /* the screen's axes on the water: right, and farther (forward tilted by up, so that a
+     * camera looking straight down still has one) */
+    double rx = f->right[0], rz = f->right[2], fx = f->fwd[0] + f->up[0], fz = f->fwd[2] + f->up[2];
+    double rl = hypot(rx, rz), fl = hypot(fx, fz);
+    rl = rl > 1e-9 ? rl : 1.0;
+    fl = fl > 1e-9 ? fl : 1.0;
+    gl->Uniform4f(w->cam_axes, (float)(rx / rl), (float)(rz / rl), (float)(fx / fl), (float)(fz / fl));
+    const ww_rt *main = ww_renderer_output(r, WW_PASS_MAIN);
+    if (main) gl->Uniform2f(w->inv_size, 1.0f / (float)main->width, 1.0f / (float)main->height);
+    gl->Uniform2f(w->clip_range, (float)sc->near_clip, (float)sc->far_clip);
+
+    gl->Uniform1i(w->reflect_tex, refl);
+    gl->Uniform1i(w->refract_tex, refr);
+    gl->Uniform1i(w->cube, r->sky_cubemap != 0);
+    gl->Uniform1i(w->reflection, UNIT_REFLECTION);
+    gl->Uniform1i(w->scene_color, UNIT_SCENE_COLOR);
+    gl->Uniform1i(w->scene_depth, UNIT_SCENE_DEPTH);
+    gl->Uniform1i(w->sky_cube, UNIT_SKY_CUBE);
+    gl->Uniform1f(w->sky_intensity, (float)sc->render.sky_intensity);
+    gl->Uniform1f(w->murk, (float)lk->murk);
+    gl->Uniform1f(w->foam, lk->foam ? (float)lk->foam_amount : 0.0f);
+    gl->Uniform1i(w->underwater, f->underwater);
+    const double *fb = sc->render.fog_below_color;
+    gl->Uniform3f(w->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
+    gl->Uniform1f(w->fog_below_density, (float)sc->render.fog_below_density);
+    gl->Uniform2f(w->alpha, lk->alpha_blend ? 1.0f : 0.0f, (float)lk->alpha);
+    bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
+    bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
+    bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);
+    bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
+    gl->ActiveTexture(GL_TEXTURE0);
+}
+
+static void unbind_optics(const ww_gl *gl) {
+    bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, 0);
+    for (int u = UNIT_SCENE_DEPTH; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
+}
+
+void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
+    const ww_gl *gl = r->gl;
     const ww_scene *sc = f->sc;
     const ww_state *st = f->st;
 
@@ -388,6 +514,12 @@ void ww_water_draw(ww_water *w, const ww_gl *gl, const ww_frame *f) {
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
     gl->DepthMask(GL_TRUE);
+    /* seed 004's mode: blended over what is already drawn below (water.frag.glsl's alpha) */
+    int blend = sc->render.water.alpha_blend && !f->underwater;
+    if (blend) {
+        gl->Enable(GL_BLEND);
+        gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }
     gl->UseProgram(w->prog);
     ww_sky_locs_set(gl, &w->sky, st);
     gl->UniformMatrix4fv(w->view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
@@ -401,14 +533,17 @@ void ww_water_draw(ww_water *w, const ww_gl *gl, const ww_frame *f) {
     gl->Uniform3f(w->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
     gl->Uniform1f(w->fog_density, (float)sc->fog_density);
     gl->Uniform1f(w->pixel_angle, f->pixel_angle);
+    set_optics(w, r, f, centre);
 
     gl->BindVertexArray(w->vao);
     gl->DrawElements(GL_TRIANGLES, w->ninner, GL_UNSIGNED_INT, NULL);
     int first, count;
     visible_segments(w, f, centre, &first, &count);
-    draw_segments(w, gl, first, count < WW_WATER_SEGMENTS - first ? count : WW_WATER_SEGMENTS - first);
-    if (first + count > WW_WATER_SEGMENTS) draw_segments(w, gl, 0, first + count - WW_WATER_SEGMENTS);
+    draw_segments(w, gl, first, count < w->nseg - first ? count : w->nseg - first);
+    if (first + count > w->nseg) draw_segments(w, gl, 0, first + count - w->nseg);
     gl->BindVertexArray(0);
+    unbind_optics(gl);
+    if (blend) gl->Disable(GL_BLEND);
 }
 
 void ww_water_free(ww_water *w, const ww_gl *gl) {

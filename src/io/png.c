@@ -1,6 +1,7 @@
 /* png.c - PNG frames through stb_image_write (encode into memory, then one atomic write) and
- * stb_image (decode from memory). The only file that compiles stb; its global settings are pinned
- * here before every encode and decode so the bytes are the same run to run.
+ * stb_image (decode from memory; its implementation lives in core/stb_image_impl.c, shared with
+ * the scene's asset loader). stb's global settings are pinned here before every encode and decode
+ * so the bytes are the same run to run.
  */
 #include "io/writers.h"
 
@@ -8,17 +9,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* the one copy of the stb implementations in the program: PNG only, memory only. They compile
- * clean under our warning flags (gcc 12 and clang, even outside the system include path), so no
- * diagnostic is silenced around them. */
+/* the one copy of stb_image_write in the program: memory only. It compiles clean under our warning
+ * flags (gcc 12 and clang, even outside the system include path), so no diagnostic is silenced
+ * around it. stb_image's decoder is compiled once in core/stb_image_impl.c. */
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STBI_WRITE_NO_STDIO
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_PNG
-#define STBI_NO_STDIO
-#define STBI_NO_LINEAR
-#define STBI_NO_HDR
-#define STBI_MAX_DIMENSIONS 32768
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 

@@ -3,9 +3,13 @@
  * five minutes, a 15 s lifetime) and measured bubble rise speeds for the emitters (see
  * sim/bubbles.h).
  */
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "core/mathx.h"
+#include "scene/assets.h"
 #include "scene/compile_impl.h"
 
 static const rule R_CHEST_FIRST = CLOSED(0, 1e9, "s");
@@ -123,22 +127,147 @@ static ww_result compile_bubbles(ctx *c, const section *objects) {
     return WW_OK;
 }
 
-static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc *m) {
-    static const char *const keys[] = {"name", "min", "max", NULL};
+/* ---- objects.models: a scene graph of static models (seed 001's GameObject hierarchy) -------
+ * Each model's local matrix is T(position) Ry(yaw) Rx(pitch) Rz(roll) S(scale); its world matrix
+ * is its parent's world times its local (seed 001 passes the parent's transform down the tree
+ * while drawing; here the static chains are folded once at load). A chain that ends at the boat
+ * stays relative to the boat's frame: the renderer composes it with the boat's pose each frame. */
+
+static const rule R_SCALE = OPEN_LO(0, 1e4, "");
+static const rule R_ANGLE = FINITE("deg");
+static const rule R_ALBEDO = CLOSED(0, 1, "");
+
+static const char *const MESH_WORDS[] = {[WW_MESH_NONE] = "none",   [WW_MESH_BOX] = "box",
+                                         [WW_MESH_SPHERE] = "sphere", [WW_MESH_STONE] = "stone",
+                                         [WW_MESH_HULL] = "hull",   [WW_MESH_FISH] = "fish",
+                                         [WW_MESH_LURE] = "lure",   [WW_MESH_CHEST] = "chest",
+                                         [WW_MESH_GRID] = "grid",   NULL};
+
+/* procedural meshes default to a light grey; an OBJ keeps its materials' colours */
+static const double MODEL_GREY = 0.7;
+
+/* column-major 4x4: out = a b (out may not alias) */
+static void mat_mul(const double a[16], const double b[16], double out[16]) {
+    for (int col = 0; col < 4; col++)
+        for (int row = 0; row < 4; row++) {
+            double v = 0.0;
+            for (int k = 0; k < 4; k++) v += a[4 * k + row] * b[4 * col + k];
+            out[4 * col + row] = v;
+        }
+}
+
+/* T(p) Ry(yaw) Rx(pitch) Rz(roll) S(s), column-major. Yaw turns like the boat's heading and the
+ * camera's yaw (positive: +x toward +z, -z toward +x, clockwise seen from above), i.e. the
+ * right-handed rotation about +y by -yaw; pitch and roll are right-handed about +x and +z
+ * (positive pitch lifts a -z nose, as the camera's). */
+static void local_matrix(const ww_model_desc *m, double out[16]) {
+    double cy = cos(m->rotation[0]), sy = -sin(m->rotation[0]);
+    double cp = cos(m->rotation[1]), sp = sin(m->rotation[1]);
+    double cr = cos(m->rotation[2]), sr = sin(m->rotation[2]);
+    /* R = Ry Rx Rz, rows */
+    double r[3][3] = {{cy * cr + sy * sp * sr, -cy * sr + sy * sp * cr, sy * cp},
+                      {cp * sr, cp * cr, -sp},
+                      {-sy * cr + cy * sp * sr, sy * sr + cy * sp * cr, cy * cp}};
+    for (int col = 0; col < 3; col++) {
+        for (int row = 0; row < 3; row++) out[4 * col + row] = r[row][col] * m->scale[col];
+        out[4 * col + 3] = 0.0;
+    }
+    for (int row = 0; row < 3; row++) out[12 + row] = m->position[row];
+    out[15] = 1.0;
+}
+
+/* a number (the same on every axis) or a list of three */
+static ww_result get_scale(ctx *c, const section *s, double out[3]) {
+    const ww_node *n;
+    TRY(wwc_lookup(c, s, "scale", OPTIONAL, &n));
+    if (n && n->kind == WW_NODE_SCALAR) {
+        char name[128];
+        TRY(wwc_check_number(c, n, wwc_path_of(s, "scale", name, sizeof name), &R_SCALE, out));
+        out[1] = out[2] = out[0];
+        return WW_OK;
+    }
+    return wwc_get_vec(c, s, "scale", 3, &R_SCALE, OPTIONAL, out);
+}
+
+/* [yaw, pitch, roll] in degrees, or a single yaw */
+static ww_result get_rotation(ctx *c, const section *s, double out[3]) {
+    const ww_node *n;
+    TRY(wwc_lookup(c, s, "rotation", OPTIONAL, &n));
+    if (n && n->kind == WW_NODE_SCALAR) return wwc_get_angle(c, s, "rotation", &R_ANGLE, OPTIONAL, out);
+    TRY(wwc_get_vec(c, s, "rotation", 3, &R_ANGLE, OPTIONAL, out));
+    for (int a = 0; a < 3; a++) out[a] = ww_m_rad(out[a]);
+    return WW_OK;
+}
+
+/* a word-valued key as a node (NULL when absent) */
+static ww_result get_name(ctx *c, const section *s, const char *key, size_t max,
+                          const ww_node **out) {
+    TRY(wwc_lookup(c, s, key, OPTIONAL, out));
+    const ww_node *n = *out;
+    if (!n) return WW_OK;
+    if (n->kind != WW_NODE_SCALAR || ww_node_is_null(n) || n->len == 0)
+        return wwc_fail(c, WW_E_TYPE, n, "%s.%s: expected a word", s->what, key);
+    if (n->len >= max)
+        return wwc_fail(c, WW_E_RANGE, n, "%s.%s is %zu characters: expected at most %zu",
+                        s->what, key, n->len, max - 1);
+    return WW_OK;
+}
+
+static ww_assets *scene_assets(ctx *c) {
+    if (!c->sc->assets) c->sc->assets = calloc(1, sizeof *c->sc->assets);
+    return c->sc->assets;
+}
+
+/* *given: the model's bounds were written (else they are the transformed mesh's) */
+static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc *m,
+                               const ww_node **parent, int *given) {
+    static const char *const keys[] = {"name",  "mesh",  "obj",    "position", "rotation",
+                                       "scale", "color", "parent", "min",      "max", NULL};
     static const char *const axes[] = {"x", "y", "z"};
     section s;
-    const ww_node *name;
+    const ww_node *name, *obj;
     TRY(wwc_open_item(c, item, "objects.models", i, keys, &s));
-    *m = (ww_model_desc){0};
-    TRY(wwc_lookup(c, &s, "name", OPTIONAL, &name));
+    *m = (ww_model_desc){.scale = {1.0, 1.0, 1.0}, .parent = -1, .asset = -1,
+                         .line = s.map->mark.line, .column = s.map->mark.column};
+    TRY(get_name(c, &s, "name", sizeof m->name, &name));
     if (name) {
-        if (name->kind != WW_NODE_SCALAR || ww_node_is_null(name))
-            return wwc_fail(c, WW_E_TYPE, name, "%s.name: expected a word", s.what);
-        if (name->len >= sizeof m->name)
-            return wwc_fail(c, WW_E_RANGE, name, "%s.name is %zu characters: expected at most %zu",
-                            s.what, name->len, sizeof m->name - 1);
+        if (strcmp(name->text, "boat") == 0)
+            return wwc_fail(c, WW_E_INCONSISTENT, name,
+                            "%s.name: 'boat' names the boat as a parent: expected another name",
+                            s.what);
         snprintf(m->name, sizeof m->name, "%s", name->text);
     }
+    int mesh = WW_MESH_NONE;
+    TRY(wwc_get_word(c, &s, "mesh", MESH_WORDS, &mesh));
+    m->mesh = (ww_mesh_kind)mesh;
+    TRY(wwc_lookup(c, &s, "obj", OPTIONAL, &obj));
+    if (obj) {
+        if (ww_node_find(s.map, "mesh"))
+            return wwc_fail(c, WW_E_INCONSISTENT, obj, "%s: both mesh and obj: expected one",
+                            s.what);
+        if (obj->kind != WW_NODE_SCALAR || ww_node_is_null(obj))
+            return wwc_fail(c, WW_E_TYPE, obj, "%s.obj: expected a file name", s.what);
+        char path[WW_ASSET_PATH];
+        TRY(wwc_resolve_path(c, obj, path, sizeof path));
+        ww_assets *a = scene_assets(c);
+        if (!a) return wwc_fail(c, WW_E_NOMEM, obj, "out of memory for the scene's assets");
+        TRY(ww_assets_obj(a, path, obj->mark.file ? obj->mark.file : c->file, obj->mark.line,
+                          obj->mark.column, &m->asset, c->err));
+        m->mesh = WW_MESH_OBJ;
+    }
+    TRY(wwc_get_vec(c, &s, "position", 3, &R_PLACE, OPTIONAL, m->position));
+    TRY(get_rotation(c, &s, m->rotation));
+    TRY(get_scale(c, &s, m->scale));
+    double grey = m->mesh == WW_MESH_OBJ ? 1.0 : MODEL_GREY;
+    for (int a = 0; a < 3; a++) m->color[a] = grey;
+    TRY(wwc_get_vec(c, &s, "color", 3, &R_ALBEDO, OPTIONAL, m->color));
+    TRY(get_name(c, &s, "parent", sizeof m->name, parent));
+    local_matrix(m, m->local);
+
+    /* bounds: given, or the transformed mesh's once the world matrix is known */
+    *given = 0;
+    if (!ww_node_find(s.map, "min") && !ww_node_find(s.map, "max") && m->mesh != WW_MESH_NONE)
+        return WW_OK;
     TRY(wwc_get_vec(c, &s, "min", 3, &R_PLACE, REQUIRED, m->min));
     TRY(wwc_get_vec(c, &s, "max", 3, &R_PLACE, REQUIRED, m->max));
     for (int a = 0; a < 3; a++)
@@ -147,19 +276,111 @@ static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc
                             "%s: max.%s = %g is not above min.%s = %g: expected min < max on "
                             "every axis",
                             s.what, axes[a], m->max[a], axes[a], m->min[a]);
+    *given = 1;
+    return WW_OK;
+}
+
+/* the axis-aligned bounds of the mesh's box under the model's world matrix */
+static void transformed_bounds(const ww_scene *sc, ww_model_desc *m) {
+    double lo[3] = {-0.5, -0.5, -0.5}, hi[3] = {0.5, 0.5, 0.5};
+    if (m->mesh == WW_MESH_OBJ)
+        for (int a = 0; a < 3; a++) {
+            lo[a] = sc->assets->mesh[m->asset].min[a];
+            hi[a] = sc->assets->mesh[m->asset].max[a];
+        }
+    for (int a = 0; a < 3; a++) {
+        m->min[a] = HUGE_VAL;
+        m->max[a] = -HUGE_VAL;
+    }
+    for (int k = 0; k < 8; k++) {
+        double p[3] = {k & 1 ? hi[0] : lo[0], k & 2 ? hi[1] : lo[1], k & 4 ? hi[2] : lo[2]};
+        for (int a = 0; a < 3; a++) {
+            const double *w = m->world;
+            double v = w[a] * p[0] + w[4 + a] * p[1] + w[8 + a] * p[2] + w[12 + a];
+            if (v < m->min[a]) m->min[a] = v;
+            if (v > m->max[a]) m->max[a] = v;
+        }
+    }
+}
+
+/* parents by name (written before or after their children), cycles refused, world matrices
+ * folded root first */
+static ww_result resolve_graph(ctx *c, const ww_node *list, const ww_node *const *parent,
+                               const int *given) {
+    ww_models_desc *d = &c->sc->models;
+    int n = d->count;
+    for (int i = 0; i < n; i++) {
+        ww_model_desc *m = &d->model[i];
+        for (int j = 0; j < i && m->name[0]; j++)
+            if (strcmp(d->model[j].name, m->name) == 0)
+                return wwc_fail(c, WW_E_INCONSISTENT, ww_node_find(ww_node_at(list, i), "name"),
+                                "objects.models[%d].name '%s' is also objects.models[%d]'s: "
+                                "expected unique names",
+                                i, m->name, j);
+    }
+    for (int i = 0; i < n; i++) {
+        const ww_node *p = parent[i];
+        if (!p) continue;
+        ww_model_desc *m = &d->model[i];
+        if (strcmp(p->text, "boat") == 0) {
+            if (!c->sc->boat.on)
+                return wwc_fail(c, WW_E_INCONSISTENT, p,
+                                "objects.models[%d].parent is 'boat' but the scene has no "
+                                "objects.boat",
+                                i);
+            m->parent = WW_PARENT_BOAT;
+            continue;
+        }
+        int found = -1;
+        for (int j = 0; j < n && found < 0; j++)
+            if (strcmp(d->model[j].name, p->text) == 0) found = j;
+        if (found < 0)
+            return wwc_fail(c, WW_E_INCONSISTENT, p,
+                            "objects.models[%d].parent '%s' names no model (objects.models[].name) "
+                            "and is not 'boat'",
+                            i, p->text);
+        m->parent = found;
+    }
+    /* a chain longer than the model count loops */
+    for (int i = 0; i < n; i++) {
+        int k = i, steps = 0;
+        while (k >= 0 && steps <= n) {
+            k = d->model[k].parent;
+            steps++;
+            if (k == i) break;
+        }
+        if (k == i)
+            return wwc_fail(c, WW_E_INCONSISTENT, parent[i],
+                            "objects.models[%d].parent: '%s' is its own ancestor: expected a tree",
+                            i, d->model[i].name);
+    }
+    /* fold root first: a model's depth is its chain's length, so pass by depth */
+    int done[WW_MAX_MODELS] = {0}, left = n;
+    while (left > 0)
+        for (int i = 0; i < n; i++) {
+            ww_model_desc *m = &d->model[i];
+            int p = m->parent;
+            if (done[i] || (p >= 0 && !done[p])) continue;
+            if (p >= 0) mat_mul(d->model[p].world, m->local, m->world);
+            else memcpy(m->world, m->local, sizeof m->world);
+            if (!given[i]) transformed_bounds(c->sc, m);
+            done[i] = 1;
+            left--;
+        }
     return WW_OK;
 }
 
 static ww_result compile_models(ctx *c, const section *objects) {
     ww_models_desc *d = &c->sc->models;
-    const ww_node *list;
+    const ww_node *list, *parent[WW_MAX_MODELS] = {0};
+    int given[WW_MAX_MODELS] = {0};
     *d = (ww_models_desc){0};
     TRY(wwc_get_list(c, objects, "models", WW_MAX_MODELS, &list));
     int i = 0;
     for (const ww_node *item = list ? list->first : NULL; item; item = item->next, i++)
-        TRY(compile_model(c, item, i, &d->model[i]));
+        TRY(compile_model(c, item, i, &d->model[i], &parent[i], &given[i]));
     d->count = i;
-    return WW_OK;
+    return resolve_graph(c, list, parent, given);
 }
 
 ww_result wwc_reef(ctx *c, const section *objects) {

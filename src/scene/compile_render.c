@@ -5,9 +5,11 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core/mathx.h"
+#include "scene/assets.h"
 #include "scene/compile_impl.h"
 
 static const rule R_SIZE = WHOLE(16, 16384, "px");
@@ -244,6 +246,27 @@ static ww_result compile_cubemap(ctx *c, const section *s) {
             return wwc_fail(c, WW_E_TYPE, item, "sky.cubemap[%d] (%s): expected a file name", i,
                             FACE_NAMES[i]);
         TRY(wwc_resolve_path(c, item, d->cubemap[i], sizeof d->cubemap[i]));
+    }
+    /* only a cubemap sky decodes its faces (a gradient sky may keep the list, unused) */
+    if (d->sky != WW_SKY_CUBEMAP) return WW_OK;
+    if (!c->sc->assets && !(c->sc->assets = calloc(1, sizeof *c->sc->assets)))
+        return wwc_fail(c, WW_E_NOMEM, list, "out of memory for the scene's assets");
+    i = 0;
+    for (const ww_node *item = list->first; item; item = item->next, i++)
+        TRY(ww_assets_image(c->sc->assets, d->cubemap[i],
+                            item->mark.file ? item->mark.file : c->file, item->mark.line,
+                            item->mark.column, &d->cubemap_image[i], c->err));
+    /* a GL cubemap's faces are squares of one size */
+    const ww_image_data *im = c->sc->assets->image;
+    int side = im[d->cubemap_image[0]].width;
+    for (i = 0; i < 6; i++) {
+        const ww_image_data *f = &im[d->cubemap_image[i]];
+        if (f->width != side || f->height != side)
+            return wwc_fail(c, WW_E_INCONSISTENT, list,
+                            "sky.cubemap[%d] (%s) is %dx%d, sky.cubemap[0] (+x) %dx%d: expected "
+                            "six square faces of one size",
+                            i, FACE_NAMES[i], f->width, f->height, side,
+                            im[d->cubemap_image[0]].height);
     }
     return WW_OK;
 }

@@ -89,11 +89,17 @@ static double ring_growth(double s0, int n, double reach) {
     return 0.5 * (lo + hi);
 }
 
-void ww_water_mesh_layout(double far_clip, ww_water_mesh *m) {
+void ww_water_mesh_layout(double far_clip, double grid, ww_water_mesh *m) {
+    if (!(grid > 0.0)) grid = 1.0;
+    m->rings = (int)lround(WW_WATER_RINGS * grid);
+    if (m->rings < 2) m->rings = 2;
+    m->segments = 8 * (int)lround(WW_WATER_SEGMENTS * grid / 8.0);
+    if (m->segments < 8) m->segments = 8;
+    double s0 = WW_WATER_S0 / grid;
     m->reach = WW_WATER_REACH * far_clip;
-    m->q = ring_growth(WW_WATER_S0, WW_WATER_RINGS, m->reach);
-    m->s0 = m->q == 1.0 ? m->reach / WW_WATER_RINGS : WW_WATER_S0;
-    m->dtheta = 2.0 * 3.14159265358979323846 / WW_WATER_SEGMENTS;
+    m->q = ring_growth(s0, m->rings, m->reach);
+    m->s0 = m->q == 1.0 ? m->reach / m->rings : s0;
+    m->dtheta = 2.0 * 3.14159265358979323846 / m->segments;
 }
 
 double ww_water_mesh_spacing(const ww_water_mesh *m, double r) {
@@ -144,7 +150,7 @@ static void plan_water(const ww_scene *sc, int height, ww_plan_water *w) {
     double vert[WW_MAX_WAVES], frag[WW_MAX_WAVES];
     int n = 0;
     w->model = sc->wave_model;
-    ww_water_mesh_layout(sc->far_clip, &w->mesh);
+    ww_water_mesh_layout(sc->far_clip, sc->render.grid, &w->mesh);
     w->image_height = height > 0 ? height : 1;
     w->pixel_angle = 2.0 * tan(0.5 * sc->fov) / w->image_height;
     w->shortest = INFINITY;
@@ -297,8 +303,9 @@ static void print_water(const ww_scene *sc, const ww_plan_water *w, FILE *to) {
     if (w->components > 0) {
         char note[160];
         fprintf(to, "    %-16s %d components everywhere (double)\n", "cpu physics", w->components);
-        snprintf(note, sizeof note, "by the mesh spacing, %.3g m at the centre and x%.4f per ring; "
-                 "distances from the mesh centre", w->mesh.s0, w->mesh.q);
+        snprintf(note, sizeof note, "by the spacing of %d rings x %d segments, %.3g m at the centre "
+                 "and x%.4f per ring; distances from the mesh centre", w->mesh.rings,
+                 w->mesh.segments, w->mesh.s0, w->mesh.q);
         print_fade("vertex shader", &w->vertex, note, to);
         snprintf(note, sizeof note, "by the pixel footprint across the view, %.3g mrad per pixel at "
                  "%d px and fov %.3g deg; distances from the camera",

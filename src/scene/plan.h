@@ -67,9 +67,9 @@ typedef struct ww_pass_desc {
  * WW_WATER_S0 apart at the centre and their spacing grows geometrically (by q per ring) so that
  * WW_WATER_RINGS rings reach WW_WATER_REACH x the far clip; the plan needs the same numbers to say
  * where the mesh becomes too coarse for a wave. */
-#define WW_WATER_SEGMENTS 256 /* vertices around each ring */
-#define WW_WATER_RINGS 160    /* rings around the centre vertex */
-#define WW_WATER_S0 0.5       /* distance of the first ring from the centre, m */
+#define WW_WATER_SEGMENTS 256 /* vertices around each ring, at render.grid 1 */
+#define WW_WATER_RINGS 160    /* rings around the centre vertex, at render.grid 1 */
+#define WW_WATER_S0 0.5       /* distance of the first ring from the centre, m, at render.grid 1 */
 #define WW_WATER_REACH 0.9    /* outer ring radius as a fraction of the far clip */
 #define WW_WATER_SNAP 0.5     /* the mesh centre moves on this grid, m */
 #define WW_WATER_INNER_R 10.0 /* rings inside this radius are always drawn whole, m */
@@ -80,14 +80,17 @@ typedef struct ww_pass_desc {
 #define WW_FADE_END_SAMPLES 2.0
 
 typedef struct ww_water_mesh {
-    double s0;      /* first ring spacing, m */
+    int rings;      /* WW_WATER_RINGS x render.grid */
+    int segments;   /* WW_WATER_SEGMENTS x render.grid, a multiple of 8 */
+    double s0;      /* first ring spacing, m (WW_WATER_S0 / render.grid) */
     double q;       /* ring growth per ring (1: evenly spaced) */
     double dtheta;  /* angle between neighbouring vertices of a ring, rad */
     double reach;   /* radius of the outer ring, m */
 } ww_water_mesh;
 
-/* the mesh for a far clip distance */
-void ww_water_mesh_layout(double far_clip, ww_water_mesh *m);
+/* the mesh for a far clip distance and a density factor (render.grid; 0 reads as 1): rings and
+ * segments scale by grid and the first ring's spacing by 1 / grid */
+void ww_water_mesh_layout(double far_clip, double grid, ww_water_mesh *m);
 /* sample spacing of the mesh at distance r from its centre: rings s0 + (q - 1) r apart, r dtheta
  * around a ring; the larger one */
 double ww_water_mesh_spacing(const ww_water_mesh *m, double r);

@@ -44,6 +44,14 @@ static void box(solid *s, int what, int index, const double c[3], const double h
     }
 }
 
+/* a model whose parent chain ends at the boat moves with it: its bounds are in the boat's frame,
+ * and the boat's own sphere already stops the camera there */
+static int rides_boat(const ww_scene *sc, int k) {
+    int p = sc->models.model[k].parent;
+    for (int guard = 0; p >= 0 && guard < WW_MAX_MODELS; guard++) p = sc->models.model[p].parent;
+    return p == WW_PARENT_BOAT;
+}
+
 /* solid k (boat, cubes, chest, models in that order); 0 when it is absent now */
 static int get_solid(const ww_scene *sc, const ww_state *st, int k, double m, solid *s) {
     if (sc->boat.on && k-- == 0) {
@@ -69,6 +77,7 @@ static int get_solid(const ww_scene *sc, const ww_state *st, int k, double m, so
         box(s, WW_SOLID_CHEST, 0, c, half, m);
         return 1;
     }
+    if (rides_boat(sc, k)) return 0;
     const ww_model_desc *md = &sc->models.model[k];
     double c[3], half[3];
     for (int a = 0; a < 3; a++) {

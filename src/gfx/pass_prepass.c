@@ -1,0 +1,75 @@
+/* pass_prepass.c - the scene prepass: lit colour + depth of the solid geometry on the far side of
+ * the water from the camera, for refraction (the water samples the colour) and light shafts
+ * (they read the depth). From above, what lies under the water, kept by a clip plane at the
+ * rest level plus the largest crest (so nothing is cut where the surface dips) and cleared to the
+ * under-water fog colour; from below, what lies above it, cleared to the sky's horizon colour.
+ * Publishes r->shared.scene_color and scene_depth.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "gfx/render_impl.h"
+
+typedef struct prepass {
+    const ww_rt *rt;
+    GLuint color, depth;
+    double crest; /* m: the highest the surface can rise above its rest level */
+} prepass;
+
+static void prepass_destroy(void *self, const ww_gl *gl) {
+    (void)gl;
+    free(self);
+}
+
+static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
+                                const ww_rt *rt, void **self, ww_error *err) {
+    (void)r;
+    GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F), depth = ww_gfx_rt_texture(rt, WW_FMT_DEPTH24);
+    if (!color || !depth)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass %s: needs an RGBA16F colour and a DEPTH24 target", d->name);
+    prepass *p = calloc(1, sizeof *p);
+    if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "prepass: out of memory");
+    p->rt = rt;
+    p->color = color;
+    p->depth = depth;
+    /* every component at its crest at once, and the largest ripple on top */
+    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
+        p->crest += 2.0 * fabs(sc->waves[i].amplitude);
+    if (sc->ripples_on) p->crest += fabs(sc->ripples.amplitude);
+    *self = p;
+    return WW_OK;
+}
+
+static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
+    (void)err;
+    prepass *p = self;
+    const ww_gl *gl = r->gl;
+    const ww_scene *sc = f->sc;
+    ww_gfx_begin_pass(gl, p->rt);
+    float plane[4];
+    double level = sc->water_level - f->cam_pos[1];
+    if (!f->underwater) {
+        const double *fb = sc->render.fog_below_color;
+        gl->ClearColor((float)fb[0], (float)fb[1], (float)fb[2], 1.0f);
+        /* keep y <= level + crest: -y + (level + crest) >= 0 */
+        plane[0] = 0.0f; plane[1] = -1.0f; plane[2] = 0.0f;
+        plane[3] = (float)(level + p->crest);
+    } else {
+        const double *h = f->st->sky_horizon;
+        gl->ClearColor((float)h[0], (float)h[1], (float)h[2], 1.0f);
+        /* keep y >= level - crest */
+        plane[0] = 0.0f; plane[1] = 1.0f; plane[2] = 0.0f;
+        plane[3] = (float)(-(level - p->crest));
+    }
+    gl->ClearDepth(1.0);
+    gl->DepthMask(GL_TRUE);
+    gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (r->geometry)
+        ww_geometry_draw(r->geometry, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
+    r->shared.scene_color = p->color;
+    r->shared.scene_depth = p->depth;
+    return WW_OK;
+}
+
+const ww_pass_ops ww_pass_prepass_ops = {prepass_create, prepass_run, prepass_destroy};

@@ -1,0 +1,140 @@
+/* pass_reflection.c - planar reflection (seeds 000, 002): the scene above the water seen by the
+ * camera mirrored about the water's rest plane y = level, into a mipmapped RGBA16F texture that
+ * the water samples by projective texture mapping (water.c, water.frag.glsl). Skipped when the
+ * camera is under water (the surface seen from below reflects the water, not the sky).
+ *
+ * Drawing is camera-relative, so the mirror is one matrix on the camera-relative world:
+ * M (x, y, z) = (x, 2 h - y, z) with h = level - camera y, and the mirror camera's view-projection
+ * is proj * view * M. A point on the plane is its own image, so the mirror camera images the
+ * water where the main camera does and the water reads the texture at its own window position,
+ * without seed 002's flip of the texture coordinates. Geometry keeps y > level - margin by a user
+ * clip plane (gl_ClipDistance) rather than an oblique near plane (Lengyel, "Oblique View Frustum
+ * Depth Projection and Clipping", 2005), which would change the sky's far-plane depth; the
+ * margin lets what stands in a wave trough still reflect.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "gfx/render_impl.h"
+
+#define CLIP_MARGIN_MAX 0.25 /* most the clip plane sinks below the rest level, m */
+
+typedef struct reflection_pass {
+    const ww_rt *rt;
+    GLuint color;    /* the mipmapped colour target */
+    GLuint prog;     /* the mirrored sky */
+    ww_sky_locs sky;
+    GLint inv_view_proj, cube, cube_tex, sky_intensity;
+    double margin;   /* m the clip plane lies below the rest level */
+} reflection_pass;
+
+static void reflection_destroy(void *self, const ww_gl *gl) {
+    reflection_pass *p = self;
+    if (!p) return;
+    if (p->prog) gl->DeleteProgram(p->prog);
+    free(p);
+}
+
+static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
+                                   const ww_rt *rt, void **self, ww_error *err) {
+    static const char *const includes[] = {"common.glsl", NULL};
+    const ww_gl *gl = r->gl;
+    GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F);
+    if (!color || !ww_gfx_rt_texture(rt, WW_FMT_DEPTH24))
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass %s: needs an RGBA16F colour and a DEPTH24 target", d->name);
+    reflection_pass *p = calloc(1, sizeof *p);
+    if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "reflection pass: out of memory");
+    p->rt = rt;
+    p->color = color;
+    ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "reflection_sky.frag.glsl",
+                                  includes, &p->prog, err);
+    if (rc != WW_OK) {
+        reflection_destroy(p, gl);
+        return rc;
+    }
+    ww_sky_locs_init(gl, p->prog, &p->sky);
+    p->inv_view_proj = ww_gfx_uniform(gl, p->prog, "u_inv_view_proj");
+    p->cube = ww_gfx_uniform(gl, p->prog, "u_cube");
+    p->cube_tex = ww_gfx_uniform(gl, p->prog, "u_sky_cube");
+    p->sky_intensity = ww_gfx_uniform(gl, p->prog, "u_sky_intensity");
+
+    /* the clip plane sinks by the waves' amplitudes, at most CLIP_MARGIN_MAX */
+    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
+        p->margin += fabs(sc->waves[i].amplitude);
+    if (p->margin > CLIP_MARGIN_MAX) p->margin = CLIP_MARGIN_MAX;
+
+    /* trilinear: grazing views squeeze the distorted lookups, and the mip chain keeps them from
+     * shimmering (seed 000); the levels are allocated here and filled each frame */
+    gl->BindTexture(GL_TEXTURE_2D, color);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->GenerateMipmap(GL_TEXTURE_2D);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    *self = p;
+    return WW_OK;
+}
+
+static ww_result reflection_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
+    (void)err;
+    reflection_pass *p = self;
+    const ww_gl *gl = r->gl;
+    if (f->underwater) {
+        r->shared.reflection = 0;
+        r->shared.reflection_tex = 0;
+        return WW_OK;
+    }
+
+    /* the mirror about y = h (camera-relative), and the mirror camera's view-projection */
+    float h = (float)(f->sc->water_level - f->cam_pos[1]);
+    mat4 m, pv, vp;
+    glm_mat4_identity(m);
+    m[1][1] = -1.0f;
+    m[3][1] = 2.0f * h;
+    glm_mat4_mul((vec4 *)f->proj, (vec4 *)f->view, pv);
+    glm_mat4_mul(pv, m, vp);
+
+    ww_gfx_begin_pass(gl, p->rt);
+    gl->ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    gl->ClearDepth(1.0);
+    gl->DepthMask(GL_TRUE);
+    gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (r->geometry) {
+        float clip[4] = {0.0f, 1.0f, 0.0f, (float)(p->margin - (double)h)};
+        ww_geometry_draw(r->geometry, r, f, WW_GEOM_REFLECTION, vp, clip);
+    }
+
+    /* the sky along the mirrored rays: the flip of y alone (the mirror's translation moves
+     * nothing at infinity), on the far plane behind the geometry */
+    mat4 flip, sky_vp, inv;
+    glm_mat4_identity(flip);
+    flip[1][1] = -1.0f;
+    glm_mat4_mul(pv, flip, sky_vp);
+    glm_mat4_inv(sky_vp, inv);
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LEQUAL);
+    gl->DepthMask(GL_FALSE);
+    gl->UseProgram(p->prog);
+    ww_sky_locs_set(gl, &p->sky, f->st);
+    gl->UniformMatrix4fv(p->inv_view_proj, 1, GL_FALSE, (const GLfloat *)inv);
+    gl->Uniform1i(p->cube, r->sky_cubemap != 0);
+    gl->Uniform1i(p->cube_tex, 0);
+    gl->Uniform1f(p->sky_intensity, (float)f->sc->render.sky_intensity);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
+    gl->BindVertexArray(r->empty_vao);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    gl->BindVertexArray(0);
+    gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    gl->DepthMask(GL_TRUE);
+    gl->DepthFunc(GL_LESS);
+
+    gl->BindTexture(GL_TEXTURE_2D, p->color);
+    gl->GenerateMipmap(GL_TEXTURE_2D);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    r->shared.reflection = 1;
+    r->shared.reflection_tex = p->color;
+    return WW_OK;
+}
+
+const ww_pass_ops ww_pass_reflection_ops = {reflection_create, reflection_run, reflection_destroy};

@@ -1,0 +1,157 @@
+/* test_render_keys.c - how a scene asks to be drawn (scene/desc_render.h): each feature's forms
+ * (true / false / a mapping of knobs / `on: false`), the knobs' values, and the plan creating a
+ * pass exactly when its switch is on and the scene has what it needs. No GL.
+ */
+#include <string.h>
+
+#include "scene/plan.h"
+#include "scene/scene.h"
+#include "test.h"
+
+#define KNOB_TOL 1e-12 /* knobs are copied from the file, not computed */
+
+static const char BASE[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
+                           "render: {size: [320, 180]}\n";
+
+static ww_scene *load(const char *text, const char *const *sets, int nsets) {
+    ww_set s[8] = {{0}};
+    for (int i = 0; i < nsets; i++) s[i].text = sets[i];
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ww_result r = ww_scene_load_string("keys.yaml", text, strlen(text), s, nsets, &sc, &err);
+    ENSURE_MSG(r == WW_OK, "%s", err.msg);
+    return sc;
+}
+
+static int has_pass(const ww_plan *p, ww_pass_id id) { return ww_plan_pass(p, id) != NULL; }
+
+TEST(render_keys_feature_forms) {
+    const char *sets[] = {"render.bloom=true", "render.reflection={scale: 0.25}",
+                          "render.god_rays={on: false, samples: 16}", "render.shadows=map",
+                          "render.fxaa=true"};
+    ww_scene *sc = load(BASE, sets, 5);
+    if (!sc) return;
+    const ww_render_desc *d = &sc->render;
+    ENSURE_EQ_INT(d->bloom.on, 1);
+    ENSURE_EQ_INT(d->reflection.on, 1);
+    ENSURE_NEAR(d->reflection.scale, 0.25, KNOB_TOL);
+    ENSURE_EQ_INT(d->shafts.on, 0);
+    ENSURE_EQ_INT(d->shafts.samples, 16); /* knobs are read even when the feature is off */
+    ENSURE_EQ_INT(d->shadows.on, 1);
+    ENSURE_EQ_INT(d->fxaa, 1);
+    ww_scene_free(sc);
+}
+
+TEST(render_keys_hud_lights_and_look) {
+    static const char text[] =
+        "time: {dt: 1/120, fps: 30, duration: 1}\n"
+        "render: {hud: [clock, chest_marker]}\n"
+        "fog: {below: {color: [0.1, 0.2, 0.3], density: 0.05}}\n"
+        "water: {look: {fresnel: bias_scale, fresnel_power: 3, foam: {amount: 0.8},"
+        " caustics: true, alpha_blend: {alpha: 0.4}}}\n"
+        "lights:\n"
+        "  - {type: spot, position: [1, 2, 3], direction: [0, -2, 0], angle: 20}\n"
+        "  - {position: [0, 1, 0], color: [1, 0, 0], range: 5}\n";
+    ww_scene *sc = load(text, NULL, 0);
+    if (!sc) return;
+    const ww_render_desc *d = &sc->render;
+    ENSURE_EQ_INT(d->hud.clock, 1);
+    ENSURE_EQ_INT(d->hud.counters, 0);
+    ENSURE_EQ_INT(d->hud.chest_marker, 1);
+    ENSURE_NEAR(d->fog_below_density, 0.05, KNOB_TOL);
+    ENSURE_NEAR(d->fog_below_color[2], 0.3, KNOB_TOL);
+    ENSURE_EQ_INT(d->water.fresnel, WW_FRESNEL_BIAS_SCALE);
+    ENSURE_NEAR(d->water.fresnel_power, 3.0, KNOB_TOL);
+    ENSURE_EQ_INT(d->water.foam, 1);
+    ENSURE_NEAR(d->water.foam_amount, 0.8, KNOB_TOL);
+    ENSURE_EQ_INT(d->water.caustics, 1);
+    ENSURE_EQ_INT(d->water.alpha_blend, 1);
+    ENSURE_NEAR(d->water.alpha, 0.4, KNOB_TOL);
+    ENSURE_EQ_INT(d->nlights, 2);
+    ENSURE_EQ_INT(d->light[0].kind, WW_LIGHT_SPOT);
+    ENSURE_NEAR(d->light[0].direction[1], -1.0, KNOB_TOL); /* normalised */
+    ENSURE_NEAR(d->light[0].angle, 20.0 * 3.14159265358979323846 / 180.0, KNOB_TOL);
+    ENSURE_EQ_INT(d->light[1].kind, WW_LIGHT_POINT);
+    ENSURE_NEAR(d->light[1].range, 5.0, KNOB_TOL);
+    ww_scene_free(sc);
+}
+
+/* every switch on: every pass in run order; each switched off: its pass gone, nothing else */
+TEST(render_keys_plan_follows_switches) {
+    static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
+                               "render: {shadows: true, refraction: true, reflection: true,"
+                               " bloom: true, god_rays: true, fxaa: true, hud: [clock],"
+                               " seabed: true}\n"
+                               "objects: {cubes: [{position: [0, 0, 0]}]}\n";
+    static const struct {
+        const char *set;
+        ww_pass_id gone;
+    } off[] = {
+        {"render.shadows=false", WW_PASS_SHADOW},   {"render.refraction=false", WW_PASS_PREPASS},
+        {"render.reflection=false", WW_PASS_REFLECTION}, {"render.bloom=false", WW_PASS_BLOOM},
+        {"render.god_rays=false", WW_PASS_SHAFTS},  {"render.fxaa=false", WW_PASS_FXAA},
+        {"render.hud=[]", WW_PASS_HUD},
+    };
+    ww_scene *sc = load(text, NULL, 0);
+    if (!sc) return;
+    ww_plan p;
+    ww_plan_build(sc, 320, 180, &p);
+    ENSURE_EQ_INT(p.npasses, WW_PASS_COUNT);
+    for (int i = 0; i < p.npasses; i++) ENSURE_EQ_INT(p.passes[i].id, i);
+    ww_scene_free(sc);
+
+    for (size_t k = 0; k < sizeof off / sizeof off[0]; k++) {
+        const char *sets[] = {off[k].set};
+        sc = load(text, sets, 1);
+        if (!sc) return;
+        ww_plan_build(sc, 320, 180, &p);
+        ENSURE_MSG(p.npasses == WW_PASS_COUNT - 1 && !has_pass(&p, off[k].gone), "%s: %d passes",
+                   off[k].set, p.npasses);
+        ww_scene_free(sc);
+    }
+}
+
+/* a scene pays for what it has: no casters, no shadow map; no solid geometry, no prepass */
+TEST(render_keys_plan_needs_what_it_draws) {
+    static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
+                               "render: {shadows: true, refraction: true}\n";
+    ww_scene *sc = load(text, NULL, 0);
+    if (!sc) return;
+    ww_plan p;
+    ww_plan_build(sc, 320, 180, &p);
+    ENSURE(!has_pass(&p, WW_PASS_SHADOW));
+    ENSURE(!has_pass(&p, WW_PASS_PREPASS));
+    ENSURE_EQ_INT(p.geometry, 0);
+    ww_scene_free(sc);
+
+    const char *sets[] = {"render.seabed=true"};
+    sc = load(text, sets, 1);
+    if (!sc) return;
+    ww_plan_build(sc, 320, 180, &p);
+    ENSURE(!has_pass(&p, WW_PASS_SHADOW)); /* a seabed receives shadows but casts none */
+    ENSURE(has_pass(&p, WW_PASS_PREPASS));
+    ENSURE_EQ_INT(p.geometry, 1);
+    ww_scene_free(sc);
+}
+
+/* knobs size the targets: reflection and bloom at their fractions, the shadow map square */
+TEST(render_keys_plan_target_sizes) {
+    const char *sets[] = {"render.reflection={scale: 0.25}", "render.bloom={scale: 0.5}",
+                          "render.shadows={size: 512}", "objects.cubes=[{position: [0, 0, 0]}]"};
+    ww_scene *sc = load(BASE, sets, 4);
+    if (!sc) return;
+    ww_plan p;
+    ww_plan_build(sc, 320, 180, &p);
+    const ww_pass_desc *r = ww_plan_pass(&p, WW_PASS_REFLECTION);
+    const ww_pass_desc *b = ww_plan_pass(&p, WW_PASS_BLOOM);
+    const ww_pass_desc *s = ww_plan_pass(&p, WW_PASS_SHADOW);
+    ENSURE(r && b && s);
+    if (r && b && s) {
+        ENSURE_EQ_INT(r->targets[0].width, 80);
+        ENSURE_EQ_INT(r->targets[0].height, 45);
+        ENSURE_EQ_INT(b->targets[0].width, 160);
+        ENSURE_EQ_INT(s->targets[0].width, 512);
+        ENSURE_EQ_INT(s->targets[0].height, 512);
+    }
+    ww_scene_free(sc);
+}
