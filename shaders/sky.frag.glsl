@@ -9,6 +9,8 @@
 
 uniform mat4 u_inv_view_proj; // inverse of projection * camera rotation (camera at the origin)
 uniform float u_intensity;    // sky.intensity: radiance scale of the cubemap and the dome
+uniform vec4 u_below;         // (fog colour under water, 1) when the camera is under water: what
+                              // lies beyond everything drawn is water, fogged out completely
 #ifdef WW_SKY_CUBEMAP
 uniform samplerCube u_cubemap; // sRGB faces, decoded to linear by the sampler
 #endif
@@ -20,6 +22,10 @@ in vec2 v_ndc;
 out vec4 o_color;
 
 void main() {
+    if (u_below.a > 0.5) {
+        o_color = vec4(u_below.rgb, 1.0);
+        return;
+    }
     // the camera sits at the origin, so a point on the far plane is a point along the ray
     vec4 p = u_inv_view_proj * vec4(v_ndc, 1.0, 1.0);
     vec3 d = normalize(p.xyz / p.w);

@@ -20,7 +20,7 @@ struct ww_sky {
     GLuint prog;
     ww_sky_model model;
     ww_sky_locs sky;
-    GLint inv_view_proj, intensity, cubemap, drift;
+    GLint inv_view_proj, intensity, below, cubemap, drift;
     GLuint cube_tex;  /* owned when this sky uploaded it (0 otherwise) */
     GLuint cube_draw; /* the cube texture drawn (owned or the renderer's) */
 };
@@ -99,6 +99,7 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     ww_sky_locs_init(gl, s->prog, &s->sky);
     s->inv_view_proj = ww_gfx_uniform(gl, s->prog, "u_inv_view_proj");
     s->intensity = ww_gfx_uniform(gl, s->prog, "u_intensity");
+    s->below = ww_gfx_uniform(gl, s->prog, "u_below");
     s->cubemap = ww_gfx_uniform(gl, s->prog, "u_cubemap");
     s->drift = ww_gfx_uniform(gl, s->prog, "u_drift");
     *out = s;
@@ -114,6 +115,8 @@ void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_fr
     ww_sky_locs_set(gl, &s->sky, f->st);
     gl->UniformMatrix4fv(s->inv_view_proj, 1, GL_FALSE, (const GLfloat *)f->inv_view_proj);
     gl->Uniform1f(s->intensity, (float)f->sc->render.sky_intensity);
+    const double *fb = f->sc->render.fog_below_color;
+    gl->Uniform4f(s->below, (float)fb[0], (float)fb[1], (float)fb[2], f->underwater ? 1.0f : 0.0f);
     if (s->model == WW_SKY_CUBEMAP) {
         gl->ActiveTexture(GL_TEXTURE0);
         gl->BindTexture(GL_TEXTURE_CUBE_MAP, s->cube_draw);

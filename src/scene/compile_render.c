@@ -61,15 +61,15 @@ static const char *const FACE_NAMES[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 void ww_render_defaults(ww_render_desc *d) {
     *d = (ww_render_desc){0};
-    d->shadows = (ww_shadow_desc){.on = 0, .size = 1024, .softness = 1.5, .distance = 60.0};
-    d->refraction = 0;
-    d->reflection = (ww_reflection_desc){.on = 0, .scale = 0.5};
-    d->bloom = (ww_bloom_desc){.on = 0, .threshold = 1.0, .strength = 0.6, .passes = 3,
+    d->shadows = (ww_shadow_desc){.on = 1, .size = 1024, .softness = 1.5, .distance = 60.0};
+    d->refraction = 1;
+    d->reflection = (ww_reflection_desc){.on = 1, .scale = 0.5};
+    d->bloom = (ww_bloom_desc){.on = 1, .threshold = 1.0, .strength = 0.6, .passes = 3,
                                .scale = 0.5};
-    d->shafts = (ww_shafts_desc){.on = 0, .samples = 48, .decay = 0.95, .density = 0.9,
+    d->shafts = (ww_shafts_desc){.on = 1, .samples = 48, .decay = 0.95, .density = 0.9,
                                  .weight = 0.35, .exposure = 0.25, .underwater = 3.0,
                                  .scale = 0.5};
-    d->fxaa = 0;
+    d->fxaa = 1;
     d->msaa = 0;
     d->grid = 1.0;
     d->sky = WW_SKY_GRADIENT;
@@ -80,7 +80,7 @@ void ww_render_defaults(ww_render_desc *d) {
     d->fog_below_color[1] = 0.12;
     d->fog_below_color[2] = 0.15;
     d->fog_below_density = 0.08;
-    d->seabed = 0;
+    d->seabed = 1;
     d->seabed_color[0] = 0.55;
     d->seabed_color[1] = 0.48;
     d->seabed_color[2] = 0.34;
@@ -92,10 +92,10 @@ void ww_render_defaults(ww_render_desc *d) {
                                .distortion_scale = 0.5,
                                .distortion_speed = 0.03,
                                .specular = 1.0,
-                               .foam = 0,
+                               .foam = 1,
                                .foam_amount = 0.5,
                                .murk = 0.15,
-                               .caustics = 0,
+                               .caustics = 1,
                                .caustics_strength = 0.6,
                                .alpha_blend = 0,
                                .alpha = 0.6};

@@ -1,7 +1,8 @@
 /* desc_render.h - how a scene is drawn: the render pipeline's switches and knobs (render.*), the
  * sky model, fog above and below the water, the water's optics (water.look) and the scene's
  * lights. Plain data filled by scene/compile_render.c; scene/plan.c turns the switches into
- * passes and gfx/ reads the knobs. Each feature defaults to what seed 000 draws; a switched-off
+ * passes and gfx/ reads the knobs. Each feature defaults to what seed 000 draws (every pass on
+ * but the HUD; a pass still needs what it works on: no casters, no shadow map); a switched-off
  * feature's pass is not created at all.
  *
  * In the file a feature is `true` / `false` or a mapping of its knobs (which means on, unless
