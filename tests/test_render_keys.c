@@ -115,7 +115,8 @@ TEST(render_keys_plan_follows_switches) {
 TEST(render_keys_plan_needs_what_it_draws) {
     static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
                                "render: {shadows: true, refraction: true}\n";
-    ww_scene *sc = load(text, NULL, 0);
+    const char *bare[] = {"render.seabed=false"};
+    ww_scene *sc = load(text, bare, 1);
     if (!sc) return;
     ww_plan p;
     ww_plan_build(sc, 320, 180, &p);
