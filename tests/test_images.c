@@ -2,6 +2,7 @@
  * elsewhere), EGL and OSMesa giving the same bytes, and llvmpipe's thread count not mattering.
  * Images by tolerance, simulation by hash: this file never looks at the state.
  */
+#include <dirent.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -90,4 +91,31 @@ TEST(images_llvmpipe_thread_count_does_not_matter) {
     snprintf(pa, sizeof pa, "%s/t1/frame_00000.png", dir);
     snprintf(pb, sizeof pb, "%s/t4/frame_00000.png", dir);
     same_files(pa, pb);
+}
+
+/* every feature golden (blessed through EGL) comes out of OSMesa byte for byte: the two
+ * backends run one pipeline, so every pass must be identical on both */
+TEST(images_feature_goldens_on_osmesa) {
+    if (!ww_test_have_gl() || !ww_test_renderer_is_blessed()) return;
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    int have_osmesa = ww_backend_open(WW_BACKEND_OSMESA, &b, &err) == WW_OK;
+    if (b) ww_backend_close(b);
+    ENSURE_MSG(have_osmesa, "the blessing Mesa serves OSMesa too: %s", err.msg);
+    DIR *d = have_osmesa ? opendir("scenes/features") : NULL;
+    int n = 0;
+    for (struct dirent *e; d && (e = readdir(d));) {
+        size_t len = strlen(e->d_name);
+        if (len < 6 || strcmp(e->d_name + len - 5, ".yaml") != 0) continue;
+        char scene[600], out[700], actual[800], golden[600];
+        snprintf(scene, sizeof scene, "scenes/features/%s", e->d_name);
+        snprintf(out, sizeof out, "%s", ww_test_tmpdir("features_osmesa"));
+        ENSURE_EQ_INT(ww_test_render(scene, "--backend osmesa", out), 0);
+        snprintf(actual, sizeof actual, "%s/frame_00000.png", out);
+        snprintf(golden, sizeof golden, "golden/features/%.*s.png", (int)(len - 5), e->d_name);
+        ww_test_check_golden(golden, actual);
+        n++;
+    }
+    if (d) closedir(d);
+    ENSURE_MSG(!have_osmesa || n >= 16, "%d feature scenes", n);
 }
