@@ -302,18 +302,6 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     free(g);
 }
 
-/* the shader's wave family, as gfx/water.c chooses it */
-static int wave_family(ww_wave_model m) {
-    switch (m) {
-    case WW_WAVES_FLAT: return 0;
-    case WW_WAVES_GERSTNER:
-    case WW_WAVES_SPECTRUM: return 1;
-    case WW_WAVES_SINES: return 2;
-    case WW_WAVES_STEEP_SINES: return 3;
-    }
-    return 0;
-}
-
 static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc,
                               ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
@@ -321,7 +309,7 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
              "#define WW_CAUSTICS %d\n",
-             wave_family(sc->wave_model), g->caustics);
+             ww_water_shader_model(sc->wave_model), g->caustics);
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &g->prog, err);
     if (rc != WW_OK) return rc;

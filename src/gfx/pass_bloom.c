@@ -77,27 +77,14 @@ static ww_result bloom_create(ww_renderer *r, const ww_scene *sc, const ww_pass_
     p->hdr_h = in->height;
 
     /* ping and pong are filtered bilinearly (the merged taps, the tone mapping's upsample) */
-    gl->GenFramebuffers(2, p->fbo);
     for (int i = 0; i < 2; i++) {
         p->tex[i] = rt->tex[i];
-        gl->BindTexture(GL_TEXTURE_2D, p->tex[i]);
-        gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[i]);
-        gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->tex[i], 0);
-        GLenum draw = GL_COLOR_ATTACHMENT0;
-        gl->DrawBuffers(1, &draw);
-        GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE) {
-            gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+        ww_result frc = ww_gfx_fbo_single(gl, p->tex[i], d->name, i, &p->fbo[i], err);
+        if (frc != WW_OK) {
             bloom_destroy(p, gl);
-            return ww_error_set(err, WW_E_GL, NULL, 0, 0,
-                                "pass %s: framebuffer %d incomplete (0x%04x)", d->name, i,
-                                (unsigned)status);
+            return frc;
         }
     }
-    gl->BindTexture(GL_TEXTURE_2D, 0);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
 
     ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "bloom_bright.frag.glsl", NULL,
                                   &p->bright, err);

@@ -90,26 +90,13 @@ static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass
     /* both read bilinearly (the march; the tone mapping's upsample); a framebuffer each */
     p->tex[SHAFT_BLUR] = rt->tex[0];
     p->tex[SHAFT_MASK] = rt->tex[1];
-    gl->GenFramebuffers(2, p->fbo);
     for (int i = 0; i < 2; i++) {
-        gl->BindTexture(GL_TEXTURE_2D, p->tex[i]);
-        gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[i]);
-        gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->tex[i], 0);
-        GLenum draw = GL_COLOR_ATTACHMENT0;
-        gl->DrawBuffers(1, &draw);
-        GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
-        if (status != GL_FRAMEBUFFER_COMPLETE) {
-            gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+        ww_result frc = ww_gfx_fbo_single(gl, p->tex[i], d->name, i, &p->fbo[i], err);
+        if (frc != WW_OK) {
             shafts_destroy(p, gl);
-            return ww_error_set(err, WW_E_GL, NULL, 0, 0,
-                                "pass %s: framebuffer %d incomplete (0x%04x)", d->name, i,
-                                (unsigned)status);
+            return frc;
         }
     }
-    gl->BindTexture(GL_TEXTURE_2D, 0);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
     ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "shafts.frag.glsl", NULL,
                                        "#define MASK 1\n", &p->prog[SHAFT_MASK], err);
     if (rc == WW_OK)

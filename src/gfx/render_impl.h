@@ -137,6 +137,10 @@ void ww_gfx_begin_pass(const ww_gl *gl, const ww_rt *rt);
 /* targets.c: textures and a framebuffer for a pass description; WW_E_GL when incomplete */
 ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww_error *err);
 void ww_gfx_rt_destroy(const ww_gl *gl, ww_rt *rt);
+/* a framebuffer of its own for one texture (a ping-pong side: never sampled while bound),
+ * the texture switched to bilinear filtering; WW_E_GL names the pass and the side */
+ww_result ww_gfx_fbo_single(const ww_gl *gl, GLuint tex, const char *pass, int side, GLuint *fbo,
+                            ww_error *err);
 /* the first attachment of format fmt, 0 when there is none */
 GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt);
 
@@ -209,6 +213,9 @@ typedef struct ww_water_ubos {
 } ww_water_ubos;
 
 void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w);
+/* the WW_WAVE_MODEL gerstner.glsl is built with for a scene's family (0 flat, 1 Gerstner and
+ * spectrum, 2 sines, 3 steep sines) */
+int ww_water_shader_model(ww_wave_model m);
 /* each component's phase at the centre (world x, z): wrap(k D.centre + phase at the origin),
  * in double */
 void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double centre[2],

@@ -143,3 +143,22 @@ GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt) {
         if (rt->fmt[i] == fmt) return rt->tex[i];
     return 0;
 }
+
+ww_result ww_gfx_fbo_single(const ww_gl *gl, GLuint tex, const char *pass, int side, GLuint *fbo,
+                            ww_error *err) {
+    gl->BindTexture(GL_TEXTURE_2D, tex);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->GenFramebuffers(1, fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, *fbo);
+    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
+    GLenum draw = GL_COLOR_ATTACHMENT0;
+    gl->DrawBuffers(1, &draw);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "pass %s: framebuffer %d incomplete (0x%04x)",
+                            pass, side, (unsigned)status);
+    return WW_OK;
+}

@@ -119,8 +119,7 @@ int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double c
     return n;
 }
 
-/* the shader's family: the spectrum model draws Gerstner components */
-static int shader_model(ww_wave_model m) {
+int ww_water_shader_model(ww_wave_model m) {
     switch (m) {
     case WW_WAVES_FLAT: return 0;
     case WW_WAVES_GERSTNER:
@@ -156,7 +155,7 @@ ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, 
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", NULL};
     char defines[160];
     snprintf(defines, sizeof defines, "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES %d\n#define WW_FADE %d\n",
-             shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0);
+             ww_water_shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0);
     ww_result rc = ww_gfx_program_defs(gl, vs, fs, includes, defines, prog, err);
     if (rc == WW_OK)
         rc = bind_block(gl, *prog, "WwWaves", WW_UBO_WAVES, sizeof(ww_wave_block), err);
