@@ -65,7 +65,7 @@ typedef struct ww_quality_row {
     int is_default;          /* the scene's value as loaded */
     int is_reference;        /* the value every other knob holds (the knob's best) */
     ww_quality_effect effect;
-    double ms;               /* render + glFinish, median of the timed renders */
+    double ms;               /* render + glFinish, the least of the timed renders */
     double psnr;             /* dB of the final RGB8 frame against the reference (INFINITY: same) */
     int max_diff;            /* largest channel difference, 8-bit levels */
     int front;               /* no other value of the knob is both as fast and as close, and

@@ -100,7 +100,9 @@ static void configure(ww_scene *sc, const ww_quality_knob *knobs, int nknobs, in
     }
 }
 
-/* render frame o->frame of the scene configured so into im (RGB8); ms: median render time */
+/* render frame o->frame of the scene configured so into im (RGB8); ms: the least render time of
+ * the timed renders (other processes on the machine can only add to a render's time, so the
+ * least is the steadiest estimate of its own cost; a median moves with their load) */
 static ww_result render_config(const ww_quality_opts *o, const ww_gl *gl,
                                const ww_quality_knob *knobs, int nknobs, int vary, double v,
                                ww_image *im, double *ms, ww_quality_effect *effect,
@@ -140,7 +142,7 @@ static ww_result render_config(const ww_quality_opts *o, const ww_gl *gl,
         t[i] = 1e3 * (ww_now_seconds() - a);
     }
     qsort(t, (size_t)n, sizeof t[0], cmp_double);
-    *ms = n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+    *ms = t[0];
 
 done:
     ww_state_free(st);
@@ -267,7 +269,7 @@ static int knob_without_effect(const ww_quality_result *res, int k, ww_quality_e
 
 static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, int nknobs,
                         const ww_quality_result *res, FILE *to) {
-    fprintf(to, "bench quality: %s, frame %lld at %dx%d, %s (%s), median of %d renders\n",
+    fprintf(to, "bench quality: %s, frame %lld at %dx%d, %s (%s), least of %d renders\n",
             o->scene, (long long)o->frame, o->width, o->height, res->device, res->renderer,
             o->repeats > 0 ? o->repeats : DEFAULT_REPEATS);
     fputs("reference: every knob at its best (", to);
@@ -304,7 +306,7 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
                     r->front ? "on" : "off", r->knee ? ", at the knee" : "");
         }
     }
-    fprintf(to, "\nms: render + glFinish of one frame; PSNR and max diff: the final RGB8 frame "
+    fprintf(to, "\nms: render + glFinish of one frame (the least of the timed renders); PSNR and max diff: the final RGB8 frame "
                 "against the reference\n(inf: identical); front: no other value of the knob is as "
                 "fast and as close and better in one;\nknee: the cheapest value within %.0f dB "
                 "of the reference; ms differences under a few %% are noise\n",
