@@ -138,7 +138,9 @@ TEST(rbench_quality_reference_identical_lower_knob_finite) {
 }
 
 /* the six knobs of issue 5: the reference row is the same frame; a knob whose pass this build
- * has and the scene plans changes the frame at its cheapest value; one without is said so */
+ * lacks is said so; the reflection's scale, once its pass is built, changes the lake's frame (the
+ * water covers half of it) at its cheapest value. (Other knobs may not show on frame 0 of the
+ * lake: its sun is behind the camera, so the shafts add nothing there.) */
 TEST(rbench_quality_issue_knobs) {
     if (!ww_test_have_gl()) return;
     int nknobs;
@@ -159,9 +161,9 @@ TEST(rbench_quality_issue_knobs) {
             ENSURE_MSG(isinf(r->psnr), "%s=%g (reference): PSNR %g", k->name, r->value, r->psnr);
         if (!ww_renderer_has_pass(k->pass)) ENSURE(r->effect == WW_QUALITY_NOT_BUILT);
         int cheapest = r->value == k->value[0];
-        if (cheapest && r->effect == WW_QUALITY_MEASURED && k->pass != WW_PASS_MAIN)
-            ENSURE_MSG(isfinite(r->psnr), "%s=%g: the same frame as the reference", k->name,
-                       r->value);
+        if (cheapest && r->effect == WW_QUALITY_MEASURED && k->pass == WW_PASS_REFLECTION)
+            ENSURE_MSG(isfinite(r->psnr) && r->max_diff > 0,
+                       "%s=%g: the same frame as the reference", k->name, r->value);
     }
     /* every knob's default is one of its values */
     for (int k = 0; k < nknobs; k++) ENSURE_MSG(defaults[k] == 1, "%s: %d defaults", knobs[k].name, defaults[k]);

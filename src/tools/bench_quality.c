@@ -251,7 +251,7 @@ static const char *effect_words(ww_quality_effect e) {
     case WW_QUALITY_NOT_PLANNED: return "no effect: pass absent (not planned for this scene)";
     case WW_QUALITY_MEASURED: break;
     }
-    return "no effect: the renderer does not read it";
+    return "no effect on this frame (the renderer does not read it, or what it tunes is not in view)";
 }
 
 /* what a knob's rows say as a whole: 1 when every value renders the reference's frame */
@@ -377,7 +377,7 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
                  knobs[k].value[knobs[k].nvalues - 1]);
         const char *note = why == WW_QUALITY_NOT_BUILT     ? "no effect: pass not built"
                            : why == WW_QUALITY_NOT_PLANNED ? "no effect: pass not planned"
-                                                           : "no effect: not read";
+                                                           : "no effect on this frame";
         ww_plot p = {.title = title, .xlabel = "ms per frame", .ylabel = "PSNR dB (60: identical)",
                      .note = none ? note : NULL};
         ww_plot_add(&p, "values, cheapest first", x[k], y[k], n, WW_PLOT_BLUE);
