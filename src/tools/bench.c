@@ -185,7 +185,7 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
     int ntargets = 0;
 
     if (!o->json)
-        fprintf(to, "%-7s %-13s %-9s %6s | %8s %8s %8s %8s %8s | %8s %8s %6s %7s | %8s %8s\n", "backend",
+        fprintf(to, "%-7s %-15s %-9s %6s | %8s %8s %8s %8s %8s | %8s %8s %6s %7s | %8s %8s\n", "backend",
                 "scene", "size", "frames", "sim", "render", "readback", "encode", "total", "1st rend", "floor",
                 "x", "fps", "rss MiB", "state B");
     int any = 0;
@@ -206,7 +206,7 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
                         ww_json_string(to, rep.msg);
                         fputs("}\n", to);
                     } else {
-                        fprintf(to, "%-7s %-13s unavailable: %s\n", kinds[k].name, base_name(scenes[s]), rep.msg);
+                        fprintf(to, "%-7s %-15s unavailable: %s\n", kinds[k].name, base_name(scenes[s]), rep.msg);
                     }
                     continue;
                 }
@@ -220,7 +220,7 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
                 } else {
                     char sz[16];
                     snprintf(sz, sizeof sz, "%dx%d", w, h);
-                    fprintf(to, "%-7s %-13s %-9s %6lld | %8.3f %8.3f %8.3f %8.3f %8.3f | %8.1f %8.3f %6.1f %7.1f | %8.1f %8zu\n",
+                    fprintf(to, "%-7s %-15s %-9s %6lld | %8.3f %8.3f %8.3f %8.3f %8.3f | %8.1f %8.3f %6.1f %7.1f | %8.1f %8zu\n",
                             kinds[k].name, base_name(scenes[s]), sz, (long long)rep.s.frames, f.sim, f.ren, f.rb,
                             f.enc, f.tot, f.first, rep.floor_ms, f.x, f.fps, (double)rss / 1024.0,
                             rep.s.state_bytes);
@@ -239,7 +239,7 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
             fprintf(to, "\ntargets (issue 5: render / floor at %dx%d)\n", TARGET_WIDTH, TARGET_HEIGHT);
         for (int i = 0; i < ntargets; i++) {
             const target_row *t = &targets[i];
-            fprintf(to, "  %-7s %-13s %-14s x %6.1f  target <= %4.1f  %s\n", t->backend, t->scene,
+            fprintf(to, "  %-7s %-15s %-14s x %6.1f  target <= %4.1f  %s\n", t->backend, t->scene,
                     t->full_world ? "full world" : "water and sky", t->x, t->target,
                     t->x > 0 && t->x <= t->target ? "met" : "missed");
         }

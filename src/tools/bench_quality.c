@@ -87,11 +87,6 @@ const ww_quality_knob *ww_quality_knobs(int *n) {
 
 /* ---- one configuration ---------------------------------------------------------------------- */
 
-static int cmp_double(const void *a, const void *b) {
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* every knob at its best, then knob `vary` (or -1) at value v */
 static void configure(ww_scene *sc, const ww_quality_knob *knobs, int nknobs, int vary, double v) {
     for (int k = 0; k < nknobs; k++) {
@@ -100,54 +95,55 @@ static void configure(ww_scene *sc, const ww_quality_knob *knobs, int nknobs, in
     }
 }
 
-/* render frame o->frame of the scene configured so into im (RGB8); ms: the least render time of
- * the timed renders (other processes on the machine can only add to a render's time, so the
- * least is the steadiest estimate of its own cost; a median moves with their load) */
-static ww_result render_config(const ww_quality_opts *o, const ww_gl *gl,
-                               const ww_quality_knob *knobs, int nknobs, int vary, double v,
-                               ww_image *im, double *ms, ww_quality_effect *effect,
-                               ww_error *err) {
-    ww_scene *sc = NULL;
-    ww_renderer *r = NULL;
-    ww_state *st = NULL;
-    ww_result rc = ww_scene_load(o->scene, NULL, 0, &sc, err);
+/* one configuration, built and kept while its knob's values are timed in turn */
+typedef struct config {
+    ww_scene *sc;
+    ww_renderer *r;
+    ww_state *st;
+    double ms; /* the least render time so far */
+} config;
+
+static void config_close(config *c) {
+    ww_state_free(c->st);
+    if (c->r) ww_renderer_free(c->r);
+    ww_scene_free(c->sc);
+    *c = (config){0};
+}
+
+/* build the scene configured so, render frame o->frame once (untimed: it pays for shader
+ * compilation) and read it into im (RGB8) */
+static ww_result config_open(config *c, const ww_quality_opts *o, const ww_gl *gl,
+                             const ww_quality_knob *knobs, int nknobs, int vary, double v,
+                             ww_image *im, ww_quality_effect *effect, ww_error *err) {
+    *c = (config){.ms = INFINITY};
+    ww_result rc = ww_scene_load(o->scene, NULL, 0, &c->sc, err);
     if (rc) return rc;
-    configure(sc, knobs, nknobs, vary, v);
+    configure(c->sc, knobs, nknobs, vary, v);
     ww_plan plan;
-    ww_plan_build(sc, o->width, o->height, &plan);
+    ww_plan_build(c->sc, o->width, o->height, &plan);
     if (vary >= 0) {
         ww_pass_id id = knobs[vary].pass;
         *effect = !ww_renderer_has_pass(id)      ? WW_QUALITY_NOT_BUILT
                   : !ww_plan_pass(&plan, id)      ? WW_QUALITY_NOT_PLANNED
                                                   : WW_QUALITY_MEASURED;
     }
-    if ((rc = ww_renderer_new(gl, sc, &plan, &r, err))) goto done;
-    if (!(st = ww_state_new(sc))) {
-        rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "bench quality: out of memory for the state");
-        goto done;
-    }
-    if ((rc = ww_sim_advance_to(sc, st, o->frame * sc->steps_per_frame, err))) goto done;
+    if ((rc = ww_renderer_new(gl, c->sc, &plan, &c->r, err))) return rc;
+    if (!(c->st = ww_state_new(c->sc)))
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "bench quality: out of memory for the state");
+    if ((rc = ww_sim_advance_to(c->sc, c->st, o->frame * c->sc->steps_per_frame, err))) return rc;
+    if ((rc = ww_render_frame(c->r, c->sc, c->st, err))) return rc;
+    ww_renderer_finish(c->r);
+    return ww_renderer_read_ldr(c->r, im, err);
+}
 
-    /* the untimed first render pays for shader compilation; it gives the image */
-    if ((rc = ww_render_frame(r, sc, st, err))) goto done;
-    ww_renderer_finish(r);
-    if ((rc = ww_renderer_read_ldr(r, im, err))) goto done;
-    int n = o->repeats > 0 ? o->repeats : DEFAULT_REPEATS;
-    double t[64];
-    if (n > (int)(sizeof t / sizeof t[0])) n = (int)(sizeof t / sizeof t[0]);
-    for (int i = 0; i < n && !rc; i++) {
-        double a = ww_now_seconds();
-        rc = ww_render_frame(r, sc, st, err);
-        ww_renderer_finish(r);
-        t[i] = 1e3 * (ww_now_seconds() - a);
-    }
-    qsort(t, (size_t)n, sizeof t[0], cmp_double);
-    *ms = t[0];
-
-done:
-    ww_state_free(st);
-    if (r) ww_renderer_free(r);
-    ww_scene_free(sc);
+/* one timed render; the configuration keeps the least (other processes on the machine can only
+ * add to a render's time, so the least is the steadiest estimate of its own cost) */
+static ww_result config_time(config *c, ww_error *err) {
+    double a = ww_now_seconds();
+    ww_result rc = ww_render_frame(c->r, c->sc, c->st, err);
+    ww_renderer_finish(c->r);
+    double ms = 1e3 * (ww_now_seconds() - a);
+    if (ms < c->ms) c->ms = ms;
     return rc;
 }
 
@@ -214,25 +210,38 @@ ww_result ww_bench_quality_measure(const ww_quality_opts *opts, const ww_quality
         goto done;
     }
     const ww_gl *gl = ww_backend_gl(b);
+    int repeats = o.repeats > 0 ? o.repeats : DEFAULT_REPEATS;
+    config cfg[WW_QUALITY_MAX_VALUES + 1] = {0};
     ww_quality_effect unused;
-    rc = render_config(&o, gl, knobs, nknobs, -1, 0.0, &ref, &res->reference_ms, &unused, err);
+    rc = config_open(&cfg[0], &o, gl, knobs, nknobs, -1, 0.0, &ref, &unused, err);
+    for (int t = 0; t < repeats && !rc; t++) rc = config_time(&cfg[0], err);
+    res->reference_ms = cfg[0].ms;
+    config_close(&cfg[0]);
 
     /* each value of each knob, the others at their best; the best value is rendered again, so
-     * its row also shows that two renderers give the same frame */
+     * its row also shows that two renderers give the same frame. A knob's values are built
+     * together and timed in turn, round after round, so that a change in the machine's load
+     * falls on all of them alike */
     for (int k = 0; k < nknobs && !rc; k++) {
         const ww_quality_knob *q = &knobs[k];
         WW_ASSERT(q->nvalues > 0 && q->nvalues <= WW_QUALITY_MAX_VALUES);
+        ww_quality_row *rows = &res->rows[res->nrows];
         for (int i = 0; i < q->nvalues && !rc; i++) {
-            ww_quality_row *row = &res->rows[res->nrows];
-            *row = (ww_quality_row){.knob = k, .value = q->value[i],
-                                    .is_default = q->value[i] == def[k],
-                                    .is_reference = i == q->nvalues - 1};
-            rc = render_config(&o, gl, knobs, nknobs, k, q->value[i], &im, &row->ms, &row->effect,
-                               err);
-            if (rc) break;
-            image_error(&ref, &im, &row->psnr, &row->max_diff);
-            res->nrows++;
+            rows[i] = (ww_quality_row){.knob = k, .value = q->value[i],
+                                       .is_default = q->value[i] == def[k],
+                                       .is_reference = i == q->nvalues - 1};
+            rc = config_open(&cfg[i], &o, gl, knobs, nknobs, k, q->value[i], &im,
+                             &rows[i].effect, err);
+            if (!rc) image_error(&ref, &im, &rows[i].psnr, &rows[i].max_diff);
         }
+        for (int t = 0; t < repeats && !rc; t++)
+            for (int i = 0; i < q->nvalues && !rc; i++) rc = config_time(&cfg[i], err);
+        for (int i = 0; i < q->nvalues; i++) {
+            rows[i].ms = cfg[i].ms;
+            config_close(&cfg[i]);
+        }
+        if (rc) break;
+        res->nrows += q->nvalues;
         mark_front(res, k);
     }
 
