@@ -66,11 +66,13 @@ typedef struct ww_quality_row {
     int is_reference;        /* the value every other knob holds (the knob's best) */
     ww_quality_effect effect;
     double ms;               /* render + glFinish, the least of the timed renders */
+    double pass_ms;          /* the pass the knob tunes, the least (0: not planned) */
     double psnr;             /* dB of the final RGB8 frame against the reference (INFINITY: same) */
     int max_diff;            /* largest channel difference, 8-bit levels */
-    int front;               /* no other value of the knob is both as fast and as close, and
-                              * better in one of them */
-    int knee;                /* the cheapest value within WW_QUALITY_GOOD_DB of the reference */
+    int front;               /* no other value of the knob has both as cheap a pass and as close
+                              * a frame, and is better in one of them */
+    int knee;                /* the value with the cheapest pass within WW_QUALITY_GOOD_DB of
+                              * the reference */
 } ww_quality_row;
 
 /* PSNR from which two frames count as alike (the knee): 40 dB, an RMS error of 2.6 levels */

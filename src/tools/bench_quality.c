@@ -100,7 +100,9 @@ typedef struct config {
     ww_scene *sc;
     ww_renderer *r;
     ww_state *st;
-    double ms; /* the least render time so far */
+    int pass;        /* the ww_pass_id the varied knob tunes (-1: the reference) */
+    double ms;       /* the least frame time so far */
+    double pass_ms;  /* the least time of that pass so far (INFINITY: not planned) */
 } config;
 
 static void config_close(config *c) {
@@ -115,7 +117,7 @@ static void config_close(config *c) {
 static ww_result config_open(config *c, const ww_quality_opts *o, const ww_gl *gl,
                              const ww_quality_knob *knobs, int nknobs, int vary, double v,
                              ww_image *im, ww_quality_effect *effect, ww_error *err) {
-    *c = (config){.ms = INFINITY};
+    *c = (config){.ms = INFINITY, .pass_ms = INFINITY, .pass = vary >= 0 ? (int)knobs[vary].pass : -1};
     ww_result rc = ww_scene_load(o->scene, NULL, 0, &c->sc, err);
     if (rc) return rc;
     configure(c->sc, knobs, nknobs, vary, v);
@@ -128,11 +130,14 @@ static ww_result config_open(config *c, const ww_quality_opts *o, const ww_gl *g
                                                   : WW_QUALITY_MEASURED;
     }
     if ((rc = ww_renderer_new(gl, c->sc, &plan, &c->r, err))) return rc;
+    ww_renderer_time_passes(c->r, WW_TIMING_AUTO);
     if (!(c->st = ww_state_new(c->sc)))
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "bench quality: out of memory for the state");
     if ((rc = ww_sim_advance_to(c->sc, c->st, o->frame * c->sc->steps_per_frame, err))) return rc;
     if ((rc = ww_render_frame(c->r, c->sc, c->st, err))) return rc;
     ww_renderer_finish(c->r);
+    ww_pass_times t;
+    ww_renderer_pass_times(c->r, &t); /* the first frame's, with compilation: dropped */
     return ww_renderer_read_ldr(c->r, im, err);
 }
 
@@ -144,6 +149,11 @@ static ww_result config_time(config *c, ww_error *err) {
     ww_renderer_finish(c->r);
     double ms = 1e3 * (ww_now_seconds() - a);
     if (ms < c->ms) c->ms = ms;
+    ww_pass_times t;
+    ww_renderer_pass_times(c->r, &t);
+    for (int i = 0; i < t.npasses; i++)
+        if ((int)t.id[i] == c->pass && t.frames > 0 && t.ms[i] / t.frames < c->pass_ms)
+            c->pass_ms = t.ms[i] / t.frames;
     return rc;
 }
 
@@ -161,7 +171,8 @@ static void image_error(const ww_image *a, const ww_image *b, double *psnr, int 
     *max_diff = mx;
 }
 
-/* the speed/error front and the knee of each knob's rows */
+/* the speed/error front and the knee of each knob's rows, by the time of the pass the knob tunes
+ * (its own cost: the frame's time carries every other knob at its best, and their noise) */
 static void mark_front(ww_quality_result *res, int knob) {
     ww_quality_row *rows = res->rows;
     int knee = -1;
@@ -172,10 +183,11 @@ static void mark_front(ww_quality_result *res, int knob) {
         for (int j = 0; j < res->nrows && a->front; j++) {
             const ww_quality_row *b = &rows[j];
             if (j == i || b->knob != knob) continue;
-            if (b->ms <= a->ms && b->psnr >= a->psnr && (b->ms < a->ms || b->psnr > a->psnr))
+            if (b->pass_ms <= a->pass_ms && b->psnr >= a->psnr &&
+                (b->pass_ms < a->pass_ms || b->psnr > a->psnr))
                 a->front = 0;
         }
-        if (a->psnr >= WW_QUALITY_GOOD_DB && (knee < 0 || a->ms < rows[knee].ms)) knee = i;
+        if (a->psnr >= WW_QUALITY_GOOD_DB && (knee < 0 || a->pass_ms < rows[knee].pass_ms)) knee = i;
     }
     if (knee >= 0) rows[knee].knee = 1;
 }
@@ -238,6 +250,7 @@ ww_result ww_bench_quality_measure(const ww_quality_opts *opts, const ww_quality
             for (int i = 0; i < q->nvalues && !rc; i++) rc = config_time(&cfg[i], err);
         for (int i = 0; i < q->nvalues; i++) {
             rows[i].ms = cfg[i].ms;
+            rows[i].pass_ms = isfinite(cfg[i].pass_ms) ? cfg[i].pass_ms : 0.0;
             config_close(&cfg[i]);
         }
         if (rc) break;
@@ -253,6 +266,16 @@ done:
 }
 
 /* ---- table, JSON and figure ------------------------------------------------------------------ */
+
+/* the plan's name of a pass id, for the table */
+static const char *pass_name(ww_pass_id id) {
+    static const char *const names[WW_PASS_COUNT] = {
+        [WW_PASS_SHADOW] = "shadow", [WW_PASS_PREPASS] = "prepass",
+        [WW_PASS_REFLECTION] = "reflection", [WW_PASS_MAIN] = "main", [WW_PASS_BLOOM] = "bloom",
+        [WW_PASS_SHAFTS] = "shafts", [WW_PASS_TONEMAP] = "tonemap", [WW_PASS_FXAA] = "fxaa",
+        [WW_PASS_HUD] = "hud"};
+    return id >= 0 && id < WW_PASS_COUNT && names[id] ? names[id] : "?";
+}
 
 static const char *effect_words(ww_quality_effect e) {
     switch (e) {
@@ -285,7 +308,8 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
     for (int k = 0; k < nknobs; k++)
         fprintf(to, "%s%s=%g", k ? " " : "", knobs[k].name, knobs[k].value[knobs[k].nvalues - 1]);
     fprintf(to, "): %.2f ms\n\n", res->reference_ms);
-    fprintf(to, "%-24s %8s %9s %9s %8s  %s\n", "knob", "value", "ms", "PSNR dB", "max diff", "");
+    fprintf(to, "%-24s %8s %9s %-10s %8s %9s %8s  %s\n", "knob", "value", "frame ms", "pass",
+            "pass ms", "PSNR dB", "max diff", "");
     for (int k = 0; k < nknobs; k++) {
         ww_quality_effect why;
         int none = knob_without_effect(res, k, &why);
@@ -299,8 +323,8 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
             snprintf(flags, sizeof flags, "%s%s%s%s", r->is_default ? " default" : "",
                      r->is_reference ? " ref" : "", !none && r->front ? " front" : "",
                      !none && r->knee ? " knee" : "");
-            fprintf(to, "%-24s %8g %9.2f %9s %8d %s\n", first ? knobs[k].name : "", r->value, r->ms,
-                    psnr, r->max_diff, flags);
+            fprintf(to, "%-24s %8g %9.2f %-10s %8.2f %9s %8d %s\n", first ? knobs[k].name : "",
+                    r->value, r->ms, pass_name(knobs[k].pass), r->pass_ms, psnr, r->max_diff, flags);
             first = 0;
         }
         if (none) {
@@ -315,10 +339,12 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
                     r->front ? "on" : "off", r->knee ? ", at the knee" : "");
         }
     }
-    fprintf(to, "\nms: render + glFinish of one frame (the least of the timed renders); PSNR and max diff: the final RGB8 frame "
-                "against the reference\n(inf: identical); front: no other value of the knob is as "
-                "fast and as close and better in one;\nknee: the cheapest value within %.0f dB "
-                "of the reference; ms differences under a few %% are noise\n",
+    fprintf(to, "\nframe ms: render + glFinish of one frame; pass ms: the pass the knob tunes (GL timer "
+                "queries; 0: not planned);\nboth the least of the timed renders. PSNR and max diff: "
+                "the final RGB8 frame against the reference\n(inf: identical). front: no other value "
+                "of the knob has both a cheaper pass and a closer frame;\nknee: the value with the "
+                "cheapest pass within %.0f dB of the reference. On a shared machine ms differences\n"
+                "of 10%% are noise\n",
             WW_QUALITY_GOOD_DB);
 }
 
@@ -333,9 +359,9 @@ static void print_json(const ww_quality_opts *o, const ww_quality_knob *knobs,
         fprintf(to, ",\"device\":");
         ww_json_string(to, res->device);
         fprintf(to, ",\"width\":%d,\"height\":%d,\"frame\":%lld,\"knob\":\"%s\",\"value\":%g,"
-                    "\"ms\":%.4f,\"reference_ms\":%.4f,\"psnr\":",
+                    "\"ms\":%.4f,\"pass\":\"%s\",\"pass_ms\":%.4f,\"reference_ms\":%.4f,\"psnr\":",
                 o->width, o->height, (long long)o->frame, knobs[r->knob].name, r->value, r->ms,
-                res->reference_ms);
+                pass_name(knobs[r->knob].pass), r->pass_ms, res->reference_ms);
         if (isfinite(r->psnr)) fprintf(to, "%.4f", r->psnr);
         else fputs("null", to); /* JSON has no infinity: null is "identical" */
         fprintf(to, ",\"identical\":%s,\"max_diff\":%d,\"default\":%s,\"reference\":%s,"
@@ -371,10 +397,10 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
             const ww_quality_row *q = &res->rows[i];
             if (q->knob != k) continue;
             double p = isfinite(q->psnr) && q->psnr < PSNR_PLOT_CAP ? q->psnr : PSNR_PLOT_CAP;
-            x[k][n] = q->ms;
+            x[k][n] = q->pass_ms;
             y[k][n++] = p;
             if (q->is_default) {
-                dx[k] = q->ms;
+                dx[k] = q->pass_ms;
                 dy[k] = p;
                 nd = 1;
             }
@@ -387,7 +413,9 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
         const char *note = why == WW_QUALITY_NOT_BUILT     ? "no effect: pass not built"
                            : why == WW_QUALITY_NOT_PLANNED ? "no effect: pass not planned"
                                                            : "no effect on this frame";
-        ww_plot p = {.title = title, .xlabel = "ms per frame", .ylabel = "PSNR dB (60: identical)",
+        char xlabel[48];
+        snprintf(xlabel, sizeof xlabel, "ms of the %s pass", pass_name(knobs[k].pass));
+        ww_plot p = {.title = title, .xlabel = xlabel, .ylabel = "PSNR dB (60: identical)",
                      .note = none ? note : NULL};
         ww_plot_add(&p, "values, cheapest first", x[k], y[k], n, WW_PLOT_BLUE);
         if (nd) ww_plot_add(&p, "default", &dx[k], &dy[k], 1, WW_PLOT_RED);
