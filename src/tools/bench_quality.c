@@ -26,7 +26,8 @@
 #define DEFAULT_WIDTH 640
 #define DEFAULT_HEIGHT 360
 #define DEFAULT_REPEATS 5
-#define PSNR_PLOT_CAP 60.0 /* identical frames (PSNR infinite) are drawn at this height */
+#define PSNR_PLOT_CAP 60.0    /* identical frames (PSNR infinite) are drawn at this height, */
+#define PSNR_PLOT_ABOVE 10.0  /* or this far above the knob's closest differing frame */
 
 /* ---- the knobs ------------------------------------------------------------------------------ */
 
@@ -393,10 +394,15 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
     double dx[WW_QUALITY_MAX_KNOBS], dy[WW_QUALITY_MAX_KNOBS];
     for (int k = 0; k < nknobs; k++) {
         int n = 0, nd = 0;
+        double cap = PSNR_PLOT_CAP;
+        for (int i = 0; i < res->nrows; i++)
+            if (res->rows[i].knob == k && isfinite(res->rows[i].psnr) &&
+                res->rows[i].psnr + PSNR_PLOT_ABOVE > cap)
+                cap = ceil(res->rows[i].psnr + PSNR_PLOT_ABOVE);
         for (int i = 0; i < res->nrows; i++) {
             const ww_quality_row *q = &res->rows[i];
             if (q->knob != k) continue;
-            double p = isfinite(q->psnr) && q->psnr < PSNR_PLOT_CAP ? q->psnr : PSNR_PLOT_CAP;
+            double p = isfinite(q->psnr) ? q->psnr : cap;
             x[k][n] = q->pass_ms;
             y[k][n++] = p;
             if (q->is_default) {
@@ -415,7 +421,9 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
                                                            : "no effect on this frame";
         char xlabel[48];
         snprintf(xlabel, sizeof xlabel, "ms of the %s pass", pass_name(knobs[k].pass));
-        ww_plot p = {.title = title, .xlabel = xlabel, .ylabel = "PSNR dB (60: identical)",
+        char ylabel[48];
+        snprintf(ylabel, sizeof ylabel, "PSNR dB (%.0f: identical)", cap);
+        ww_plot p = {.title = title, .xlabel = xlabel, .ylabel = ylabel,
                      .note = none ? note : NULL};
         ww_plot_add(&p, "values, cheapest first", x[k], y[k], n, WW_PLOT_BLUE);
         if (nd) ww_plot_add(&p, "default", &dx[k], &dy[k], 1, WW_PLOT_RED);
