@@ -9,7 +9,8 @@
 
 static const char usage[] =
     "usage: waterworld bench [render|sim] [--frames N] [--json] [SCENE.yaml...]\n"
-    "       waterworld bench quality [--size WxH] [--frame N] [--repeats N] [--json] [-o DIR] [SCENE.yaml]\n"
+    "       waterworld bench quality [--knob NAME] [--size WxH] [--frame N] [--repeats N] [--json]\n"
+    "                                [-o DIR] [SCENE.yaml]\n"
     "       waterworld bench waves [--json] [-o DIR]\n"
     "\n"
     "  render (default)  per backend (egl, osmesa), scene (minimal, demo) and size (256x144,\n"
@@ -23,7 +24,8 @@ static const char usage[] =
     "                    difference of the final frame against a reference with every knob at its\n"
     "                    best; each knob's feature is switched on where this build has its pass;\n"
     "                    the default, the speed/error front and the knee marked; DIR/quality.png.\n"
-    "                    SCENE default scenes/lake.yaml, --size 640x360, --frame 0, --repeats 5\n"
+    "                    SCENE default scenes/lake.yaml, --size 640x360, --frame 0, --repeats 5;\n"
+    "                    --knob NAME: that knob only (e.g. --knob render.grid)\n"
     "  sim               per scene: steps per second and simulated seconds per wall second;\n"
     "                    the error of cube heave, boat position and stone landing points at\n"
     "                    dt = 1/30, 1/60, 1/120, 1/240 against dt = 1/1920, next to steps per\n"
@@ -47,10 +49,11 @@ static long long parse_whole(const char *text, long long lo, long long hi) {
 }
 
 /* bench quality's options; --tiny (tests) is a 96x54 frame rendered twice per configuration */
+/* opt: --size, --frame, --repeats, --knob as given (NULL: absent) */
 static ww_result bench_quality(const ww_bench_opts *b, int nscenes, const char *frames,
-                               const char *out, const char *size, const char *frame,
-                               const char *repeats, int tiny, ww_error *err) {
-    ww_quality_opts q = {.scene = b->scenes[0], .json = b->json, .out_dir = out};
+                               const char *out, const char *const opt[4], int tiny, ww_error *err) {
+    const char *size = opt[0], *frame = opt[1], *repeats = opt[2];
+    ww_quality_opts q = {.scene = b->scenes[0], .json = b->json, .out_dir = out, .knob = opt[3]};
     if (nscenes > 1 || frames)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "bench quality takes one scene and --frame, not %s",
@@ -86,7 +89,7 @@ static ww_result bench_quality(const ww_bench_opts *b, int nscenes, const char *
 ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     ww_bench_opts o = {0};
     const char *what = "render", *frames = NULL, *out = NULL;
-    const char *size = NULL, *frame = NULL, *repeats = NULL; /* bench quality */
+    const char *size = NULL, *frame = NULL, *repeats = NULL, *knob = NULL; /* bench quality */
     int tiny = 0;
     int nscenes = 0;
     ww_result r = WW_OK;
@@ -109,6 +112,7 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         if (ww_cli_opt(argc, argv, &i, "--size", &size, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--frame", &frame, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--repeats", &repeats, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--knob", &knob, &r, err)) continue;
         if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0 ||
             strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0) {
             what = argv[i];
@@ -124,11 +128,13 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     if (frames && (o.frames = atoi(frames)) <= 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frames wants a positive count, got '%s'", frames);
     int waves = strcmp(what, "waves") == 0, sim = strcmp(what, "sim") == 0;
-    if (strcmp(what, "quality") == 0) return bench_quality(&o, nscenes, frames, out, size, frame,
-                                                           repeats, tiny, err);
-    if (size || frame || repeats)
+    if (strcmp(what, "quality") == 0) {
+        const char *q[] = {size, frame, repeats, knob};
+        return bench_quality(&o, nscenes, frames, out, q, tiny, err);
+    }
+    if (size || frame || repeats || knob)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench quality only",
-                            size ? "--size" : frame ? "--frame" : "--repeats");
+                            size ? "--size" : frame ? "--frame" : repeats ? "--repeats" : "--knob");
     if (!waves && !sim && (out || tiny))
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench waves and sim only",
                             out ? "-o" : "--tiny");

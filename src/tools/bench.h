@@ -86,6 +86,7 @@ typedef struct ww_quality_opts {
     const char *out_dir;     /* folder for quality.png (default out/bench); NULL in tests: none */
     int json;                /* one JSON object per row */
     int no_figure;           /* do not write the figure */
+    const char *knob;        /* only this knob (its name), NULL: all six */
     ww_backend_kind backend;
 } ww_quality_opts;
 

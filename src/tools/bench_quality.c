@@ -238,6 +238,7 @@ ww_result ww_bench_quality_measure(const ww_quality_opts *opts, const ww_quality
     for (int k = 0; k < nknobs && !rc; k++) {
         const ww_quality_knob *q = &knobs[k];
         WW_ASSERT(q->nvalues > 0 && q->nvalues <= WW_QUALITY_MAX_VALUES);
+        if (o.knob && strcmp(o.knob, q->name) != 0) continue;
         ww_quality_row *rows = &res->rows[res->nrows];
         for (int i = 0; i < q->nvalues && !rc; i++) {
             rows[i] = (ww_quality_row){.knob = k, .value = q->value[i],
@@ -287,6 +288,12 @@ static const char *effect_words(ww_quality_effect e) {
     return "no effect on this frame (the renderer does not read it, or what it tunes is not in view)";
 }
 
+static int knob_measured(const ww_quality_result *res, int k) {
+    for (int i = 0; i < res->nrows; i++)
+        if (res->rows[i].knob == k) return 1;
+    return 0;
+}
+
 /* what a knob's rows say as a whole: 1 when every value renders the reference's frame */
 static int knob_without_effect(const ww_quality_result *res, int k, ww_quality_effect *why) {
     int same = 1;
@@ -312,6 +319,7 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
     fprintf(to, "%-24s %8s %9s %-10s %8s %9s %8s  %s\n", "knob", "value", "frame ms", "pass",
             "pass ms", "PSNR dB", "max diff", "");
     for (int k = 0; k < nknobs; k++) {
+        if (!knob_measured(res, k)) continue;
         ww_quality_effect why;
         int none = knob_without_effect(res, k, &why);
         int first = 1;
@@ -385,14 +393,19 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
     ww_result r = ww_make_dirs(dir, err);
     if (r) return r;
     snprintf(path, cap, "%s/quality.png", dir);
-    int rows = (nknobs + FIG_COLS - 1) / FIG_COLS;
+    int shown = 0;
+    for (int k = 0; k < nknobs; k++) shown += knob_measured(res, k);
+    int cols = shown < FIG_COLS ? (shown > 0 ? shown : 1) : FIG_COLS;
+    int rows = (shown + FIG_COLS - 1) / FIG_COLS;
+    if (rows < 1) rows = 1;
     ww_image im;
-    if (ww_image_alloc(&im, FIG_COLS * FIG_PANEL_W, rows * FIG_PANEL_H, 3, WW_PIX_U8))
+    if (ww_image_alloc(&im, cols * FIG_PANEL_W, rows * FIG_PANEL_H, 3, WW_PIX_U8))
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the figure");
     ww_plot_fill(&im, WW_PLOT_WHITE);
     double x[WW_QUALITY_MAX_KNOBS][WW_QUALITY_MAX_VALUES], y[WW_QUALITY_MAX_KNOBS][WW_QUALITY_MAX_VALUES];
     double dx[WW_QUALITY_MAX_KNOBS], dy[WW_QUALITY_MAX_KNOBS];
-    for (int k = 0; k < nknobs; k++) {
+    for (int k = 0, panel = 0; k < nknobs; k++) {
+        if (!knob_measured(res, k)) continue;
         int n = 0, nd = 0;
         double cap = PSNR_PLOT_CAP;
         for (int i = 0; i < res->nrows; i++)
@@ -427,8 +440,9 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
                      .note = none ? note : NULL};
         ww_plot_add(&p, "values, cheapest first", x[k], y[k], n, WW_PLOT_BLUE);
         if (nd) ww_plot_add(&p, "default", &dx[k], &dy[k], 1, WW_PLOT_RED);
-        ww_plot_draw(&p, &im, (k % FIG_COLS) * FIG_PANEL_W, (k / FIG_COLS) * FIG_PANEL_H,
+        ww_plot_draw(&p, &im, (panel % FIG_COLS) * FIG_PANEL_W, (panel / FIG_COLS) * FIG_PANEL_H,
                      FIG_PANEL_W, FIG_PANEL_H);
+        panel++;
     }
     r = ww_write_png(path, &im, err);
     ww_image_free(&im);
@@ -444,6 +458,20 @@ ww_result ww_bench_quality(const ww_quality_opts *opts, FILE *to, ww_error *err)
     }
     int nknobs;
     const ww_quality_knob *knobs = ww_quality_knobs(&nknobs);
+    if (o.knob) {
+        /* one knob (ww_bench_quality_measure skips the others; the reference still has every
+         * knob at its best) */
+        int k = 0;
+        while (k < nknobs && strcmp(knobs[k].name, o.knob) != 0) k++;
+        if (k == nknobs) {
+            char names[256] = "";
+            for (int i = 0; i < nknobs; i++)
+                snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "",
+                         knobs[i].name);
+            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                                "bench quality: no knob '%s' (knobs: %s)", o.knob, names);
+        }
+    }
     ww_quality_result *res = malloc(sizeof *res);
     if (!res) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "bench quality: out of memory");
     ww_result r = ww_bench_quality_measure(&o, knobs, nknobs, res, err);
