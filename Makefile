@@ -87,6 +87,7 @@ golden: $(BIN)
 
 bench: $(BIN)
 	./$(BIN) bench render
+	./$(BIN) bench quality
 	./$(BIN) bench waves
 	./$(BIN) bench sim
 

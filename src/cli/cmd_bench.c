@@ -9,12 +9,23 @@
 
 static const char usage[] =
     "usage: waterworld bench [render|sim] [--frames N] [--json] [SCENE.yaml...]\n"
+    "       waterworld bench quality [--knob NAME] [--size WxH] [--frame N] [--repeats N] [--json]\n"
+    "                                [-o DIR] [SCENE.yaml]\n"
     "       waterworld bench waves [--json] [-o DIR]\n"
     "\n"
     "  render (default)  per backend (egl, osmesa), scene (minimal, demo) and size (256x144,\n"
     "                    1280x720): ms per frame split into simulate / render / read back /\n"
-    "                    encode (PNG), the fill floor (one trivial full-screen pass), render/floor,\n"
-    "                    peak RSS of the render process and the size of the state\n"
+    "                    encode (PNG), ms per pass (GL timer queries, else CPU time with glFinish\n"
+    "                    between passes), fps, the fill floor (one trivial full-screen pass),\n"
+    "                    render/floor against issue 5's targets at 1280x720 (15x for a scene with\n"
+    "                    objects, 3x for water and sky), peak RSS and the size of the state\n"
+    "  quality           each quality knob (render.reflection.scale, shadows.size, bloom.passes,\n"
+    "                    god_rays.samples, msaa, grid) against ms per frame and the PSNR and max\n"
+    "                    difference of the final frame against a reference with every knob at its\n"
+    "                    best; each knob's feature is switched on where this build has its pass;\n"
+    "                    the default, the speed/error front and the knee marked; DIR/quality.png.\n"
+    "                    SCENE default scenes/lake.yaml, --size 640x360, --frame 0, --repeats 5;\n"
+    "                    --knob NAME: that knob only (e.g. --knob render.grid)\n"
     "  sim               per scene: steps per second and simulated seconds per wall second;\n"
     "                    the error of cube heave, boat position and stone landing points at\n"
     "                    dt = 1/30, 1/60, 1/120, 1/240 against dt = 1/1920, next to steps per\n"
@@ -26,13 +37,59 @@ static const char usage[] =
     "                    iterations, residual and time at fold margins 0.5, 0.2, 0.05; GPU ms\n"
     "                    per frame at 1280x720 against component count, fade on and off; and\n"
     "                    the figure DIR/waves.png\n"
-    "  -o DIR            folder for the waves and sim figures (default out/bench)\n"
+    "  -o DIR            folder for the waves, sim and quality figures (default out/bench)\n"
     "  --frames N        frames per configuration (default 20)\n"
     "  --json            one JSON object per line\n";
+
+/* a whole number in [lo, hi] from text, or -1 */
+static long long parse_whole(const char *text, long long lo, long long hi) {
+    char *end = NULL;
+    long long v = strtoll(text, &end, 10);
+    return end != text && *end == 0 && v >= lo && v <= hi ? v : -1;
+}
+
+/* bench quality's options; --tiny (tests) is a 96x54 frame rendered twice per configuration */
+/* opt: --size, --frame, --repeats, --knob as given (NULL: absent) */
+static ww_result bench_quality(const ww_bench_opts *b, int nscenes, const char *frames,
+                               const char *out, const char *const opt[4], int tiny, ww_error *err) {
+    const char *size = opt[0], *frame = opt[1], *repeats = opt[2];
+    ww_quality_opts q = {.scene = b->scenes[0], .json = b->json, .out_dir = out, .knob = opt[3]};
+    if (nscenes > 1 || frames)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "bench quality takes one scene and --frame, not %s",
+                            frames ? "--frames" : "several scenes");
+    if (size) {
+        /* WIDTHxHEIGHT: each side parsed whole, the width cut at the x */
+        const char *x = strchr(size, 'x');
+        char wtext[16];
+        snprintf(wtext, sizeof wtext, "%.*s", x ? (int)(x - size) : 0, size);
+        long long w = parse_whole(wtext, 16, 16384), h = x ? parse_whole(x + 1, 16, 16384) : -1;
+        if (w < 0 || h < 0)
+            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                                "--size wants WIDTHxHEIGHT with each in 16..16384, got '%s'", size);
+        q.width = (int)w;
+        q.height = (int)h;
+    }
+    if (frame && (q.frame = parse_whole(frame, 0, 100000000)) < 0)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frame wants a frame number, got '%s'", frame);
+    long long n = repeats ? parse_whole(repeats, 1, 64) : 0;
+    if (n < 0)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--repeats wants 1..64, got '%s'", repeats);
+    q.repeats = (int)n;
+    if (tiny) {
+        if (!size) {
+            q.width = 96;
+            q.height = 54;
+        }
+        if (!repeats) q.repeats = 2;
+    }
+    return ww_bench_quality(&q, stdout, err);
+}
 
 ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     ww_bench_opts o = {0};
     const char *what = "render", *frames = NULL, *out = NULL;
+    const char *size = NULL, *frame = NULL, *repeats = NULL, *knob = NULL; /* bench quality */
     int tiny = 0;
     int nscenes = 0;
     ww_result r = WW_OK;
@@ -52,8 +109,12 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         }
         if (ww_cli_opt(argc, argv, &i, "--frames", &frames, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "-o", &out, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--size", &size, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--frame", &frame, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--repeats", &repeats, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--knob", &knob, &r, err)) continue;
         if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0 ||
-            strcmp(argv[i], "waves") == 0) {
+            strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0) {
             what = argv[i];
             continue;
         }
@@ -67,6 +128,13 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     if (frames && (o.frames = atoi(frames)) <= 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frames wants a positive count, got '%s'", frames);
     int waves = strcmp(what, "waves") == 0, sim = strcmp(what, "sim") == 0;
+    if (strcmp(what, "quality") == 0) {
+        const char *q[] = {size, frame, repeats, knob};
+        return bench_quality(&o, nscenes, frames, out, q, tiny, err);
+    }
+    if (size || frame || repeats || knob)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench quality only",
+                            size ? "--size" : frame ? "--frame" : repeats ? "--repeats" : "--knob");
     if (!waves && !sim && (out || tiny))
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench waves and sim only",
                             out ? "-o" : "--tiny");

@@ -110,7 +110,8 @@
     X(PFNGLENDQUERYPROC, EndQuery)                                                               \
     X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                                       \
     X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                               \
-    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)
+    X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)                                         \
+    X(PFNGLGETQUERYIVPROC, GetQueryiv) /* rbench: the timer's counter bits */
 
 typedef struct ww_gl {
 #define WW_GL_DECL(type, name) type name;

@@ -94,6 +94,20 @@ typedef struct ww_pass {
 
 typedef struct ww_geometry ww_geometry;
 
+/* per-pass timing (renderer.c, ww_renderer_time_passes; bench only): with GL timer queries, each
+ * frame's queries go into one of WW_TIMER_RING slots and are read back only when that slot comes
+ * round again (or when the caller asks, after glFinish), so timing never waits on the GPU;
+ * without them, CPU wall time with glFinish before and after each pass */
+#define WW_TIMER_RING 3
+typedef struct ww_pass_timer {
+    ww_timing mode;                              /* WW_TIMING_OFF, _GPU or _CPU */
+    GLuint query[WW_TIMER_RING][WW_PASS_COUNT];  /* GL_TIME_ELAPSED, one per slot and pass */
+    int pending[WW_TIMER_RING];                  /* the slot holds a frame not read back yet */
+    double sum_ms[WW_PASS_COUNT];                /* per pass, over the frames collected */
+    double frame_ms;                             /* CPU: the frames' wall time, glFinish to glFinish */
+    int frames;                                  /* frames collected since the last read */
+} ww_pass_timer;
+
 struct ww_renderer {
     const ww_gl *gl;
     int npasses;
@@ -105,6 +119,7 @@ struct ww_renderer {
                          * when the pass drawing the sky is created, for the water to reflect */
     ww_shared shared; /* per frame, written by earlier passes for later ones */
     int64_t frames;   /* frames rendered so far */
+    ww_pass_timer timer; /* off unless ww_renderer_time_passes */
 };
 
 /* geometry.c: the scene's solid geometry (seabed, objects, models), its meshes uploaded once and

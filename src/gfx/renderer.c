@@ -5,7 +5,9 @@
 #include "gfx/renderer.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 
 #include "core/mathx.h"
 #include "gfx/render_impl.h"
@@ -23,6 +25,10 @@ static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
     [WW_PASS_FXAA] = &ww_pass_fxaa_ops,
     [WW_PASS_HUD] = &ww_pass_hud_ops,
 };
+
+int ww_renderer_has_pass(ww_pass_id id) {
+    return id >= 0 && id < WW_PASS_COUNT && pass_table[id] != NULL;
+}
 
 const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id) {
     for (int i = 0; i < r->npasses; i++)
@@ -50,6 +56,7 @@ void ww_renderer_free(ww_renderer *r) {
         if (p->self) p->ops->destroy(p->self, gl);
         ww_gfx_rt_destroy(gl, &p->rt);
     }
+    ww_renderer_time_passes(r, WW_TIMING_OFF);
     ww_geometry_free(r->geometry, gl);
     if (r->empty_vao) gl->DeleteVertexArrays(1, &r->empty_vao);
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -151,6 +158,74 @@ static void frame_camera(ww_frame *f, const ww_renderer *r) {
     f->underwater = st->cam_pos[1] < ws.height;
 }
 
+/* ---- per-pass timing -------------------------------------------------------------------- */
+
+static double now_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return 1e3 * (double)ts.tv_sec + 1e-6 * (double)ts.tv_nsec;
+}
+
+const char *ww_timing_name(ww_timing mode) {
+    switch (mode) {
+    case WW_TIMING_GPU: return "gl timer queries";
+    case WW_TIMING_CPU: return "cpu wall time, glFinish between passes";
+    case WW_TIMING_AUTO: return "auto";
+    case WW_TIMING_OFF: break;
+    }
+    return "off";
+}
+
+/* add one slot's query results to the sums (waits for them: the caller knows the frame is old
+ * enough, or has finished) */
+static void timer_collect(ww_renderer *r, int slot) {
+    ww_pass_timer *tm = &r->timer;
+    for (int i = 0; i < r->npasses; i++) {
+        GLuint64 ns = 0;
+        r->gl->GetQueryObjectui64v(tm->query[slot][i], GL_QUERY_RESULT, &ns);
+        tm->sum_ms[i] += 1e-6 * (double)ns;
+    }
+    tm->pending[slot] = 0;
+    tm->frames++;
+}
+
+ww_timing ww_renderer_time_passes(ww_renderer *r, ww_timing mode) {
+    ww_pass_timer *tm = &r->timer;
+    const ww_gl *gl = r->gl;
+    if (tm->mode == WW_TIMING_GPU)
+        for (int s = 0; s < WW_TIMER_RING; s++) gl->DeleteQueries(WW_PASS_COUNT, tm->query[s]);
+    *tm = (ww_pass_timer){0};
+    if (mode == WW_TIMING_AUTO || mode == WW_TIMING_GPU) {
+        /* GL 3.3 has ARB_timer_query in core, but a driver may give its counter no bits */
+        GLint bits = 0;
+        gl->GetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+        mode = bits > 0 ? WW_TIMING_GPU : WW_TIMING_CPU;
+    }
+    if (mode == WW_TIMING_GPU)
+        for (int s = 0; s < WW_TIMER_RING; s++) gl->GenQueries(WW_PASS_COUNT, tm->query[s]);
+    tm->mode = mode;
+    return mode;
+}
+
+void ww_renderer_pass_times(ww_renderer *r, ww_pass_times *t) {
+    ww_pass_timer *tm = &r->timer;
+    *t = (ww_pass_times){.mode = tm->mode, .npasses = r->npasses};
+    /* the slots in flight, oldest first (the order does not change the sums) */
+    if (tm->mode == WW_TIMING_GPU)
+        for (int s = 0; s < WW_TIMER_RING; s++)
+            if (tm->pending[s]) timer_collect(r, s);
+    for (int i = 0; i < r->npasses; i++) {
+        t->id[i] = r->passes[i].id;
+        snprintf(t->name[i], sizeof t->name[i], "%s", r->plan.passes[i].name);
+        t->ms[i] = tm->sum_ms[i];
+        tm->sum_ms[i] = 0.0;
+    }
+    t->frame_ms = tm->frame_ms;
+    t->frames = tm->frames;
+    tm->frame_ms = 0.0;
+    tm->frames = 0;
+}
+
 ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st, ww_error *err) {
     WW_ASSERT(r && sc && st);
     ww_frame f;
@@ -160,11 +235,30 @@ ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st
     frame_camera(&f, r);
     r->shared = (ww_shared){0};
 
+    ww_pass_timer *tm = &r->timer;
+    int slot = (int)(f.frame % WW_TIMER_RING);
+    double t0 = 0.0;
+    if (tm->mode == WW_TIMING_GPU && tm->pending[slot]) timer_collect(r, slot);
+    if (tm->mode == WW_TIMING_CPU) {
+        r->gl->Finish();
+        t0 = now_ms();
+    }
     for (int i = 0; i < r->npasses; i++) {
         ww_pass *p = &r->passes[i];
+        if (tm->mode == WW_TIMING_GPU) r->gl->BeginQuery(GL_TIME_ELAPSED, tm->query[slot][i]);
         ww_result rc = p->ops->run(p->self, r, &f, err);
+        if (tm->mode == WW_TIMING_GPU) r->gl->EndQuery(GL_TIME_ELAPSED);
         if (rc != WW_OK) return rc;
+        if (tm->mode == WW_TIMING_CPU) {
+            r->gl->Finish();
+            double t1 = now_ms();
+            tm->sum_ms[i] += t1 - t0;
+            tm->frame_ms += t1 - t0;
+            t0 = t1;
+        }
     }
+    if (tm->mode == WW_TIMING_GPU) tm->pending[slot] = 1;
+    if (tm->mode == WW_TIMING_CPU) tm->frames++;
     GLenum e = r->gl->GetError();
     if (e != GL_NO_ERROR)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0, "renderer: GL error 0x%04x while drawing",

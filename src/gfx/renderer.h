@@ -10,6 +10,10 @@
  *   ww_renderer_read_hdr(r, &img);                // RGBA float linear HDR image
  *   ww_renderer_free(r);
  *
+ * Per-pass timing (bench): ww_renderer_time_passes(r, WW_TIMING_AUTO) once after creation, then
+ * after any frames ww_renderer_pass_times(r, &t) gives ms per pass summed over the frames drawn
+ * since the previous call (it waits for the GPU to finish them).
+ *
  * Shaders are embedded at build time; WW_SHADER_DIR=path/to/shaders loads them from files
  * instead (development).
  */
@@ -44,6 +48,38 @@ ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error 
 ww_result ww_gfx_water_probe(const ww_gl *gl, const ww_scene *sc, const ww_state *st,
                              const double cam[3], int n, const double *rest_xz, float *out,
                              ww_error *err);
+/* per-pass timing: GL_TIME_ELAPSED queries around each pass's run (ARB_timer_query, core in
+ * GL 3.3) or, where the driver has no timer bits, CPU wall time with glFinish between passes
+ * (which serialises the frame: the sum is then an upper bound of the pipelined cost) */
+typedef enum ww_timing {
+    WW_TIMING_OFF = 0,
+    WW_TIMING_AUTO, /* GPU when the driver's GL_TIME_ELAPSED counter has bits, else CPU */
+    WW_TIMING_GPU,
+    WW_TIMING_CPU
+} ww_timing;
+
+typedef struct ww_pass_times {
+    ww_timing mode;                      /* what measured them: WW_TIMING_GPU or _CPU */
+    int npasses;                         /* the renderer's passes, in plan order */
+    ww_pass_id id[WW_PASS_COUNT];
+    char name[WW_PASS_COUNT][16];        /* the plan's pass names */
+    double ms[WW_PASS_COUNT];            /* summed over `frames` */
+    double frame_ms;                     /* CPU mode: the frames' wall time (0 in GPU mode) */
+    int frames;
+} ww_pass_times;
+
+/* turn timing on (or off) for the frames that follow; returns the mode in effect (AUTO resolved;
+ * GPU falls back to CPU when the counter has no bits) */
+ww_timing ww_renderer_time_passes(ww_renderer *r, ww_timing mode);
+/* the timings of every frame drawn since the previous call (or since timing was turned on),
+ * waiting for the GPU where a frame is still in flight; the sums restart */
+void ww_renderer_pass_times(ww_renderer *r, ww_pass_times *t);
+/* "gl timer queries" / "cpu wall time, glFinish between passes" / "off" */
+const char *ww_timing_name(ww_timing mode);
+/* 1 when this build has a pass for id (bench: a knob of a pass not written yet has no effect,
+ * and a plan naming it could not be rendered) */
+int ww_renderer_has_pass(ww_pass_id id);
+
 /* glFinish; used by bench to split render from read-back time */
 void ww_renderer_finish(ww_renderer *r);
 

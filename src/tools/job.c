@@ -99,6 +99,7 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     }
     s->state_bytes = j.st->bytes;
     s->setup_s = ww_now_seconds() - t0;
+    if (o->time_passes != WW_TIMING_OFF) ww_renderer_time_passes(j.renderer, o->time_passes);
 
     /* the output folder only once everything that can fail before the first frame has not */
     if (o->format != WW_OUT_NONE && (r = ww_make_dirs(o->out_dir, err))) goto done;
@@ -118,9 +119,14 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
         s->sim_s += b - a;
         s->render_s += c - b;
         if (f == o->first) s->first_render_s = c - b;
+        /* the first frame's pass times carry shader compilation: dropped, as bench does */
+        if (o->time_passes != WW_TIMING_OFF && f == o->first && o->last - o->first > 1)
+            ww_renderer_pass_times(j.renderer, &s->passes);
         if ((r = emit_frame(sc, o, &j, f, s, err))) goto done;
         s->frames++;
     }
+
+    if (o->time_passes != WW_TIMING_OFF) ww_renderer_pass_times(j.renderer, &s->passes);
 
 done:
     job_close(&j);

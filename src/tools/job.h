@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "gfx/backend.h"
+#include "gfx/renderer.h"
 #include "scene/scene.h"
 
 typedef enum ww_out_format { WW_OUT_PNG = 0, WW_OUT_EXR, WW_OUT_NONE } ww_out_format;
@@ -25,6 +26,7 @@ typedef struct ww_job_opts {
     int width, height;        /* render size (the scene's unless --size) */
     ww_backend_kind backend;
     int quiet;                /* no summary line on stderr */
+    ww_timing time_passes;    /* bench: per-pass timing (WW_TIMING_OFF: none) */
 } ww_job_opts;
 
 typedef struct ww_job_stats {
@@ -37,6 +39,8 @@ typedef struct ww_job_stats {
     char renderer[128];       /* GL_RENDERER */
     long peak_rss_kib;        /* process peak resident set after the job */
     size_t state_bytes;       /* size of the ww_state block */
+    ww_pass_times passes;     /* with time_passes: ms per pass summed over the frames after the
+                               * first (all frames when only one is rendered) */
 } ww_job_stats;
 
 ww_job_opts ww_default_job_opts(void);

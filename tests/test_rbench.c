@@ -1,0 +1,294 @@
+/* test_rbench.c - render timing and the quality bench: per-pass times (GL timer queries and the
+ * CPU fallback) name the planned passes in order, are positive and do not add up to more than
+ * the frame's wall time; the quality bench's reference renders the same frame twice (PSNR inf)
+ * and a lowered knob gives a finite PSNR; `bench render` and `bench quality` print valid JSON
+ * lines, the table and the figure. No timing is asserted beyond that consistency.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gfx/backend.h"
+#include "gfx/renderer.h"
+#include "io/image.h"
+#include "io/writers.h"
+#include "scene/plan.h"
+#include "sim/state.h"
+#include "test.h"
+#include "tools/bench.h"
+#include "tools/job.h"
+
+/* the passes of one frame may not add up to more than its wall time, beyond this slack (clock
+ * granularity and the query's own begin/end placement), ms per frame + fraction */
+#define PASS_SUM_SLACK_MS 0.5
+#define PASS_SUM_SLACK_FRAC 0.05
+#define TIMED_FRAMES 4
+
+/* render a few frames of the tiny scene with timing in `mode`; check the pass times */
+static void check_pass_times(ww_timing mode) {
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    ww_scene *sc = NULL;
+    ww_renderer *r = NULL;
+    ww_state *st = NULL;
+    ENSURE_MSG(ww_backend_open(WW_BACKEND_AUTO, &b, &err) == WW_OK, "%s", err.msg);
+    ENSURE_MSG(ww_scene_load("scenes/minimal.yaml", NULL, 0, &sc, &err) == WW_OK, "%s", err.msg);
+    if (!b || !sc) goto done;
+    ww_plan plan;
+    ww_plan_build(sc, 96, 54, &plan);
+    ENSURE_MSG(ww_renderer_new(ww_backend_gl(b), sc, &plan, &r, &err) == WW_OK, "%s", err.msg);
+    st = ww_state_new(sc);
+    if (!r || !st) goto done;
+
+    ww_timing got = ww_renderer_time_passes(r, mode);
+    ENSURE(got == WW_TIMING_GPU || got == WW_TIMING_CPU);
+    if (mode != WW_TIMING_AUTO) ENSURE(got == mode || (mode == WW_TIMING_GPU && got == WW_TIMING_CPU));
+    ww_pass_times t;
+    /* the first frame compiles shaders: timed apart */
+    ENSURE(ww_render_frame(r, sc, st, &err) == WW_OK);
+    ww_renderer_finish(r);
+    ww_renderer_pass_times(r, &t);
+    ENSURE_EQ_INT(t.frames, 1);
+
+    double wall = 0.0;
+    for (int i = 0; i < TIMED_FRAMES; i++) {
+        double a = ww_now_seconds();
+        ENSURE(ww_render_frame(r, sc, st, &err) == WW_OK);
+        ww_renderer_finish(r);
+        wall += 1e3 * (ww_now_seconds() - a);
+    }
+    ww_renderer_pass_times(r, &t);
+    ENSURE(t.mode == got);
+    ENSURE_EQ_INT(t.frames, TIMED_FRAMES);
+    ENSURE_EQ_INT(t.npasses, plan.npasses);
+    double sum = 0.0;
+    for (int i = 0; i < t.npasses && i < plan.npasses; i++) {
+        ENSURE_EQ_INT(t.id[i], plan.passes[i].id);
+        ENSURE_MSG(strcmp(t.name[i], plan.passes[i].name) == 0, "pass %d: '%s' != '%s'", i,
+                   t.name[i], plan.passes[i].name);
+        ENSURE_MSG(t.ms[i] > 0.0, "%s: pass %s took %g ms", ww_timing_name(got), t.name[i], t.ms[i]);
+        sum += t.ms[i];
+    }
+    double allowed = wall * (1.0 + PASS_SUM_SLACK_FRAC) + PASS_SUM_SLACK_MS * TIMED_FRAMES;
+    ENSURE_MSG(sum <= allowed, "%s: passes %.3f ms over %d frames of %.3f ms wall time",
+               ww_timing_name(got), sum, TIMED_FRAMES, wall);
+    if (got == WW_TIMING_CPU) ENSURE(t.frame_ms >= sum - 1e-9 && t.frame_ms <= allowed);
+
+    /* the sums restart at each read */
+    ww_renderer_pass_times(r, &t);
+    ENSURE_EQ_INT(t.frames, 0);
+    ENSURE(t.ms[0] == 0.0);
+
+done:
+    ww_state_free(st);
+    if (r) ww_renderer_free(r);
+    ww_scene_free(sc);
+    if (b) ww_backend_close(b);
+}
+
+TEST(rbench_pass_times_gpu_within_frame) {
+    if (!ww_test_have_gl()) return;
+    check_pass_times(WW_TIMING_AUTO);
+    check_pass_times(WW_TIMING_GPU);
+}
+
+TEST(rbench_pass_times_cpu_within_frame) {
+    if (!ww_test_have_gl()) return;
+    check_pass_times(WW_TIMING_CPU);
+}
+
+/* ---- bench quality ------------------------------------------------------------------------- */
+
+/* a knob every build has (the main pass's exposure), so the machinery is tested before the
+ * knobs' passes exist */
+static void set_exposure(ww_scene *sc, double v, int on) {
+    (void)on;
+    sc->exposure = v;
+}
+static double get_exposure(const ww_scene *sc) { return sc->exposure; }
+
+TEST(rbench_quality_reference_identical_lower_knob_finite) {
+    if (!ww_test_have_gl()) return;
+    static const ww_quality_knob knobs[] = {
+        {"render.tonemap.exposure", WW_PASS_MAIN, 3, {0.3, 0.6, 1.1}, set_exposure, get_exposure}};
+    ww_quality_opts o = {.scene = "scenes/demo.yaml", .width = 64, .height = 36, .repeats = 1};
+    ww_quality_result *res = malloc(sizeof *res);
+    ww_error err = {0};
+    ENSURE(res != NULL);
+    if (!res) return;
+    ENSURE_MSG(ww_bench_quality_measure(&o, knobs, 1, res, &err) == WW_OK, "%s", err.msg);
+    ENSURE_EQ_INT(res->nrows, 3);
+    ENSURE(res->reference_ms > 0.0);
+    const ww_quality_row *lo = &res->rows[0], *mid = &res->rows[1], *ref = &res->rows[2];
+    ENSURE(ref->is_reference && !lo->is_reference);
+    ENSURE(ref->is_default); /* demo.yaml sets exposure 1.1 */
+    ENSURE_MSG(isinf(ref->psnr) && ref->max_diff == 0, "reference row: PSNR %g, max diff %d",
+               ref->psnr, ref->max_diff);
+    ENSURE_MSG(isfinite(lo->psnr) && lo->max_diff > 0, "exposure 0.3: PSNR %g, max diff %d",
+               lo->psnr, lo->max_diff);
+    /* further from the reference, further off */
+    ENSURE_MSG(lo->psnr < mid->psnr, "PSNR %g at 0.3, %g at 0.6", lo->psnr, mid->psnr);
+    ENSURE(lo->effect == WW_QUALITY_MEASURED);
+    /* exactly one knee (the reference is within any PSNR), and the reference is on the front */
+    int knees = 0;
+    for (int i = 0; i < res->nrows; i++) knees += res->rows[i].knee;
+    ENSURE_EQ_INT(knees, 1);
+    ENSURE(ref->front);
+    free(res);
+}
+
+/* the six knobs of issue 5: each knob's default (the lake's value) is one of its values; the
+ * reflection knob alone (each knob's machinery is the same; six would take seconds per test):
+ * its reference row is the same frame, a build without the reflection pass says so, and with the
+ * pass its cheapest value changes the lake's frame (the water covers half of it) */
+TEST(rbench_quality_issue_knobs) {
+    int nknobs;
+    const ww_quality_knob *knobs = ww_quality_knobs(&nknobs);
+    ENSURE_EQ_INT(nknobs, 6);
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_MSG(ww_scene_load("scenes/lake.yaml", NULL, 0, &sc, &err) == WW_OK, "%s", err.msg);
+    for (int k = 0; sc && k < nknobs; k++) {
+        int found = 0;
+        for (int i = 0; i < knobs[k].nvalues; i++) found += knobs[k].value[i] == knobs[k].get(sc);
+        ENSURE_MSG(found == 1, "%s: the default %g is not one of its values", knobs[k].name,
+                   knobs[k].get(sc));
+    }
+    ww_scene_free(sc);
+    if (!ww_test_have_gl()) return;
+
+    const ww_quality_knob *k = &knobs[0];
+    ENSURE(strcmp(k->name, "render.reflection.scale") == 0);
+    ww_quality_opts o = {.scene = "scenes/lake.yaml", .width = 64, .height = 36, .repeats = 1};
+    ww_quality_result *res = malloc(sizeof *res);
+    ENSURE(res != NULL);
+    if (!res) return;
+    ENSURE_MSG(ww_bench_quality_measure(&o, k, 1, res, &err) == WW_OK, "%s", err.msg);
+    ENSURE_EQ_INT(res->nrows, k->nvalues);
+    for (int i = 0; i < res->nrows; i++) {
+        const ww_quality_row *r = &res->rows[i];
+        if (r->is_reference)
+            ENSURE_MSG(isinf(r->psnr), "%s=%g (reference): PSNR %g", k->name, r->value, r->psnr);
+        if (!ww_renderer_has_pass(k->pass)) ENSURE(r->effect == WW_QUALITY_NOT_BUILT);
+        if (r->value == k->value[0] && r->effect == WW_QUALITY_MEASURED) {
+            ENSURE_MSG(isfinite(r->psnr) && r->max_diff > 0,
+                       "%s=%g: the same frame as the reference", k->name, r->value);
+            ENSURE(r->pass_ms > 0.0);
+        }
+    }
+    free(res);
+}
+
+/* ---- the commands ---------------------------------------------------------------------------- */
+
+/* water and sky with every switchable pass off, so the bench tests stay quick and their pass list
+ * (main, tonemap) does not move with the defaults */
+static const char *bare_scene(const char *dir) {
+    static char path[600];
+    snprintf(path, sizeof path, "%s/bare.yaml", dir);
+    ENSURE(ww_test_write_text(path,
+                              "time: {dt: 1/120, fps: 30, duration: 1}\n"
+                              "render: {size: [256, 144], shadows: false, refraction: false, "
+                              "reflection: false, bloom: false, god_rays: false, fxaa: false, "
+                              "seabed: false}\n"
+                              "water:\n  waves:\n    model: gerstner\n    list:\n"
+                              "      - {direction: 20, wavelength: 12, amplitude: 0.25, steepness: 0.6}\n"
+                              "camera:\n  path:\n"
+                              "    - {t: 0, position: [0, 3, 12], look_at: [0, 0, -20]}\n") == 0);
+    return path;
+}
+
+/* every line of a file is one JSON object holding each of the keys; the count */
+static int json_lines_with(const char *path, const char *const *keys) {
+    char *s = ww_test_read_file(path, NULL);
+    if (!s) return -1;
+    int n = ww_test_json_lines(s);
+    char *save = NULL;
+    for (char *line = strtok_r(s, "\n", &save); line && n > 0; line = strtok_r(NULL, "\n", &save)) {
+        ENSURE_MSG(ww_test_json_valid(line), "not JSON: %s", line);
+        for (int k = 0; keys[k]; k++) ENSURE_MSG(strstr(line, keys[k]) != NULL, "no %s in %s", keys[k], line);
+    }
+    free(s);
+    return n;
+}
+
+TEST(rbench_bench_render_json) {
+    if (!ww_test_have_gl()) return;
+    char dir[512], out[600], errf[600];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_render_json"));
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    char args[1200];
+    snprintf(args, sizeof args, "bench render --frames 2 --json %s", bare_scene(dir));
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    static const char *const keys[] = {"\"passes\":[{\"name\":\"main\",\"ms\":",
+                                       "{\"name\":\"tonemap\",\"ms\":", "\"pass_timer\":",
+                                       "\"fps\":", "\"floor_x\":", NULL};
+    /* 2 backends x 2 sizes (a backend that cannot open prints an error line instead) */
+    int n = json_lines_with(out, keys);
+    ENSURE_MSG(n == 4, "%d JSON lines", n);
+    ENSURE(ww_test_file_contains(out, "\"target_x\":3.0")); /* water and sky at 1280x720 */
+}
+
+TEST(rbench_bench_render_table) {
+    if (!ww_test_have_gl()) return;
+    char dir[512], out[600], errf[600];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_render_table"));
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    char args[1200];
+    snprintf(args, sizeof args, "bench render --frames 2 %s", bare_scene(dir));
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    ENSURE(ww_test_file_contains(out, "passes: main "));
+    ENSURE(ww_test_file_contains(out, " tonemap "));
+    ENSURE(ww_test_file_contains(out, "targets (issue 5"));
+    ENSURE(ww_test_file_contains(out, "water and sky"));
+
+    /* options that belong to another bench */
+    ENSURE_EQ_INT(ww_test_ww("bench render --size 64x36", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench quality --frames 3", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench quality --size 64", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench quality --repeats 0", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench quality --knob render.nothing", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench render --knob render.grid", NULL, NULL), 2);
+}
+
+TEST(rbench_bench_quality_json) {
+    if (!ww_test_have_gl()) return;
+    char dir[512], out[600], errf[600], args[1200];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_quality_json"));
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    snprintf(args, sizeof args, "bench quality --tiny --size 48x27 --repeats 1 --json "
+             "--knob render.reflection.scale -o %s/fig scenes/lake.yaml", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    static const char *const keys[] = {"\"knob\":\"render.reflection.scale\"", "\"psnr\":",
+                                       "\"pass_ms\":", "\"max_diff\":", "\"effect\":", NULL};
+    int n = json_lines_with(out, keys);
+    ENSURE_MSG(n == 4, "%d JSON lines", n);
+    /* the reference value's row: the same frame, which JSON writes as null */
+    ENSURE(ww_test_file_contains(out, "\"value\":1,"));
+    ENSURE(ww_test_file_contains(out, "\"psnr\":null,\"identical\":true"));
+}
+
+TEST(rbench_bench_quality_table_and_figure) {
+    if (!ww_test_have_gl()) return;
+    char dir[512], out[600], errf[600], fig[600], args[1200];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_quality_table"));
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    snprintf(fig, sizeof fig, "%s/fig/quality.png", dir);
+    snprintf(args, sizeof args, "bench quality --tiny --size 48x27 --repeats 1 --knob render.msaa "
+             "-o %s/fig scenes/lake.yaml", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    ENSURE(ww_test_file_contains(out, "reference: every knob at its best"));
+    ENSURE(ww_test_file_contains(out, "render.msaa"));
+    ENSURE(!ww_test_file_contains(out, "render.grid "));
+    ENSURE(ww_test_file_contains(out, " default"));
+    ENSURE(ww_test_file_contains(out, "figure:"));
+    ww_image im = {0};
+    ww_error err = {0};
+    ENSURE_MSG(ww_read_png(fig, &im, &err) == WW_OK, "%s", err.msg);
+    ENSURE(im.width > 0 && im.height > 0);
+    ww_image_free(&im);
+}
