@@ -13,7 +13,7 @@ static const char usage[] =
     "                                [-o DIR] [SCENE.yaml]\n"
     "       waterworld bench waves [--json] [-o DIR]\n"
     "\n"
-    "  render (default)  per backend (egl, osmesa), scene (minimal, demo) and size (256x144,\n"
+    "  render (default)  per backend (egl, osmesa), scene (demo, lake) and size (256x144,\n"
     "                    1280x720): ms per frame split into simulate / render / read back /\n"
     "                    encode (PNG), ms per pass (GL timer queries, else CPU time with glFinish\n"
     "                    between passes), fps, the fill floor (one trivial full-screen pass),\n"

@@ -49,14 +49,19 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->ClearDepth(1.0);
     gl->DepthMask(GL_TRUE);
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    /* opaque geometry first: the sky then shades only what it leaves uncovered (early depth) */
-    if (r->geometry) ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
     if (f->sc->render.water.alpha_blend && !f->underwater) {
         /* seed 004: the water blends over whatever lies behind it, the sky included */
+        if (r->geometry)
+            ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         ww_water_draw(p->water, r, f);
     } else {
+        /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
+         * which the water shows through the prepass) then fails the depth test before it is
+         * shaded; the sky last shades only what is left uncovered */
         ww_water_draw(p->water, r, f);
+        if (r->geometry)
+            ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
     }
     if (p->rt->fbo_ms) {

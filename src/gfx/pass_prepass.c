@@ -23,7 +23,6 @@ static void prepass_destroy(void *self, const ww_gl *gl) {
 
 static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
                                 const ww_rt *rt, void **self, ww_error *err) {
-    (void)r;
     GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F), depth = ww_gfx_rt_texture(rt, WW_FMT_DEPTH24);
     if (!color || !depth)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
@@ -33,6 +32,12 @@ static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     p->rt = rt;
     p->color = color;
     p->depth = depth;
+    /* the water samples the colour at its own pixel's place: bilinear, since the prepass may be
+     * smaller than the frame (render.refraction.scale) */
+    r->gl->BindTexture(GL_TEXTURE_2D, color);
+    r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    r->gl->BindTexture(GL_TEXTURE_2D, 0);
     /* every component at its crest at once, and the largest ripple on top */
     for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
         p->crest += 2.0 * fabs(sc->waves[i].amplitude);

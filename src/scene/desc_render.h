@@ -94,6 +94,7 @@ typedef struct ww_hud_desc {
 typedef struct ww_render_desc {
     ww_shadow_desc shadows;
     int refraction;              /* scene prepass: colour + depth of what lies under the water */
+    double refraction_scale;     /* its target size as a fraction of the frame's */
     ww_reflection_desc reflection;
     ww_bloom_desc bloom;
     ww_shafts_desc shafts;

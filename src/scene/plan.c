@@ -208,9 +208,10 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
         add_target(p, "depth", WW_FMT_DEPTH24, rd->shadows.size, rd->shadows.size);
     }
     if (rd->refraction && p->geometry) {
+        int pw = scaled(width, rd->refraction_scale), ph = scaled(height, rd->refraction_scale);
         add_pass(p, WW_PASS_PREPASS, "prepass", "solid geometry under the water: colour + depth");
-        add_target(p, "color", WW_FMT_RGBA16F, width, height);
-        add_target(p, "depth", WW_FMT_DEPTH24, width, height);
+        add_target(p, "color", WW_FMT_RGBA16F, pw, ph);
+        add_target(p, "depth", WW_FMT_DEPTH24, pw, ph);
     }
     if (rd->reflection.on) {
         int rw = scaled(width, rd->reflection.scale), rh = scaled(height, rd->reflection.scale);
