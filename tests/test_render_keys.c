@@ -138,16 +138,20 @@ TEST(render_keys_plan_needs_what_it_draws) {
 /* knobs size the targets: reflection and bloom at their fractions, the shadow map square */
 TEST(render_keys_plan_target_sizes) {
     const char *sets[] = {"render.reflection={scale: 0.25}", "render.bloom={scale: 0.5}",
-                          "render.shadows={size: 512}", "objects.cubes=[{position: [0, 0, 0]}]"};
-    ww_scene *sc = load(BASE, sets, 4);
+                          "render.shadows={size: 512}", "objects.cubes=[{position: [0, 0, 0]}]",
+                          "render.refraction={scale: 0.25}"};
+    ww_scene *sc = load(BASE, sets, 5);
     if (!sc) return;
     ww_plan p;
     ww_plan_build(sc, 320, 180, &p);
     const ww_pass_desc *r = ww_plan_pass(&p, WW_PASS_REFLECTION);
     const ww_pass_desc *b = ww_plan_pass(&p, WW_PASS_BLOOM);
     const ww_pass_desc *s = ww_plan_pass(&p, WW_PASS_SHADOW);
-    ENSURE(r && b && s);
-    if (r && b && s) {
+    const ww_pass_desc *q = ww_plan_pass(&p, WW_PASS_PREPASS);
+    ENSURE(r && b && s && q);
+    if (r && b && s && q) {
+        ENSURE_EQ_INT(q->targets[0].width, 80);
+        ENSURE_EQ_INT(q->targets[1].height, 45);
         ENSURE_EQ_INT(r->targets[0].width, 80);
         ENSURE_EQ_INT(r->targets[0].height, 45);
         ENSURE_EQ_INT(b->targets[0].width, 160);
