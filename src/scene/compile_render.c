@@ -243,8 +243,6 @@ static ww_result compile_cubemap(ctx *c, const section *s) {
         return wwc_fail(c, WW_E_RANGE, list,
                         "sky.cubemap: expected six image files (+x, -x, +y, -y, +z, -z), got %d",
                         list->n);
-    d->cubemap_line = list->mark.line;
-    d->cubemap_column = list->mark.column;
     int i = 0;
     for (const ww_node *item = list->first; item; item = item->next, i++) {
         if (item->kind != WW_NODE_SCALAR || ww_node_is_null(item))

@@ -70,7 +70,8 @@ typedef struct ww_model_desc {
     ww_mesh_kind mesh;
     int asset;       /* WW_MESH_OBJ: index into the scene's assets' meshes */
     double position[3];    /* relative to the parent, m */
-    double rotation[3];    /* yaw (about y), pitch (about x), roll (about z), rad, applied roll
+    double rotation[3];    /* yaw (about y; positive turns +x toward +z, like the boat's
+                            * heading), pitch (about x), roll (about z), rad, applied roll
                             * first, then pitch, then yaw */
     double scale[3];
     double color[3];       /* linear RGB albedo (multiplies an OBJ's materials) */

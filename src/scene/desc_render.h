@@ -107,7 +107,6 @@ typedef struct ww_render_desc {
     ww_sky_model sky;
     char cubemap[6][WW_PATH_MAX];/* +x, -x, +y, -y, +z, -z image files, resolved from the scene */
     int cubemap_image[6];        /* index in the scene's assets (scene/assets.h), -1 none */
-    int cubemap_line, cubemap_column;
     double sky_intensity;        /* cubemap and dome radiance scale */
 
     /* fog under water (exp2); above-water fog is ww_scene.fog_* */
