@@ -1,9 +1,13 @@
-/* cmd_render.c - `waterworld render`: scene -> frames on disk (or nowhere, for timing). */
+/* cmd_render.c - `waterworld render`: scene -> frames on disk, a video stream on stdout, a sound
+ * track, and (with --golden) the frames checked against golden images.
+ */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"
 #include "gfx/backend.h"
+#include "tools/golden.h"
 #include "tools/job.h"
 
 static const char usage[] =
@@ -11,23 +15,68 @@ static const char usage[] =
     "\n"
     "Steps the simulation and renders every frame of the scene (or a slice) into DIR.\n"
     "\n"
-    "  -o, --output DIR     folder for frame_00000.png ... (default out/SCENE_NAME)\n"
-    "  --format FMT         png (sRGB8, default) | exr (linear half-float RGBA) | none\n"
+    "  -o, --output DIR     folder for frame_00000.png ... (default out/SCENE_NAME); for y4m and\n"
+    "                       raw the stream's file (default out/SCENE_NAME.y4m|.rgb), - for stdout\n"
+    "  --format FMT         png (sRGB8, default) | exr (linear RGBA) | y4m (YUV4MPEG2 for ffmpeg)\n"
+    "                       | raw (packed RGB8 frames) | none (render and read back only)\n"
+    "  --alpha              png: RGBA8, alpha from the frame's coverage\n"
+    "  --exr-float          exr: 32-bit float channels (default half)\n"
+    "  --exr-compression C  exr: none | zip (default) | piz\n"
+    "  --y4m-420            y4m: 4:2:0 chroma (C420jpeg) instead of 4:4:4\n"
     "  --frames N|A:B       the first N frames, or frames A..B-1 (the prefix is simulated,\n"
     "                       not rendered, so a slice is byte-identical to a full run)\n"
     "  --size WxH           render size (default: the scene's render.size)\n"
     "  --backend B          auto (EGL, then OSMesa) | egl | osmesa\n"
     "  --set KEY=VALUE      override a scene value, e.g. --set water.waves.list[0].amplitude=0.4\n"
     "  --script FILE        a YAML file with a script: list, merged with the scene's events\n"
-    "  --quiet              no summary on stderr\n"
+    "  --threads N          encoder threads beside the render thread (default: cores - 1, >= 1)\n"
+    "  --resume             keep frames already complete in DIR, render only the others\n"
+    "  --stats FILE.jsonl   one line per frame: simulate, render, read back, encode ms\n"
+    "  --audio FILE.wav     the sound track of the frames rendered (44.1 kHz stereo 16-bit)\n"
+    "  --golden DIR         compare every frame with DIR/frame_XXXXX.png (or DIR/RENDERER/...);\n"
+    "                       report.html and the failing frames' diffs go into the output folder;\n"
+    "                       thresholds from the scene's golden: section, or these options:\n"
+    "                       --threshold T --max M --fail-percent P --fail-pixels N --psnr-min DB\n"
+    "                       --yiq Y --yiq-pixels N --ssim-min S --rel-max R --no-aa\n"
+    "  --progress           progress on stderr even when it is not a terminal\n"
+    "  --quiet              no progress and no summary on stderr\n"
     "\n"
-    "Exit: 0 done, 2 bad input (nothing written), 3 runtime failure (GL, I/O, NaN).\n"
+    "Exit: 0 done (and every frame matched), 1 a frame differs from its golden, 2 bad input\n"
+    "(nothing written), 3 runtime failure (GL, I/O, NaN), 130 interrupted (Ctrl-C, SIGTERM: the\n"
+    "frames in flight are finished, nothing partial is left).\n"
     "Environment: WW_EGL_PLATFORM=device|surfaceless, WW_EGL_DEVICE=N, WW_SHADER_DIR=DIR.\n";
+
+#define MAX_CMP_ARGS 32
+
+static ww_result parse_threads(const char *v, int *out, ww_error *err) {
+    char *end = NULL;
+    long n = strtol(v, &end, 10);
+    if (end == v || *end != 0 || n < 1 || n > 64)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--threads wants 1..64, got '%s'", v);
+    *out = (int)n;
+    return WW_OK;
+}
+
+/* the comparison thresholds: the scene's, then the command line's words over them */
+static ww_result golden_opts(const ww_scene *sc, char **words, int nwords, ww_cmp_opts *o,
+                             ww_error *err) {
+    *o = ww_golden_scene_opts(sc);
+    ww_result r = WW_OK;
+    for (int i = 0; i < nwords && !r; i++) {
+        if (!ww_cmp_opt_arg(nwords, words, &i, o, &r, err))
+            r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "render: unknown option '%s'", words[i]);
+    }
+    return r;
+}
 
 ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     ww_cli_scene_opts so = {0};
     ww_job_opts jo = ww_default_job_opts();
-    const char *out = NULL, *format = NULL, *backend = NULL;
+    const char *out = NULL, *format = NULL, *backend = NULL, *threads = NULL, *compression = NULL;
+    const char *golden = NULL;
+    int progress = 0;
+    char *cmp_words[MAX_CMP_ARGS];
+    int ncmp = 0;
     ww_result r = WW_OK;
 
     for (int i = 0; i < argc && !r; i++) {
@@ -39,8 +88,29 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
         if (ww_cli_opt(argc, argv, &i, "--output", &out, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--format", &format, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--backend", &backend, &r, err)) continue;
-        if (strcmp(argv[i], "--quiet") == 0) {
-            jo.quiet = 1;
+        if (ww_cli_opt(argc, argv, &i, "--threads", &threads, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--exr-compression", &compression, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--stats", &jo.stats_path, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--audio", &jo.audio_path, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--golden", &golden, &r, err)) continue;
+        const struct { const char *name; int *flag; int value; } flags[] = {
+            {"--quiet", &jo.quiet, 1},        {"--alpha", &jo.alpha, 1},
+            {"--exr-float", &jo.exr_float, 1}, {"--y4m-420", &jo.y4m_420, 1},
+            {"--resume", &jo.resume, 1},      {"--progress", &progress, 1},
+        };
+        int flag = 0;
+        for (size_t k = 0; k < sizeof flags / sizeof flags[0] && !flag; k++) {
+            if (strcmp(argv[i], flags[k].name) == 0) {
+                *flags[k].flag = flags[k].value;
+                flag = 1;
+            }
+        }
+        if (flag) continue;
+        /* a comparison threshold: kept as words, applied over the scene's once it is loaded */
+        int start = i;
+        ww_cmp_opts probe = ww_cmp_default_opts();
+        if (ww_cmp_opt_arg(argc, argv, &i, &probe, &r, err)) {
+            for (int k = start; k <= i && ncmp < MAX_CMP_ARGS; k++) cmp_words[ncmp++] = argv[k];
             continue;
         }
         if (ww_cli_scene_arg(argc, argv, &i, &so, &r, err)) continue;
@@ -48,36 +118,69 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     }
     if (r) return r;
     if (format && (int)(jo.format = (ww_out_format)ww_out_format_parse(format)) < 0)
-        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--format wants png, exr or none, got '%s'", format);
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--format wants png, exr, y4m, raw or none, got '%s'", format);
     if (backend && (int)(jo.backend = (ww_backend_kind)ww_backend_kind_parse(backend)) < 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--backend wants auto, egl or osmesa, got '%s'", backend);
+    if (threads && (r = parse_threads(threads, &jo.threads, err))) return r;
+    if (compression) {
+        static const char *const names[] = {"zip", "none", "piz"};
+        int k = 0;
+        while (k < 3 && strcmp(compression, names[k]) != 0) k++;
+        if (k == 3)
+            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                                "--exr-compression wants none, zip or piz, got '%s'", compression);
+        jo.exr_compression = (ww_exr_compression)k;
+    }
+    int stream = jo.format == WW_OUT_Y4M || jo.format == WW_OUT_RAW;
+    if (out && strcmp(out, "-") == 0 && !stream)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "-o - (stdout) needs --format y4m or raw");
+    if (golden && jo.format != WW_OUT_PNG)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--golden compares PNG frames: drop --format");
+    jo.progress = jo.quiet ? WW_PROGRESS_OFF : progress ? WW_PROGRESS_ON : WW_PROGRESS_AUTO;
 
     ww_scene *sc = NULL;
     if ((r = ww_cli_load(&so, "render", &sc, err))) return r;
+    ww_golden_opts go = {.golden_dir = golden};
+    if (golden && (r = golden_opts(sc, cmp_words, ncmp, &go.cmp, err))) goto done;
     if ((r = ww_cli_frames(so.frames, sc, &jo.first, &jo.last, err))) goto done;
     char dir[600];
     if (out) {
         snprintf(dir, sizeof dir, "%s", out);
     } else {
-        snprintf(dir, sizeof dir, "out/%s", sc->name);
+        snprintf(dir, sizeof dir, "out/%s%s", sc->name,
+                 jo.format == WW_OUT_Y4M ? ".y4m" : jo.format == WW_OUT_RAW ? ".rgb" : "");
     }
     jo.out_dir = dir;
     jo.width = sc->width;
     jo.height = sc->height;
 
     ww_job_stats st;
-    double t0 = ww_now_seconds();
     r = ww_job_run(sc, &jo, &st, err);
-    double wall = ww_now_seconds() - t0;
-    if (!r && !jo.quiet) {
-        fprintf(stderr, "rendered %lld frames (%lld..%lld) at %dx%d on %s (%s) in %.2f s",
-                (long long)st.frames, (long long)jo.first, (long long)jo.last - 1, jo.width,
-                jo.height, st.backend, st.renderer, wall);
-        if (jo.format != WW_OUT_NONE)
+    if (!jo.quiet && (!r || r == WW_E_INTERRUPTED)) {
+        fprintf(stderr, "%s %lld frames (%lld..%lld) at %dx%d on %s (%s) in %.2f s",
+                r ? "interrupted after" : "rendered", (long long)st.frames, (long long)jo.first,
+                (long long)jo.last - 1, jo.width, jo.height, st.backend, st.renderer, st.wall_s);
+        if (st.skipped) fprintf(stderr, ", %lld already done", (long long)st.skipped);
+        if (jo.format == WW_OUT_PNG || jo.format == WW_OUT_EXR)
             fprintf(stderr, " -> %s/frame_%05lld.%s ...", dir, (long long)jo.first,
                     ww_out_format_ext(jo.format));
+        else if (stream && strcmp(dir, "-") != 0)
+            fprintf(stderr, " -> %s", dir);
         fprintf(stderr, "\n");
     }
+    if (r || !golden) goto done;
+
+    go.out_dir = dir;
+    go.first = jo.first;
+    go.last = jo.last;
+    go.renderer = st.renderer;
+    ww_golden_summary gs;
+    r = ww_golden_check(sc, &go, &gs, err);
+    if ((!r || r == WW_E_MISMATCH) && !jo.quiet)
+        fprintf(stderr, "golden %s: %lld frames, %lld passed, %lld failed, %lld missing; report %s\n",
+                gs.golden_dir, (long long)gs.frames, (long long)gs.passed, (long long)gs.failed,
+                (long long)gs.missing, gs.report);
 done:
     ww_scene_free(sc);
     return r;

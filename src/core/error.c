@@ -48,6 +48,8 @@ static const char *const names[WW_E_COUNT] = {
     [WW_E_GL] = "gl",
     [WW_E_NAN] = "nan",
     [WW_E_NOMEM] = "nomem",
+    [WW_E_MISMATCH] = "mismatch",
+    [WW_E_INTERRUPTED] = "interrupted",
 };
 
 const char *ww_result_name(ww_result code) {
@@ -57,5 +59,7 @@ const char *ww_result_name(ww_result code) {
 int ww_result_exit_code(ww_result code) {
     if (code == WW_OK) return 0;
     if (code < WW_E_IO) return 2;
+    if (code == WW_E_MISMATCH) return 1;
+    if (code == WW_E_INTERRUPTED) return 130; /* 128 + SIGINT, as shells report it */
     return 3;
 }

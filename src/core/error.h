@@ -33,6 +33,9 @@ typedef enum ww_result {
     WW_E_GL,             /* shader compile/link failure, incomplete framebuffer */
     WW_E_NAN,            /* NaN or Inf in the simulation state */
     WW_E_NOMEM,
+    /* not failures of the tool: a check said no (exit 1), the user stopped the run (exit 130) */
+    WW_E_MISMATCH,       /* compare / render --golden: the images differ beyond the thresholds */
+    WW_E_INTERRUPTED,    /* SIGINT or SIGTERM: the frames in flight were finished, nothing partial */
     WW_E_COUNT
 } ww_result;
 
@@ -53,7 +56,7 @@ void ww_error_print(const ww_error *err, FILE *to);
 /* short stable name of a code, e.g. "unknown-key" (tests and --json use it) */
 const char *ww_result_name(ww_result code);
 
-/* exit code for a result: 0 ok, 2 bad input, 3 runtime failure */
+/* exit code for a result: 0 ok, 1 mismatch, 2 bad input, 3 runtime failure, 130 interrupted */
 int ww_result_exit_code(ww_result code);
 
 #define WW_ASSERT(c)                                                                         \

@@ -1133,7 +1133,8 @@ static void scene_names(ww_scene *sc, const char *path) {
 /* root: the scene file's tree; script_root: the --script file's, or NULL */
 static ww_result compile_scene(ctx *c, const ww_node *root, const ww_node *script_root) {
     static const char *const keys[] = {"seed", "time", "render", "sky", "fog", "water",
-                                       "lights", "objects", "camera", "script", NULL};
+                                       "lights", "objects", "camera", "script", "audio",
+                                       "golden", NULL};
     section top = {.map = root};
     TRY(wwc_check_keys(c, &top, keys));
     double seed = (double)c->sc->seed;
@@ -1149,6 +1150,8 @@ static ww_result compile_scene(ctx *c, const ww_node *root, const ww_node *scrip
     TRY(compile_camera(c, &top));
     section script = {.map = script_root};
     TRY(compile_script(c, &top, script_root ? &script : NULL));
+    TRY(wwc_audio(c, &top));
+    TRY(wwc_golden(c, &top));
     TRY(wwc_check_lights(c, root));
     return wwc_check_world(c);
 }

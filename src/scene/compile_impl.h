@@ -104,6 +104,11 @@ ww_result wwc_lights(ctx *c, const section *top);        /* lights */
 /* each light's parent names the boat or a model (once objects are read) */
 ww_result wwc_check_lights(ctx *c, const ww_node *root);
 
+/* ---- what comes out besides the frames ------------------------------------------------- */
+
+ww_result wwc_audio(ctx *c, const section *top);         /* audio.*: compile_audio.c */
+ww_result wwc_golden(ctx *c, const section *top);        /* golden.*: compile_golden.c */
+
 /* ---- the scripted world's sections (compile_<system>.c) ---------------------------------- */
 
 /* objects.<key> of each system; `objects` may have map NULL (no objects section) */

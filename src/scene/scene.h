@@ -21,6 +21,8 @@
 #include "scene/desc_cubes.h"
 #include "scene/desc_fishing.h"
 #include "scene/desc_reef.h"
+#include "scene/desc_audio.h"
+#include "scene/desc_golden.h"
 #include "scene/desc_render.h"
 #include "scene/desc_stones.h"
 
@@ -225,6 +227,10 @@ typedef struct ww_scene {
     ww_bubbles_desc bubbles;
     ww_models_desc models;
     int camera_collide;        /* camera.collide: the camera stops at solid objects */
+
+    /* what comes out besides the frames (issue 6) */
+    ww_audio_desc audio;       /* audio: the sound track of render --audio */
+    ww_golden_desc golden;     /* golden: thresholds and accepted renderers of render --golden */
 
     /* script timeline, sorted by t (stable for equal times) */
     int nevents;

@@ -14,6 +14,7 @@
 #include "scene/plan.h"
 #include "sim/state.h"
 #include "sim/step.h"
+#include "tools/audio.h"
 
 double ww_now_seconds(void) {
     struct timespec ts;
@@ -30,11 +31,20 @@ int ww_out_format_parse(const char *s) {
     if (strcmp(s, "png") == 0) return WW_OUT_PNG;
     if (strcmp(s, "exr") == 0) return WW_OUT_EXR;
     if (strcmp(s, "none") == 0) return WW_OUT_NONE;
+    if (strcmp(s, "y4m") == 0) return WW_OUT_Y4M;
+    if (strcmp(s, "raw") == 0) return WW_OUT_RAW;
     return -1;
 }
 
 const char *ww_out_format_ext(ww_out_format f) {
-    return f == WW_OUT_EXR ? "exr" : f == WW_OUT_PNG ? "png" : "";
+    switch (f) {
+    case WW_OUT_PNG: return "png";
+    case WW_OUT_EXR: return "exr";
+    case WW_OUT_Y4M: return "y4m";
+    case WW_OUT_RAW: return "rgb";
+    case WW_OUT_NONE: break;
+    }
+    return "";
 }
 
 typedef struct job {
@@ -42,14 +52,27 @@ typedef struct job {
     ww_renderer *renderer;
     ww_state *st;
     ww_image ldr, hdr;
+    ww_audio *audio;      /* --audio: fed after every step of the slice */
 } job;
 
 static void job_close(job *j) {
+    ww_audio_free(j->audio);
     ww_image_free(&j->ldr);
     ww_image_free(&j->hdr);
     ww_state_free(j->st);
     if (j->renderer) ww_renderer_free(j->renderer);
     if (j->backend) ww_backend_close(j->backend);
+}
+
+/* step to `step`; with a sound track, one step at a time so that it hears every step's events */
+static ww_result advance(const ww_scene *sc, job *j, int64_t step, ww_error *err) {
+    if (!j->audio) return ww_sim_advance_to(sc, j->st, step, err);
+    while (j->st->step < step) {
+        ww_result r = ww_step(sc, j->st, err);
+        if (r) return r;
+        ww_audio_step(j->audio, sc, j->st);
+    }
+    return WW_OK;
 }
 
 /* read back and write frame f in the job's format */
@@ -79,9 +102,13 @@ static ww_result emit_frame(const ww_scene *sc, const ww_job_opts *o, job *j, in
 
 ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, ww_error *err) {
     memset(s, 0, sizeof *s);
+    double job_t0 = ww_now_seconds();
     job j = {0};
     ww_result r = WW_OK;
     WW_ASSERT(o->first >= 0 && o->last > o->first);
+    if (o->format == WW_OUT_Y4M || o->format == WW_OUT_RAW)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--format %s is not built yet",
+                            ww_out_format_ext(o->format));
 
     /* the GL side: backend, then passes from the plan */
     double t0 = ww_now_seconds();
@@ -108,10 +135,13 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     t0 = ww_now_seconds();
     if ((r = ww_sim_advance_to(sc, j.st, o->first * sc->steps_per_frame, err))) goto done;
     s->prefix_s = ww_now_seconds() - t0;
+    if (o->audio_path && (r = ww_audio_new(sc, o->first * sc->steps_per_frame,
+                                           o->last * sc->steps_per_frame, &j.audio, err)))
+        goto done;
 
     for (int64_t f = o->first; f < o->last; f++) {
         double a = ww_now_seconds();
-        if ((r = ww_sim_advance_to(sc, j.st, f * sc->steps_per_frame, err))) goto done;
+        if ((r = advance(sc, &j, f * sc->steps_per_frame, err))) goto done;
         double b = ww_now_seconds();
         if ((r = ww_render_frame(j.renderer, sc, j.st, err))) goto done;
         ww_renderer_finish(j.renderer);
@@ -127,10 +157,16 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     }
 
     if (o->time_passes != WW_TIMING_OFF) ww_renderer_pass_times(j.renderer, &s->passes);
+    /* the track runs to the end of the slice's last frame */
+    if (j.audio) {
+        if ((r = advance(sc, &j, o->last * sc->steps_per_frame, err))) goto done;
+        if ((r = ww_audio_write(j.audio, o->audio_path, err))) goto done;
+    }
 
 done:
     job_close(&j);
     struct rusage ru;
     if (getrusage(RUSAGE_SELF, &ru) == 0) s->peak_rss_kib = ru.ru_maxrss;
+    s->wall_s = ww_now_seconds() - job_t0;
     return r;
 }

@@ -1,0 +1,29 @@
+/* audio.h - the sound track of a render, synthesised offline from the simulation's events (seed
+ * 000's sounds): splashes, thuds, reel, catch, chest sparkle, boat engine, underwater ambience and
+ * an optional music bed, panned and attenuated from the camera. Same scene, same bytes.
+ *
+ *   ww_audio *a = NULL;
+ *   ww_audio_new(sc, first_step, last_step, &a, &err);  // the track covers steps [first, last)
+ *   for each step s in [first, last): ww_step(sc, st, ...); ww_audio_step(a, sc, st);
+ *   ww_audio_write(a, "out/demo.wav", &err);            // 44.1 kHz stereo 16-bit WAV, atomic
+ *   ww_audio_free(a);
+ */
+#ifndef WW_AUDIO_H
+#define WW_AUDIO_H
+
+#include <stdint.h>
+
+#include "core/error.h"
+#include "scene/scene.h"
+#include "sim/state.h"
+
+typedef struct ww_audio ww_audio;
+
+ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step, ww_audio **out,
+                       ww_error *err);
+/* after each step: the step's events, the camera, the boat's speed, above or below water */
+void ww_audio_step(ww_audio *a, const ww_scene *sc, const ww_state *st);
+ww_result ww_audio_write(ww_audio *a, const char *path, ww_error *err);
+void ww_audio_free(ww_audio *a);
+
+#endif
