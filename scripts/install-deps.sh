@@ -6,9 +6,11 @@ set -eu
 
 # build: compiler, libyaml, cglm, stb, OpenEXR (C API), EGL/GL headers
 # run:   EGL (glvnd + Mesa), OSMesa, llvmpipe (libgl1-mesa-dri)
-# tests: nothing beyond these (the tests are C; images are compared in-process)
+# tests: the outside tools our outputs are checked with: ImageMagick (compare), OpenImageIO
+#        (oiiotool, idiff), ffmpeg (ffprobe, make-video.sh), Chromium (the HTML report's picture)
 PKGS="gcc make libc6-dev pkg-config libyaml-dev libcglm-dev libstb-dev libopenexr-dev
-libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libosmesa6-dev"
+libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libosmesa6-dev
+imagemagick openimageio-tools ffmpeg chromium"
 # `make fuzz` only: clang with libFuzzer
 [ "${1:-}" = "--fuzz" ] && PKGS="clang libclang-rt-14-dev"
 

@@ -175,6 +175,7 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     go.first = jo.first;
     go.last = jo.last;
     go.renderer = st.renderer;
+    go.gl_version = st.gl_version;
     ww_golden_summary gs;
     r = ww_golden_check(sc, &go, &gs, err);
     if ((!r || r == WW_E_MISMATCH) && !jo.quiet)

@@ -18,7 +18,8 @@ typedef struct ww_golden_opts {
     const char *golden_dir;  /* DIR of --golden */
     const char *out_dir;     /* where the frames were written (PNG); the report goes here */
     int64_t first, last;     /* the frames rendered */
-    const char *renderer;    /* GL_RENDERER of the run: picks per-renderer goldens */
+    const char *renderer;    /* GL_RENDERER of the run: with gl_version, picks per-renderer goldens */
+    const char *gl_version;  /* GL_VERSION of the run */
     ww_cmp_opts cmp;         /* the scene's thresholds with the command line's over them */
 } ww_golden_opts;
 

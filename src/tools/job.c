@@ -117,6 +117,7 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     if ((r = ww_backend_open(o->backend, &j.backend, err))) goto done;
     snprintf(s->backend, sizeof s->backend, "%s", ww_backend_describe(j.backend));
     snprintf(s->renderer, sizeof s->renderer, "%s", ww_backend_renderer(j.backend));
+    snprintf(s->gl_version, sizeof s->gl_version, "%s", ww_backend_version(j.backend));
     if ((r = ww_renderer_new(ww_backend_gl(j.backend), sc, &plan, &j.renderer, err))) goto done;
     if (ww_image_alloc(&j.ldr, o->width, o->height, 3, WW_PIX_U8) ||
         ww_image_alloc(&j.hdr, o->width, o->height, 4, WW_PIX_F32) || !(j.st = ww_state_new(sc))) {

@@ -57,6 +57,7 @@ typedef struct ww_job_stats {
     double setup_s;           /* backend + renderer creation, s */
     char backend[64];         /* e.g. "egl/surfaceless" */
     char renderer[128];       /* GL_RENDERER */
+    char gl_version[128];     /* GL_VERSION (names the Mesa release on Mesa) */
     long peak_rss_kib;        /* process peak resident set after the job */
     size_t state_bytes;       /* size of the ww_state block */
     ww_pass_times passes;     /* with time_passes: ms per pass summed over the frames after the
