@@ -5,6 +5,7 @@
 #include "tools/compare_impl.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -266,6 +267,20 @@ static ww_result ssim_mean(const ww_cmp_image *a, const ww_cmp_image *b, double 
     return WW_OK;
 }
 
+/* SSIM on a second thread while the difference pass runs on the caller's (both only read) */
+typedef struct ssim_job {
+    const ww_cmp_image *a, *b;
+    double ssim;
+    ww_error err;
+    ww_result r;
+} ssim_job;
+
+static void *ssim_thread(void *arg) {
+    ssim_job *j = arg;
+    j->r = ssim_mean(j->a, j->b, &j->ssim, &j->err);
+    return NULL;
+}
+
 /* ---- rules ----------------------------------------------------------------------------------- */
 
 static int rules_on(const ww_cmp_opts *o) {
@@ -344,9 +359,19 @@ ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_c
     }
 
     sums s = {0};
+    ssim_job sj = {.a = a, .b = b};
+    pthread_t t;
+    int threaded = pthread_create(&t, NULL, ssim_thread, &sj) == 0;
     diff_pass(a, b, o, &s);
-    r = ssim_mean(a, b, &res->ssim, err);
-    if (r != WW_OK) return r;
+    if (threaded)
+        pthread_join(t, NULL);
+    else
+        ssim_thread(&sj);
+    if (sj.r != WW_OK) {
+        if (err) *err = sj.err;
+        return sj.r;
+    }
+    res->ssim = sj.ssim;
     double scale = a->hdr ? 1.0 : LEVELS;
     res->max_abs = s.max_abs * scale;
     res->mean_abs = s.n ? s.abs / (double)s.n * scale : 0;
