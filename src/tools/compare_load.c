@@ -38,19 +38,23 @@ void ww_cmp_image_free(ww_cmp_image *im) {
     memset(im, 0, sizeof *im);
 }
 
-/* FNV-1a over 64-bit words (the byte-wise ww_hash_bytes costs 15 ms on a 1280x720 float image;
- * this, 2 ms); only a fast filter: equal hashes are confirmed pixel by pixel */
+/* FNV-1a over 64-bit words in four interleaved lanes (the byte-wise ww_hash_bytes costs 15 ms on
+ * a 1280x720 float image; one chain of word multiplies, 3 ms; four, under 1 ms); only a fast
+ * filter: equal hashes are confirmed pixel by pixel */
 static uint64_t image_hash(const ww_cmp_image *im) {
     const uint64_t prime = 0x100000001b3ULL;
     int head[3] = {im->width, im->height, im->hdr};
-    uint64_t h = ww_hash_bytes(WW_HASH_INIT, head, sizeof head);
-    size_t n = (size_t)im->width * (size_t)im->height * 4;
-    for (size_t i = 0; i < n; i += 2) {
-        uint64_t w;
-        memcpy(&w, im->rgba + i, sizeof w);
-        h = (h ^ w) * prime;
+    uint64_t h0 = ww_hash_bytes(WW_HASH_INIT, head, sizeof head);
+    uint64_t lane[4] = {h0, h0 ^ 1, h0 ^ 2, h0 ^ 3};
+    size_t n = (size_t)im->width * (size_t)im->height; /* pixels: 16 bytes, two words each */
+    for (size_t i = 0; i < n; i++) {
+        uint64_t w[2];
+        memcpy(w, im->rgba + 4 * i, sizeof w);
+        uint64_t *l = lane + 2 * (i & 1);
+        l[0] = (l[0] ^ w[0]) * prime;
+        l[1] = (l[1] ^ w[1]) * prime;
     }
-    return h;
+    return ww_hash_bytes(h0, lane, sizeof lane);
 }
 
 /* colour times alpha (ImageMagick and OpenImageIO compare premultiplied colour) */
