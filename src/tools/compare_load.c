@@ -78,24 +78,31 @@ static ww_result load_png(const char *path, const unsigned char *file, size_t le
     if (!out->rgba)
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot read '%s': out of memory", path);
 
-    /* stb spreads grey to RGB and fills a missing alpha with its maximum; v / (2^bits - 1) is
-     * the same float for an 8-bit level and its 16-bit twin (v * 257) */
-    void *px = is16 ? (void *)stbi_load_16_from_memory(file, (int)len, &w, &h, &comp, 4)
-                    : (void *)stbi_load_from_memory(file, (int)len, &w, &h, &comp, 4);
-    if (!px) {
+    /* decoded as stored (asking stb for RGBA would cost one more image-sized buffer, 900 page
+     * faults at 1280x720), then spread to RGBA here: grey to R, G, B, a missing alpha 1;
+     * v / (2^bits - 1) is the same float for an 8-bit level and its 16-bit twin (v * 257) */
+    void *px = is16 ? (void *)stbi_load_16_from_memory(file, (int)len, &w, &h, &comp, 0)
+                    : (void *)stbi_load_from_memory(file, (int)len, &w, &h, &comp, 0);
+    if (!px || comp < 1 || comp > 4) {
+        stbi_image_free(px);
         free(out->rgba);
         out->rgba = NULL;
         return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
-                            stbi_failure_reason());
+                            px ? "unexpected channel count" : stbi_failure_reason());
     }
-    if (is16) {
-        const uint16_t *s = px;
-        for (size_t i = 0; i < npx * 4; i++) out->rgba[i] = (float)s[i] / MAX_16BIT;
-    } else {
-        float lut[256];
-        for (int v = 0; v < 256; v++) lut[v] = (float)v / MAX_8BIT;
-        const unsigned char *s = px;
-        for (size_t i = 0; i < npx * 4; i++) out->rgba[i] = lut[s[i]];
+    float lut[256];
+    for (int v = 0; v < 256; v++) lut[v] = (float)v / MAX_8BIT;
+    const uint16_t *s16 = px;
+    const unsigned char *s8 = px;
+    int grey = comp < 3, alpha = comp == 2 || comp == 4;
+    for (size_t i = 0; i < npx; i++) {
+        float *d = out->rgba + 4 * i;
+        for (int c = 0; c < comp; c++) {
+            size_t k = i * (size_t)comp + (size_t)c;
+            d[grey && c == 1 ? 3 : c] = is16 ? (float)s16[k] / MAX_16BIT : lut[s8[k]];
+        }
+        if (grey) d[1] = d[2] = d[0];
+        if (!alpha) d[3] = 1.0f;
     }
     stbi_image_free(px);
     if (comp == 2 || comp == 4) premultiply(out->rgba, npx);
