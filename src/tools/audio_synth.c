@@ -256,6 +256,9 @@ static int synth_music(ww_clip *c) {
     const double chord_s = 4.0, overlap_s = 1.0;
     if (!clip_alloc(c, 4 * chord_s, 2)) return 0;
     int64_t win = (int64_t)((chord_s + 2 * overlap_s) * WW_AUDIO_RATE);
+    float *env = malloc((size_t)win * sizeof *env);
+    if (!env) return 0;
+    for (int64_t i = 0; i < win; i++) env[i] = (float)(0.5 - 0.5 * cos(TWO_PI * (double)i / (double)win));
     for (int k = 0; k < 4; k++) {
         int64_t start = (int64_t)((k * chord_s - overlap_s) * WW_AUDIO_RATE);
         for (int ch = 0; ch < 2; ch++) {
@@ -264,10 +267,9 @@ static int synth_music(ww_clip *c) {
                     double f = chords[k][nt] * (p + 1) * (ch ? 1.0015 : 1.0);
                     double cr = cos(TWO_PI * f / WW_AUDIO_RATE), ci = sin(TWO_PI * f / WW_AUDIO_RATE);
                     double re = 1.0, im = 0.0, g = partial_gain[p];
-                    for (int64_t i = 0; i < win; i++) {
-                        double env = 0.5 - 0.5 * cos(TWO_PI * (double)i / (double)win);
-                        int64_t at = ((start + i) % c->frames + c->frames) % c->frames;
-                        c->data[at * 2 + ch] += (float)(g * env * im);
+                    int64_t at = (start % c->frames + c->frames) % c->frames;
+                    for (int64_t i = 0; i < win; i++, at = at + 1 < c->frames ? at + 1 : 0) {
+                        c->data[at * 2 + ch] += (float)(g * env[i] * im);
                         double t = re * cr - im * ci;
                         im = re * ci + im * cr;
                         re = t;
@@ -276,6 +278,7 @@ static int synth_music(ww_clip *c) {
             }
         }
     }
+    free(env);
     finish(c, 0.5, 0.0);
     return 1;
 }
