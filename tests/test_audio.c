@@ -260,6 +260,32 @@ TEST(audio_named_wav_is_used) {
     ww_scene_free(sc);
 }
 
+/* a 22.05 kHz file is resampled linearly: sample 2i is the file's i, sample 2i + 1 the mean of i
+ * and i + 1 (a ramp, so every interpolated value is known) */
+TEST(audio_named_wav_resampled) {
+    enum { HALF = 2205 };
+    const char *dir = ww_test_tmpdir("audio_resample");
+    int16_t ramp[HALF];
+    for (int i = 0; i < HALF; i++) ramp[i] = (int16_t)(10 * i);
+    char path[600];
+    snprintf(path, sizeof path, "%s/ramp.wav", dir);
+    ENSURE(ww_wav_write16(path, ramp, HALF, 1, RATE / 2, NULL) == WW_OK);
+    ww_scene *sc = load(dir, "ramp.yaml", 2.0, "audio: {music: {file: ramp.wav, volume: 1}}\n");
+    if (!sc) return;
+    ww_wav w = {0};
+    snprintf(path, sizeof path, "%s/r.wav", dir);
+    if (track(sc, 0, 60, path, &w)) {
+        double worst = 0.0;
+        for (int64_t n = 0; n < 2 * HALF - 1; n++)
+            worst = fmax(worst, fabs(32768.0 * w.data[2 * n + 1] - 5.0 * (double)n));
+        ENSURE_MSG(worst <= FILE_SAMPLE_TOL, "resampled ramp: off by %g", worst);
+        /* then the loop starts again: 2 HALF - 1 samples per cycle */
+        ENSURE(fabs(32768.0 * w.data[2 * (2 * HALF - 1)]) <= FILE_SAMPLE_TOL);
+    }
+    ww_wav_free(&w);
+    ww_scene_free(sc);
+}
+
 TEST(audio_underwater_ducks_music) {
     const char *dir = ww_test_tmpdir("audio_duck");
     write_clips(dir);
@@ -371,6 +397,8 @@ TEST(audio_render_cli) {
     ENSURE(ww_test_file_contains(out, "\naudio: 44100 Hz stereo 16-bit, volume 1, music on"));
     ENSURE_EQ_INT(ww_test_ww("plan scenes/minimal.yaml", out, NULL), 0);
     ENSURE(!ww_test_file_contains(out, "audio:"));
+    ENSURE_EQ_INT(ww_test_ww("plan tests/bad/audio_range_volume.yaml", NULL, out), 2);
+    ENSURE(ww_test_file_contains(out, "tests/bad/audio_range_volume.yaml:4:17"));
     if (!ww_test_have_gl()) return;
     /* frames 2:5 of a 30 fps scene: steps 8:20, samples 2940 to 7350 */
     snprintf(wav, sizeof wav, "%s/s.wav", dir);
