@@ -1,15 +1,413 @@
-/* audio.c - placeholder: the sound track is being written (issue 6). */
+/* audio.c - the sound track of a render (seed 000 section 4, rendered offline): one-shots for the
+ * step's events, loops for the engine, the underwater ambience, the reel and the music, mixed in
+ * float on an absolute sample grid, limited and dithered to 16-bit PCM.
+ *
+ * Time: step k ends at sample B(k) = llround(k dt 44100) of a grid that starts at step 0, so the
+ * track of steps [a, b) is samples [B(a), B(b)) and slices butt together. A slice that does not
+ * start at step 0 replays the simulation's prefix privately (no rendering) so that voices begun
+ * before it and the loops' state (engine phase, smoothed levels) are what a full run has: frames
+ * 0:30 + 30:60 give the same samples as 0:60.
+ */
 #include "tools/audio.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/rng.h"
+#include "io/wav.h"
+#include "sim/events.h"
+#include "sim/step.h"
+#include "sim/water.h"
+#include "tools/audio_synth.h"
+
+#define DITHER_STREAM 0x64697468u  /* "dith": TPDF dither draws, by absolute sample */
+#define LIMIT_KNEE 0.8             /* the limiter is the identity below this level (-1.9 dBFS) */
+#define PCM_FULL 32767.0
+
+/* levels of each source at the reference distance, linear */
+#define SPLASH_GAIN 0.9
+#define TINY_GAIN 0.6
+#define LURE_GAIN 0.5
+#define THUD_GAIN 0.9
+#define STINGER_GAIN 0.6           /* catch and collected sparkle, heard at the player */
+#define SPAWN_GAIN 0.8
+#define REEL_GAIN 0.35
+#define ENGINE_GAIN 0.5
+#define UNDERWATER_GAIN 0.6
+#define CENTRE 0.70710678118654752 /* equal-power pan at the centre, cos(pi / 4) */
+
+/* the reel charges before each cast: hold = min + charge (full - min) seconds */
+#define REEL_HOLD_MIN 0.3
+#define REEL_HOLD_FULL 1.2
+#define REEL_FADE 0.01             /* s, in and out */
+
+/* engine rate: procedural fundamental idle + per m/s; a WAV loop is played at 0.8..1.2x */
+#define ENGINE_IDLE_HZ 30.0
+#define ENGINE_HZ_PER_MS 9.0
+#define ENGINE_FILE_RATE_LO 0.8
+#define ENGINE_FILE_RATE_HI 1.2
+
+/* one-pole smoothing times of the continuous controls, s (no zipper noise, no clicks) */
+#define TAU_GAIN 0.05
+#define TAU_RATE 0.1
+#define TAU_UNDERWATER 0.2
+#define TAU_DUCK 0.3
+#define SILENT 1e-6                /* a smoothed level below this, heading to 0, is 0 */
+
+typedef struct smooth {
+    double v, target, k;           /* value, target, per-sample coefficient */
+} smooth;
+
+struct ww_audio {
+    ww_audio_desc d;
+    uint64_t seed;
+    double samples_per_step;       /* dt * 44100 */
+    int64_t b0, b1, cursor;        /* track [b0, b1) on the absolute grid; next sample to mix */
+    float *mix;                    /* (b1 - b0) x 2, interleaved */
+    ww_clip clip[WW_SOUND_COUNT];
+    ww_clip splash[WW_AUDIO_SPLASH_VARIANTS];
+    int nsplash;
+    ww_clip music;                 /* frames 0 when off */
+    int64_t splashes;              /* full splashes so far: picks the next variation */
+    int engine_file;               /* the engine is a WAV loop, not the wavetable */
+    smooth eng_l, eng_r, eng_rate, underwater, music_gain;
+    double eng_phase;              /* position in the engine clip, samples */
+};
+
+static int64_t grid(const ww_audio *a, int64_t step) {
+    return llround((double)step * a->samples_per_step);
+}
+
+static void smooth_init(smooth *s, double tau) {
+    *s = (smooth){0.0, 0.0, 1.0 - exp(-1.0 / (tau * WW_AUDIO_RATE))};
+}
+static double smooth_tick(smooth *s) {
+    s->v += s->k * (s->target - s->v);
+    if (s->target == 0.0 && fabs(s->v) < SILENT) s->v = 0.0;
+    return s->v;
+}
+
+/* ---- spatialisation ------------------------------------------------------------------------ */
+
+/* equal-power pan by the source's bearing along the camera's right vector, and OpenAL's inverse
+ * distance clamped model: gain = ref / max(d, ref), never below min_gain */
+static void spatial(const ww_audio *a, const ww_state *st, const double *pos, double level,
+                    double *gl, double *gr) {
+    const double *c = st->cam_pos, *f = st->cam_fwd;
+    double d[3] = {pos[0] - c[0], pos[1] - c[1], pos[2] - c[2]};
+    double dist = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double rx = -f[2], rz = f[0], rl = sqrt(rx * rx + rz * rz); /* right = forward x up */
+    if (rl < 1e-9) rx = 1.0, rz = 0.0, rl = 1.0;                 /* looking straight up/down */
+    double x = dist > 1e-9 ? (d[0] * rx + d[2] * rz) / (rl * dist) : 0.0;
+    double theta = (x + 1.0) * M_PI / 4.0;
+    double g = a->d.reference_distance / fmax(dist, a->d.reference_distance);
+    g = level * fmax(g, a->d.min_gain);
+    *gl = g * cos(theta);
+    *gr = g * sin(theta);
+}
+
+/* ---- mixing -------------------------------------------------------------------------------- */
+
+/* add a one-shot clip starting at absolute sample n0 (the part inside the track) */
+static void add_clip(ww_audio *a, const ww_clip *c, int64_t n0, double gl, double gr) {
+    int64_t i = n0 < a->b0 ? a->b0 - n0 : 0;
+    int64_t end = c->frames < a->b1 - n0 ? c->frames : a->b1 - n0;
+    for (; i < end; i++) {
+        float *m = a->mix + 2 * (n0 + i - a->b0);
+        const float *s = c->data + i * c->channels;
+        m[0] += (float)(gl * s[0]);
+        m[1] += (float)(gr * s[c->channels - 1]);
+    }
+}
+
+/* sample of a looped clip at fractional position p (linear interpolation), channel ch */
+static double loop_at(const ww_clip *c, double p, int ch) {
+    int64_t i = (int64_t)p;
+    double f = p - (double)i;
+    int64_t j = i + 1 < c->frames ? i + 1 : 0;
+    ch = ch < c->channels ? ch : 0;
+    return (1.0 - f) * c->data[i * c->channels + ch] + f * c->data[j * c->channels + ch];
+}
+
+/* the loops from the cursor to absolute sample n1 under the current controls */
+static void mix_loops(ww_audio *a, int64_t n1) {
+    const ww_clip *eng = &a->clip[WW_SOUND_ENGINE], *uw = &a->clip[WW_SOUND_UNDERWATER];
+    for (int64_t n = a->cursor; n < n1; n++) {
+        double l = 0.0, r = 0.0;
+        double gl = smooth_tick(&a->eng_l), gr = smooth_tick(&a->eng_r);
+        double rate = smooth_tick(&a->eng_rate);
+        if (gl != 0.0 || gr != 0.0) {
+            l += gl * loop_at(eng, a->eng_phase, 0);
+            r += gr * loop_at(eng, a->eng_phase, 1);
+            a->eng_phase = fmod(a->eng_phase + rate, (double)eng->frames);
+        }
+        double gu = smooth_tick(&a->underwater) * CENTRE;
+        if (gu != 0.0) { /* the loop's position is the absolute sample: no state to carry */
+            double p = (double)(n % uw->frames);
+            l += gu * loop_at(uw, p, 0);
+            r += gu * loop_at(uw, p, 1);
+        }
+        double gm = smooth_tick(&a->music_gain);
+        if (gm != 0.0 && a->music.frames) {
+            double p = (double)(n % a->music.frames);
+            l += gm * loop_at(&a->music, p, 0);
+            r += gm * loop_at(&a->music, p, 1);
+        }
+        if (n >= a->b0 && n < a->b1 && (l != 0.0 || r != 0.0)) {
+            a->mix[2 * (n - a->b0)] += (float)l;
+            a->mix[2 * (n - a->b0) + 1] += (float)r;
+        }
+    }
+    if (n1 > a->cursor) a->cursor = n1;
+}
+
+/* the reel loop while the rod charges before each scripted cast (the simulation has no charging
+ * phase: a cast arrives with its charge, so the hold it stands for is placed before it) */
+static void mix_reels(ww_audio *a, const ww_scene *sc) {
+    const ww_clip *c = &a->clip[WW_SOUND_REEL];
+    for (int e = 0; e < sc->nevents; e++) {
+        const ww_event *ev = &sc->events[e];
+        if (ev->kind != WW_EV_CAST) continue;
+        double charge = ev->v[2];
+        if (!(ev->flags & WW_CAST_CHARGE)) { /* an explicit speed: the charge it maps from */
+            double s0 = sc->rod.speed[0], s1 = sc->rod.speed[1];
+            charge = s1 > s0 ? (ev->v[0] - s0) / (s1 - s0) : 1.0;
+        }
+        charge = fmin(1.0, fmax(0.0, charge));
+        int64_t end = grid(a, ev->step);
+        int64_t len = llround((REEL_HOLD_MIN + charge * (REEL_HOLD_FULL - REEL_HOLD_MIN)) * WW_AUDIO_RATE);
+        int64_t fade = llround(REEL_FADE * WW_AUDIO_RATE);
+        for (int64_t i = 0; i < len; i++) {
+            int64_t n = end - len + i;
+            if (n < a->b0 || n >= a->b1) continue;
+            double w = fmin(1.0, fmin((double)i / fade, (double)(len - i) / fade));
+            double v = REEL_GAIN * CENTRE * w * c->data[(i % c->frames) * c->channels];
+            a->mix[2 * (n - a->b0)] += (float)v;
+            a->mix[2 * (n - a->b0) + 1] += (float)v;
+        }
+    }
+}
+
+/* ---- events and controls ------------------------------------------------------------------- */
+
+static void play(ww_audio *a, const ww_state *st, const ww_clip *c, const double *pos, double level) {
+    double gl = level * CENTRE, gr = gl;
+    if (pos) spatial(a, st, pos, level, &gl, &gr);
+    add_clip(a, c, grid(a, st->step), gl, gr);
+}
+
+/* the sounds of the step's events, at the step's end sample, heard from the step's camera */
+static void play_events(ww_audio *a, const ww_scene *sc, const ww_state *st) {
+    if (!ww_scene_has_objects(sc)) return;
+    int n = ww_events_count(sc, st);
+    for (int i = 0; i < n; i++) {
+        const double *e = st->events + i * WW_SIM_EVENT_STRIDE, *pos = e + 2, mag = e[5];
+        switch ((ww_sim_event_kind)e[0]) {
+        case WW_SE_STONE_SKIP: /* seed 000: a skip plays a full splash, cycling drop1/2/3 */
+        case WW_SE_SPLASH_FULL:
+            play(a, st, &a->splash[a->splashes++ % a->nsplash], pos,
+                 SPLASH_GAIN * fmin(1.0, 0.4 + 0.06 * mag));
+            break;
+        case WW_SE_SPLASH_TINY:
+            play(a, st, &a->clip[WW_SOUND_TINY_SPLASH], pos, TINY_GAIN * fmin(1.0, 0.5 + 0.1 * mag));
+            break;
+        case WW_SE_LURE_LAND: play(a, st, &a->clip[WW_SOUND_TINY_SPLASH], pos, LURE_GAIN); break;
+        case WW_SE_STONE_THUD:
+            play(a, st, &a->clip[WW_SOUND_THUD], pos, THUD_GAIN * fmin(1.0, 0.4 + 0.3 * mag));
+            break;
+        case WW_SE_CATCH: play(a, st, &a->clip[WW_SOUND_CATCH], NULL, STINGER_GAIN); break;
+        case WW_SE_CHEST_SPAWN: play(a, st, &a->clip[WW_SOUND_SPARKLE_SPAWN], pos, SPAWN_GAIN); break;
+        case WW_SE_CHEST_COLLECT: play(a, st, &a->clip[WW_SOUND_SPARKLE], NULL, STINGER_GAIN); break;
+        default: break;
+        }
+    }
+}
+
+/* pure: the engine's level for a speed: 0 at or below the threshold, then from the floor at the
+ * threshold to 1 at the boat's top speed */
+static double engine_level(const ww_audio_desc *d, double speed, double max_speed) {
+    if (speed <= d->engine_threshold) return 0.0;
+    double u = max_speed > d->engine_threshold
+                   ? (speed - d->engine_threshold) / (max_speed - d->engine_threshold) : 1.0;
+    return d->engine_floor + (1.0 - d->engine_floor) * fmin(1.0, u);
+}
+
+/* the loops' targets from the state after a step */
+static void set_controls(ww_audio *a, const ww_scene *sc, const ww_state *st) {
+    if (sc->boat.on) {
+        double speed = fabs(st->boat_speed[0]), gl = 0.0, gr = 0.0;
+        double level = ENGINE_GAIN * engine_level(&a->d, speed, sc->boat.max_speed);
+        if (level > 0.0) spatial(a, st, st->boat_pos, level, &gl, &gr);
+        a->eng_l.target = gl;
+        a->eng_r.target = gr;
+        double u = sc->boat.max_speed > 0.0 ? fmin(1.0, speed / sc->boat.max_speed) : 0.0;
+        a->eng_rate.target = a->engine_file
+            ? ENGINE_FILE_RATE_LO + (ENGINE_FILE_RATE_HI - ENGINE_FILE_RATE_LO) * u
+            : (ENGINE_IDLE_HZ + ENGINE_HZ_PER_MS * speed) * WW_ENGINE_TABLE / WW_AUDIO_RATE;
+    }
+    /* under water by the renderer's rule: below the exact surface over the camera */
+    ww_water_sample ws;
+    ww_water_at(sc, st, st->cam_pos[0], st->cam_pos[2], 0.0, &ws);
+    int under = st->cam_pos[1] < ws.height;
+    a->underwater.target = under ? UNDERWATER_GAIN : 0.0;
+    if (a->d.music_on) a->music_gain.target = a->d.music_volume * (under ? a->d.music_duck : 1.0);
+}
+
+void ww_audio_step(ww_audio *a, const ww_scene *sc, const ww_state *st) {
+    mix_loops(a, grid(a, st->step));
+    play_events(a, sc, st);
+    set_controls(a, sc, st);
+}
+
+/* ---- clips --------------------------------------------------------------------------------- */
+
+/* a WAV named in the scene, linearly resampled to 44.1 kHz; errors name the scene's place */
+static ww_result load_file(const ww_audio_file *f, const char *what, ww_clip *out, ww_error *err) {
+    ww_wav w;
+    ww_error e;
+    ww_result r = ww_wav_read(f->path, &w, &e);
+    if (r) return ww_error_set(err, r, f->file, f->line, f->column, "%s: '%s': %s", what, f->path, e.msg);
+    double step = (double)w.rate / WW_AUDIO_RATE;
+    *out = (ww_clip){0};
+    out->channels = w.channels;
+    out->frames = (int64_t)((double)(w.frames - 1) / step) + 1;
+    out->data = malloc((size_t)out->frames * (size_t)w.channels * sizeof *out->data);
+    if (!out->data) {
+        ww_wav_free(&w);
+        return ww_error_set(err, WW_E_NOMEM, f->file, f->line, f->column, "out of memory for '%s'", f->path);
+    }
+    for (int64_t i = 0; i < out->frames; i++) {
+        double p = (double)i * step;
+        int64_t j = (int64_t)p, k = j + 1 < w.frames ? j + 1 : j;
+        double t = p - (double)j;
+        for (int ch = 0; ch < w.channels; ch++)
+            out->data[i * w.channels + ch] = (float)((1.0 - t) * w.data[j * w.channels + ch] +
+                                                     t * w.data[k * w.channels + ch]);
+    }
+    ww_wav_free(&w);
+    return WW_OK;
+}
+
+static ww_result load_clips(ww_audio *a, ww_error *err) {
+    static const char *const names[] = {
+#define WW_SOUND_NAME(id, name, what) "audio.sounds." name,
+        WW_AUDIO_SOUNDS(WW_SOUND_NAME)
+#undef WW_SOUND_NAME
+    };
+    ww_result r;
+    for (int s = 0; s < WW_SOUND_COUNT; s++) {
+        if (s == WW_SOUND_SPLASH) continue;
+        if (a->d.sounds[s].path[0]) {
+            if ((r = load_file(&a->d.sounds[s], names[s], &a->clip[s], err))) return r;
+        } else if (!ww_synth((ww_sound)s, 0, a->seed, &a->clip[s])) {
+            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sounds");
+        }
+    }
+    a->engine_file = a->d.sounds[WW_SOUND_ENGINE].path[0] != 0;
+    a->nsplash = a->d.nsplash ? a->d.nsplash : WW_AUDIO_SPLASH_VARIANTS;
+    for (int v = 0; v < a->nsplash; v++) {
+        if (a->d.nsplash) {
+            if ((r = load_file(&a->d.splash[v], names[WW_SOUND_SPLASH], &a->splash[v], err))) return r;
+        } else if (!ww_synth(WW_SOUND_SPLASH, v, a->seed, &a->splash[v])) {
+            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sounds");
+        }
+    }
+    if (!a->d.music_on) return WW_OK;
+    if (a->d.music_file.path[0]) return load_file(&a->d.music_file, "audio.music.file", &a->music, err);
+    if (!ww_synth_music(&a->music))
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the music");
+    return WW_OK;
+}
+
+/* ---- the track ----------------------------------------------------------------------------- */
 
 ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step, ww_audio **out,
                        ww_error *err) {
-    (void)sc, (void)first_step, (void)last_step;
+    WW_ASSERT(first_step >= 0 && last_step >= first_step);
     *out = NULL;
-    return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--audio is not built yet");
-}
-void ww_audio_step(ww_audio *a, const ww_scene *sc, const ww_state *st) { (void)a, (void)sc, (void)st; }
-ww_result ww_audio_write(ww_audio *a, const char *path, ww_error *err) {
-    (void)a, (void)path, (void)err;
+    ww_audio *a = calloc(1, sizeof *a);
+    if (!a) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sound track");
+    a->d = sc->audio;
+    a->seed = sc->seed;
+    a->samples_per_step = sc->dt * WW_AUDIO_RATE;
+    a->b0 = grid(a, first_step);
+    a->b1 = grid(a, last_step);
+    a->cursor = 0;
+    smooth_init(&a->eng_l, TAU_GAIN);
+    smooth_init(&a->eng_r, TAU_GAIN);
+    smooth_init(&a->eng_rate, TAU_RATE);
+    smooth_init(&a->underwater, TAU_UNDERWATER);
+    smooth_init(&a->music_gain, TAU_DUCK);
+    ww_result r = load_clips(a, err);
+    size_t frames = (size_t)(a->b1 - a->b0);
+    if (!r && !(a->mix = calloc(frames * 2 + 2, sizeof *a->mix)))
+        r = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for a %.0f s sound track",
+                         (double)frames / WW_AUDIO_RATE);
+    ww_state *st = r ? NULL : ww_state_new(sc);
+    if (!r && !st) r = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the state");
+    if (r) {
+        ww_audio_free(a);
+        return r;
+    }
+
+    /* the loops start at their step-0 levels; then the prefix is heard, not kept */
+    mix_reels(a, sc);
+    set_controls(a, sc, st);
+    smooth *all[] = {&a->eng_l, &a->eng_r, &a->eng_rate, &a->underwater, &a->music_gain};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) all[i]->v = all[i]->target;
+    while (st->step < first_step) {
+        if ((r = ww_step(sc, st, err))) break;
+        ww_audio_step(a, sc, st);
+    }
+    ww_state_free(st);
+    if (r) {
+        ww_audio_free(a);
+        return r;
+    }
+    *out = a;
     return WW_OK;
 }
-void ww_audio_free(ww_audio *a) { (void)a; }
+
+/* a stateless soft limiter: the identity up to the knee, then a tanh shoulder that meets full
+ * scale only at infinity (no state, so slices of a track limit alike and nothing pumps) */
+static double limit(double x) {
+    double m = fabs(x);
+    if (m <= LIMIT_KNEE) return x;
+    double y = LIMIT_KNEE + (1.0 - LIMIT_KNEE) * tanh((m - LIMIT_KNEE) / (1.0 - LIMIT_KNEE));
+    return x < 0.0 ? -y : y;
+}
+
+ww_result ww_audio_write(ww_audio *a, const char *path, ww_error *err) {
+    mix_loops(a, a->b1);
+    int64_t frames = a->b1 - a->b0;
+    int16_t *pcm = malloc((size_t)(frames * 2 + 1) * sizeof *pcm);
+    if (!pcm) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sound track");
+
+    /* TPDF dither of +-1 LSB from a counter-based draw per absolute sample; digital silence
+     * (an exact 0) stays silent */
+    for (int64_t i = 0; i < frames * 2; i++) {
+        double x = a->mix[i] * a->d.volume;
+        if (x == 0.0) {
+            pcm[i] = 0;
+            continue;
+        }
+        uint64_t n = (uint64_t)(a->b0 + i / 2), ch = (uint64_t)(i % 2);
+        double tpdf = ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch) -
+                      ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch + 1);
+        double v = floor(limit(x) * PCM_FULL + tpdf + 0.5);
+        pcm[i] = (int16_t)fmax(-PCM_FULL - 1.0, fmin(PCM_FULL, v));
+    }
+    ww_result r = ww_wav_write16(path, pcm, frames, 2, WW_AUDIO_RATE, err);
+    free(pcm);
+    return r;
+}
+
+void ww_audio_free(ww_audio *a) {
+    if (!a) return;
+    for (int s = 0; s < WW_SOUND_COUNT; s++) ww_clip_free(&a->clip[s]);
+    for (int v = 0; v < WW_AUDIO_SPLASH_VARIANTS; v++) ww_clip_free(&a->splash[v]);
+    ww_clip_free(&a->music);
+    free(a->mix);
+    free(a);
+}
