@@ -185,10 +185,10 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     ww_golden_summary gs;
     r = ww_golden_check(sc, &go, &gs, err);
     if ((!r || r == WW_E_MISMATCH) && !jo.quiet)
-        fprintf(stderr, "golden %s (renderer key %s): %lld frames, %lld passed, %lld failed, "
-                "%lld missing; report %s\n",
-                gs.golden_dir, gs.key, (long long)gs.frames, (long long)gs.passed,
-                (long long)gs.failed, (long long)gs.missing, gs.report);
+        fprintf(stderr, "golden: %lld frames, %lld passed, %lld failed, %lld missing; goldens from "
+                "%s; renderer key %s; report %s\n",
+                (long long)gs.frames, (long long)gs.passed, (long long)gs.failed,
+                (long long)gs.missing, gs.golden_dir, gs.key, gs.report);
 done:
     ww_scene_free(sc);
     return r;

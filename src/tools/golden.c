@@ -273,7 +273,8 @@ static const char css[] =
     ".frame h3{margin:0 0 4px 0}.why{font-weight:bold;color:#b71c1c}"
     ".trio{display:grid;grid-template-columns:repeat(3,1fr);gap:8px}"
     "figure{margin:0}figure img{width:100%;image-rendering:pixelated;border:1px solid #888}"
-    "figcaption{text-align:center}code{background:#f5f5f5}";
+    "figcaption{text-align:center}code{background:#f5f5f5}"
+    ".tables{display:flex;flex-wrap:wrap;gap:16px;align-items:flex-start}";
 
 /* s as HTML text or attribute value */
 static void html(FILE *f, const char *s) {
@@ -318,7 +319,7 @@ static void describe_opts(const ww_cmp_opts *o, int exact, char *out, size_t cap
 
 static void write_metrics(FILE *f, const frame_check *c, const ww_cmp_opts *o) {
     const ww_cmp_result *r = &c->res;
-    fputs("<table class=\"metrics\"><tr><th>metric</th><th>value</th></tr>\n", f);
+    fputs("<div class=\"tables\"><table class=\"metrics\"><tr><th>metric</th><th>value</th></tr>\n", f);
     const struct { const char *name; double v; } m[] = {
         {"max abs difference (8-bit levels)", r->max_abs},
         {"mean abs difference (8-bit levels)", r->mean_abs},
@@ -346,7 +347,7 @@ static void write_metrics(FILE *f, const frame_check *c, const ww_cmp_opts *o) {
         fprintf(f, "</td><td class=\"%s\">%s</td></tr>\n", rows[i].ok ? "ok" : "bad",
                 rows[i].ok ? "holds" : "FAILS");
     }
-    fputs("</table>\n", f);
+    fputs("</table></div>\n", f);
 }
 
 static void write_failed(FILE *f, const frame_check *c, const ww_cmp_opts *o) {
@@ -481,8 +482,8 @@ static void summarise_sources(const frame_check *fr, int64_t n, char *out, size_
                      strncmp(fr[k].golden, fr[i].golden, (size_t)len) == 0;
         }
         if (used + 1 >= cap) break;
-        int w = snprintf(out + used, cap - used, "%s%.*s (%ld)", used ? ", " : "", len,
-                         fr[i].golden, count);
+        int w = snprintf(out + used, cap - used, "%s%.*s (%ld frame%s)", used ? ", " : "", len,
+                         fr[i].golden, count, count == 1 ? "" : "s");
         used = w < 0 ? cap : used + (size_t)w < cap ? used + (size_t)w : cap - 1;
     }
     if (!out[0]) snprintf(out, cap, "none found");
@@ -540,6 +541,7 @@ ww_result ww_golden_check(const ww_scene *sc, const ww_golden_opts *o, ww_golden
     free(fr);
     if (r || (s->failed == 0 && s->missing == 0)) return r;
     return ww_error_set(err, WW_E_MISMATCH, NULL, 0, 0,
-                        "%lld of %lld frames differ from their goldens, %lld have none: see %s",
+                        "golden check failed: %lld of %lld frames differ, %lld without a golden; "
+                        "see %s",
                         (long long)s->failed, (long long)n, (long long)s->missing, s->report);
 }
