@@ -24,6 +24,8 @@ static const char usage[] =
     "                      wave statistics over a grid of --set values\n"
     "  bench    [render|sim] [--frames N] [--json] [-o DIR]   speed, memory, sim error vs dt\n"
     "  bench    waves [--json] [-o DIR]  the wave field's speed against its error, and a figure\n"
+    "  compare  EXPECTED ACTUAL [--diff FILE] [--max M] [--psnr-min DB] [--yiq Y] [--json]...\n"
+    "                                    two images or folders of frames; exit 1 when they differ\n"
     "  backends [--renderer]             which GL backends open here, on what\n"
     "  --help | --version\n"
     "\n"
@@ -43,6 +45,7 @@ static const command commands[] = {
     {"backends", ww_cmd_backends},
     {"probe", ww_cmd_probe},
     {"waves", ww_cmd_waves},
+    {"compare", ww_cmd_compare},
 };
 
 int main(int argc, char **argv) {

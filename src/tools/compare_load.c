@@ -1,0 +1,211 @@
+/* compare_load.c - the images of `compare`: PNG (stb_image: 8/16-bit, grey/GA/RGB/RGBA) and EXR
+ * (io/writers.h), told apart by their first bytes, held as float RGBA with the colour
+ * premultiplied by alpha, and hashed for the exact-match fast path.
+ */
+#include "tools/compare.h"
+
+#include <limits.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <stb/stb_image.h>
+
+#include "core/hash.h"
+#include "io/writers.h"
+
+static const unsigned char png_magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+static const unsigned char exr_magic[4] = {0x76, 0x2f, 0x31, 0x01}; /* OpenEXR file layout */
+#define MAX_16BIT 65535.0f
+#define MAX_8BIT 255.0f
+
+void ww_cmp_image_free(ww_cmp_image *im) {
+    free(im->rgba);
+    memset(im, 0, sizeof *im);
+}
+
+/* FNV-1a over 64-bit words (the byte-wise ww_hash_bytes costs 15 ms on a 1280x720 float image;
+ * this, 2 ms); only a fast filter: equal hashes are confirmed pixel by pixel */
+static uint64_t image_hash(const ww_cmp_image *im) {
+    const uint64_t prime = 0x100000001b3ULL;
+    int head[3] = {im->width, im->height, im->hdr};
+    uint64_t h = ww_hash_bytes(WW_HASH_INIT, head, sizeof head);
+    size_t n = (size_t)im->width * (size_t)im->height * 4;
+    for (size_t i = 0; i < n; i += 2) {
+        uint64_t w;
+        memcpy(&w, im->rgba + i, sizeof w);
+        h = (h ^ w) * prime;
+    }
+    return h;
+}
+
+/* colour times alpha (ImageMagick and OpenImageIO compare premultiplied colour) */
+static void premultiply(float *p, size_t npx) {
+    for (size_t i = 0; i < npx; i++, p += 4) {
+        p[0] *= p[3];
+        p[1] *= p[3];
+        p[2] *= p[3];
+    }
+}
+
+static ww_result load_png(const char *path, const unsigned char *file, size_t len,
+                          ww_cmp_image *out, ww_error *err) {
+    int w, h, comp;
+    if (len > INT_MAX || !stbi_info_from_memory(file, (int)len, &w, &h, &comp))
+        return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
+                            len > INT_MAX ? "file too large" : stbi_failure_reason());
+    int is16 = stbi_is_16_bit_from_memory(file, (int)len);
+    size_t npx = (size_t)w * (size_t)h;
+    out->rgba = malloc(npx * 4 * sizeof(float));
+    if (!out->rgba)
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot read '%s': out of memory", path);
+
+    /* stb spreads grey to RGB and fills a missing alpha with its maximum; v / (2^bits - 1) is
+     * the same float for an 8-bit level and its 16-bit twin (v * 257) */
+    void *px = is16 ? (void *)stbi_load_16_from_memory(file, (int)len, &w, &h, &comp, 4)
+                    : (void *)stbi_load_from_memory(file, (int)len, &w, &h, &comp, 4);
+    if (!px) {
+        free(out->rgba);
+        out->rgba = NULL;
+        return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
+                            stbi_failure_reason());
+    }
+    if (is16) {
+        const uint16_t *s = px;
+        for (size_t i = 0; i < npx * 4; i++) out->rgba[i] = (float)s[i] / MAX_16BIT;
+    } else {
+        float lut[256];
+        for (int v = 0; v < 256; v++) lut[v] = (float)v / MAX_8BIT;
+        const unsigned char *s = px;
+        for (size_t i = 0; i < npx * 4; i++) out->rgba[i] = lut[s[i]];
+    }
+    stbi_image_free(px);
+    if (comp == 2 || comp == 4) premultiply(out->rgba, npx);
+    out->width = w;
+    out->height = h;
+    out->channels = comp;
+    out->bits = is16 ? 16 : 8;
+    return WW_OK;
+}
+
+/* the channel list of an EXR header (OpenEXR file layout: attributes name\0 type\0 size value,
+ * "chlist" entries name\0 pixel_type(i32) pLinear(u8) reserved(3) xSampling(i32)
+ * ySampling(i32)): whether A is there and the widest of R, G, B, A (16 half, 32 float) */
+static void exr_channels(const unsigned char *f, size_t len, int *channels, int *bits) {
+    *channels = 3;
+    *bits = 16;
+    size_t p = 8;
+    while (p < len && f[p]) {
+        const char *name = (const char *)f + p;
+        const unsigned char *nz = memchr(f + p, 0, len - p);
+        if (!nz) return;
+        const char *type = (const char *)nz + 1;
+        const unsigned char *tz = memchr(nz + 1, 0, len - (size_t)(nz + 1 - f));
+        if (!tz || (size_t)(tz + 5 - f) > len) return;
+        uint32_t size = (uint32_t)tz[1] | (uint32_t)tz[2] << 8 | (uint32_t)tz[3] << 16 |
+                        (uint32_t)tz[4] << 24;
+        size_t v = (size_t)(tz + 5 - f);
+        if (size > len - v) return;
+        if (strcmp(name, "channels") == 0 && strcmp(type, "chlist") == 0) {
+            size_t q = v, end = v + size;
+            while (q < end && f[q]) {
+                const unsigned char *cz = memchr(f + q, 0, end - q);
+                if (!cz || (size_t)(cz + 17 - f) > end) return;
+                const char *ch = (const char *)f + q;
+                int one = strlen(ch) == 1 && strchr("RGBA", ch[0]);
+                if (one && ch[0] == 'A') *channels = 4;
+                if (one && cz[1] == 2) *bits = 32; /* pixel type 2: FLOAT */
+                q = (size_t)(cz + 17 - f);
+            }
+            return;
+        }
+        p = v + size;
+    }
+}
+
+static ww_result load_exr(const char *path, const unsigned char *file, size_t len,
+                          ww_cmp_image *out, ww_error *err) {
+    ww_image im;
+    ww_result r = ww_read_exr(path, &im, err);
+    if (r != WW_OK) {
+        ww_image_free(&im);
+        if (r != WW_E_SYNTAX) return r;
+        if (err) err->code = WW_E_TYPE; /* a broken EXR is "not an image we read" */
+        return WW_E_TYPE;
+    }
+    WW_ASSERT(im.type == WW_PIX_F32 && im.channels == 4);
+    out->rgba = im.f32; /* ownership moves: freed with free() as ww_image_free would */
+    out->width = im.width;
+    out->height = im.height;
+    out->hdr = 1;
+    exr_channels(file, len, &out->channels, &out->bits);
+    return WW_OK;
+}
+
+/* stb's run-time settings, pinned before any decode (rows top first, no conversions) */
+static void pin_stb(void) {
+    stbi_set_flip_vertically_on_load(0);
+    stbi_set_unpremultiply_on_load(0);
+    stbi_convert_iphone_png_to_rgb(0);
+}
+
+/* the loader proper: reads no global that it writes, so two may run at once */
+static ww_result load_any(const char *path, ww_cmp_image *out, ww_error *err) {
+    memset(out, 0, sizeof *out);
+    unsigned char *file;
+    size_t len;
+    ww_result r = ww_read_file(path, &file, &len, err);
+    if (r != WW_OK) return r;
+    if (len >= sizeof png_magic && memcmp(file, png_magic, sizeof png_magic) == 0)
+        r = load_png(path, file, len, out, err);
+    else if (len >= sizeof exr_magic && memcmp(file, exr_magic, sizeof exr_magic) == 0)
+        r = load_exr(path, file, len, out, err);
+    else
+        r = ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': not a PNG or EXR image", path);
+    free(file);
+    if (r == WW_OK) out->hash = image_hash(out);
+    return r;
+}
+
+ww_result ww_cmp_load(const char *path, ww_cmp_image *out, ww_error *err) {
+    pin_stb();
+    return load_any(path, out, err);
+}
+
+/* one load on a worker thread */
+typedef struct load_job {
+    const char *path;
+    ww_cmp_image *im;
+    ww_error err;
+    ww_result r;
+} load_job;
+
+static void *load_thread(void *arg) {
+    load_job *j = arg;
+    j->r = load_any(j->path, j->im, &j->err);
+    return NULL;
+}
+
+ww_result ww_cmp_load_pair(const char *path_a, const char *path_b, ww_cmp_image *a,
+                           ww_cmp_image *b, ww_error *err) {
+    pin_stb();
+
+    /* b on a second thread, a on this one; without a thread, one after the other */
+    load_job jb = {.path = path_b, .im = b};
+    pthread_t t;
+    int threaded = pthread_create(&t, NULL, load_thread, &jb) == 0;
+    ww_result r = load_any(path_a, a, err);
+    if (threaded)
+        pthread_join(t, NULL);
+    else
+        load_thread(&jb);
+    if (r == WW_OK && jb.r != WW_OK) {
+        r = jb.r;
+        if (err) *err = jb.err;
+    }
+    if (r != WW_OK) {
+        ww_cmp_image_free(a);
+        ww_cmp_image_free(b);
+    }
+    return r;
+}
