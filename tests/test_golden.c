@@ -218,7 +218,7 @@ TEST(golden_pass_then_changed_golden_fails_with_red_diff) {
     snprintf(p, sizeof p, "%s/report.html", o);
     ENSURE(ww_test_file_contains(p, "FAIL: 3 frames, 2 passed, 1 failed, 0 missing"));
     ENSURE(ww_test_file_contains(p, "<h3>frame_00001.png</h3>"));
-    ENSURE(ww_test_file_contains(p, "<tr><td>max</td><td class=\"num\">0</td>"));
+    ENSURE(ww_test_file_contains(p, "<tr><td>no pixel over threshold</td><td class=\"num\">0</td>"));
     ENSURE(ww_test_file_contains(p, "FAILS"));
     ENSURE(ww_test_file_contains(p, "src=\"diff/frame_00001.png\""));
     ENSURE(ww_test_file_contains(p, "src=\"expected/frame_00001.png\""));
@@ -337,6 +337,11 @@ TEST(golden_scene_thresholds_apply_and_command_line_wins) {
         ENSURE_MSG(ww_test_ww(a, NULL, NULL) == cases[i].exit, "case '%s': expected exit %d",
                    cases[i].extra, cases[i].exit);
     }
+    /* no rule anywhere: no pixel may differ by more than the per-pixel threshold */
+    snprintf(a, sizeof a, "--frames 1 -o '%s' --golden '%s' --quiet --threshold 20", o, g);
+    ENSURE_EQ_INT(render(a, NULL), 0);
+    snprintf(a, sizeof a, "--frames 1 -o '%s' --golden '%s' --quiet --threshold 5", o, g);
+    ENSURE_EQ_INT(render(a, NULL), 1);
 }
 
 TEST(golden_folder_missing_or_holding_the_output_is_bad_input) {

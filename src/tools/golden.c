@@ -92,7 +92,7 @@ typedef struct rule_row {
     int ok;
 } rule_row;
 
-static int rule_rows(const ww_cmp_opts *o, const ww_cmp_result *r, rule_row rows[6]) {
+static int rule_rows(const ww_cmp_opts *o, const ww_cmp_result *r, rule_row rows[7]) {
     int n = 0;
     if (o->max >= 0) rows[n++] = (rule_row){"max", o->max, r->max_abs, r->max_abs <= o->max};
     if (o->fail_percent >= 0)
@@ -108,6 +108,9 @@ static int rule_rows(const ww_cmp_opts *o, const ww_cmp_result *r, rule_row rows
                                (double)r->yiq_pixels <= o->yiq_pixels};
     if (o->ssim_min >= 0)
         rows[n++] = (rule_row){"ssim_min", o->ssim_min, r->ssim, r->ssim >= o->ssim_min};
+    if (n == 0) /* compare's rule when none is given */
+        rows[n++] = (rule_row){"no pixel over threshold", 0, (double)r->diff_pixels,
+                               r->diff_pixels == 0};
     return n;
 }
 
@@ -314,7 +317,8 @@ static void describe_opts(const ww_cmp_opts *o, int exact, char *out, size_t cap
         n += snprintf(out + n, cap - (size_t)n, " %s %g", rules[i].name, rules[i].v);
     }
     if (exact && n >= 0 && (size_t)n < cap)
-        snprintf(out + n, cap - (size_t)n, " (no rule given: exact match)");
+        snprintf(out + n, cap - (size_t)n, " none given, so no pixel may differ by more than the "
+                 "threshold (%g: %s)", o->threshold, o->threshold > 0 ? "near match" : "exact match");
 }
 
 static void write_metrics(FILE *f, const frame_check *c, const ww_cmp_opts *o) {
@@ -337,7 +341,7 @@ static void write_metrics(FILE *f, const frame_check *c, const ww_cmp_opts *o) {
     }
     fputs("</table>\n<table class=\"rules\"><tr><th>rule</th><th>limit</th><th>measured</th>"
           "<th>result</th></tr>\n", f);
-    rule_row rows[6];
+    rule_row rows[7];
     int n = rule_rows(o, r, rows);
     for (int i = 0; i < n; i++) {
         fprintf(f, "<tr><td>%s</td><td class=\"num\">", rows[i].name);
@@ -362,12 +366,12 @@ static void write_failed(FILE *f, const frame_check *c, const ww_cmp_opts *o) {
     html(f, c->source);
     fputs(")</p>\n<div class=\"trio\">\n", f);
     const struct { const char *dir, *caption; int shown; } fig[] = {
-        {"expected/", "golden", 1}, {"", "actual", 1}, {"diff/", "diff (red: differs, yellow: "
-                                                                  "anti-aliasing)", c->measured}};
+        {"expected/", "golden", 1}, {"", "actual", 1},
+        {"diff/", "diff (red: differs, yellow: anti-aliasing)", c->measured}};
     for (size_t i = 0; i < 3; i++) {
         if (!fig[i].shown) {
-            fprintf(f, "<figure><figcaption>no %s: the images cannot be compared"
-                       "</figcaption></figure>\n", fig[i].caption);
+            fputs("<figure><figcaption>no diff: the images cannot be compared</figcaption>"
+                  "</figure>\n", f);
             continue;
         }
         fprintf(f, "<figure><a href=\"%s%s\"><img src=\"%s%s\" alt=\"%s\"></a>"
@@ -513,10 +517,9 @@ ww_result ww_golden_check(const ww_scene *sc, const ww_golden_opts *o, ww_golden
     if (n > 0 && !fr)
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for %lld frames",
                             (long long)n);
-    /* no rule at all: the golden must match exactly */
+    /* no rule at all: compare's default, no pixel over the per-pixel threshold */
     ww_cmp_opts cmp = o->cmp;
     int exact = !any_rule(&cmp);
-    if (exact) cmp.max = 0;
     if (o->log) fprintf(o->log, "golden: renderer key %s (%s | %s)\n", s->key,
                         o->renderer ? o->renderer : "", o->gl_version ? o->gl_version : "");
 

@@ -16,7 +16,7 @@
  * failing frame diff/frame_NNNNN.png (ww_cmp_write_diff) and expected/frame_NNNNN.png (a copy of
  * its golden, so that the folder is a self-contained CI artifact); stale ones of frames that now
  * pass are removed. No rule on at all (neither the scene nor the command line gives one) means
- * exact match: max 0.
+ * compare's default rule: no pixel over the per-pixel threshold (0: exact match).
  */
 #ifndef WW_GOLDEN_H
 #define WW_GOLDEN_H
