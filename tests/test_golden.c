@@ -429,3 +429,19 @@ TEST(golden_report_renders_in_headless_chromium) {
     ENSURE_MSG(green.outside >= SHOT_COLOR_PIXELS_MIN,
                "%ld green pixels on the page (the golden's copy)", green.outside);
 }
+
+/* the project's own goldens (flat, blessed on the renderer named in golden/KEY) pass through
+ * render --golden on that renderer, and golden/KEY is this renderer's key there */
+TEST(golden_project_goldens_pass_on_the_blessed_renderer) {
+    if (!ww_test_have_gl() || !ww_test_renderer_is_blessed()) return;
+    char key[WW_GOLDEN_KEY_SIZE], a[1024];
+    key_here(key, sizeof key);
+    char *blessed = ww_test_read_file("golden/KEY", NULL);
+    ENSURE_MSG(blessed && strncmp(blessed, key, strlen(key)) == 0 && blessed[strlen(key)] == '\n',
+               "golden/KEY is '%s', this renderer's key '%s' (run make golden)",
+               blessed ? blessed : "(missing)", key);
+    free(blessed);
+    snprintf(a, sizeof a, "render scenes/minimal.yaml --frames 1 -o '%s' --golden golden/minimal --quiet",
+             ww_test_tmpdir("golden_project"));
+    ENSURE_EQ_INT(ww_test_ww(a, NULL, NULL), 0);
+}
