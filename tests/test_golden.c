@@ -131,6 +131,8 @@ TEST(golden_renderer_key_rules) {
          "4.6 (Core Profile) Mesa 22.3.6", "amd-mesa-22.3"},
         {"zink (NVIDIA GeForce RTX 3060)", "4.6 (Core Profile) Mesa 24.0.5", "zink-mesa-24.0"},
         {"NVIDIA H100 80GB HBM3/PCIe/SSE2", "4.6.0 NVIDIA 535.104.05", "nvidia-535"},
+        /* as an H100's EGL device reported it (notes-gpu.txt) */
+        {"NVIDIA H100 80GB HBM3/PCIe/SSE2", "3.3.0 NVIDIA 580.159.04", "nvidia-580"},
         {"AMD Radeon Pro W6800", "4.6.14756 Compatibility Profile Context 20.45", "amd-gl-4.6"},
         {"", "", "unknown"},
         {NULL, NULL, "unknown"},
