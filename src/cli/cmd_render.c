@@ -185,10 +185,10 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     ww_golden_summary gs;
     r = ww_golden_check(sc, &go, &gs, err);
     if ((!r || r == WW_E_MISMATCH) && !jo.quiet)
-        fprintf(stderr, "golden: %lld frames, %lld passed, %lld failed, %lld missing; goldens from "
-                "%s; renderer key %s; report %s\n",
+        fprintf(stderr, "golden: %lld frames, %lld passed, %lld failed, %lld missing (%.2f s); "
+                "goldens from %s; renderer key %s; report %s\n",
                 (long long)gs.frames, (long long)gs.passed, (long long)gs.failed,
-                (long long)gs.missing, gs.golden_dir, gs.key, gs.report);
+                (long long)gs.missing, gs.wall_s, gs.golden_dir, gs.key, gs.report);
 done:
     ww_scene_free(sc);
     return r;

@@ -12,6 +12,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "io/stream.h"
@@ -165,6 +166,17 @@ static ww_result copy_file(const char *from, const char *to, ww_error *err) {
     return r;
 }
 
+/* the two files hold the same bytes */
+static int same_bytes(const char *a, const char *b) {
+    unsigned char *da = NULL, *db = NULL;
+    size_t la = 0, lb = 0;
+    int same = ww_read_file(a, &da, &la, NULL) == WW_OK && ww_read_file(b, &db, &lb, NULL) == WW_OK &&
+               la == lb && memcmp(da, db, la) == 0;
+    free(da);
+    free(db);
+    return same;
+}
+
 /* the folder of path (diff/, expected/), made when missing */
 static ww_result make_parent(const char *path, ww_error *err) {
     char dir[PATH_SIZE];
@@ -236,10 +248,20 @@ static ww_result check_frame(const ww_scene *sc, const ww_golden_opts *o, const 
         snprintf(f->why, sizeof f->why, "no golden image");
         return WW_OK;
     }
+    /* llvmpipe gives the same bytes run after run: equal files pass without decoding */
+    if (same_bytes(f->golden, actual)) {
+        f->status = FRAME_PASS;
+        f->measured = 1;
+        f->res = (ww_cmp_result){.identical = 1, .psnr = INFINITY, .ssim = 1, .pass = 1};
+        if (!(r = remove_stale(diff, err))) r = remove_stale(expected, err);
+        return r;
+    }
     ww_cmp_image a = {0}, b = {0};
     ww_error e = {0};
-    if ((r = ww_cmp_load(actual, &b, err))) goto done; /* the frame just rendered: an error */
-    if (ww_cmp_load(f->golden, &a, &e)) {
+    /* both decoded at once; after a failure, one by one to tell whose it was */
+    int loaded = ww_cmp_load_pair(f->golden, actual, &a, &b, &e) == WW_OK;
+    if (!loaded && (r = ww_cmp_load(actual, &b, err))) goto done; /* just rendered: an error */
+    if (!loaded && ww_cmp_load(f->golden, &a, &e)) {
         snprintf(f->why, sizeof f->why, "unreadable golden: %.300s", e.msg);
     } else if (ww_cmp_images(&a, &b, cmp, &f->res, &e)) {
         snprintf(f->why, sizeof f->why, "not comparable: %.300s", e.msg);
@@ -396,7 +418,7 @@ static void write_passed(FILE *f, const frame_check *fr, int64_t n, int64_t pass
         fputs("</code></td><td>", f);
         html(f, c->source);
         if (c->res.identical) {
-            fputs("</td><td colspan=\"3\">identical (content hash)</td></tr>\n", f);
+            fputs("</td><td colspan=\"3\">identical</td></tr>\n", f);
             continue;
         }
         fputs("</td><td class=\"num\">", f);
@@ -506,6 +528,8 @@ static void log_frame(FILE *log, const frame_check *c, const char *out_dir) {
 ww_result ww_golden_check(const ww_scene *sc, const ww_golden_opts *o, ww_golden_summary *s,
                           ww_error *err) {
     *s = (ww_golden_summary){0};
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     ww_golden_renderer_key(o->renderer, o->gl_version, s->key, sizeof s->key);
     ww_result r = ww_golden_prepare(o, err);
     if (r) return r;
@@ -542,6 +566,8 @@ ww_result ww_golden_check(const ww_scene *sc, const ww_golden_opts *o, ww_golden
         }
     }
     free(fr);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    s->wall_s = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     if (r || (s->failed == 0 && s->missing == 0)) return r;
     return ww_error_set(err, WW_E_MISMATCH, NULL, 0, 0,
                         "golden check failed: %lld of %lld frames differ, %lld without a golden; "

@@ -41,6 +41,7 @@ typedef struct ww_golden_opts {
 
 typedef struct ww_golden_summary {
     int64_t frames, passed, failed, missing;  /* failed excludes missing */
+    double wall_s;                             /* time the check took (compare, diffs, report) */
     char key[WW_GOLDEN_KEY_SIZE];              /* the renderer key of the run */
     char golden_dir[600];    /* the folder(s) the goldens were taken from, with counts if several */
     char report[600];        /* path of the HTML report */
