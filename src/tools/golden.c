@@ -246,7 +246,8 @@ static ww_result check_frame(const ww_scene *sc, const ww_golden_opts *o, const 
     if (!find_golden(sc, o, key, name, f)) {
         f->status = FRAME_MISSING;
         snprintf(f->why, sizeof f->why, "no golden image");
-        return WW_OK;
+        if (!(r = remove_stale(diff, err))) r = remove_stale(expected, err);
+        return r;
     }
     /* llvmpipe gives the same bytes run after run: equal files pass without decoding */
     if (same_bytes(f->golden, actual)) {
@@ -289,7 +290,7 @@ done:
 static const char css[] =
     "body{font:14px/1.4 sans-serif;margin:16px;color:#222;background:#fff}"
     "h1{padding:8px 12px;color:#fff;font-size:20px}"
-    ".pass{background:#2e7d32}.fail{background:#b71c1c}.missing{background:#e65100}"
+    ".pass{background:#2e7d32}.fail{background:#b71c1c}"
     "table{border-collapse:collapse;margin:8px 0}"
     "th,td{border:1px solid #bbb;padding:2px 8px;text-align:left;vertical-align:top}"
     "th{background:#eceff1}td.num{text-align:right;font-family:monospace}"
