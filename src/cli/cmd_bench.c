@@ -12,6 +12,7 @@ static const char usage[] =
     "       waterworld bench quality [--knob NAME] [--size WxH] [--frame N] [--repeats N] [--json]\n"
     "                                [-o DIR] [SCENE.yaml]\n"
     "       waterworld bench waves [--json] [-o DIR]\n"
+    "       waterworld bench compare [--size WxH] [--repeats N] [--json] [SCENE.yaml]\n"
     "\n"
     "  render (default)  per backend (egl, osmesa), scene (demo, lake) and size (256x144,\n"
     "                    1280x720): ms per frame split into simulate / render / read back /\n"
@@ -37,6 +38,12 @@ static const char usage[] =
     "                    iterations, residual and time at fold margins 0.5, 0.2, 0.05; GPU ms\n"
     "                    per frame at 1280x720 against component count, fade on and off; and\n"
     "                    the figure DIR/waves.png\n"
+    "  compare           ms to compare a PNG pair (frames 0 and 1 of SCENE, default\n"
+    "                    scenes/demo.yaml, at --size, default 1280x720): ours in process (load +\n"
+    "                    every metric; the metrics alone; an identical pair), ours as a process,\n"
+    "                    and ImageMagick's `compare -metric RMSE` by fork/exec in the same run,\n"
+    "                    with the ratio (issue 6's target: ours at least 5x faster); best of\n"
+    "                    --repeats (default 7) and the median\n"
     "  -o DIR            folder for the waves, sim and quality figures (default out/bench)\n"
     "  --frames N        frames per configuration (default 20)\n"
     "  --json            one JSON object per line\n";
@@ -86,6 +93,31 @@ static ww_result bench_quality(const ww_bench_opts *b, int nscenes, const char *
     return ww_bench_quality(&q, stdout, err);
 }
 
+/* bench compare's options: a scene, --size, --repeats, --json */
+static ww_result bench_compare(const ww_bench_opts *b, int nscenes, int other, const char *size,
+                               const char *repeats, ww_error *err) {
+    ww_bench_compare_opts c = {.scene = b->scenes[0], .json = b->json};
+    if (nscenes > 1 || other)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "bench compare takes one scene, --size, --repeats and --json only");
+    if (size) {
+        const char *x = strchr(size, 'x');
+        char wtext[16];
+        snprintf(wtext, sizeof wtext, "%.*s", x ? (int)(x - size) : 0, size);
+        long long w = parse_whole(wtext, 16, 16384), h = x ? parse_whole(x + 1, 16, 16384) : -1;
+        if (w < 0 || h < 0)
+            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                                "--size wants WIDTHxHEIGHT with each in 16..16384, got '%s'", size);
+        c.width = (int)w;
+        c.height = (int)h;
+    }
+    long long n = repeats ? parse_whole(repeats, 1, 64) : 0;
+    if (n < 0)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--repeats wants 1..64, got '%s'", repeats);
+    c.repeats = (int)n;
+    return ww_bench_compare(&c, stdout, err);
+}
+
 ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     ww_bench_opts o = {0};
     const char *what = "render", *frames = NULL, *out = NULL;
@@ -114,7 +146,8 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         if (ww_cli_opt(argc, argv, &i, "--repeats", &repeats, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--knob", &knob, &r, err)) continue;
         if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0 ||
-            strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0) {
+            strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0 ||
+            strcmp(argv[i], "compare") == 0) {
             what = argv[i];
             continue;
         }
@@ -132,6 +165,8 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         const char *q[] = {size, frame, repeats, knob};
         return bench_quality(&o, nscenes, frames, out, q, tiny, err);
     }
+    if (strcmp(what, "compare") == 0) return bench_compare(&o, nscenes, frames || frame || knob || out,
+                                                           size, repeats, err);
     if (size || frame || repeats || knob)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench quality only",
                             size ? "--size" : frame ? "--frame" : repeats ? "--repeats" : "--knob");

@@ -12,6 +12,8 @@
  *                                           // error of named metrics against dt next to the
  *                                           // speed (a table and DIR/sim.png); the simulation's
  *                                           // share of a frame of scenes/demo.yaml
+ *   ww_bench_compare(&copts, stdout, &err); // ms to compare a 1280x720 PNG pair, ours next to
+ *                                           // ImageMagick's compare (bench_compare.c)
  */
 #ifndef WW_BENCH_H
 #define WW_BENCH_H
@@ -107,5 +109,18 @@ ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err);
  * files kept); its job stats, or WW_E_BACKEND with the child's message */
 ww_result ww_bench_render_once(const char *scene, int width, int height, int frames,
                                ww_job_stats *stats, ww_error *err);
+
+/* ---- bench compare (bench_compare.c) -------------------------------------------------------- */
+
+typedef struct ww_bench_compare_opts {
+    const char *scene;       /* default scenes/demo.yaml: frames 0 and 1 are the pair */
+    int width, height;       /* default 1280x720 */
+    int repeats;             /* timed runs of each (0: 7); best and median reported */
+    int json;                /* one JSON object instead of a table */
+} ww_bench_compare_opts;
+
+/* render the pair, then time our compare (load + metrics, metrics alone, the identical fast
+ * path, the CLI as a process) and ImageMagick's `compare -metric RMSE` by fork/exec */
+ww_result ww_bench_compare(const ww_bench_compare_opts *o, FILE *to, ww_error *err);
 
 #endif

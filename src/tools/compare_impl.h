@@ -4,8 +4,8 @@
  * pixelmatch's method (Mapbox's published description): both pixels are blended on white on an
  * 8-bit scale, their difference is weighed in YIQ after Kotsarenko & Ramos 2010,
  *   delta = 0.5053 dY^2 + 0.299 dI^2 + 0.1957 dQ^2,
- * and a pixel differs when delta > 35215 t^2 (35215: the largest delta, black against white;
- * t: the threshold in 0..1). A differing pixel is anti-aliasing (Vysniauskas 2009, "Anti-aliased
+ * and a pixel differs when delta > 35215 t^2 (35215: the largest delta, red against cyan; t: the
+ * threshold in 0..1). A differing pixel is anti-aliasing (Vysniauskas 2009, "Anti-aliased
  * pixel and intensity slope detector") when, in either image, its 3x3 neighbourhood holds at most
  * two pixels of its own brightness, both a darker and a brighter one, and the darkest or the
  * brightest of them sits in a flat area (3+ identical neighbours) in both images.
@@ -15,7 +15,7 @@
 
 #include "tools/compare.h"
 
-#define WW_CMP_YIQ_MAX_DELTA 35215.0 /* pixelmatch: delta of black against white */
+#define WW_CMP_YIQ_MAX_DELTA 35215.0 /* pixelmatch: the largest delta (red against cyan) */
 
 /* pixel kinds of the diff image */
 enum { WW_CMP_SAME = 0, WW_CMP_DIFF = 1, WW_CMP_AA = 2 };

@@ -1,0 +1,509 @@
+/* test_compare.c - `waterworld compare` and tools/compare.h: every metric against hand-computed
+ * values on tiny synthetic images, the 8/16-bit and grey/RGB twins, ImageMagick's RMSE/PSNR and
+ * OpenImageIO idiff's max/mean on rendered frames, the rules and exit codes, JSON, the diff image,
+ * folders, and the EXR NaN/Inf rules.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/writers.h"
+#include "test.h"
+#include "tools/compare_impl.h"
+
+/* the metrics are sums in double of floats of v / 255: what is left is rounding */
+#define METRIC_TOL 1e-9
+#define LEVEL_TOL 1e-4         /* 8-bit levels from float differences */
+#define SSIM_TOL 1e-6          /* SSIM from float luma and double window sums */
+/* ImageMagick prints 6 significant digits: RMSE 0.00915395, PSNR 40.7678 */
+#define IM_RMSE_TOL 1e-6
+#define IM_PSNR_TOL 1e-3
+/* idiff prints 6 significant digits of values in [0, 1] */
+#define IDIFF_TOL 1e-6
+
+/* a w x h PNG (3 or 4 channels) from bytes */
+static void write_png(const char *path, int w, int h, int ch, const unsigned char *px) {
+    ww_image im;
+    ENSURE(ww_image_alloc(&im, w, h, ch, WW_PIX_U8) == 0);
+    memcpy(im.u8, px, (size_t)w * (size_t)h * (size_t)ch);
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_write_png(path, &im, &err), WW_OK);
+    ww_image_free(&im);
+}
+
+/* a 4x4 RGB image of one colour with pixel (px, py) set to another */
+static void fill4(unsigned char *px, const unsigned char c[3], int x, int y, const unsigned char d[3]) {
+    for (int i = 0; i < 16; i++) memcpy(px + 3 * i, c, 3);
+    memcpy(px + 3 * (y * 4 + x), d, 3);
+}
+
+/* load two PNGs and compare them under o */
+static ww_result cmp_files(const char *pa, const char *pb, const ww_cmp_opts *o, ww_cmp_result *res) {
+    ww_cmp_image a, b;
+    ww_error err = {0};
+    ww_result r = ww_cmp_load_pair(pa, pb, &a, &b, &err);
+    if (r == WW_OK) r = ww_cmp_images(&a, &b, o, res, &err);
+    ww_cmp_image_free(&a);
+    ww_cmp_image_free(&b);
+    return r;
+}
+
+/* a number after key in text (e.g. "\"rmse\":"), NAN when absent */
+static double num_after(const char *text, const char *key) {
+    const char *p = text ? strstr(text, key) : NULL;
+    return p ? strtod(p + strlen(key), NULL) : NAN;
+}
+
+TEST(compare_hand_metrics) {
+    const char *dir = ww_test_tmpdir("compare_hand");
+    char pa[600], pb[600];
+    snprintf(pa, sizeof pa, "%s/a.png", dir);
+    snprintf(pb, sizeof pb, "%s/b.png", dir);
+    unsigned char a[48], b[48];
+    const unsigned char base[3] = {10, 20, 30}, other[3] = {50, 20, 10}; /* +40, 0, -20 */
+    fill4(a, base, 1, 1, base);
+    fill4(b, base, 1, 1, other);
+    write_png(pa, 4, 4, 3, a);
+    write_png(pb, 4, 4, 3, b);
+
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_cmp_result r;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(!r.identical);
+    ENSURE_NEAR(r.max_abs, 40.0, LEVEL_TOL);
+    ENSURE_NEAR(r.mean_abs, (40.0 + 20.0) / 48.0, LEVEL_TOL);           /* 16 px x 3 channels */
+    double mse = (40.0 * 40.0 + 20.0 * 20.0) / (255.0 * 255.0) / 48.0;
+    ENSURE_NEAR(r.rmse, sqrt(mse), METRIC_TOL);
+    ENSURE_NEAR(r.psnr, 10.0 * log10(1.0 / mse), 1e-6);
+    ENSURE_EQ_INT(r.diff_pixels, 1);
+    ENSURE_NEAR(r.diff_percent, 100.0 / 16.0, METRIC_TOL);
+    ENSURE_NEAR(r.rel_max, 40.0 / 50.0, 1e-6);
+    /* no rule given: exact match required, so this fails and says why */
+    ENSURE(!r.pass && strstr(r.why, "no rule given"));
+
+    /* the rules, each on its own, at their edges */
+    o.max = 40;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_MSG(r.pass, "--max 40: %s", r.why);
+    o.max = 39;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(!r.pass && strstr(r.why, "--max"));
+    o = ww_cmp_default_opts();
+    o.threshold = 40; /* a pixel differs when over 40: none does */
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_EQ_INT(r.diff_pixels, 0);
+    ENSURE(r.pass);
+    o.threshold = 39.5;
+    o.fail_pixels = 0;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(!r.pass && r.diff_pixels == 1);
+    o = ww_cmp_default_opts();
+    o.fail_percent = 6.25;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(r.pass);
+    o.fail_percent = 6.2;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(!r.pass);
+    o = ww_cmp_default_opts();
+    o.psnr_min = 10.0 * log10(1.0 / mse) - 0.01;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(r.pass);
+    o.psnr_min += 0.02;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(!r.pass && strstr(r.why, "PSNR"));
+}
+
+TEST(compare_ssim_by_formula) {
+    /* constant grey images x and y: sigma 0, so SSIM = (2xy + C1) / (x^2 + y^2 + C1) */
+    const char *dir = ww_test_tmpdir("compare_ssim");
+    char pa[600], pb[600];
+    snprintf(pa, sizeof pa, "%s/a.png", dir);
+    snprintf(pb, sizeof pb, "%s/b.png", dir);
+    unsigned char a[16 * 16 * 3], b[16 * 16 * 3];
+    memset(a, 100, sizeof a);
+    memset(b, 120, sizeof b);
+    write_png(pa, 16, 16, 3, a);
+    write_png(pb, 16, 16, 3, b);
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_cmp_result r;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    double x = 100.0 / 255, y = 120.0 / 255, c1 = 0.01 * 0.01;
+    ENSURE_NEAR(r.ssim, (2 * x * y + c1) / (x * x + y * y + c1), SSIM_TOL);
+
+    /* identical pixels through the full computation (the hash fast path defeated): exactly 1 */
+    ww_cmp_image ia, ib;
+    ww_error err = {0};
+    unsigned char n[16 * 16 * 3];
+    for (size_t i = 0; i < sizeof n; i++) n[i] = (unsigned char)(i * 37 % 251);
+    write_png(pa, 16, 16, 3, n);
+    ENSURE_EQ_INT(ww_cmp_load_pair(pa, pa, &ia, &ib, &err), WW_OK);
+    ib.hash ^= 1;
+    ENSURE_EQ_INT(ww_cmp_images(&ia, &ib, &o, &r, &err), WW_OK);
+    ENSURE(!r.identical);
+    ENSURE(r.ssim == 1.0 && r.max_abs == 0 && isinf(r.psnr) && r.pass);
+    /* and with the fast path */
+    ib.hash ^= 1;
+    ENSURE_EQ_INT(ww_cmp_images(&ia, &ib, &o, &r, &err), WW_OK);
+    ENSURE(r.identical && r.pass);
+    ww_cmp_image_free(&ia);
+    ww_cmp_image_free(&ib);
+}
+
+TEST(compare_yiq_pure_colours) {
+    /* Kotsarenko & Ramos 2010 delta of red against black on the 8-bit scale */
+    const float red[4] = {1, 0, 0, 1}, black[4] = {0, 0, 0, 1}, cyan[4] = {0, 1, 1, 1};
+    double y = 0.29889531 * 255, i = 0.59597799 * 255, q = 0.21147017 * 255;
+    double want = 0.5053 * y * y + 0.299 * i * i + 0.1957 * q * q;
+    ENSURE_NEAR(ww_cmp_yiq_delta(red, black), want, 1e-6 * want);
+    /* red against cyan is the largest delta, pixelmatch's 35215 (35214.749 by the formula) */
+    ENSURE_NEAR(ww_cmp_yiq_delta(red, cyan), WW_CMP_YIQ_MAX_DELTA, 1.0);
+
+    /* a red pixel on black: over the threshold 0.5, under 0.6 (sqrt(want / 35215) = 0.544) */
+    const char *dir = ww_test_tmpdir("compare_yiq");
+    char pa[600], pb[600];
+    snprintf(pa, sizeof pa, "%s/a.png", dir);
+    snprintf(pb, sizeof pb, "%s/b.png", dir);
+    unsigned char a[48], b[48];
+    const unsigned char k[3] = {0, 0, 0}, r8[3] = {255, 0, 0};
+    fill4(a, k, 2, 2, k);
+    fill4(b, k, 2, 2, r8);
+    write_png(pa, 4, 4, 3, a);
+    write_png(pb, 4, 4, 3, b);
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_cmp_result r;
+    o.yiq = 0.5;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_EQ_INT(r.yiq_pixels, 1);
+    ENSURE_EQ_INT(r.aa_pixels, 0);
+    o.yiq = 0.6;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_EQ_INT(r.yiq_pixels, 0);
+}
+
+/* 8x8: black left of x = 4, white right of it, and a grey column at x = 4 (an edge's
+ * anti-aliasing) whose grey differs between the two images */
+static void edge_image(unsigned char *px, unsigned char grey, int spot) {
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 8; x++) {
+            unsigned char v = x < 4 ? 0 : x > 4 ? 255 : grey;
+            memset(px + 3 * (y * 8 + x), v, 3);
+        }
+    /* and, with spot, a pixel in the flat white area that is not anti-aliasing */
+    if (spot) memset(px + 3 * (3 * 8 + 6), 0, 3);
+}
+
+TEST(compare_aa_edge) {
+    const char *dir = ww_test_tmpdir("compare_aa");
+    char pa[600], pb[600];
+    snprintf(pa, sizeof pa, "%s/a.png", dir);
+    snprintf(pb, sizeof pb, "%s/b.png", dir);
+    unsigned char a[8 * 8 * 3], b[8 * 8 * 3];
+    edge_image(a, 96, 0);
+    edge_image(b, 176, 1);
+    write_png(pa, 8, 8, 3, a);
+    write_png(pb, 8, 8, 3, b);
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_cmp_result r;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_EQ_INT(r.aa_pixels, 8);  /* the whole grey column */
+    ENSURE_EQ_INT(r.yiq_pixels, 1); /* the black spot on white */
+    o.detect_aa = 0;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_EQ_INT(r.aa_pixels, 0);
+    ENSURE_EQ_INT(r.yiq_pixels, 9);
+
+    /* the diff image: AA yellow, the spot red, the rest grey */
+    char pd[600];
+    snprintf(pd, sizeof pd, "%s/diff.png", dir);
+    ww_cmp_image ia, ib;
+    ww_error err = {0};
+    o = ww_cmp_default_opts();
+    o.threshold = 255; /* only pixelmatch's classes paint */
+    ENSURE_EQ_INT(ww_cmp_load_pair(pa, pb, &ia, &ib, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_write_diff(pd, &ia, &ib, &o, &err), WW_OK);
+    ww_cmp_image_free(&ia);
+    ww_cmp_image_free(&ib);
+    ww_image d;
+    ENSURE_EQ_INT(ww_read_png(pd, &d, &err), WW_OK);
+    const unsigned char *spot = d.u8 + 3 * (3 * 8 + 6), *aa = d.u8 + 3 * (5 * 8 + 4);
+    const unsigned char *flat = d.u8 + 3 * (1 * 8 + 1);
+    ENSURE(spot[0] == 255 && spot[1] == 0 && spot[2] == 0);
+    ENSURE(aa[0] == 255 && aa[1] == 255 && aa[2] == 0);
+    /* black faded to 10% contrast: 255 - 25.5 */
+    ENSURE(flat[0] == flat[1] && flat[1] == flat[2] && flat[0] >= 229 && flat[0] <= 230);
+    ww_image_free(&d);
+}
+
+/* ImageMagick writes the twins: 16-bit RGB and 8-bit grey of an 8-bit RGB grey picture */
+TEST(compare_twins_16bit_grey) {
+    const char *dir = ww_test_tmpdir("compare_twins");
+    char p8[600], p16[600], pg[600], cmd[4096];
+    snprintf(p8, sizeof p8, "%s/rgb8.png", dir);
+    snprintf(p16, sizeof p16, "%s/rgb16.png", dir);
+    snprintf(pg, sizeof pg, "%s/grey8.png", dir);
+    unsigned char px[8 * 8 * 3];
+    for (int i = 0; i < 64; i++) memset(px + 3 * i, (i * 53) % 256, 3);
+    write_png(p8, 8, 8, 3, px);
+    snprintf(cmd, sizeof cmd, "convert %s -depth 16 PNG48:%s && convert %s -colorspace Gray "
+             "-define png:color-type=0 -depth 8 %s", p8, p16, p8, pg);
+    ENSURE_MSG(ww_test_run(cmd, NULL, NULL) == 0, "ImageMagick convert failed: %s", cmd);
+    ww_cmp_image a, b, g;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_cmp_load(p8, &a, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_load(p16, &b, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_load(pg, &g, &err), WW_OK);
+    ENSURE(a.bits == 8 && b.bits == 16 && g.channels == 1 && a.channels == 3);
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_cmp_result r;
+    ENSURE_EQ_INT(ww_cmp_images(&a, &b, &o, &r, &err), WW_OK);
+    ENSURE_MSG(r.identical, "16-bit twin: max %g", r.max_abs);
+    ENSURE_EQ_INT(ww_cmp_images(&a, &g, &o, &r, &err), WW_OK);
+    ENSURE_MSG(r.identical, "grey twin: max %g", r.max_abs);
+    ww_cmp_image_free(&a);
+    ww_cmp_image_free(&b);
+    ww_cmp_image_free(&g);
+}
+
+TEST(compare_cli_exit_codes) {
+    const char *dir = ww_test_tmpdir("compare_exit");
+    char pa[600], pb[600], pc[600], pt[600], args[4096], out[600];
+    snprintf(pa, sizeof pa, "%s/a.png", dir);
+    snprintf(pb, sizeof pb, "%s/b.png", dir);
+    snprintf(pc, sizeof pc, "%s/c.png", dir);
+    snprintf(pt, sizeof pt, "%s/t.png", dir);
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    unsigned char a[48], b[48], c[8 * 4 * 3] = {0};
+    const unsigned char k[3] = {0, 0, 0}, g[3] = {3, 3, 3};
+    fill4(a, k, 0, 0, k);
+    fill4(b, k, 0, 0, g);
+    write_png(pa, 4, 4, 3, a);
+    write_png(pb, 4, 4, 3, b);
+    write_png(pc, 8, 4, 3, c);
+    ENSURE(ww_test_write_text(pt, "not an image") == 0);
+
+    snprintf(args, sizeof args, "compare %s %s", pa, pa);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "identical"));
+    snprintf(args, sizeof args, "compare %s %s", pa, pb);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 1);
+    snprintf(args, sizeof args, "compare %s %s --max 3", pa, pb);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
+    snprintf(args, sizeof args, "compare %s %s --max=2", pa, pb);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 1);
+    /* bad input: sizes differ, not an image, no such file, a bad threshold */
+    snprintf(args, sizeof args, "compare %s %s", pa, pc);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, out), 2);
+    ENSURE(ww_test_file_contains(out, "sizes differ"));
+    snprintf(args, sizeof args, "compare %s %s", pa, pt);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, out), 2);
+    ENSURE(ww_test_file_contains(out, "t.png"));
+    snprintf(args, sizeof args, "compare %s %s/none.png", pa, dir);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 2);
+    snprintf(args, sizeof args, "compare %s %s --max -1", pa, pb);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 2);
+    snprintf(args, sizeof args, "compare %s", pa);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 2);
+}
+
+TEST(compare_cli_folders_json_diff) {
+    const char *dir = ww_test_tmpdir("compare_dirs");
+    char e[600], a[600], d[600], p[700], args[4096], out[600];
+    snprintf(e, sizeof e, "%s/expected", dir);
+    snprintf(a, sizeof a, "%s/actual", dir);
+    snprintf(d, sizeof d, "%s/diffs", dir);
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "mkdir -p %s %s", e, a);
+    ENSURE(ww_test_run(cmd, NULL, NULL) == 0);
+    unsigned char k[48], x[48];
+    const unsigned char black[3] = {0, 0, 0}, red[3] = {200, 0, 0};
+    fill4(k, black, 0, 0, black);
+    fill4(x, black, 2, 1, red);
+    /* frame 0 equal, frame 1 differs at (2, 1), frame 2 missing from actual */
+    snprintf(p, sizeof p, "%s/frame_00000.png", e), write_png(p, 4, 4, 3, k);
+    snprintf(p, sizeof p, "%s/frame_00001.png", e), write_png(p, 4, 4, 3, k);
+    snprintf(p, sizeof p, "%s/frame_00002.png", e), write_png(p, 4, 4, 3, k);
+    snprintf(p, sizeof p, "%s/frame_00000.png", a), write_png(p, 4, 4, 3, k);
+    snprintf(p, sizeof p, "%s/frame_00001.png", a), write_png(p, 4, 4, 3, x);
+
+    snprintf(args, sizeof args, "compare %s %s --json --diff %s", e, a, d);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 1);
+    char *text = ww_test_read_file(out, NULL);
+    ENSURE_EQ_INT(ww_test_json_lines(text), 4); /* 3 frames and the summary */
+    ENSURE(text && strstr(text, "\"name\":\"frame_00002.png\",\"missing\":true"));
+    ENSURE(text && strstr(text, "\"summary\":true,\"pairs\":2,\"passed\":1,\"failed\":1,\"missing\":1"));
+    free(text);
+
+    /* the diff of the failing frame only: red at (2, 1), faded grey elsewhere */
+    snprintf(p, sizeof p, "%s/frame_00000.png", d);
+    ENSURE(ww_test_read_file(p, NULL) == NULL);
+    snprintf(p, sizeof p, "%s/frame_00001.png", d);
+    ww_image im;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_read_png(p, &im, &err), WW_OK);
+    if (im.u8) {
+        const unsigned char *hit = im.u8 + 3 * (1 * 4 + 2), *calm = im.u8;
+        ENSURE(hit[0] == 255 && hit[1] == 0 && hit[2] == 0);
+        ENSURE(calm[0] == calm[1] && calm[1] == calm[2] && calm[0] > 200);
+    }
+    ww_image_free(&im);
+
+    /* the text report names the missing frame; an extra frame fails too */
+    snprintf(args, sizeof args, "compare %s %s", e, a);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 1);
+    ENSURE(ww_test_file_contains(out, "frame_00002.png: FAIL: missing"));
+    snprintf(p, sizeof p, "%s/frame_00001.png", a), write_png(p, 4, 4, 3, k);
+    snprintf(p, sizeof p, "%s/frame_00002.png", a), write_png(p, 4, 4, 3, k);
+    snprintf(args, sizeof args, "compare %s %s", e, a);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    snprintf(p, sizeof p, "%s/frame_00003.png", a), write_png(p, 4, 4, 3, k);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 1);
+    ENSURE(ww_test_file_contains(out, "frame_00003.png: FAIL: extra"));
+}
+
+/* our RMSE/PSNR against ImageMagick's on an RGBA pair (premultiplied colour, alpha not counted) */
+TEST(compare_imagemagick_alpha) {
+    const char *dir = ww_test_tmpdir("compare_im_alpha");
+    char pa[600], pb[600], cmd[2048], out[600];
+    snprintf(pa, sizeof pa, "%s/a.png", dir);
+    snprintf(pb, sizeof pb, "%s/b.png", dir);
+    snprintf(out, sizeof out, "%s/im.txt", dir);
+    unsigned char a[64], b[64];
+    for (int i = 0; i < 16; i++) {
+        unsigned char pa4[4] = {(unsigned char)(i * 16), 200, (unsigned char)(255 - i * 9), (unsigned char)(i * 17)};
+        unsigned char pb4[4] = {(unsigned char)(i * 15), 190, 40, (unsigned char)(255 - i * 5)};
+        memcpy(a + 4 * i, pa4, 4);
+        memcpy(b + 4 * i, pb4, 4);
+    }
+    write_png(pa, 4, 4, 4, a);
+    write_png(pb, 4, 4, 4, b);
+    snprintf(cmd, sizeof cmd, "compare -metric RMSE %s %s null:", pa, pb);
+    ENSURE(ww_test_run(cmd, NULL, out) >= 0); /* IM prints the metric on stderr */
+    char *im = ww_test_read_file(out, NULL);
+    double im_rmse = num_after(im, "(");
+    free(im);
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_cmp_result r;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_NEAR(r.rmse, im_rmse, IM_RMSE_TOL);
+}
+
+/* two rendered frames against ImageMagick compare and OpenImageIO idiff */
+TEST(compare_tools_agree_on_frames) {
+    if (!ww_test_have_gl()) return;
+    const char *dir = ww_test_tmpdir("compare_frames");
+    char cmd[4096], f0[600], f1[600], out[600];
+    snprintf(cmd, sizeof cmd, "%s render scenes/demo.yaml --frames 0:2 --size 256x144 -o %s --quiet",
+             ww_test_bin(), dir);
+    ENSURE_EQ_INT(ww_test_run(cmd, NULL, NULL), 0);
+    snprintf(f0, sizeof f0, "%s/frame_00000.png", dir);
+    snprintf(f1, sizeof f1, "%s/frame_00001.png", dir);
+    snprintf(out, sizeof out, "%s/tool.txt", dir);
+
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_cmp_result r;
+    ENSURE_EQ_INT(cmp_files(f0, f1, &o, &r), WW_OK);
+    ENSURE_MSG(r.max_abs > 0, "frames 0 and 1 of the demo should differ");
+
+    snprintf(cmd, sizeof cmd, "compare -metric RMSE %s %s null:", f0, f1);
+    ww_test_run(cmd, NULL, out); /* exit 1: they differ; the metric is on stderr */
+    char *t = ww_test_read_file(out, NULL);
+    ENSURE_NEAR(r.rmse, num_after(t, "("), IM_RMSE_TOL);
+    free(t);
+    snprintf(cmd, sizeof cmd, "compare -metric PSNR %s %s null:", f0, f1);
+    ww_test_run(cmd, NULL, out);
+    t = ww_test_read_file(out, NULL);
+    double im_psnr = t ? strtod(t, NULL) : NAN;
+    ENSURE_NEAR(r.psnr, im_psnr, IM_PSNR_TOL);
+    free(t);
+
+    /* idiff reports errors on [0, 1]; ours are in levels */
+    snprintf(cmd, sizeof cmd, "idiff %s %s", f0, f1);
+    ww_test_run(cmd, out, NULL);
+    t = ww_test_read_file(out, NULL);
+    ENSURE_NEAR(r.mean_abs / 255.0, num_after(t, "Mean error = "), IDIFF_TOL);
+    ENSURE_NEAR(r.max_abs / 255.0, num_after(t, "Max error  = "), IDIFF_TOL);
+    free(t);
+}
+
+/* EXR: NaN/Inf rules */
+static void write_exr(const char *path, const float px[8]) {
+    ww_image im;
+    ENSURE(ww_image_alloc(&im, 2, 1, 4, WW_PIX_F32) == 0);
+    memcpy(im.f32, px, 8 * sizeof(float));
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_write_exr(path, &im, NULL, &err), WW_OK);
+    ww_image_free(&im);
+}
+
+TEST(compare_exr_nonfinite) {
+    const char *dir = ww_test_tmpdir("compare_exr");
+    char pa[600], pb[600], pp[600];
+    snprintf(pa, sizeof pa, "%s/a.exr", dir);
+    snprintf(pb, sizeof pb, "%s/b.exr", dir);
+    snprintf(pp, sizeof pp, "%s/p.png", dir);
+    /* pixel 0 carries the non-finite values, pixel 1 a small relative difference (half floats:
+     * 2.0 against 2.00390625, one half step, 0.195%) */
+    const float base[8] = {NAN, INFINITY, -INFINITY, 1, 2.0f, 0.5f, 0.25f, 1};
+    float other[8];
+    memcpy(other, base, sizeof other);
+    other[4] = 2.00390625f;
+    write_exr(pa, base);
+    write_exr(pb, other);
+    ww_cmp_opts o = ww_cmp_default_opts();
+    o.rel_max = 0.002;
+    ww_cmp_result r;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(r.hdr && !r.identical);
+    ENSURE_EQ_INT(r.nonfinite, 0); /* NaN = NaN, +Inf = +Inf, -Inf = -Inf */
+    ENSURE_NEAR(r.max_abs, 0.00390625, 1e-9);
+    ENSURE_NEAR(r.rel_max, 0.00390625 / 2.00390625, 1e-9);
+    ENSURE_MSG(r.pass, "%s", r.why);
+    o.rel_max = 0.001;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE(!r.pass && strstr(r.why, "relative"));
+
+    /* NaN against a number, +Inf against -Inf: failing pixels, whatever the rules */
+    other[4] = 2.0f;
+    other[0] = 0.0f;
+    write_exr(pb, other);
+    o = ww_cmp_default_opts();
+    o.max = 1e9;
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_EQ_INT(r.nonfinite, 1);
+    ENSURE_EQ_INT(r.diff_pixels, 1);
+    ENSURE(!r.pass && strstr(r.why, "NaN"));
+    other[0] = NAN;
+    other[1] = -INFINITY;
+    write_exr(pb, other);
+    ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
+    ENSURE_EQ_INT(r.nonfinite, 1);
+    ENSURE(!r.pass);
+
+    /* EXR against PNG is bad input, not a difference */
+    unsigned char px[6] = {0};
+    write_png(pp, 2, 1, 3, px);
+    ENSURE_EQ_INT(cmp_files(pa, pp, &o, &r), WW_E_INCONSISTENT);
+}
+
+TEST(compare_opt_arg) {
+    char *argv[] = {"--yiq", "0.2", "--no-aa", "--fail-pixels=12", "--fail-pixels", "1.5", "--ssim-min", "2"};
+    ww_cmp_opts o = ww_cmp_default_opts();
+    ww_result r = WW_OK;
+    ww_error err = {0};
+    int i = 0;
+    ENSURE(ww_cmp_opt_arg(8, argv, &i, &o, &r, &err) && r == WW_OK && i == 1);
+    ENSURE(o.yiq == 0.2 && o.yiq_pixels == 0); /* --yiq alone is a rule */
+    i = 2;
+    ENSURE(ww_cmp_opt_arg(8, argv, &i, &o, &r, &err) && !o.detect_aa);
+    i = 3;
+    ENSURE(ww_cmp_opt_arg(8, argv, &i, &o, &r, &err) && r == WW_OK && o.fail_pixels == 12);
+    i = 4;
+    ENSURE(ww_cmp_opt_arg(8, argv, &i, &o, &r, &err) && r == WW_E_USAGE); /* not whole */
+    r = WW_OK;
+    i = 6;
+    ENSURE(ww_cmp_opt_arg(8, argv, &i, &o, &r, &err) && r == WW_E_USAGE); /* out of range */
+    char *other[] = {"--frames"};
+    i = 0;
+    ENSURE(!ww_cmp_opt_arg(1, other, &i, &o, &r, &err));
+}
