@@ -4,17 +4,20 @@
 
 #include "cli/cli.h"
 #include "gfx/backend.h"
+#include "tools/golden.h"
 
 static const char usage[] =
-    "usage: waterworld backends [--renderer]\n"
+    "usage: waterworld backends [--renderer | --key]\n"
     "\n"
     "Opens each GL backend (auto, egl, osmesa) and prints what it runs on, or why it failed.\n"
     "  --renderer   print only \"GL_RENDERER | GL_VERSION\" of the auto backend (golden/RENDERER)\n"
+    "  --key        print only the auto backend's renderer key, e.g. llvmpipe-mesa-22.3: the\n"
+    "               folder render --golden DIR looks in first (DIR/KEY/frame_XXXXX.png)\n"
     "\n"
     "Exit: 0 when at least one backend opens, 3 when none does.\n";
 
 ww_result ww_cmd_backends(int argc, char **argv, ww_error *err) {
-    int only_renderer = 0;
+    int only_renderer = 0, only_key = 0;
     for (int i = 0; i < argc; i++) {
         if (ww_cli_is_help(argv[i])) {
             fputs(usage, stdout);
@@ -22,6 +25,10 @@ ww_result ww_cmd_backends(int argc, char **argv, ww_error *err) {
         }
         if (strcmp(argv[i], "--renderer") == 0) {
             only_renderer = 1;
+            continue;
+        }
+        if (strcmp(argv[i], "--key") == 0) {
+            only_key = 1;
             continue;
         }
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "backends: unknown option '%s'", argv[i]);
@@ -35,17 +42,24 @@ ww_result ww_cmd_backends(int argc, char **argv, ww_error *err) {
         ww_error e = {0};
         if (ww_backend_open(kinds[k].kind, &b, &e) == WW_OK) {
             opened++;
+            char key[WW_GOLDEN_KEY_SIZE];
+            ww_golden_renderer_key(ww_backend_renderer(b), ww_backend_version(b), key, sizeof key);
+            if (only_key) {
+                printf("%s\n", key);
+                ww_backend_close(b);
+                return WW_OK;
+            }
             if (only_renderer) {
                 printf("%s | %s\n", ww_backend_renderer(b), ww_backend_version(b));
                 ww_backend_close(b);
                 return WW_OK;
             }
-            printf("%-7s %-16s %s | %s\n", kinds[k].name, ww_backend_describe(b), ww_backend_renderer(b),
-                   ww_backend_version(b));
+            printf("%-7s %-16s %s | %s (key %s)\n", kinds[k].name, ww_backend_describe(b),
+                   ww_backend_renderer(b), ww_backend_version(b), key);
             ww_backend_close(b);
         } else {
             last = e;
-            if (!only_renderer) printf("%-7s unavailable: %s\n", kinds[k].name, e.msg);
+            if (!only_renderer && !only_key) printf("%-7s unavailable: %s\n", kinds[k].name, e.msg);
         }
     }
     if (opened) return WW_OK;

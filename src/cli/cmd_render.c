@@ -33,9 +33,12 @@ static const char usage[] =
     "  --resume             keep frames already complete in DIR, render only the others\n"
     "  --stats FILE.jsonl   one line per frame: simulate, render, read back, encode ms\n"
     "  --audio FILE.wav     the sound track of the frames rendered (44.1 kHz stereo 16-bit)\n"
-    "  --golden DIR         compare every frame with DIR/frame_XXXXX.png (or DIR/RENDERER/...);\n"
-    "                       report.html and the failing frames' diffs go into the output folder;\n"
-    "                       thresholds from the scene's golden: section, or these options:\n"
+    "  --golden DIR         compare every frame with its golden: DIR/KEY/frame_XXXXX.png (KEY:\n"
+    "                       `waterworld backends --key`), then the keys of the scene's\n"
+    "                       golden.fallback, then DIR/frame_XXXXX.png; report.html and the\n"
+    "                       failing frames' diff/ and expected/ images go into the output folder;\n"
+    "                       exact match unless a threshold is given; thresholds from the scene's\n"
+    "                       golden: section, with these options over them:\n"
     "                       --threshold T --max M --fail-percent P --fail-pixels N --psnr-min DB\n"
     "                       --yiq Y --yiq-pixels N --ssim-min S --rel-max R --no-aa\n"
     "  --progress           progress on stderr even when it is not a terminal\n"
@@ -152,6 +155,10 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
                  jo.format == WW_OUT_Y4M ? ".y4m" : jo.format == WW_OUT_RAW ? ".rgb" : "");
     }
     jo.out_dir = dir;
+    go.out_dir = dir;
+    go.log = jo.quiet ? NULL : stderr;
+    /* golden: a missing DIR, or DIR as the output folder, is known before anything renders */
+    if (golden && (r = ww_golden_prepare(&go, err))) goto done;
     jo.width = sc->width;
     jo.height = sc->height;
 
@@ -171,7 +178,6 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     }
     if (r || !golden) goto done;
 
-    go.out_dir = dir;
     go.first = jo.first;
     go.last = jo.last;
     go.renderer = st.renderer;
@@ -179,9 +185,10 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     ww_golden_summary gs;
     r = ww_golden_check(sc, &go, &gs, err);
     if ((!r || r == WW_E_MISMATCH) && !jo.quiet)
-        fprintf(stderr, "golden %s: %lld frames, %lld passed, %lld failed, %lld missing; report %s\n",
-                gs.golden_dir, (long long)gs.frames, (long long)gs.passed, (long long)gs.failed,
-                (long long)gs.missing, gs.report);
+        fprintf(stderr, "golden: %lld frames, %lld passed, %lld failed, %lld missing (%.2f s); "
+                "goldens from %s; renderer key %s; report %s\n",
+                (long long)gs.frames, (long long)gs.passed, (long long)gs.failed,
+                (long long)gs.missing, gs.wall_s, gs.golden_dir, gs.key, gs.report);
 done:
     ww_scene_free(sc);
     return r;
