@@ -234,18 +234,21 @@ TEST(compare_aa_edge) {
     ww_image_free(&d);
 }
 
-/* ImageMagick writes the twins: 16-bit RGB and 8-bit grey of an 8-bit RGB grey picture */
+/* ImageMagick writes the twins: 16-bit RGB, 8-bit grey and opaque RGBA of an 8-bit RGB grey
+ * picture */
 TEST(compare_twins_16bit_grey) {
     const char *dir = ww_test_tmpdir("compare_twins");
-    char p8[600], p16[600], pg[600], cmd[4096];
+    char p8[600], p16[600], pg[600], pa[600], cmd[4096];
     snprintf(p8, sizeof p8, "%s/rgb8.png", dir);
     snprintf(p16, sizeof p16, "%s/rgb16.png", dir);
     snprintf(pg, sizeof pg, "%s/grey8.png", dir);
+    snprintf(pa, sizeof pa, "%s/rgba8.png", dir);
     unsigned char px[8 * 8 * 3];
     for (int i = 0; i < 64; i++) memset(px + 3 * i, (i * 53) % 256, 3);
     write_png(p8, 8, 8, 3, px);
     snprintf(cmd, sizeof cmd, "convert %s -depth 16 PNG48:%s && convert %s -colorspace Gray "
-             "-define png:color-type=0 -depth 8 %s", p8, p16, p8, pg);
+             "-define png:color-type=0 -depth 8 %s && convert %s -alpha opaque PNG32:%s", p8, p16,
+             p8, pg, p8, pa);
     ENSURE_MSG(ww_test_run(cmd, NULL, NULL) == 0, "ImageMagick convert failed: %s", cmd);
     ww_cmp_image a, b, g;
     ww_error err = {0};
@@ -259,6 +262,12 @@ TEST(compare_twins_16bit_grey) {
     ENSURE_MSG(r.identical, "16-bit twin: max %g", r.max_abs);
     ENSURE_EQ_INT(ww_cmp_images(&a, &g, &o, &r, &err), WW_OK);
     ENSURE_MSG(r.identical, "grey twin: max %g", r.max_abs);
+    ww_cmp_image rgba;
+    ENSURE_EQ_INT(ww_cmp_load(pa, &rgba, &err), WW_OK);
+    ENSURE_EQ_INT(rgba.channels, 4);
+    ENSURE_EQ_INT(ww_cmp_images(&a, &rgba, &o, &r, &err), WW_OK);
+    ENSURE_MSG(r.identical && r.pass, "opaque RGBA twin: max %g", r.max_abs);
+    ww_cmp_image_free(&rgba);
     ww_cmp_image_free(&a);
     ww_cmp_image_free(&b);
     ww_cmp_image_free(&g);

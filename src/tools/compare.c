@@ -374,12 +374,8 @@ static ww_result check_kinds(const ww_cmp_image *a, const ww_cmp_image *b, ww_er
         return ww_error_set(err, WW_E_INCONSISTENT, NULL, 0, 0,
                             "compare: %s against %s: an HDR image compares with HDR only",
                             a->hdr ? "EXR" : "PNG", b->hdr ? "EXR" : "PNG");
-    if (has_alpha(a) != has_alpha(b))
-        return ww_error_set(err, WW_E_INCONSISTENT, NULL, 0, 0,
-                            "compare: channels differ: %s against %s (render both with or both "
-                            "without --alpha)",
-                            has_alpha(a) ? "with alpha" : "no alpha",
-                            has_alpha(b) ? "with alpha" : "no alpha");
+    /* RGB against RGBA is not an error: layouts are normalised (a missing alpha is 1), so an
+     * opaque RGBA file (what image editors often save) equals its RGB twin */
     return WW_OK;
 }
 

@@ -112,9 +112,9 @@ ww_result ww_cmp_load_pair(const char *path_a, const char *path_b, ww_cmp_image 
                            ww_cmp_image *b, ww_error *err);
 void ww_cmp_image_free(ww_cmp_image *im);
 
-/* every metric, then the rules; WW_E_INCONSISTENT when sizes differ, one is EXR and the other
- * PNG, or one has alpha and the other not (a mismatch of kind is bad input, not a 100%
- * difference) */
+/* every metric, then the rules; WW_E_INCONSISTENT when sizes differ or one is EXR and the other
+ * PNG (a mismatch of kind is bad input, not a 100% difference). RGB against RGBA compares: the
+ * layouts are normalised, a missing alpha being 1, and alpha counts where either file has it */
 ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
                         ww_cmp_result *res, ww_error *err);
 
