@@ -1072,6 +1072,7 @@ void ww_scene_defaults(ww_scene *sc) {
     for (int i = 0; i < 3; i++) sc->fog_color[i] = -1.0;
     sc->fog_density = 0.0012;
     ww_render_defaults(&sc->render);
+    ww_audio_defaults(&sc->audio);
     sc->water_level = 0.0;
     sc->water_depth = 8.0;
     sc->water_color[0] = 0.02;
