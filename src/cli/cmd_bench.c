@@ -12,6 +12,7 @@ static const char usage[] =
     "       waterworld bench quality [--knob NAME] [--size WxH] [--frame N] [--repeats N] [--json]\n"
     "                                [-o DIR] [SCENE.yaml]\n"
     "       waterworld bench waves [--json] [-o DIR]\n"
+    "       waterworld bench output [--frames N] [--json] [SCENE.yaml]\n"
     "\n"
     "  render (default)  per backend (egl, osmesa), scene (demo, lake) and size (256x144,\n"
     "                    1280x720): ms per frame split into simulate / render / read back /\n"
@@ -37,6 +38,10 @@ static const char usage[] =
     "                    iterations, residual and time at fold margins 0.5, 0.2, 0.05; GPU ms\n"
     "                    per frame at 1280x720 against component count, fade on and off; and\n"
     "                    the figure DIR/waves.png\n"
+    "  output            frames per second of SCENE (default scenes/demo.yaml) at 1280x720 written\n"
+    "                    as none, png, exr and y4m (--frames each, default 60), each format in\n"
+    "                    its own process; png/none against the 0.85 target; peak RSS of a\n"
+    "                    30- and a 300-frame PNG run (flat: the frame queue is bounded)\n"
     "  -o DIR            folder for the waves, sim and quality figures (default out/bench)\n"
     "  --frames N        frames per configuration (default 20)\n"
     "  --json            one JSON object per line\n";
@@ -114,7 +119,8 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         if (ww_cli_opt(argc, argv, &i, "--repeats", &repeats, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--knob", &knob, &r, err)) continue;
         if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0 ||
-            strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0) {
+            strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0 ||
+            strcmp(argv[i], "output") == 0) { /* [frames] output */
             what = argv[i];
             continue;
         }
@@ -135,6 +141,12 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     if (size || frame || repeats || knob)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench quality only",
                             size ? "--size" : frame ? "--frame" : repeats ? "--repeats" : "--knob");
+    if (strcmp(what, "output") == 0) { /* [frames] */
+        if (out || nscenes > 1)
+            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench output takes one scene and no -o");
+        o.tiny = tiny;
+        return ww_bench_output(&o, stdout, err);
+    }
     if (!waves && !sim && (out || tiny))
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench waves and sim only",
                             out ? "-o" : "--tiny");
