@@ -13,6 +13,7 @@ static const char usage[] =
     "                                [-o DIR] [SCENE.yaml]\n"
     "       waterworld bench waves [--json] [-o DIR]\n"
     "       waterworld bench compare [--size WxH] [--repeats N] [--json] [SCENE.yaml]\n"
+    "       waterworld bench output [--frames N] [--json] [SCENE.yaml]\n"
     "\n"
     "  render (default)  per backend (egl, osmesa), scene (demo, lake) and size (256x144,\n"
     "                    1280x720): ms per frame split into simulate / render / read back /\n"
@@ -44,6 +45,10 @@ static const char usage[] =
     "                    and ImageMagick's `compare -metric RMSE` by fork/exec in the same run,\n"
     "                    with the ratio (issue 6's target: ours at least 5x faster); best of\n"
     "                    --repeats (default 7) and the median\n"
+    "  output            frames per second of SCENE (default scenes/demo.yaml) at 1280x720 written\n"
+    "                    as none, png, exr and y4m (--frames each, default 60), each format in\n"
+    "                    its own process; png/none against the 0.85 target; peak RSS of a\n"
+    "                    30- and a 300-frame PNG run (flat: the frame queue is bounded)\n"
     "  -o DIR            folder for the waves, sim and quality figures (default out/bench)\n"
     "  --frames N        frames per configuration (default 20)\n"
     "  --json            one JSON object per line\n";
@@ -147,7 +152,7 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         if (ww_cli_opt(argc, argv, &i, "--knob", &knob, &r, err)) continue;
         if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0 ||
             strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0 ||
-            strcmp(argv[i], "compare") == 0) {
+            strcmp(argv[i], "compare") == 0 || strcmp(argv[i], "output") == 0) {
             what = argv[i];
             continue;
         }
@@ -170,6 +175,12 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     if (size || frame || repeats || knob)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench quality only",
                             size ? "--size" : frame ? "--frame" : repeats ? "--repeats" : "--knob");
+    if (strcmp(what, "output") == 0) { /* [frames] */
+        if (out || nscenes > 1)
+            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench output takes one scene and no -o");
+        o.tiny = tiny;
+        return ww_bench_output(&o, stdout, err);
+    }
     if (!waves && !sim && (out || tiny))
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench waves and sim only",
                             out ? "-o" : "--tiny");

@@ -19,7 +19,7 @@ static const char usage[] =
     "                       raw the stream's file (default out/SCENE_NAME.y4m|.rgb), - for stdout\n"
     "  --format FMT         png (sRGB8, default) | exr (linear RGBA) | y4m (YUV4MPEG2 for ffmpeg)\n"
     "                       | raw (packed RGB8 frames) | none (render and read back only)\n"
-    "  --alpha              png: RGBA8, alpha from the frame's coverage\n"
+    "  --alpha              png (RGBA8) and exr: alpha = coverage, 0 where only the sky is seen\n"
     "  --exr-float          exr: 32-bit float channels (default half)\n"
     "  --exr-compression C  exr: none | zip (default) | piz\n"
     "  --y4m-420            y4m: 4:2:0 chroma (C420jpeg) instead of 4:4:4\n"

@@ -309,4 +309,33 @@ ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err) {
     return read_target(r, rt, WW_FMT_RGBA16F, GL_RGBA, GL_FLOAT, im->f32, im, err);
 }
 
+/* [frames] --alpha: coverage from the main pass's depth. The sky is drawn on the far plane and
+ * the clear leaves depth 1 there, so a pixel whose depth is below 1 shows water or geometry. */
+ww_result ww_renderer_read_coverage(ww_renderer *r, ww_image *im, float *depth, ww_error *err) {
+    const ww_rt *rt = ww_renderer_output(r, WW_PASS_MAIN);
+    WW_ASSERT(rt && depth && im->channels == 4);
+    WW_ASSERT(im->width == rt->width && im->height == rt->height);
+    const ww_gl *gl = r->gl;
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, rt->fbo);
+    gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl->ReadPixels(0, 0, rt->width, rt->height, GL_DEPTH_COMPONENT, GL_FLOAT, depth);
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    GLenum e = gl->GetError();
+    if (e != GL_NO_ERROR)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "renderer: depth read-back raised 0x%04x",
+                            (unsigned)e);
+    /* GL rows run bottom up, the image's top down */
+    size_t w = (size_t)rt->width;
+    for (size_t y = 0; y < (size_t)rt->height; y++) {
+        const float *d = depth + ((size_t)rt->height - 1 - y) * w;
+        for (size_t x = 0; x < w; x++) {
+            size_t i = (y * w + x) * 4 + 3;
+            int covered = d[x] < 1.0f;
+            if (im->type == WW_PIX_U8) im->u8[i] = covered ? 255 : 0;
+            else im->f32[i] = covered ? 1.0f : 0.0f;
+        }
+    }
+    return WW_OK;
+}
+
 void ww_renderer_finish(ww_renderer *r) { r->gl->Finish(); }

@@ -36,6 +36,10 @@ ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st
 /* im must be allocated by the caller at the plan's size: U8 with 3 or 4 channels / F32 with 4 */
 ww_result ww_renderer_read_ldr(ww_renderer *r, ww_image *im, ww_error *err);
 ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err);
+/* [frames] the alpha channel of a 4-channel image read above (U8: 0 / 255, F32: 0 / 1) from the
+ * main pass's depth: 1 where water or geometry covers the pixel, 0 where only the sky (or, under
+ * water, the fog drawn in its place) is seen; depth is caller scratch of width * height floats */
+ww_result ww_renderer_read_coverage(ww_renderer *r, ww_image *im, float *depth, ww_error *err);
 /* ms for one trivial full-screen pass (constant colour) into an RGBA16F target of w x h: the
  * backend's fill floor, which bench sets render times against */
 ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error *err);

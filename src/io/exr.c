@@ -1,4 +1,4 @@
-/* exr.c - half-float scanline EXR frames through OpenEXRCore. Files are encoded into memory by a
+/* exr.c - half or float scanline EXR frames through OpenEXRCore (ZIP, PIZ or no compression). Files are encoded into memory by a
  * custom write function and published with one atomic write; reads go through memory too, so
  * "missing file" and "not an EXR" are told apart before the library sees a byte.
  */
@@ -114,15 +114,20 @@ static ww_result read_error(const char *path, const exr_mem *m, exr_result_t rv,
 static exr_result_t encode(exr_context_t ctx, const ww_image *im, const ww_exr_meta *meta) {
     int part = 0, nch = im->channels, w = im->width, h = im->height;
     exr_result_t rv = exr_add_part(ctx, NULL, EXR_STORAGE_SCANLINE, &part);
+    static const exr_compression_t comps[3] = {EXR_COMPRESSION_ZIP, EXR_COMPRESSION_NONE,
+                                               EXR_COMPRESSION_PIZ};
+    int ci_ = meta ? meta->compression : WW_EXR_COMP_ZIP;
+    WW_ASSERT(ci_ >= 0 && ci_ < 3);
+    exr_pixel_type_t type = meta && meta->float32 ? EXR_PIXEL_FLOAT : EXR_PIXEL_HALF;
     if (rv == EXR_ERR_SUCCESS) rv = exr_initialize_required_attr_simple(ctx, part, w, h,
-                                                                         EXR_COMPRESSION_ZIP);
+                                                                         comps[ci_]);
     /* our rows are stored top row first, which is increasing y in EXR's window */
     if (rv == EXR_ERR_SUCCESS) rv = exr_set_lineorder(ctx, part, EXR_LINEORDER_INCREASING_Y);
-    if (rv == EXR_ERR_SUCCESS) rv = exr_set_zip_compression_level(ctx, part, EXR_ZIP_LEVEL);
+    if (rv == EXR_ERR_SUCCESS && comps[ci_] == EXR_COMPRESSION_ZIP)
+        rv = exr_set_zip_compression_level(ctx, part, EXR_ZIP_LEVEL);
     static const char *const names[4] = {"R", "G", "B", "A"};
     for (int s = 0; s < nch && rv == EXR_ERR_SUCCESS; s++)
-        rv = exr_add_channel(ctx, part, names[s], EXR_PIXEL_HALF, EXR_PERCEPTUALLY_LOGARITHMIC, 1,
-                             1);
+        rv = exr_add_channel(ctx, part, names[s], type, EXR_PERCEPTUALLY_LOGARITHMIC, 1, 1);
 
     /* ww_exr_meta: only what is set */
     if (meta && rv == EXR_ERR_SUCCESS && meta->frame >= 0)
@@ -167,31 +172,48 @@ static exr_result_t encode(exr_context_t ctx, const ww_image *im, const ww_exr_m
     return rv != EXR_ERR_SUCCESS ? rv : drv;
 }
 
-ww_result ww_write_exr(const char *path, const ww_image *im, const ww_exr_meta *meta,
-                       ww_error *err) {
+ww_result ww_encode_exr(const ww_image *im, const ww_exr_meta *meta, unsigned char **data,
+                        size_t *len, ww_error *err) {
     WW_ASSERT(im->type == WW_PIX_F32 && im->f32);
     WW_ASSERT(im->channels == 3 || im->channels == 4);
     WW_ASSERT(im->width > 0 && im->height > 0);
     WW_ASSERT(im->width <= INT32_MAX / (4 * (int)sizeof(float)));
+    *data = NULL;
+    *len = 0;
 
-    /* the path only names the context: our write function keeps every byte in memory */
+    /* the name only labels the context: our write function keeps every byte in memory */
     exr_mem m = {0};
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = on_write_error;
     init.user_data = &m;
     init.write_fn = mem_write;
     exr_context_t ctx = NULL;
-    exr_result_t rv = exr_start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
+    exr_result_t rv = exr_start_write(&ctx, "frame.exr", EXR_WRITE_FILE_DIRECTLY, &init);
     if (rv == EXR_ERR_SUCCESS) rv = encode(ctx, im, meta);
     exr_result_t frv = exr_finish(&ctx);
     if (rv == EXR_ERR_SUCCESS) rv = frv;
     if (rv == EXR_ERR_SUCCESS && m.failed) rv = EXR_ERR_OUT_OF_MEMORY;
     if (rv != EXR_ERR_SUCCESS) {
         free(m.data);
-        return write_error(path, rv, err);
+        return write_error("EXR frame", rv, err);
     }
-    ww_result r = ww_write_file_atomic(path, m.data, m.len, err);
-    free(m.data);
+    *data = m.data;
+    *len = m.len;
+    return WW_OK;
+}
+
+ww_result ww_write_exr(const char *path, const ww_image *im, const ww_exr_meta *meta,
+                       ww_error *err) {
+    unsigned char *data;
+    size_t len;
+    ww_result r = ww_encode_exr(im, meta, &data, &len, err);
+    if (r != WW_OK) {
+        char why[sizeof err->msg];
+        snprintf(why, sizeof why, "%s", err ? err->msg : "");
+        return ww_error_set(err, r, NULL, 0, 0, "cannot write '%s': %s", path, why);
+    }
+    r = ww_write_file_atomic(path, data, len, err);
+    free(data);
     return r;
 }
 
@@ -374,4 +396,25 @@ ww_result ww_read_exr_meta(const char *path, int *frame, double *time, char *sce
     exr_finish(&ctx);
     free(m.data);
     return WW_OK;
+}
+
+int ww_exr_complete(const char *path) {
+    exr_mem m;
+    exr_context_t ctx;
+    if (open_exr(path, &m, &ctx, NULL) != WW_OK) return 0;
+
+    /* the header parsed; the last chunk's table entry must point inside the file */
+    exr_attr_box2i_t dw;
+    int32_t lines = 0;
+    exr_chunk_info_t ci;
+    int ok = exr_get_data_window(ctx, 0, &dw) == EXR_ERR_SUCCESS &&
+             exr_get_scanlines_per_chunk(ctx, 0, &lines) == EXR_ERR_SUCCESS && lines > 0;
+    if (ok) {
+        int32_t last = dw.min.y + ((dw.max.y - dw.min.y) / lines) * lines;
+        ok = exr_read_scanline_chunk_info(ctx, 0, last, &ci) == EXR_ERR_SUCCESS &&
+             ci.data_offset + ci.packed_size <= m.len;
+    }
+    exr_finish(&ctx);
+    free(m.data);
+    return ok;
 }

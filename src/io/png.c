@@ -1,13 +1,18 @@
 /* png.c - PNG frames through stb_image_write (encode into memory, then one atomic write) and
  * stb_image (decode from memory; its implementation lives in core/stb_image_impl.c, shared with
- * the scene's asset loader). stb's global settings are pinned here before every encode and decode
- * so the bytes are the same run to run.
+ * the scene's asset loader). stb_image_write's global settings are pinned once per process
+ * (pthread_once, so encoder threads never race on them) and the bytes are the same run to run;
+ * stb_image's decode settings are pinned before every decode.
  */
 #include "io/writers.h"
 
+#include <fcntl.h>
+#include <pthread.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 /* the one copy of stb_image_write in the program: memory only. It compiles clean under our warning
  * flags (gcc 12 and clang, even outside the system include path), so no diagnostic is silenced
@@ -50,28 +55,63 @@ static void png_buf_put(void *ctx, void *data, int size) {
     b->len = need;
 }
 
-ww_result ww_write_png(const char *path, const ww_image *im, ww_error *err) {
-    WW_ASSERT(im->type == WW_PIX_U8 && im->u8);
-    WW_ASSERT(im->channels == 3 || im->channels == 4);
-    WW_ASSERT(im->width > 0 && im->height > 0 && im->width <= INT32_MAX / im->channels);
+/* stb_image_write's settings are library globals: set once, before the first encode, and never
+ * again (our rows are stored top row first, as PNG wants them) */
+static pthread_once_t png_settings_once = PTHREAD_ONCE_INIT;
 
-    /* pin stb's settings: our rows are stored top row first, as PNG wants them */
+static void png_pin_settings(void) {
     stbi_write_png_compression_level = PNG_ZLIB_LEVEL;
     stbi_write_force_png_filter = PNG_FILTER;
     stbi_flip_vertically_on_write(0);
+}
 
-    /* encode into memory, then publish with one atomic write */
+ww_result ww_encode_png(const ww_image *im, unsigned char **data, size_t *len, ww_error *err) {
+    WW_ASSERT(im->type == WW_PIX_U8 && im->u8);
+    WW_ASSERT(im->channels == 3 || im->channels == 4);
+    WW_ASSERT(im->width > 0 && im->height > 0 && im->width <= INT32_MAX / im->channels);
+    *data = NULL;
+    *len = 0;
+    pthread_once(&png_settings_once, png_pin_settings);
     png_buf b = {0};
     int ok = stbi_write_png_to_func(png_buf_put, &b, im->width, im->height, im->channels, im->u8,
                                     im->width * im->channels);
     if (!ok || b.failed) {
         free(b.data);
-        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot write '%s': PNG encoding failed",
-                            path);
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "PNG encoding failed (out of memory)");
     }
-    ww_result r = ww_write_file_atomic(path, b.data, b.len, err);
-    free(b.data);
+    *data = b.data;
+    *len = b.len;
+    return WW_OK;
+}
+
+ww_result ww_write_png(const char *path, const ww_image *im, ww_error *err) {
+    /* encode into memory, then publish with one atomic write */
+    unsigned char *data;
+    size_t len;
+    ww_result r = ww_encode_png(im, &data, &len, err);
+    if (r != WW_OK)
+        return ww_error_set(err, r, NULL, 0, 0, "cannot write '%s': PNG encoding failed", path);
+    r = ww_write_file_atomic(path, data, len, err);
+    free(data);
     return r;
+}
+
+/* a PNG is complete when it starts with the signature and ends with the IEND chunk (length 0,
+ * type, CRC AE 42 60 82: PNG spec 11.2.5); a torn or truncated file lacks one of them. Only the
+ * first 8 and last 12 bytes are read. */
+int ww_png_complete(const char *path) {
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return 0;
+    unsigned char head[8], tail[12];
+    struct stat st;
+    int ok = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= 8 + 12 &&
+             pread(fd, head, sizeof head, 0) == (ssize_t)sizeof head &&
+             pread(fd, tail, sizeof tail, st.st_size - 12) == (ssize_t)sizeof tail &&
+             memcmp(head, sig, sizeof sig) == 0 && memcmp(tail, iend, sizeof iend) == 0;
+    close(fd);
+    return ok;
 }
 
 ww_result ww_read_png(const char *path, ww_image *out, ww_error *err) {

@@ -2,7 +2,11 @@
  * ("NAME.tmp.PID"), fsync'd and renamed over it, so an interrupted run never leaves a partial file.
  *
  *   ww_write_png(path, &ldr, &err);     // RGB8 or RGBA8 from a U8 image, stb_image_write
- *   ww_write_exr(path, &hdr, &meta, &err); // half-float RGBA (or RGB) from an F32 image, OpenEXRCore
+ *   ww_write_exr(path, &hdr, &meta, &err); // half or float RGBA (or RGB) from an F32 image,
+ *                                       // OpenEXRCore, ZIP / PIZ / no compression
+ *   ww_encode_png(&ldr, &data, &len, &err), ww_encode_exr(...): the same bytes into memory
+ *                                       (caller frees data), for the encoder threads of a job
+ *   ww_png_complete(path), ww_exr_complete(path): a frame file on disk is whole (--resume)
  *   ww_read_exr(path, &im, &err);       // F32 image back (tests, compare)
  *   ww_read_png(path, &im, &err);       // U8 image back (tests, compare), stb_image
  *   ww_read_exr_meta(path, &frame, &t, scene, sizeof scene, gl, sizeof gl, &err);
@@ -18,7 +22,13 @@
 #include "core/error.h"
 #include "io/image.h"
 
+/* EXR compression (zero: ZIP) */
+enum { WW_EXR_COMP_ZIP = 0, WW_EXR_COMP_NONE, WW_EXR_COMP_PIZ };
+
+/* what an EXR holds besides its pixels: the encoding (zero: half, ZIP) and our attributes */
 typedef struct ww_exr_meta {
+    int float32;           /* 32-bit float channels instead of half */
+    int compression;       /* WW_EXR_COMP_* */
     int frame;             /* -1: not written */
     double time;           /* simulated time, s; NAN: not written */
     const char *scene;     /* scene name, or NULL */
@@ -33,6 +43,13 @@ ww_result ww_write_file_atomic(const char *path, const void *data, size_t len, w
 
 ww_result ww_write_png(const char *path, const ww_image *im, ww_error *err);
 ww_result ww_write_exr(const char *path, const ww_image *im, const ww_exr_meta *meta, ww_error *err);
+ww_result ww_encode_png(const ww_image *im, unsigned char **data, size_t *len, ww_error *err);
+ww_result ww_encode_exr(const ww_image *im, const ww_exr_meta *meta, unsigned char **data,
+                        size_t *len, ww_error *err);
+/* 1 when the file is a whole PNG (signature first, IEND chunk last: reads 20 bytes) / a whole EXR
+ * (its header parses and its last chunk lies inside the file) */
+int ww_png_complete(const char *path);
+int ww_exr_complete(const char *path);
 ww_result ww_read_png(const char *path, ww_image *out, ww_error *err);
 ww_result ww_read_exr(const char *path, ww_image *out, ww_error *err);
 

@@ -65,6 +65,7 @@ typedef struct ww_job_stats {
     int64_t skipped;          /* --resume: frames already complete on disk, not written again */
     double wall_s;            /* the whole job, setup included, s */
     double encode_wait_s;     /* the render thread waiting for a free queue slot, s */
+    double loop_s;            /* first frame started to last frame written (the frames' fps) */
 } ww_job_stats;
 
 ww_job_opts ww_default_job_opts(void);

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# make-video.sh - a scene into an H.264 MP4 (yuv420p, tagged BT.709 limited range), with its
+# sound track muxed as AAC when the scene has one (`waterworld plan SCENE` prints an "audio:"
+# line). Frames go as a Y4M stream straight into ffmpeg, never through files on disk.
+#
+#   scripts/make-video.sh SCENE.yaml OUT.mp4 [render options, e.g. --frames 90 --size 640x360]
+#
+# Environment: WW_BIN (the waterworld binary, default ./waterworld, else the one on PATH),
+# MAKE_VIDEO_CRF (x264 quality, default 18), MAKE_VIDEO_PRESET (x264 preset, default medium).
+# OUT.mp4 appears only when complete (written beside it under a temporary name, then moved).
+# Exit: 0 done, 2 usage, 3 ffmpeg missing, else the status of the step that failed.
+set -euo pipefail
+
+usage() { echo "usage: make-video.sh SCENE.yaml OUT.mp4 [render options]" >&2; exit 2; }
+[ $# -ge 2 ] || usage
+scene=$1
+out=$2
+shift 2
+case "$out" in -*) usage ;; esac
+
+ww=${WW_BIN:-./waterworld}
+if [ ! -x "$ww" ]; then ww=$(command -v waterworld || true); fi
+[ -n "$ww" ] || { echo "make-video.sh: no waterworld binary (build it with make, or set WW_BIN)" >&2; exit 3; }
+command -v ffmpeg >/dev/null 2>&1 ||
+    { echo "make-video.sh: ffmpeg is not installed (Debian: apt-get install ffmpeg)" >&2; exit 3; }
+
+# plan sees the same scene: the render options that change it (--set, --script) are passed on
+plan_args=()
+args=("$@")
+for ((i = 0; i < ${#args[@]}; i++)); do
+    case "${args[i]}" in
+    --set | --script) plan_args+=("${args[i]}" "${args[i + 1]:-}"); i=$((i + 1)) ;;
+    esac
+done
+plan=$("$ww" plan "$scene" "${plan_args[@]}") || exit $?
+audio=0
+case "$plan" in audio:* | *$'\n'audio:*) audio=1 ;; esac
+
+# the temporary folder sits beside OUT so that the final mv is a rename
+tmp=$(mktemp -d "$(dirname -- "$out")/.make-video.XXXXXX")
+trap 'rm -rf -- "$tmp"' EXIT
+trap 'exit 130' INT TERM
+
+x264=(-c:v libx264 -preset "${MAKE_VIDEO_PRESET:-medium}" -crf "${MAKE_VIDEO_CRF:-18}"
+      -pix_fmt yuv420p -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv)
+if [ "$audio" = 1 ]; then
+    # the WAV is complete only when the render ends: encode the video, then mux (no re-encode)
+    "$ww" render "$scene" --format y4m -o - --audio "$tmp/audio.wav" "$@" |
+        ffmpeg -hide_banner -loglevel error -f yuv4mpegpipe -i - "${x264[@]}" -an "$tmp/video.mp4"
+    ffmpeg -hide_banner -loglevel error -i "$tmp/video.mp4" -i "$tmp/audio.wav" -map 0:v -map 1:a \
+        -c:v copy -c:a aac -b:a 192k -shortest -movflags +faststart "$tmp/out.mp4"
+else
+    "$ww" render "$scene" --format y4m -o - "$@" |
+        ffmpeg -hide_banner -loglevel error -f yuv4mpegpipe -i - "${x264[@]}" -movflags +faststart \
+            "$tmp/out.mp4"
+fi
+mv -f -- "$tmp/out.mp4" "$out"
+echo "make-video.sh: $out ($([ "$audio" = 1 ] && echo "video + sound" || echo "video, no sound track"))" >&2
