@@ -563,14 +563,15 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     job_signals js;
     signals_install(&js);
 
+    /* the sound track first: its files are the scene's input, and bad input leaves no folder */
+    if (o->audio_path && (r = ww_audio_new(sc, o->first * sc->steps_per_frame,
+                                           o->last * sc->steps_per_frame, &j.audio, err)))
+        goto done;
     if ((r = job_open(&j, s, err))) goto done;
     /* the prefix is stepped, not rendered */
     double t0 = ww_now_seconds();
     if ((r = ww_sim_advance_to(sc, j.st, o->first * sc->steps_per_frame, err))) goto done;
     s->prefix_s = ww_now_seconds() - t0;
-    if (o->audio_path && (r = ww_audio_new(sc, o->first * sc->steps_per_frame,
-                                           o->last * sc->steps_per_frame, &j.audio, err)))
-        goto done;
     if ((r = job_loop(&j, s, err))) goto done;
     if (job_signal) {
         r = interrupted(&j, (int)job_signal, err);
