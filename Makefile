@@ -90,6 +90,8 @@ bench: $(BIN)
 	./$(BIN) bench quality
 	./$(BIN) bench waves
 	./$(BIN) bench sim
+	./$(BIN) bench output
+	./$(BIN) bench compare
 
 # libFuzzer on the scene loader and the OBJ reader (clang; not part of test). FUZZ_SECONDS=60
 # each by default.

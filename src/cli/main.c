@@ -11,8 +11,9 @@ static const char usage[] =
     "\n"
     "usage: waterworld COMMAND [options]   (waterworld COMMAND --help for each)\n"
     "\n"
-    "  render   SCENE.yaml [-o DIR] [--format png|exr|none] [--frames N|A:B] [--size WxH]\n"
-    "                      [--backend auto|egl|osmesa] [--script FILE] [--set KEY=VALUE]...\n"
+    "  render   SCENE.yaml [-o DIR|FILE|-] [--format png|exr|y4m|raw|none] [--frames N|A:B]\n"
+    "                      [--size WxH] [--backend auto|egl|osmesa] [--script FILE] [--set KEY=VALUE]...\n"
+    "                      [--threads N] [--resume] [--stats FILE] [--audio FILE.wav] [--golden DIR]\n"
     "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--events FILE.jsonl] [--hash]\n"
     "                      [--stats] [--script FILE] [--set KEY=VALUE]...\n"
     "  plan     SCENE.yaml                systems and render passes the scene needs\n"
@@ -22,14 +23,17 @@ static const char usage[] =
     "  sweep    SCENE.yaml --vary KEY=A:B:N [--vary KEY=v1,v2]... [--random N --seed S]\n"
     "                      [--jobs N] [--emit-jobs | --point I] [--thumbs] [-o DIR]\n"
     "                      wave statistics over a grid of --set values\n"
-    "  bench    [render|sim] [--frames N] [--json] [-o DIR]   speed, memory, sim error vs dt\n"
+    "  bench    [render|quality|sim|output|compare] [--frames N] [--json] [-o DIR]\n"
+    "                                    speed, memory, quality knobs, sim error vs dt, output\n"
+    "                                    formats, compare against ImageMagick\n"
     "  bench    waves [--json] [-o DIR]  the wave field's speed against its error, and a figure\n"
     "  compare  EXPECTED ACTUAL [--diff FILE] [--max M] [--psnr-min DB] [--yiq Y] [--json]...\n"
     "                                    two images or folders of frames; exit 1 when they differ\n"
-    "  backends [--renderer]             which GL backends open here, on what\n"
+    "  backends [--renderer] [--key]     which GL backends open here, on what; the golden key\n"
     "  --help | --version\n"
     "\n"
-    "Exit codes: 0 success, 1 check failed, 2 bad input or usage, 3 runtime failure.\n";
+    "Exit codes: 0 success, 1 check failed, 2 bad input or usage, 3 runtime failure,\n"
+    "            130 interrupted (nothing partial written).\n";
 
 typedef struct {
     const char *name;
