@@ -71,6 +71,8 @@ int ww_test_run(const char *cmdline, const char *out_path, const char *err_path)
 const char *ww_test_bin(void);
 /* a fresh folder under build/test-tmp/ named after the test; returns its path */
 const char *ww_test_tmpdir(const char *name);
+/* 1 when both files can be read and hold the same bytes */
+int ww_test_files_equal(const char *a, const char *b);
 /* read a whole file; returns malloc'd NUL-terminated bytes and its length, or NULL */
 char *ww_test_read_file(const char *path, size_t *len);
 /* run the binary under test with args (a shell word list); exit status as ww_test_run */

@@ -123,22 +123,13 @@ static int frames_decode(const char *dir, int n) {
     return bad;
 }
 
-static int same_file(const char *a, const char *b) {
-    size_t na = 0, nb = 0;
-    char *x = ww_test_read_file(a, &na), *y = ww_test_read_file(b, &nb);
-    int same = x && y && na == nb && memcmp(x, y, na) == 0;
-    free(x);
-    free(y);
-    return same;
-}
-
 static int same_frames(const char *a, const char *b, int n) {
     int diff = 0;
     for (int f = 0; f < n; f++) {
         char pa[2200], pb[2200];
         snprintf(pa, sizeof pa, "%s/frame_%05d.png", a, f);
         snprintf(pb, sizeof pb, "%s/frame_%05d.png", b, f);
-        diff += !same_file(pa, pb);
+        diff += !ww_test_files_equal(pa, pb);
     }
     return diff;
 }

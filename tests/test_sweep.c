@@ -81,15 +81,6 @@ static int csv_column(const char *header, const char *name) {
     return -1;
 }
 
-static int files_equal(const char *a, const char *b) {
-    size_t na = 0, nb = 0;
-    char *x = ww_test_read_file(a, &na), *y = ww_test_read_file(b, &nb);
-    int same = x && y && na == nb && memcmp(x, y, na) == 0;
-    free(x);
-    free(y);
-    return same;
-}
-
 static ww_sweep *make_sweep(const char *const *vary, int nvary, long long random, uint64_t seed) {
     ww_sweep_opts o = ww_default_sweep_opts();
     o.scene_path = SCENE;
@@ -217,8 +208,8 @@ TEST(sweep_random_reproducible_for_a_seed) {
     ENSURE_EQ_INT(run_sweep(full, o2, NULL), 0);
     snprintf(full, sizeof full, "%s --seed 4", args);
     ENSURE_EQ_INT(run_sweep(full, o3, NULL), 0);
-    ENSURE(files_equal(o1, o2));
-    ENSURE(!files_equal(o1, o3));
+    ENSURE(ww_test_files_equal(o1, o2));
+    ENSURE(!ww_test_files_equal(o1, o3));
     char *t = ww_test_read_file(o1, NULL);
     ENSURE(t && count_lines(t) == 7);
     free(t);
@@ -294,20 +285,20 @@ TEST(sweep_jobs_output_byte_identical) {
     ENSURE_EQ_INT(run_sweep(args, NULL, NULL), 0);
     snprintf(p, sizeof p, "%s/sweep.csv", a);
     snprintf(q, sizeof q, "%s/sweep.csv", b);
-    ENSURE(files_equal(p, q));
+    ENSURE(ww_test_files_equal(p, q));
     char *t = ww_test_read_file(p, NULL);
     ENSURE(t && count_lines(t) == 25);
     free(t);
     snprintf(p, sizeof p, "%s/sweep.jsonl", a);
     snprintf(q, sizeof q, "%s/sweep.jsonl", b);
-    ENSURE(files_equal(p, q));
+    ENSURE(ww_test_files_equal(p, q));
     /* and on stdout, with more workers than points */
     snprintf(p, sizeof p, "%s/one.csv", dir);
     snprintf(q, sizeof q, "%s/many.csv", dir);
     ENSURE_EQ_INT(run_sweep(grid, p, NULL), 0);
     snprintf(args, sizeof args, "%s --jobs 40", grid);
     ENSURE_EQ_INT(run_sweep(args, q, NULL), 0);
-    ENSURE(files_equal(p, q));
+    ENSURE(ww_test_files_equal(p, q));
 }
 
 TEST(sweep_emit_jobs_lines_reproduce_rows) {
@@ -353,7 +344,7 @@ TEST(sweep_emit_jobs_lines_reproduce_rows) {
     snprintf(args, sizeof args, "cat %s/points/point_*.jsonl", pts);
     snprintf(one, sizeof one, "%s/merged.jsonl", dir);
     ENSURE_EQ_INT(ww_test_run(args, one, NULL), 0);
-    ENSURE(files_equal(one, path));
+    ENSURE(ww_test_files_equal(one, path));
     snprintf(one, sizeof one, "%s/points/point_00004.jsonl", pts);
     struct stat sb;
     ENSURE(stat(one, &sb) == 0);

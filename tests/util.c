@@ -76,3 +76,12 @@ int ww_test_file_contains(const char *path, const char *needle) {
     free(s);
     return found;
 }
+
+int ww_test_files_equal(const char *a, const char *b) {
+    size_t na = 0, nb = 0;
+    char *x = ww_test_read_file(a, &na), *y = ww_test_read_file(b, &nb);
+    int same = x && y && na == nb && memcmp(x, y, na) == 0;
+    free(x);
+    free(y);
+    return same;
+}

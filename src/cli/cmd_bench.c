@@ -60,6 +60,21 @@ static long long parse_whole(const char *text, long long lo, long long hi) {
     return end != text && *end == 0 && v >= lo && v <= hi ? v : -1;
 }
 
+/* --size WIDTHxHEIGHT (NULL: leave *w and *h): each side parsed whole, the width cut at the x */
+static ww_result parse_size(const char *size, int *w, int *h, ww_error *err) {
+    if (!size) return WW_OK;
+    const char *x = strchr(size, 'x');
+    char wtext[16];
+    snprintf(wtext, sizeof wtext, "%.*s", x ? (int)(x - size) : 0, size);
+    long long pw = parse_whole(wtext, 16, 16384), ph = x ? parse_whole(x + 1, 16, 16384) : -1;
+    if (pw < 0 || ph < 0)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--size wants WIDTHxHEIGHT with each in 16..16384, got '%s'", size);
+    *w = (int)pw;
+    *h = (int)ph;
+    return WW_OK;
+}
+
 /* bench quality's options; --tiny (tests) is a 96x54 frame rendered twice per configuration */
 /* opt: --size, --frame, --repeats, --knob as given (NULL: absent) */
 static ww_result bench_quality(const ww_bench_opts *b, int nscenes, const char *frames,
@@ -70,18 +85,8 @@ static ww_result bench_quality(const ww_bench_opts *b, int nscenes, const char *
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "bench quality takes one scene and --frame, not %s",
                             frames ? "--frames" : "several scenes");
-    if (size) {
-        /* WIDTHxHEIGHT: each side parsed whole, the width cut at the x */
-        const char *x = strchr(size, 'x');
-        char wtext[16];
-        snprintf(wtext, sizeof wtext, "%.*s", x ? (int)(x - size) : 0, size);
-        long long w = parse_whole(wtext, 16, 16384), h = x ? parse_whole(x + 1, 16, 16384) : -1;
-        if (w < 0 || h < 0)
-            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
-                                "--size wants WIDTHxHEIGHT with each in 16..16384, got '%s'", size);
-        q.width = (int)w;
-        q.height = (int)h;
-    }
+    ww_result r = parse_size(size, &q.width, &q.height, err);
+    if (r) return r;
     if (frame && (q.frame = parse_whole(frame, 0, 100000000)) < 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frame wants a frame number, got '%s'", frame);
     long long n = repeats ? parse_whole(repeats, 1, 64) : 0;
@@ -105,17 +110,8 @@ static ww_result bench_compare(const ww_bench_opts *b, int nscenes, int other, c
     if (nscenes > 1 || other)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "bench compare takes one scene, --size, --repeats and --json only");
-    if (size) {
-        const char *x = strchr(size, 'x');
-        char wtext[16];
-        snprintf(wtext, sizeof wtext, "%.*s", x ? (int)(x - size) : 0, size);
-        long long w = parse_whole(wtext, 16, 16384), h = x ? parse_whole(x + 1, 16, 16384) : -1;
-        if (w < 0 || h < 0)
-            return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
-                                "--size wants WIDTHxHEIGHT with each in 16..16384, got '%s'", size);
-        c.width = (int)w;
-        c.height = (int)h;
-    }
+    ww_result r = parse_size(size, &c.width, &c.height, err);
+    if (r) return r;
     long long n = repeats ? parse_whole(repeats, 1, 64) : 0;
     if (n < 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--repeats wants 1..64, got '%s'", repeats);

@@ -67,32 +67,53 @@ static void child_run(const char *scene, ww_backend_kind kind, int w, int h, int
     rep->ok = 1;
 }
 
-/* run one configuration in a child; returns its peak RSS in KiB (or -1) */
-static long run_config(const char *scene, ww_backend_kind kind, int w, int h, int frames,
-                       const char *dir, child_report *rep) {
+long ww_bench_in_child(void (*fn)(void *ctx, void *report), void *ctx, void *report, size_t size,
+                       int *died) {
     int fd[2];
-    memset(rep, 0, sizeof *rep);
+    memset(report, 0, size);
+    *died = 0;
     if (pipe(fd) != 0) return -1;
     fflush(NULL);
     pid_t pid = fork();
     if (pid == 0) {
         close(fd[0]);
-        child_report mine = {0};
-        child_run(scene, kind, w, h, frames, dir, &mine);
-        ssize_t n = write(fd[1], &mine, sizeof mine);
-        _exit(n == (ssize_t)sizeof mine ? 0 : 1);
+        fn(ctx, report);
+        ssize_t n = write(fd[1], report, size);
+        _exit(n == (ssize_t)size ? 0 : 1);
     }
     close(fd[1]);
-    ssize_t got = pid > 0 ? read(fd[0], rep, sizeof *rep) : -1;
+    ssize_t got = pid > 0 ? read(fd[0], report, size) : -1;
     close(fd[0]);
     int status = 0;
     struct rusage ru;
     if (pid < 0 || wait4(pid, &status, 0, &ru) < 0) return -1;
-    if (got != (ssize_t)sizeof *rep) {
-        memset(rep, 0, sizeof *rep);
-        snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", status);
+    if (got != (ssize_t)size) {
+        memset(report, 0, size);
+        *died = status ? status : -1;
     }
     return ru.ru_maxrss;
+}
+
+/* one configuration of bench render */
+typedef struct config {
+    const char *scene, *dir;
+    ww_backend_kind kind;
+    int w, h, frames;
+} config;
+
+static void config_run(void *ctx, void *report) {
+    const config *c = ctx;
+    child_run(c->scene, c->kind, c->w, c->h, c->frames, c->dir, report);
+}
+
+/* run one configuration in a child; returns its peak RSS in KiB (or -1) */
+static long run_config(const char *scene, ww_backend_kind kind, int w, int h, int frames,
+                       const char *dir, child_report *rep) {
+    config c = {.scene = scene, .dir = dir, .kind = kind, .w = w, .h = h, .frames = frames};
+    int died = 0;
+    long rss = ww_bench_in_child(config_run, &c, rep, sizeof *rep, &died);
+    if (died) snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", died);
+    return rss;
 }
 
 static const char *base_name(const char *path) {

@@ -10,8 +10,6 @@
 
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "scene/scene.h"
@@ -66,32 +64,26 @@ static void child_run(const char *scene, ww_out_format fmt, int w, int h, int fr
     rep->ok = 1;
 }
 
-/* one configuration in a child process; its peak RSS (KiB) from wait4, -1 on failure */
+/* one configuration of bench output */
+typedef struct config {
+    const char *scene, *dir;
+    ww_out_format fmt;
+    int w, h, frames;
+} config;
+
+static void config_run(void *ctx, void *report) {
+    const config *c = ctx;
+    child_run(c->scene, c->fmt, c->w, c->h, c->frames, c->dir, report);
+}
+
+/* one configuration in a child process; its peak RSS (KiB), -1 on failure */
 static long run_child(const char *scene, ww_out_format fmt, int w, int h, int frames,
                       const char *dir, out_report *rep) {
-    int fd[2];
-    memset(rep, 0, sizeof *rep);
-    if (pipe(fd) != 0) return -1;
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        close(fd[0]);
-        out_report mine = {0};
-        child_run(scene, fmt, w, h, frames, dir, &mine);
-        ssize_t n = write(fd[1], &mine, sizeof mine);
-        _exit(n == (ssize_t)sizeof mine ? 0 : 1);
-    }
-    close(fd[1]);
-    ssize_t got = pid > 0 ? read(fd[0], rep, sizeof *rep) : -1;
-    close(fd[0]);
-    int status = 0;
-    struct rusage ru;
-    if (pid < 0 || wait4(pid, &status, 0, &ru) < 0) return -1;
-    if (got != (ssize_t)sizeof *rep) {
-        memset(rep, 0, sizeof *rep);
-        snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", status);
-    }
-    return ru.ru_maxrss;
+    config c = {.scene = scene, .dir = dir, .fmt = fmt, .w = w, .h = h, .frames = frames};
+    int died = 0;
+    long rss = ww_bench_in_child(config_run, &c, rep, sizeof *rep, &died);
+    if (died) snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", died);
+    return rss;
 }
 
 /* frames per second after the first frame, whose render pays for llvmpipe's shader compilation
