@@ -11,9 +11,11 @@
 #include <unistd.h>
 
 #include <OpenEXR/openexr.h>
+#include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
 #include "core/error.h"
+#include "io/deflate.h"
 #include "io/image.h"
 #include "io/writers.h"
 #include "test.h"
@@ -701,4 +703,51 @@ TEST(io_writers_fail_cleanly_into_missing_folder) {
     ENSURE_EQ_INT(count_entries(dir), 0);
     ww_image_free(&u8);
     ww_image_free(&f32);
+}
+
+/* the fast deflate of PNG frames against stb_image's inflater on the inputs that reach its edges:
+ * nothing, one byte, runs past the longest match, a repeat at the window's far end, noise (only
+ * literals), and a rendered-like ramp; plus the zlib wrapper's Adler-32 computed here by its
+ * definition (stb_image does not check it) */
+static uint32_t adler_by_definition(const unsigned char *p, size_t n) {
+    uint32_t a = 1, b = 0;
+    for (size_t i = 0; i < n; i++) {
+        a = (a + p[i]) % 65521u;
+        b = (b + a) % 65521u;
+    }
+    return (b << 16) | a;
+}
+
+static int zlib_round_trip(const unsigned char *data, size_t len) {
+    size_t n = 0;
+    unsigned char *z = ww_zlib_fast(data, len, &n);
+    if (!z || n < 6) return free(z), 0;
+    int out_len = -1;
+    char *back = stbi_zlib_decode_malloc((const char *)z, (int)n, &out_len);
+    uint32_t adler = (uint32_t)z[n - 4] << 24 | (uint32_t)z[n - 3] << 16 | (uint32_t)z[n - 2] << 8 | z[n - 1];
+    int ok = out_len == (int)len && (len == 0 || (back && memcmp(back, data, len) == 0)) &&
+             adler == adler_by_definition(data, len) && (z[0] * 256 + z[1]) % 31 == 0;
+    free(back);
+    free(z);
+    return ok;
+}
+
+TEST(io_zlib_fast_round_trips) {
+    enum { N = 200000 };
+    unsigned char *d = calloc(N, 1);
+    ENSURE(d != NULL);
+    if (!d) return;
+    ENSURE(zlib_round_trip(d, 0));
+    d[0] = 'x';
+    ENSURE(zlib_round_trip(d, 1));
+    memset(d, 7, N); /* runs far past 258 */
+    ENSURE(zlib_round_trip(d, N));
+    uint32_t s = 12345;
+    for (int i = 0; i < N; i++) d[i] = (unsigned char)((s = s * 1103515245u + 12345u) >> 24);
+    ENSURE(zlib_round_trip(d, N));               /* noise: literals only */
+    memcpy(d + 40000, d + 40000 - 32768, 1000); /* a repeat at distance 32768 exactly */
+    ENSURE(zlib_round_trip(d, 50000));
+    for (int i = 0; i < N; i++) d[i] = (unsigned char)(i % 3 == 0 ? 1 : (i / 3) % 251 & 3);
+    ENSURE(zlib_round_trip(d, N));               /* a filtered ramp: short matches everywhere */
+    free(d);
 }
