@@ -26,12 +26,10 @@ static unsigned char *png_zlib(unsigned char *data, int len, int *out_len, int q
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
-/* zlib level of stb's own deflate and a fixed per-row filter, pinned so that nothing else in the
- * process can change them under us. Measured on a 1280x720 demo frame: the Sub filter (1) at
- * level 4 encodes in 50 ms to 371 KB, against 82 ms and 414 KB for stb's defaults (adaptive
- * filters, level 8): adaptive filtering tries all five filters per row and its heuristic picks
- * worse ones on smooth renders. */
-#define PNG_ZLIB_LEVEL 4
+/* a fixed per-row filter, pinned so that nothing else in the process can change it. Measured on
+ * a 1280x720 demo frame with stb's own deflate: the Sub filter (1) encoded in 50 ms to 371 KB,
+ * against 82 ms and 414 KB for stb's adaptive filters, which try all five per row and whose
+ * heuristic picks worse ones on smooth renders. (The deflate itself is png_zlib's, below.) */
 #define PNG_FILTER 1
 
 /* the deflate of every PNG we write: deflate.h's fast one instead of stb's (its level setting then
@@ -78,7 +76,6 @@ static void png_buf_put(void *ctx, void *data, int size) {
 static pthread_once_t png_settings_once = PTHREAD_ONCE_INIT;
 
 static void png_pin_settings(void) {
-    stbi_write_png_compression_level = PNG_ZLIB_LEVEL;
     stbi_write_force_png_filter = PNG_FILTER;
     stbi_flip_vertically_on_write(0);
 }
