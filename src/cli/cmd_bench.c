@@ -8,7 +8,8 @@
 #include "tools/bench_waves.h"
 
 static const char usage[] =
-    "usage: waterworld bench [render|sim] [--frames N] [--json] [SCENE.yaml...]\n"
+    "usage: waterworld bench [render] [--frames N] [--size WxH] [--json] [SCENE.yaml...]\n"
+    "       waterworld bench sim [--frames N] [--json] [SCENE.yaml...]\n"
     "       waterworld bench quality [--knob NAME] [--size WxH] [--frame N] [--repeats N] [--json]\n"
     "                                [-o DIR] [SCENE.yaml]\n"
     "       waterworld bench waves [--json] [-o DIR]\n"
@@ -16,7 +17,7 @@ static const char usage[] =
     "       waterworld bench output [--frames N] [--json] [SCENE.yaml]\n"
     "\n"
     "  render (default)  per backend (egl, osmesa), scene (demo, lake) and size (256x144,\n"
-    "                    1280x720): ms per frame split into simulate / render / read back /\n"
+    "                    1280x720, or --size): ms per frame split into simulate / render / read back /\n"
     "                    encode (PNG), ms per pass (GL timer queries, else CPU time with glFinish\n"
     "                    between passes), fps, the fill floor (one trivial full-screen pass),\n"
     "                    render/floor against issue 5's targets at 1280x720 (15x for a scene with\n"
@@ -168,9 +169,15 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     }
     if (strcmp(what, "compare") == 0) return bench_compare(&o, nscenes, frames || frame || knob || out,
                                                            size, repeats, err);
+    if (strcmp(what, "render") == 0 && size) {
+        r = parse_size(size, &o.width, &o.height, err);
+        if (r) return r;
+        size = NULL;
+    }
     if (size || frame || repeats || knob)
-        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench quality only",
-                            size ? "--size" : frame ? "--frame" : repeats ? "--repeats" : "--knob");
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: %s applies to bench %s only",
+                            size ? "--size" : frame ? "--frame" : repeats ? "--repeats" : "--knob",
+                            size ? "render, quality and compare" : repeats ? "quality and compare" : "quality");
     if (strcmp(what, "output") == 0) { /* [frames] */
         if (out || nscenes > 1)
             return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench output takes one scene and no -o");

@@ -194,7 +194,13 @@ typedef struct {
 
 ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
     static const char *const default_scenes[] = {"scenes/demo.yaml", "scenes/lake.yaml", NULL};
-    static const int sizes[][2] = {{256, 144}, {1280, 720}};
+    int sizes[2][2] = {{256, 144}, {1280, 720}};
+    size_t nsizes = 2;
+    if (o->width > 0) {
+        sizes[0][0] = o->width;
+        sizes[0][1] = o->height;
+        nsizes = 1;
+    }
     static const struct { const char *name; ww_backend_kind kind; } kinds[] = {
         {"egl", WW_BACKEND_EGL}, {"osmesa", WW_BACKEND_OSMESA}};
     enum { NKINDS = sizeof kinds / sizeof kinds[0] };
@@ -212,7 +218,7 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
     int any = 0;
     for (size_t k = 0; k < NKINDS; k++) {
         for (int s = 0; scenes[s]; s++) {
-            for (size_t z = 0; z < sizeof sizes / sizeof sizes[0]; z++) {
+            for (size_t z = 0; z < nsizes; z++) {
                 int w = sizes[z][0], h = sizes[z][1];
                 child_report rep;
                 long rss = run_config(scenes[s], kinds[k].kind, w, h, frames, dir, &rep);

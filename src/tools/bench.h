@@ -36,6 +36,7 @@ typedef struct ww_bench_opts {
     const char *scenes[4];  /* NULL-terminated; default minimal + demo (sim: see bench_sim.c) */
     const char *out_dir;    /* sim: folder for sim.png (default out/bench) */
     int tiny;               /* sim: a seconds-long run for the tests (no render share) */
+    int width, height;      /* render: one size instead of 256x144 and 1280x720 (0: both) */
 } ww_bench_opts;
 
 ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err);
