@@ -445,9 +445,12 @@ TEST(frames_sigint_finishes_in_flight_and_exits_130) {
     if (!ww_test_have_gl()) return;
     char dir[160], a[2048], err_path[1024], first[1024];
     tmp("frames_int", dir, sizeof dir);
-    const int n = 60;
+    /* far more frames than are ever written: the signal lands mid-run on any renderer (a GPU
+     * renders 60 of these frames in well under the time the test waits) */
+    const int n = 20000;
     snprintf(err_path, sizeof err_path, "%s/err.txt", dir);
-    snprintf(a, sizeof a, "render " SCENE " --size %dx%d --frames %d -o %s/png", W, H, n, dir);
+    snprintf(a, sizeof a, "render " SCENE " --size %dx%d --frames %d -o %s/png --set time.duration=%d",
+             W, H, n, dir, n / 30 + 1);
     pid_t pid = spawn(a, err_path);
     snprintf(first, sizeof first, "%s/png/frame_00001.png", dir);
     int started = wait_for(first, pid);
@@ -464,14 +467,17 @@ TEST(frames_sigint_finishes_in_flight_and_exits_130) {
     ENSURE_EQ_INT(frames_decode(a, n), 0);
 
     /* a Y4M file interrupted is not left at all (a stream is kept only whole) */
-    snprintf(a, sizeof a, "render " SCENE " --size %dx%d --frames %d --format y4m -o %s/y/v.y4m --stats %s/y/s.jsonl",
-             W, H, n, dir, dir);
+    snprintf(a, sizeof a, "render " SCENE " --size %dx%d --frames %d --format y4m -o %s/y/v.y4m --stats %s/y/s.jsonl "
+             "--set time.duration=%d", W, H, n, dir, dir, n / 30 + 1);
     ENSURE_EQ_INT(mkdir(strcat(strcpy(first, dir), "/y"), 0777), 0);
     pid = spawn(a, err_path);
-    /* the stream's temporary file grows as frames go in */
+    /* the stream's temporary file grows as frames go in: signal once two frames are in it */
     snprintf(first, sizeof first, "%s/y", dir);
-    for (int i = 0; i < POLL_MAX && dir_count(first, "v.y4m.tmp") < 1; i++) usleep(POLL_US);
-    usleep(300000);
+    char tmpfile[1100];
+    snprintf(tmpfile, sizeof tmpfile, "%s/v.y4m.tmp.%ld", first, (long)pid); /* sh execs it */
+    struct stat st;
+    for (int i = 0; i < POLL_MAX && (stat(tmpfile, &st) != 0 || st.st_size < 2L * W * H * 3); i++)
+        usleep(POLL_US);
     kill(pid, SIGTERM);
     code = exit_status(pid, &sig);
     ENSURE_EQ_INT(code, 130);
