@@ -1,18 +1,21 @@
 #!/bin/sh
-# make-golden.sh [--check] [BIN] - re-bless the golden frames in golden/ (see README, "Golden
-# images"), or with --check compare fresh renders with them through `render --golden`.
+# make-golden.sh [--check | --key] [BIN] - re-bless the golden frames in golden/ (see README,
+# "Golden images"), or with --check compare fresh renders with them through `render --golden`.
 #
-# Layout: flat. golden/minimal/frame_00000.png, golden/demo/frame_XXXXX.png and
+# Layout: golden/minimal/frame_00000.png, golden/demo/frame_XXXXX.png and
 # golden/features/NAME.png are the renders of one renderer, recorded in golden/RENDERER
 # ("GL_RENDERER | GL_VERSION") and golden/KEY (its renderer key, `waterworld backends --key`).
-# `render --golden golden/demo` looks in golden/demo/KEY/ first and finds nothing there, then
-# takes the flat frame; per-renderer folders (golden/demo/nvidia-535/...) may be added beside.
+# --key blesses this machine's renderer beside them instead, into golden/minimal/KEY/,
+# golden/demo/KEY/ and golden/features/KEY/ (with KEY/RENDERER), leaving the flat ones alone.
+# `render --golden golden/demo` and the tests look in the KEY/ folder of the renderer they run on
+# first, then take the flat frame.
 set -eu
 check=0
-if [ "${1:-}" = "--check" ]; then
-    check=1
-    shift
-fi
+per_key=0
+case "${1:-}" in
+--check) check=1; shift ;;
+--key) per_key=1; shift ;;
+esac
 BIN=${1:-./waterworld}
 
 if [ "$check" = 1 ]; then
@@ -25,22 +28,30 @@ if [ "$check" = 1 ]; then
     exit $rc
 fi
 
+key=$("$BIN" backends --key)
+sub=
+[ "$per_key" = 1 ] && sub=/$key
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$BIN" render scenes/minimal.yaml --frames 1 -o "$tmp/minimal" --quiet
 "$BIN" render scenes/demo.yaml --size 256x144 --frames 1 -o "$tmp/demo" --quiet
 "$BIN" render scenes/demo.yaml --size 256x144 --frames 150:151 -o "$tmp/demo" --quiet
-mkdir -p golden/minimal golden/demo
-cp "$tmp/minimal/frame_00000.png" golden/minimal/
-cp "$tmp/demo/frame_00000.png" "$tmp/demo/frame_00150.png" golden/demo/
+mkdir -p "golden/minimal$sub" "golden/demo$sub"
+cp "$tmp/minimal/frame_00000.png" "golden/minimal$sub/"
+cp "$tmp/demo/frame_00000.png" "$tmp/demo/frame_00150.png" "golden/demo$sub/"
 # one golden per feature of the render pipeline: frame 0 of each scenes/features/NAME.yaml
-mkdir -p golden/features
+mkdir -p "golden/features$sub"
 for s in scenes/features/*.yaml; do
     [ -e "$s" ] || continue
     n=$(basename "$s" .yaml)
     "$BIN" render "$s" --frames 1 -o "$tmp/features/$n" --quiet
-    cp "$tmp/features/$n/frame_00000.png" "golden/features/$n.png"
+    cp "$tmp/features/$n/frame_00000.png" "golden/features$sub/$n.png"
 done
+if [ "$per_key" = 1 ]; then
+    "$BIN" backends --renderer > "golden/features/$key/RENDERER"
+    echo "golden: blessed $key ($(cat "golden/features/$key/RENDERER")) into golden/*/$key/; review the PNGs, then commit them" >&2
+    exit 0
+fi
 "$BIN" backends --renderer > golden/RENDERER
-"$BIN" backends --key > golden/KEY
-echo "golden: blessed with $(cat golden/RENDERER) (key $(cat golden/KEY)); review the PNGs, then commit them" >&2
+echo "$key" > golden/KEY
+echo "golden: blessed with $(cat golden/RENDERER) (key $key); review the PNGs, then commit them" >&2

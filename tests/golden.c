@@ -1,6 +1,7 @@
 /* golden.c - image checks shared by the test files: a rendered frame against its golden (exact
- * on the renderer that blessed golden/, within a tolerance elsewhere), rendering one frame of a
- * scene, and where two images differ relative to a rectangle (the toggle tests).
+ * on the renderer that blessed golden/ or against the renderer's own golden in DIR/KEY/, within a
+ * tolerance elsewhere), rendering one frame of a scene, and where two images differ relative to a
+ * rectangle (the toggle tests).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -8,6 +9,7 @@
 
 #include "gfx/backend.h"
 #include "io/writers.h"
+#include "tools/golden.h"
 #include "test.h"
 
 /* on a renderer other than the one in golden/RENDERER (another Mesa, a GPU): every channel within
@@ -37,20 +39,42 @@ static int diff_images(const ww_image *a, const ww_image *b, image_diff *d) {
     return 0;
 }
 
-/* "GL_RENDERER | GL_VERSION" of the auto backend here, or "" without GL */
-static void current_renderer(char *out, size_t cap) {
+/* "GL_RENDERER | GL_VERSION" of the auto backend here, or "" without GL; key: its renderer key
+ * (may be NULL) */
+static void current_renderer(char *out, size_t cap, char *key, size_t key_cap) {
     out[0] = 0;
+    if (key) key[0] = 0;
     ww_backend *b = NULL;
     ww_error err = {0};
     if (ww_backend_open(WW_BACKEND_AUTO, &b, &err) != WW_OK) return;
     snprintf(out, cap, "%s | %s", ww_backend_renderer(b), ww_backend_version(b));
+    if (key) ww_golden_renderer_key(ww_backend_renderer(b), ww_backend_version(b), key, key_cap);
     ww_backend_close(b);
+}
+
+/* golden/x/NAME.png -> golden/x/KEY/NAME.png for this machine's renderer key, when that file
+ * exists (the per-renderer goldens of `scripts/make-golden.sh --key`); else 0 */
+static int own_golden(const char *golden, char *out, size_t cap) {
+    static char key[WW_GOLDEN_KEY_SIZE];
+    static int looked;
+    if (!looked) {
+        char r[512];
+        current_renderer(r, sizeof r, key, sizeof key);
+        looked = 1;
+    }
+    const char *slash = strrchr(golden, '/');
+    if (!key[0] || !slash) return 0;
+    snprintf(out, cap, "%.*s/%s%s", (int)(slash - golden), golden, key, slash);
+    FILE *f = fopen(out, "rb");
+    if (!f) return 0;
+    fclose(f);
+    return 1;
 }
 
 /* this machine renders with the renderer that blessed golden/ (same GL_RENDERER and version) */
 int ww_test_renderer_is_blessed(void) {
     char here[512];
-    current_renderer(here, sizeof here);
+    current_renderer(here, sizeof here, NULL, 0);
     char *blessed = ww_test_read_file("golden/RENDERER", NULL);
     int same = blessed && here[0] && strncmp(blessed, here, strlen(here)) == 0;
     free(blessed);
@@ -60,11 +84,16 @@ int ww_test_renderer_is_blessed(void) {
 void ww_test_check_golden(const char *golden, const char *actual) {
     ww_image g = {0}, a = {0};
     ww_error err = {0};
+    char own[1024];
+    int exact = ww_test_renderer_is_blessed();
+    if (!exact && own_golden(golden, own, sizeof own)) {
+        golden = own; /* this renderer's own golden: exact */
+        exact = 1;
+    }
     ENSURE_MSG(ww_read_png(golden, &g, &err) == WW_OK, "%s: %s", golden, err.msg);
     ENSURE_MSG(ww_read_png(actual, &a, &err) == WW_OK, "%s: %s", actual, err.msg);
     if (!g.u8 || !a.u8) goto done;
 
-    int exact = ww_test_renderer_is_blessed();
     image_diff d = {0};
     ENSURE(diff_images(&g, &a, &d) == 0);
     if (exact) {

@@ -91,8 +91,9 @@ int ww_test_have_gl(void);
 /* tests/golden.c: images */
 /* this machine's GL renderer is the one that blessed golden/ (golden/RENDERER) */
 int ww_test_renderer_is_blessed(void);
-/* actual (PNG) against golden (PNG): exact on the blessing renderer, within a tolerance elsewhere;
- * a failure names both files and says how to re-bless */
+/* actual (PNG) against golden (PNG), e.g. golden/features/fog.png: exact on the blessing renderer
+ * or against this renderer's own golden/features/KEY/fog.png where one exists, within a tolerance
+ * elsewhere; a failure names both files and says how to re-bless */
 void ww_test_check_golden(const char *golden, const char *actual);
 /* render frame 0 of scene into dir/frame_00000.png with extra arguments (e.g. "--set
  * render.bloom=false"); the exit status */
