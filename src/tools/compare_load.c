@@ -8,10 +8,10 @@
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
 
 #include <stb/stb_image.h>
 
+#include "core/bigalloc.h"
 #include "core/hash.h"
 #include "io/writers.h"
 
@@ -19,21 +19,11 @@ static const unsigned char png_magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a
 static const unsigned char exr_magic[4] = {0x76, 0x2f, 0x31, 0x01}; /* OpenEXR file layout */
 #define MAX_16BIT 65535.0f
 #define MAX_8BIT 255.0f
-#define HUGE_PAGE ((size_t)2 << 20) /* x86-64 transparent huge page */
 
-/* a pixel buffer freed with free(); a large one on transparent huge pages where the kernel
- * offers them: the first touches of a 1280x720 float image (14.7 MB) are 3600 page faults
- * otherwise. Measured on this 2-core VM: touching 16 MB took 45-54 ms in 4 KiB pages, 2-17 ms in
- * huge pages; `waterworld compare` of a 1280x720 pair 0.30 s without, 0.19 s with (perf stat -r 8,
- * 10540 page faults against 3354) */
-static float *alloc_pixels(size_t npx) {
-    size_t bytes = npx * 4 * sizeof(float);
-    if (bytes < HUGE_PAGE) return malloc(bytes);
-    size_t rounded = (bytes + HUGE_PAGE - 1) / HUGE_PAGE * HUGE_PAGE;
-    float *p = aligned_alloc(HUGE_PAGE, rounded);
-    if (p) madvise(p, rounded, MADV_HUGEPAGE); /* advice only: failure changes nothing */
-    return p;
-}
+/* a pixel buffer freed with free(), on huge pages when big (core/bigalloc.h): `waterworld
+ * compare` of a 1280x720 pair took 0.30 s without, 0.19 s with (perf stat -r 8, 10540 page
+ * faults against 3354) */
+static float *alloc_pixels(size_t npx) { return ww_big_alloc(npx * 4 * sizeof(float)); }
 
 void ww_cmp_image_free(ww_cmp_image *im) {
     free(im->rgba);
