@@ -181,6 +181,67 @@ int ww_cmp_pixel_kind(const ww_cmp_image *a, const ww_cmp_image *b, int x, int y
     return worst > o->threshold + level_slack(a) ? WW_CMP_DIFF : WW_CMP_SAME;
 }
 
+/* an 8- or 16-bit image's values are v / (2^bits - 1) in [0, 1], colour premultiplied (never
+ * above its alpha): no clamp, no NaN. pixelmatch's delta for such a pair, as ww_cmp_yiq_delta
+ * computes it (the same operations in the same order, so the same bits) */
+static inline double yiq_delta_ldr(const float *p, const float *q) {
+    double ap = p[3], aq = q[3], d[3], delta = 0;
+    for (int c = 0; c < 3; c++) d[c] = LEVELS * ((double)p[c] + 1.0 - ap) - LEVELS * ((double)q[c] + 1.0 - aq);
+    for (int k = 0; k < 3; k++) {
+        double e = yiq_m[k][0] * d[0] + yiq_m[k][1] * d[1] + yiq_m[k][2] * d[2];
+        delta += yiq_w[k] * e * e;
+    }
+    return delta;
+}
+
+/* diff_pass for an 8- or 16-bit pair: pixel_channels without the HDR cases, the sums in
+ * registers; the same figures to the bit (the relative error's floor cannot bind: two values
+ * that differ are at least 1/65535 apart, so the larger is above REL_FLOOR) */
+static void diff_pass_ldr(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
+                          int y0, int y1, sums *s) {
+    int nch = has_alpha(a) || has_alpha(b) ? 4 : 3;
+    double limit = o->threshold + level_slack(a);
+    double max_delta = WW_CMP_YIQ_MAX_DELTA * o->yiq * o->yiq;
+    double sabs = s->abs, ssq = s->sq, srel = s->rel, max_abs = s->max_abs, rel_max = s->rel_max;
+    size_t same = 0, npx = 0;
+    long diff = 0;
+    for (int y = y0; y < y1; y++) {
+        size_t row = (size_t)y * (size_t)a->width;
+        for (int x = 0; x < a->width; x++) {
+            const float *p = a->rgba + 4 * (row + (size_t)x), *q = b->rgba + 4 * (row + (size_t)x);
+            npx++;
+            if (same_pixel(p, q)) {
+                same++;
+                continue;
+            }
+            double worst = 0;
+            for (int c = 0; c < nch; c++) {
+                double u = p[c], v = q[c];
+                double d = u > v ? u - v : v - u;
+                if (c < 3) ssq += d * d;
+                if (d == 0) continue;
+                double rel = d / (u > v ? u : v);
+                sabs += d;
+                srel += rel;
+                if (d > max_abs) max_abs = d;
+                if (rel > rel_max) rel_max = rel;
+                if (d * LEVELS > worst) worst = d * LEVELS;
+            }
+            if (worst > limit) diff++;
+            if (!(yiq_delta_ldr(p, q) > max_delta)) continue;
+            if (o->detect_aa && (ww_cmp_antialiased(a, b, x, y) || ww_cmp_antialiased(b, a, x, y)))
+                s->aa++;
+            else
+                s->yiq++;
+        }
+    }
+    (void)same;
+    s->abs = sabs, s->sq = ssq, s->rel = srel, s->max_abs = max_abs, s->rel_max = rel_max;
+    s->n += npx * (size_t)nch;
+    s->nsq += npx * 3;
+    s->diff += diff;
+}
+
 /* the pass over rows [y0, y1): differences, threshold count, pixelmatch */
 static void diff_pass(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o, int y0,
                       int y1, sums *s) {
@@ -210,63 +271,91 @@ static void diff_pass(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp
 
 /* ---- SSIM ------------------------------------------------------------------------------------ */
 
+/* the luma of an 8- or 16-bit image's pixel (values in [0, 1]): ssim_luma without the clamps,
+ * the same bits */
+static inline float ssim_luma_ldr(const float *px) {
+    double a = px[3];
+    return (float)(LUMA_R * ((double)px[0] + 1.0 - a) + LUMA_G * ((double)px[1] + 1.0 - a) +
+                   LUMA_B * ((double)px[2] + 1.0 - a));
+}
+
 static float ssim_luma(const float *px) {
     double a = unit(px[3]);
     return (float)(LUMA_R * (unit(px[0]) + 1.0 - a) + LUMA_G * (unit(px[1]) + 1.0 - a) +
                    LUMA_B * (unit(px[2]) + 1.0 - a));
 }
 
-/* Wang et al. 2004 eq. 13 from a window's sums of x, y, x^2, y^2, xy over n pixels */
-static double ssim_window(const double s[5], double n) {
+/* Wang et al. 2004 eq. 13 for each of n windows from their sums of x, y, x^2, y^2, xy (s[0..4],
+ * each an array over the windows) over np pixels, into v: no dependence between windows, so
+ * this loop runs apart from the sliding sums and the running total */
+static void ssim_windows(double *const s[5], int n, double np, double *v) {
     const double c1 = (SSIM_K1) * (SSIM_K1), c2 = (SSIM_K2) * (SSIM_K2);
-    double mx = s[0] / n, my = s[1] / n;
-    double vx = s[2] / n - mx * mx, vy = s[3] / n - my * my, cxy = s[4] / n - mx * my;
-    return ((2 * mx * my + c1) * (2 * cxy + c2)) / ((mx * mx + my * my + c1) * (vx + vy + c2));
+    const double *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3], *s4 = s[4];
+    const double inv = 1.0 / np; /* exact for the 8x8 window (1/64): one division per window */
+    for (int x = 0; x < n; x++) {
+        double mx = s0[x] * inv, my = s1[x] * inv;
+        double vx = s2[x] * inv - mx * mx, vy = s3[x] * inv - my * my, cxy = s4[x] * inv - mx * my;
+        v[x] = ((2 * mx * my + c1) * (2 * cxy + c2)) / ((mx * mx + my * my + c1) * (vx + vy + c2));
+    }
 }
 
 /* the sum of SSIM over the windows of wx x wy (8x8, or the image's side when smaller) whose top
  * row is in [t0, t1): luma rows in a ring of wy, column sums updated as rows enter and leave,
- * window sums sliding along x */
+ * window sums sliding along x into arrays, then SSIM per window, then the total in x order */
 static ww_result ssim_sum(const ww_cmp_image *a, const ww_cmp_image *b, int t0, int t1,
                           double *out, ww_error *err) {
     int w = a->width, h = a->height;
     int wx = w < SSIM_WINDOW ? w : SSIM_WINDOW, wy = h < SSIM_WINDOW ? h : SSIM_WINDOW;
+    int nx = w - wx + 1;
     size_t nw = (size_t)w;
     *out = 0;
     if (t0 >= t1) return WW_OK;
     float *ring = malloc(2 * (size_t)wy * nw * sizeof *ring);
-    double *col = calloc(5 * nw, sizeof *col); /* per column: x, y, x^2, y^2, xy */
-    if (!ring || !col) {
+    /* per column: sums of x, y, x^2, y^2, xy (col[k]); per window the same (win[k]); SSIM */
+    double *mem = calloc(11 * nw, sizeof *mem);
+    if (!ring || !mem) {
         free(ring);
-        free(col);
+        free(mem);
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "compare: out of memory for SSIM");
     }
+    double *col[5], *win[5], *val = mem + 10 * nw;
+    for (int k = 0; k < 5; k++) col[k] = mem + (size_t)k * nw, win[k] = mem + (size_t)(5 + k) * nw;
     double total = 0;
     for (int y = t0; y < t1 + wy - 1 && y < h; y++) {
         float *la = ring + (size_t)((y - t0) % wy) * 2 * nw, *lb = la + nw;
         const float *pa = a->rgba + 4 * (size_t)y * nw, *pb = b->rgba + 4 * (size_t)y * nw;
-        for (size_t x = 0; x < nw; x++) {
-            float u = ssim_luma(pa + 4 * x), v = ssim_luma(pb + 4 * x);
-            double *c = col + 5 * x;
-            if (y - t0 >= wy) { /* the row leaving the band */
+        if (y - t0 >= wy) { /* the row leaving the band */
+            for (size_t x = 0; x < nw; x++) {
                 double ou = la[x], ov = lb[x];
-                c[0] -= ou, c[1] -= ov, c[2] -= ou * ou, c[3] -= ov * ov, c[4] -= ou * ov;
+                col[0][x] -= ou, col[1][x] -= ov, col[2][x] -= ou * ou, col[3][x] -= ov * ov;
+                col[4][x] -= ou * ov;
             }
-            la[x] = u, lb[x] = v;
-            c[0] += u, c[1] += v, c[2] += (double)u * u, c[3] += (double)v * v, c[4] += (double)u * v;
+        }
+        if (a->hdr) {
+            for (size_t x = 0; x < nw; x++) la[x] = ssim_luma(pa + 4 * x), lb[x] = ssim_luma(pb + 4 * x);
+        } else {
+            for (size_t x = 0; x < nw; x++) la[x] = ssim_luma_ldr(pa + 4 * x), lb[x] = ssim_luma_ldr(pb + 4 * x);
+        }
+        for (size_t x = 0; x < nw; x++) {
+            float u = la[x], v = lb[x];
+            col[0][x] += u, col[1][x] += v, col[2][x] += (double)u * u, col[3][x] += (double)v * v;
+            col[4][x] += (double)u * v;
         }
         if (y - t0 < wy - 1) continue;
-        double s[5] = {0};
-        for (int x = 0; x < wx; x++)
-            for (int k = 0; k < 5; k++) s[k] += col[5 * x + k];
-        for (int x = 0;; x++) {
-            total += ssim_window(s, (double)wx * wy);
-            if (x + wx >= w) break;
-            for (int k = 0; k < 5; k++) s[k] += col[5 * (x + wx) + k] - col[5 * x + k];
+        for (int k = 0; k < 5; k++) {
+            double s = 0;
+            for (int x = 0; x < wx; x++) s += col[k][x];
+            for (int x = 0;; x++) {
+                win[k][x] = s;
+                if (x + 1 >= nx) break;
+                s += col[k][x + wx] - col[k][x];
+            }
         }
+        ssim_windows(win, nx, (double)wx * wy, val);
+        for (int x = 0; x < nx; x++) total += val[x];
     }
     free(ring);
-    free(col);
+    free(mem);
     *out = total;
     return WW_OK;
 }
@@ -286,7 +375,10 @@ static void *band_run(void *arg) {
     band_job *j = arg;
     int wy = j->a->height < SSIM_WINDOW ? j->a->height : SSIM_WINDOW;
     int tops = j->a->height - wy + 1, t1 = j->y1 < tops ? j->y1 : tops;
-    diff_pass(j->a, j->b, j->o, j->y0, j->y1, &j->s);
+    if (j->a->hdr)
+        diff_pass(j->a, j->b, j->o, j->y0, j->y1, &j->s);
+    else
+        diff_pass_ldr(j->a, j->b, j->o, j->y0, j->y1, &j->s);
     j->r = ssim_sum(j->a, j->b, j->y0, t1, &j->ssim_total, &j->err);
     return NULL;
 }
