@@ -435,6 +435,55 @@ TEST(compare_tools_agree_on_frames) {
     free(t);
 }
 
+/* an RGB PNG is held in the rgb8 layout, whose 8-bit paths must give the figures of the float
+ * rgba layout to the bit: the same pair compared in both layouts, every field equal, the same
+ * diff image; a pair of mixed layouts too */
+TEST(compare_rgb8_layout_matches_rgba) {
+    if (!ww_test_have_gl()) return;
+    const char *dir = ww_test_tmpdir("compare_layouts");
+    char cmd[4096], f0[600], f1[600], d8[600], d32[600];
+    snprintf(cmd, sizeof cmd, "%s render scenes/lake.yaml --frames 0:3 --size 256x144 -o %s --quiet",
+             ww_test_bin(), dir);
+    ENSURE_EQ_INT(ww_test_run(cmd, NULL, NULL), 0);
+    snprintf(f0, sizeof f0, "%s/frame_00000.png", dir);
+    snprintf(f1, sizeof f1, "%s/frame_00002.png", dir);
+    ww_cmp_image a, b, wa, wb;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_cmp_load_pair(f0, f1, &a, &b, &err), WW_OK);
+    ENSURE_MSG(a.rgb8 && !a.rgba && b.rgb8, "an RGB frame loads in the rgb8 layout");
+    ENSURE_EQ_INT(ww_cmp_to_rgba(&a, &wa, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_to_rgba(&b, &wb, &err), WW_OK);
+    ww_cmp_opts o = ww_cmp_default_opts();
+    o.threshold = 2;
+    ww_cmp_result r8, r32, rmix;
+    ENSURE_EQ_INT(ww_cmp_images(&a, &b, &o, &r8, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_images(&wa, &wb, &o, &r32, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_images(&a, &wb, &o, &rmix, &err), WW_OK);
+    ENSURE_MSG(r8.diff_pixels > 0 && r8.yiq_pixels + r8.aa_pixels > 0,
+               "frames 0 and 2 of the lake differ, some over the YIQ threshold");
+    const ww_cmp_result *rs[2] = {&r32, &rmix};
+    for (int k = 0; k < 2; k++) {
+        const ww_cmp_result *q = rs[k];
+        ENSURE_MSG(r8.max_abs == q->max_abs && r8.mean_abs == q->mean_abs && r8.rmse == q->rmse &&
+                       r8.psnr == q->psnr && r8.ssim == q->ssim && r8.rel_max == q->rel_max &&
+                       r8.rel_mean == q->rel_mean,
+                   "layout %d: max %.17g/%.17g mean %.17g/%.17g rmse %.17g/%.17g ssim %.17g/%.17g",
+                   k, r8.max_abs, q->max_abs, r8.mean_abs, q->mean_abs, r8.rmse, q->rmse, r8.ssim,
+                   q->ssim);
+        ENSURE(r8.diff_pixels == q->diff_pixels && r8.yiq_pixels == q->yiq_pixels &&
+               r8.aa_pixels == q->aa_pixels);
+    }
+    snprintf(d8, sizeof d8, "%s/diff8.png", dir);
+    snprintf(d32, sizeof d32, "%s/diff32.png", dir);
+    ENSURE_EQ_INT(ww_cmp_write_diff(d8, &a, &b, &o, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_write_diff(d32, &wa, &wb, &o, &err), WW_OK);
+    ENSURE(ww_test_files_equal(d8, d32));
+    ww_cmp_image_free(&a);
+    ww_cmp_image_free(&b);
+    ww_cmp_image_free(&wa);
+    ww_cmp_image_free(&wb);
+}
+
 /* EXR: NaN/Inf rules */
 static void write_exr(const char *path, const float px[8]) {
     ww_image im;

@@ -78,15 +78,27 @@ static nbhd around(const ww_cmp_image *im, int x, int y) {
     return n;
 }
 
+/* pixels i and k of an image are the same, in either layout */
+static int same_at(const ww_cmp_image *im, size_t i, size_t k) {
+    if (im->rgb8) return memcmp(im->rgb8 + 3 * i, im->rgb8 + 3 * k, 3) == 0;
+    return same_pixel(im->rgba + 4 * i, im->rgba + 4 * k);
+}
+
+static double luma_at(const ww_cmp_image *im, size_t i) {
+    float px[4];
+    ww_cmp_pixel(im, i, px);
+    return ww_cmp_luma_on_white(px);
+}
+
 /* 3+ neighbours identical to (x, y), a pixel on the image's edge counting one (pixelmatch) */
 static int many_siblings(const ww_cmp_image *im, int x, int y) {
     nbhd n = around(im, x, y);
-    const float *c = im->rgba + 4 * ((size_t)y * (size_t)im->width + (size_t)x);
+    size_t w = (size_t)im->width, c = (size_t)y * w + (size_t)x;
     int same = n.edge;
     for (int j = n.y0; j <= n.y1; j++)
         for (int i = n.x0; i <= n.x1; i++) {
             if (i == x && j == y) continue;
-            if (same_pixel(c, im->rgba + 4 * ((size_t)j * (size_t)im->width + (size_t)i)))
+            if (same_at(im, c, (size_t)j * w + (size_t)i))
                 if (++same > 2) return 1;
         }
     return 0;
@@ -95,7 +107,7 @@ static int many_siblings(const ww_cmp_image *im, int x, int y) {
 int ww_cmp_antialiased(const ww_cmp_image *img, const ww_cmp_image *other, int x, int y) {
     nbhd n = around(img, x, y);
     size_t w = (size_t)img->width;
-    double centre = ww_cmp_luma_on_white(img->rgba + 4 * ((size_t)y * w + (size_t)x));
+    double centre = luma_at(img, (size_t)y * w + (size_t)x);
     int zeroes = n.edge;
     double lo = 0, hi = 0;
     int lox = 0, loy = 0, hix = 0, hiy = 0;
@@ -104,7 +116,7 @@ int ww_cmp_antialiased(const ww_cmp_image *img, const ww_cmp_image *other, int x
     for (int j = n.y0; j <= n.y1; j++)
         for (int i = n.x0; i <= n.x1; i++) {
             if (i == x && j == y) continue;
-            double d = ww_cmp_luma_on_white(img->rgba + 4 * ((size_t)j * w + (size_t)i)) - centre;
+            double d = luma_at(img, (size_t)j * w + (size_t)i) - centre;
             if (d == 0) {
                 if (++zeroes > 2) return 0; /* a flat area, not an edge's ramp */
             } else if (d < lo) {
@@ -163,7 +175,10 @@ static inline double pixel_channels(const float *p, const float *q, int nch, int
 double ww_cmp_pixel_diff(const ww_cmp_image *a, const ww_cmp_image *b, size_t i) {
     sums s = {0};
     int nch = has_alpha(a) || has_alpha(b) ? 4 : 3;
-    return pixel_channels(a->rgba + 4 * i, b->rgba + 4 * i, nch, a->hdr, &s);
+    float p[4], q[4];
+    ww_cmp_pixel(a, i, p);
+    ww_cmp_pixel(b, i, q);
+    return pixel_channels(p, q, nch, a->hdr, &s);
 }
 
 static double level_slack(const ww_cmp_image *a) { return a->hdr ? 0.0 : LEVEL_EPS; }
@@ -172,7 +187,10 @@ int ww_cmp_pixel_kind(const ww_cmp_image *a, const ww_cmp_image *b, int x, int y
                       const ww_cmp_opts *o) {
     size_t i = (size_t)y * (size_t)a->width + (size_t)x;
     double worst = ww_cmp_pixel_diff(a, b, i);
-    double delta = ww_cmp_yiq_delta(a->rgba + 4 * i, b->rgba + 4 * i);
+    float p[4], q[4];
+    ww_cmp_pixel(a, i, p);
+    ww_cmp_pixel(b, i, q);
+    double delta = ww_cmp_yiq_delta(p, q);
     if (delta > WW_CMP_YIQ_MAX_DELTA * o->yiq * o->yiq) {
         if (o->detect_aa && (ww_cmp_antialiased(a, b, x, y) || ww_cmp_antialiased(b, a, x, y)))
             return WW_CMP_AA;
@@ -269,6 +287,71 @@ static void diff_pass(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp
     }
 }
 
+/* the rgb8 layout's values per 8-bit level, each computed as the rgba layout's paths compute it
+ * from the level's float (so both layouts give the same figures to the bit) */
+typedef struct level_tables {
+    double v[256];       /* the level as the float paths see it */
+    double white[256];   /* on white at alpha 1, 8-bit scale (on_white) */
+    double luma[3][256]; /* SSIM's weighted channel at alpha 1 (ssim_luma_ldr) */
+} level_tables;
+
+static void level_tables_make(level_tables *t) {
+    static const double w[3] = {LUMA_R, LUMA_G, LUMA_B};
+    for (unsigned k = 0; k < 256; k++) {
+        double v = ww_cmp_level(k), a = 1.0;
+        t->v[k] = v;
+        t->white[k] = LEVELS * (v + 1.0 - a);
+        for (int c = 0; c < 3; c++) t->luma[c][k] = w[c] * (v + 1.0 - a);
+    }
+}
+
+/* diff_pass_ldr for two rgb8 images: three bytes a pixel read, the values from the tables */
+static void diff_pass_rgb8(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
+                           const level_tables *t, int y0, int y1, sums *s) {
+    double limit = o->threshold + level_slack(a);
+    double max_delta = WW_CMP_YIQ_MAX_DELTA * o->yiq * o->yiq;
+    double sabs = s->abs, ssq = s->sq, srel = s->rel, max_abs = s->max_abs, rel_max = s->rel_max;
+    size_t npx = 0;
+    long diff = 0;
+    for (int y = y0; y < y1; y++) {
+        size_t row = (size_t)y * (size_t)a->width;
+        for (int x = 0; x < a->width; x++) {
+            const unsigned char *p = a->rgb8 + 3 * (row + (size_t)x), *q = b->rgb8 + 3 * (row + (size_t)x);
+            npx++;
+            if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) continue;
+            double worst = 0, dw[3];
+            for (int c = 0; c < 3; c++) {
+                double u = t->v[p[c]], v = t->v[q[c]];
+                dw[c] = t->white[p[c]] - t->white[q[c]];
+                double d = u > v ? u - v : v - u;
+                ssq += d * d;
+                if (d == 0) continue;
+                double rel = d / (u > v ? u : v);
+                sabs += d;
+                srel += rel;
+                if (d > max_abs) max_abs = d;
+                if (rel > rel_max) rel_max = rel;
+                if (d * LEVELS > worst) worst = d * LEVELS;
+            }
+            if (worst > limit) diff++;
+            double delta = 0;
+            for (int k = 0; k < 3; k++) {
+                double e = yiq_m[k][0] * dw[0] + yiq_m[k][1] * dw[1] + yiq_m[k][2] * dw[2];
+                delta += yiq_w[k] * e * e;
+            }
+            if (!(delta > max_delta)) continue;
+            if (o->detect_aa && (ww_cmp_antialiased(a, b, x, y) || ww_cmp_antialiased(b, a, x, y)))
+                s->aa++;
+            else
+                s->yiq++;
+        }
+    }
+    s->abs = sabs, s->sq = ssq, s->rel = srel, s->max_abs = max_abs, s->rel_max = rel_max;
+    s->n += npx * 3;
+    s->nsq += npx * 3;
+    s->diff += diff;
+}
+
 /* ---- SSIM ------------------------------------------------------------------------------------ */
 
 /* the luma of an 8- or 16-bit image's pixel (values in [0, 1]): ssim_luma without the clamps,
@@ -285,25 +368,47 @@ static float ssim_luma(const float *px) {
                    LUMA_B * (unit(px[2]) + 1.0 - a));
 }
 
-/* Wang et al. 2004 eq. 13 for each of n windows from their sums of x, y, x^2, y^2, xy (s[0..4],
- * each an array over the windows) over np pixels, into v: no dependence between windows, so
- * this loop runs apart from the sliding sums and the running total */
-static void ssim_windows(double *const s[5], int n, double np, double *v) {
+/* row y's luma, by the image's layout and kind */
+static void ssim_luma_row(const ww_cmp_image *im, const level_tables *t, int y, float *out) {
+    size_t nw = (size_t)im->width;
+    if (im->rgb8) {
+        const unsigned char *p = im->rgb8 + 3 * (size_t)y * nw;
+        for (size_t x = 0; x < nw; x++, p += 3)
+            out[x] = (float)(t->luma[0][p[0]] + t->luma[1][p[1]] + t->luma[2][p[2]]);
+        return;
+    }
+    const float *p = im->rgba + 4 * (size_t)y * nw;
+    if (im->hdr)
+        for (size_t x = 0; x < nw; x++) out[x] = ssim_luma(p + 4 * x);
+    else
+        for (size_t x = 0; x < nw; x++) out[x] = ssim_luma_ldr(p + 4 * x);
+}
+
+/* SSIM (Wang et al. 2004, eq. 13) of the n windows of width wx along a row of column sums
+ * (col[0..4]: sums of x, y, x^2, y^2, xy down the window's height, np pixels a window) into v.
+ * The five window sums slide in registers, five independent chains, and each window's value
+ * leaves the chains, so its division overlaps the next windows' additions */
+static void ssim_windows(double *const col[5], int wx, int n, double np, double *v) {
     const double c1 = (SSIM_K1) * (SSIM_K1), c2 = (SSIM_K2) * (SSIM_K2);
-    const double *s0 = s[0], *s1 = s[1], *s2 = s[2], *s3 = s[3], *s4 = s[4];
+    const double *c0 = col[0], *cy = col[1], *cxx = col[2], *cyy = col[3], *cxy = col[4];
     const double inv = 1.0 / np; /* exact for the 8x8 window (1/64): one division per window */
-    for (int x = 0; x < n; x++) {
-        double mx = s0[x] * inv, my = s1[x] * inv;
-        double vx = s2[x] * inv - mx * mx, vy = s3[x] * inv - my * my, cxy = s4[x] * inv - mx * my;
-        v[x] = ((2 * mx * my + c1) * (2 * cxy + c2)) / ((mx * mx + my * my + c1) * (vx + vy + c2));
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0, s4 = 0;
+    for (int x = 0; x < wx; x++) s0 += c0[x], s1 += cy[x], s2 += cxx[x], s3 += cyy[x], s4 += cxy[x];
+    for (int x = 0;; x++) {
+        double mx = s0 * inv, my = s1 * inv;
+        double vx = s2 * inv - mx * mx, vy = s3 * inv - my * my, cov = s4 * inv - mx * my;
+        v[x] = ((2 * mx * my + c1) * (2 * cov + c2)) / ((mx * mx + my * my + c1) * (vx + vy + c2));
+        if (x + 1 >= n) break;
+        s0 += c0[x + wx] - c0[x], s1 += cy[x + wx] - cy[x], s2 += cxx[x + wx] - cxx[x];
+        s3 += cyy[x + wx] - cyy[x], s4 += cxy[x + wx] - cxy[x];
     }
 }
 
 /* the sum of SSIM over the windows of wx x wy (8x8, or the image's side when smaller) whose top
  * row is in [t0, t1): luma rows in a ring of wy, column sums updated as rows enter and leave,
- * window sums sliding along x into arrays, then SSIM per window, then the total in x order */
-static ww_result ssim_sum(const ww_cmp_image *a, const ww_cmp_image *b, int t0, int t1,
-                          double *out, ww_error *err) {
+ * window sums sliding along x (ssim_windows), then the total in x order */
+static ww_result ssim_sum(const ww_cmp_image *a, const ww_cmp_image *b, const level_tables *t,
+                          int t0, int t1, double *out, ww_error *err) {
     int w = a->width, h = a->height;
     int wx = w < SSIM_WINDOW ? w : SSIM_WINDOW, wy = h < SSIM_WINDOW ? h : SSIM_WINDOW;
     int nx = w - wx + 1;
@@ -311,19 +416,18 @@ static ww_result ssim_sum(const ww_cmp_image *a, const ww_cmp_image *b, int t0, 
     *out = 0;
     if (t0 >= t1) return WW_OK;
     float *ring = malloc(2 * (size_t)wy * nw * sizeof *ring);
-    /* per column: sums of x, y, x^2, y^2, xy (col[k]); per window the same (win[k]); SSIM */
-    double *mem = calloc(11 * nw, sizeof *mem);
+    /* per column: sums of x, y, x^2, y^2, xy (col[k]); per window: SSIM */
+    double *mem = calloc(6 * nw, sizeof *mem);
     if (!ring || !mem) {
         free(ring);
         free(mem);
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "compare: out of memory for SSIM");
     }
-    double *col[5], *win[5], *val = mem + 10 * nw;
-    for (int k = 0; k < 5; k++) col[k] = mem + (size_t)k * nw, win[k] = mem + (size_t)(5 + k) * nw;
+    double *col[5], *val = mem + 5 * nw;
+    for (int k = 0; k < 5; k++) col[k] = mem + (size_t)k * nw;
     double total = 0;
     for (int y = t0; y < t1 + wy - 1 && y < h; y++) {
         float *la = ring + (size_t)((y - t0) % wy) * 2 * nw, *lb = la + nw;
-        const float *pa = a->rgba + 4 * (size_t)y * nw, *pb = b->rgba + 4 * (size_t)y * nw;
         if (y - t0 >= wy) { /* the row leaving the band */
             for (size_t x = 0; x < nw; x++) {
                 double ou = la[x], ov = lb[x];
@@ -331,27 +435,15 @@ static ww_result ssim_sum(const ww_cmp_image *a, const ww_cmp_image *b, int t0, 
                 col[4][x] -= ou * ov;
             }
         }
-        if (a->hdr) {
-            for (size_t x = 0; x < nw; x++) la[x] = ssim_luma(pa + 4 * x), lb[x] = ssim_luma(pb + 4 * x);
-        } else {
-            for (size_t x = 0; x < nw; x++) la[x] = ssim_luma_ldr(pa + 4 * x), lb[x] = ssim_luma_ldr(pb + 4 * x);
-        }
+        ssim_luma_row(a, t, y, la);
+        ssim_luma_row(b, t, y, lb);
         for (size_t x = 0; x < nw; x++) {
             float u = la[x], v = lb[x];
             col[0][x] += u, col[1][x] += v, col[2][x] += (double)u * u, col[3][x] += (double)v * v;
             col[4][x] += (double)u * v;
         }
         if (y - t0 < wy - 1) continue;
-        for (int k = 0; k < 5; k++) {
-            double s = 0;
-            for (int x = 0; x < wx; x++) s += col[k][x];
-            for (int x = 0;; x++) {
-                win[k][x] = s;
-                if (x + 1 >= nx) break;
-                s += col[k][x + wx] - col[k][x];
-            }
-        }
-        ssim_windows(win, nx, (double)wx * wy, val);
+        ssim_windows(col, wx, nx, (double)wx * wy, val);
         for (int x = 0; x < nx; x++) total += val[x];
     }
     free(ring);
@@ -364,6 +456,7 @@ static ww_result ssim_sum(const ww_cmp_image *a, const ww_cmp_image *b, int t0, 
 typedef struct band_job {
     const ww_cmp_image *a, *b;
     const ww_cmp_opts *o;
+    const level_tables *t; /* the rgb8 pair's tables */
     int y0, y1;
     sums s;
     double ssim_total;
@@ -375,11 +468,13 @@ static void *band_run(void *arg) {
     band_job *j = arg;
     int wy = j->a->height < SSIM_WINDOW ? j->a->height : SSIM_WINDOW;
     int tops = j->a->height - wy + 1, t1 = j->y1 < tops ? j->y1 : tops;
-    if (j->a->hdr)
+    if (j->a->rgb8)
+        diff_pass_rgb8(j->a, j->b, j->o, j->t, j->y0, j->y1, &j->s);
+    else if (j->a->hdr)
         diff_pass(j->a, j->b, j->o, j->y0, j->y1, &j->s);
     else
         diff_pass_ldr(j->a, j->b, j->o, j->y0, j->y1, &j->s);
-    j->r = ssim_sum(j->a, j->b, j->y0, t1, &j->ssim_total, &j->err);
+    j->r = ssim_sum(j->a, j->b, j->t, j->y0, t1, &j->ssim_total, &j->err);
     return NULL;
 }
 
@@ -395,8 +490,10 @@ static void sums_add(sums *s, const sums *t) {
 static ww_result measure(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
                          sums *s, double *ssim, ww_error *err) {
     int half = a->height / 2;
-    band_job j[2] = {{.a = a, .b = b, .o = o, .y0 = 0, .y1 = half},
-                     {.a = a, .b = b, .o = o, .y0 = half, .y1 = a->height}};
+    level_tables tables;
+    if (a->rgb8) level_tables_make(&tables);
+    band_job j[2] = {{.a = a, .b = b, .o = o, .t = &tables, .y0 = 0, .y1 = half},
+                     {.a = a, .b = b, .o = o, .t = &tables, .y0 = half, .y1 = a->height}};
     pthread_t t;
     int threaded = pthread_create(&t, NULL, band_run, &j[1]) == 0;
     band_run(&j[0]);
@@ -476,14 +573,24 @@ ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_c
     memset(res, 0, sizeof *res);
     ww_result r = check_kinds(a, b, err);
     if (r != WW_OK) return r;
-    WW_ASSERT(a->rgba && b->rgba && a->width > 0 && a->height > 0);
+    WW_ASSERT((a->rgba || a->rgb8) && (b->rgba || b->rgb8) && a->width > 0 && a->height > 0);
+    if (!a->rgb8 != !b->rgb8) {
+        /* mixed layouts (an RGB file against an RGBA one): the rgb8 one in rgba, then as usual */
+        ww_cmp_image wide;
+        r = ww_cmp_to_rgba(a->rgb8 ? a : b, &wide, err);
+        if (r == WW_OK) r = a->rgb8 ? ww_cmp_images(&wide, b, o, res, err) : ww_cmp_images(a, &wide, o, res, err);
+        free(wide.rgba);
+        return r;
+    }
     size_t npx = (size_t)a->width * (size_t)a->height;
+    size_t bytes = a->rgb8 ? 3 * npx : npx * 4 * sizeof(float);
     res->width = a->width;
     res->height = a->height;
     res->hdr = a->hdr;
 
     /* the fast path: equal hashes, confirmed by the bytes */
-    if (a->hash == b->hash && memcmp(a->rgba, b->rgba, npx * 4 * sizeof(float)) == 0) {
+    if (a->hash == b->hash &&
+        memcmp(a->rgb8 ? (const void *)a->rgb8 : a->rgba, b->rgb8 ? (const void *)b->rgb8 : b->rgba, bytes) == 0) {
         res->identical = 1;
         res->psnr = INFINITY;
         res->ssim = 1.0;

@@ -59,9 +59,16 @@ typedef struct ww_cmp_image {
     int channels;        /* as stored in the file: 1 grey, 2 grey+alpha, 3 RGB, 4 RGBA */
     int bits;            /* bits per channel in the file: 8 or 16 (PNG), 16 or 32 (EXR) */
     int hdr;             /* 1: EXR, linear unbounded values */
-    float *rgba;         /* width * height * 4, colour premultiplied by alpha */
-    uint64_t hash;       /* hash of width, height, hdr and rgba: equal hashes, equal pixels
-                          * (ww_cmp_images confirms with the pixels themselves) */
+    /* the pixels, in one of two layouts (the other pointer NULL):
+     * rgb8: an 8-bit file without alpha (grey or RGB), width * height * 3 bytes as stored, grey
+     *       spread to R, G, B; a fifth of the memory of floats, which a fresh process pays for
+     *       page by page, and what the metrics' 8-bit path reads;
+     * rgba: everything else, width * height * 4 floats, v / (2^bits - 1) for PNG, colour
+     *       premultiplied by alpha. Both give the same figures to the bit for the same file. */
+    unsigned char *rgb8;
+    float *rgba;
+    uint64_t hash;       /* hash of width, height, hdr, layout and pixels: equal hashes, equal
+                          * pixels (ww_cmp_images confirms with the pixels themselves) */
 } ww_cmp_image;
 
 /* a rule that is off has the value -1; all are off by default (then exact match is required) */

@@ -20,6 +20,14 @@
 /* pixel kinds of the diff image */
 enum { WW_CMP_SAME = 0, WW_CMP_DIFF = 1, WW_CMP_AA = 2 };
 
+/* pixel i as float RGBA, colour premultiplied, from either layout (as the rgba layout holds it) */
+void ww_cmp_pixel(const ww_cmp_image *im, size_t i, float px[4]);
+/* an image in the rgba layout made from an rgb8 one, hashed as such (a pair of mixed layouts is
+ * compared in rgba); free with ww_cmp_image_free */
+ww_result ww_cmp_to_rgba(const ww_cmp_image *in, ww_cmp_image *out, ww_error *err);
+/* the float of an 8-bit level v, v / 255 rounded to float, as the rgba layout holds it */
+float ww_cmp_level(unsigned v);
+
 /* brightness (YIQ's Y) of pixel i blended on white, 8-bit scale; values clamped to [0, 1] */
 double ww_cmp_luma_on_white(const float *px);
 /* pixelmatch's delta between two pixels (>= 0) */

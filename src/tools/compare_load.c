@@ -2,7 +2,7 @@
  * (io/writers.h), told apart by their first bytes, held as float RGBA with the colour
  * premultiplied by alpha, and hashed for the exact-match fast path.
  */
-#include "tools/compare.h"
+#include "tools/compare_impl.h"
 
 #include <limits.h>
 #include <pthread.h>
@@ -26,27 +26,54 @@ static const unsigned char exr_magic[4] = {0x76, 0x2f, 0x31, 0x01}; /* OpenEXR f
 static float *alloc_pixels(size_t npx) { return ww_big_alloc(npx * 4 * sizeof(float)); }
 
 void ww_cmp_image_free(ww_cmp_image *im) {
+    free(im->rgb8);
     free(im->rgba);
     memset(im, 0, sizeof *im);
 }
 
-/* FNV-1a over 64-bit words in four interleaved lanes (the byte-wise ww_hash_bytes costs 15 ms on
- * a 1280x720 float image; one chain of word multiplies, 3 ms; four, under 1 ms); only a fast
- * filter: equal hashes are confirmed pixel by pixel */
+float ww_cmp_level(unsigned v) { return (float)v / MAX_8BIT; }
+
+void ww_cmp_pixel(const ww_cmp_image *im, size_t i, float px[4]) {
+    if (im->rgb8) {
+        const unsigned char *p = im->rgb8 + 3 * i;
+        px[0] = ww_cmp_level(p[0]), px[1] = ww_cmp_level(p[1]), px[2] = ww_cmp_level(p[2]);
+        px[3] = 1.0f;
+    } else {
+        memcpy(px, im->rgba + 4 * i, 4 * sizeof(float));
+    }
+}
+
+/* FNV-1a over 64-bit words in four interleaved lanes, word j into lane j % 4 (the byte-wise
+ * ww_hash_bytes costs 15 ms on a 1280x720 float image; one chain of word multiplies, 3 ms; four,
+ * under 1 ms), the bytes after the last whole word byte-wise; only a fast filter: equal hashes
+ * are confirmed pixel by pixel */
 static uint64_t image_hash(const ww_cmp_image *im) {
     const uint64_t prime = 0x100000001b3ULL;
-    int head[3] = {im->width, im->height, im->hdr};
+    int head[4] = {im->width, im->height, im->hdr, im->rgb8 != NULL};
     uint64_t h0 = ww_hash_bytes(WW_HASH_INIT, head, sizeof head);
     uint64_t lane[4] = {h0, h0 ^ 1, h0 ^ 2, h0 ^ 3};
-    size_t n = (size_t)im->width * (size_t)im->height; /* pixels: 16 bytes, two words each */
-    for (size_t i = 0; i < n; i++) {
-        uint64_t w[2];
-        memcpy(w, im->rgba + 4 * i, sizeof w);
-        uint64_t *l = lane + 2 * (i & 1);
-        l[0] = (l[0] ^ w[0]) * prime;
-        l[1] = (l[1] ^ w[1]) * prime;
+    size_t npx = (size_t)im->width * (size_t)im->height;
+    const unsigned char *p = im->rgb8 ? im->rgb8 : (const unsigned char *)im->rgba;
+    size_t n = im->rgb8 ? 3 * npx : 4 * sizeof(float) * npx, words = n / 8;
+    for (size_t j = 0; j < words; j++) {
+        uint64_t w;
+        memcpy(&w, p + 8 * j, sizeof w);
+        lane[j & 3] = (lane[j & 3] ^ w) * prime;
     }
-    return ww_hash_bytes(h0, lane, sizeof lane);
+    uint64_t h = ww_hash_bytes(h0, lane, sizeof lane);
+    return ww_hash_bytes(h, p + 8 * words, n - 8 * words);
+}
+
+ww_result ww_cmp_to_rgba(const ww_cmp_image *in, ww_cmp_image *out, ww_error *err) {
+    *out = *in;
+    out->rgb8 = NULL;
+    size_t npx = (size_t)in->width * (size_t)in->height;
+    out->rgba = alloc_pixels(npx);
+    if (!out->rgba)
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "compare: out of memory");
+    for (size_t i = 0; i < npx; i++) ww_cmp_pixel(in, i, out->rgba + 4 * i);
+    out->hash = image_hash(out);
+    return WW_OK;
 }
 
 /* colour times alpha (ImageMagick and OpenImageIO compare premultiplied colour) */
@@ -66,6 +93,18 @@ static ww_result load_png(const char *path, const unsigned char *file, size_t le
                             len > INT_MAX ? "file too large" : stbi_failure_reason());
     int is16 = stbi_is_16_bit_from_memory(file, (int)len);
     size_t npx = (size_t)w * (size_t)h;
+    if (!is16 && (comp == 1 || comp == 3)) {
+        /* 8-bit without alpha: the rgb8 layout, stb's own buffer (grey spread by stb) */
+        out->rgb8 = stbi_load_from_memory(file, (int)len, &w, &h, &comp, 3);
+        if (!out->rgb8)
+            return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
+                                stbi_failure_reason());
+        out->width = w;
+        out->height = h;
+        out->channels = comp;
+        out->bits = 8;
+        return WW_OK;
+    }
     out->rgba = alloc_pixels(npx);
     if (!out->rgba)
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot read '%s': out of memory", path);
