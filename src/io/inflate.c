@@ -31,12 +31,10 @@
 #define CLEN_TABLE_SIZE (1 << CLEN_BITS)
 
 /* the fast loop runs while it may refill twice (8-byte loads, at most 7 bytes taken each) and
- * write the longest match plus the 7 bytes a word copy may run over */
+ * write the longest match plus the 15 bytes a word copy may run over */
 #define FAST_IN_MARGIN 16
 #define MAX_MATCH 258
 #define FAST_OUT_MARGIN (MAX_MATCH + 16)
-/* bits a length/distance pair may still need after its length code: distance code and extra */
-#define DIST_NEED_BITS (MAX_CODE_BITS + 13)
 
 #define ADLER_MOD 65521u
 #define ADLER_BLOCK 5552  /* bytes summed before a reduction cannot overflow 32 bits (zlib's NMAX) */
@@ -248,40 +246,32 @@ static uint32_t decode_slow(inflater *s, const uint32_t *table, unsigned root) {
     return e;
 }
 
+/* the smallest multiple of a distance 1..7 that is at least 8 (no division in the copy) */
+static const uint8_t PERIOD_WORD[8] = {0, 8, 8, 9, 8, 10, 12, 14};
+
 static void copy8(unsigned char *dst, const unsigned char *src) {
     uint64_t v;
     memcpy(&v, src, 8);
     memcpy(dst, &v, 8);
 }
 
-/* copy a match of len bytes from dist back; may write up to 7 bytes past out + len. A distance
- * under 8 repeats a pattern of dist bytes: after its first m - dist bytes, where m is the
- * smallest multiple of dist of at least 8, the bytes m back are the same ones, so the rest goes
- * in words from m back */
+/* copy a match of len bytes from dist back, 8 bytes at a time with the first 16 (most matches)
+ * unconditional; may write up to 15 bytes past out + len. A distance under 8 repeats a pattern
+ * of dist bytes: after its first 8 bytes, copied one at a time, the bytes PERIOD_WORD[dist] back
+ * (a multiple of dist, at least 8) are the same ones, so the rest goes in words from there */
 static void copy_match_fast(unsigned char *out, size_t dist, size_t len) {
     unsigned char *end = out + len;
+    const unsigned char *src = out - dist;
     if (dist >= 8) {
-        const unsigned char *src = out - dist;
-        do {
-            copy8(out, src);
-            out += 8;
-            src += 8;
-        } while (out < end);
-        return;
+        copy8(out, src);
+        copy8(out + 8, src + 8);
+        out += 16;
+        src += 16;
+    } else {
+        for (int i = 0; i < 8; i++) out[i] = src[i];
+        out += 8;
+        src = out - PERIOD_WORD[dist];
     }
-    if (dist == 1) {
-        uint64_t v = 0x0101010101010101ull * out[-1];
-        do {
-            memcpy(out, &v, 8);
-            out += 8;
-        } while (out < end);
-        return;
-    }
-    size_t m = (8 + dist - 1) / dist * dist, head = m - dist;
-    if (head > len) head = len;
-    for (size_t i = 0; i < head; i++) out[i] = out[(ptrdiff_t)i - (ptrdiff_t)dist];
-    out += head;
-    const unsigned char *src = out - m;
     while (out < end) {
         copy8(out, src);
         out += 8;
@@ -330,11 +320,10 @@ static int huffman_fast(inflater *s) {
         bb >>= E_EXTRA(e);
         bl -= E_EXTRA(e);
 
-        if (bl < DIST_NEED_BITS) {
-            bb |= load_le64(in) << bl;
-            in += (63 - bl) >> 3;
-            bl |= 56;
-        }
+        /* a second refill for the distance (a literal may have gone before the length) */
+        bb |= load_le64(in) << bl;
+        in += (63 - bl) >> 3;
+        bl |= 56;
         e = lookup(dt, DIST_BITS, bb);
         bb >>= E_BITS(e);
         bl -= E_BITS(e);

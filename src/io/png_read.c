@@ -198,7 +198,7 @@ static unsigned paeth(unsigned a, unsigned b, unsigned c) {
 /* one row of n bytes from in (after its filter byte) to out, with prev the unfiltered row above
  * (zeros for the first). out may lie before in in the same buffer: every byte is read before
  * anything at or past it is written */
-static void unfilter_row(int type, unsigned char *out, const unsigned char *in,
+static inline void unfilter_row(int type, unsigned char *out, const unsigned char *in,
                          const unsigned char *prev, size_t n, size_t bpp) {
     size_t i;
     switch (type) {
@@ -246,7 +246,13 @@ static ww_result unfilter_all(unsigned char *buf, size_t stride, size_t height, 
             return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "png: bad filter type %d in row %zu",
                                 type, y);
         }
-        unfilter_row(type, out, in + 1, y ? out - stride : zero, stride, bpp);
+        const unsigned char *prev = y ? out - stride : zero;
+        /* a constant bpp for the common pixel sizes lets the compiler unroll the per-pixel chains */
+        switch (bpp) {
+        case 3: unfilter_row(type, out, in + 1, prev, stride, 3); break;
+        case 4: unfilter_row(type, out, in + 1, prev, stride, 4); break;
+        default: unfilter_row(type, out, in + 1, prev, stride, bpp); break;
+        }
         /* the row above is no longer needed as the filters' input */
         if (swap16 && y > 0) swap16_row(out - stride, stride);
     }
