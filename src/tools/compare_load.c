@@ -1,6 +1,7 @@
-/* compare_load.c - the images of `compare`: PNG (stb_image: 8/16-bit, grey/GA/RGB/RGBA) and EXR
- * (io/writers.h), told apart by their first bytes, held as float RGBA with the colour
- * premultiplied by alpha, and hashed for the exact-match fast path.
+/* compare_load.c - the images of `compare`: PNG (io/png_read.h, else stb_image: 8/16-bit,
+ * grey/GA/RGB/RGBA, palette, interlaced) and EXR (io/writers.h), told apart by their first
+ * bytes, held as RGB bytes (8-bit without alpha) or float RGBA with the colour premultiplied by
+ * alpha, and hashed for the exact-match fast path.
  */
 #include "tools/compare_impl.h"
 
@@ -13,6 +14,7 @@
 
 #include "core/bigalloc.h"
 #include "core/hash.h"
+#include "io/png_read.h"
 #include "io/writers.h"
 
 static const unsigned char png_magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -85,63 +87,78 @@ static void premultiply(float *p, size_t npx) {
     }
 }
 
+/* decoded samples (w x h x comp, 8-bit or 16-bit host order, rows top first; taken over: freed
+ * here or kept) into one of the two layouts: 8-bit RGB kept as rgb8, 8-bit grey spread to it;
+ * anything with alpha or 16 bits spread to float RGBA (grey to R, G, B, a missing alpha 1;
+ * v / (2^bits - 1) is the same float for an 8-bit level and its 16-bit twin, v * 257) */
+static ww_result from_samples(const char *path, int w, int h, int comp, int is16, void *px,
+                              ww_cmp_image *out, ww_error *err) {
+    size_t npx = (size_t)w * (size_t)h;
+    out->width = w;
+    out->height = h;
+    out->channels = comp;
+    out->bits = is16 ? 16 : 8;
+    if (!is16 && comp == 3) {
+        out->rgb8 = px;
+        return WW_OK;
+    }
+    const unsigned char *s8 = px;
+    if (!is16 && comp == 1) {
+        out->rgb8 = ww_big_alloc(3 * npx);
+        if (out->rgb8)
+            for (size_t i = 0; i < npx; i++) memset(out->rgb8 + 3 * i, s8[i], 3);
+    } else {
+        out->rgba = alloc_pixels(npx);
+        if (out->rgba) {
+            float lut[256];
+            for (int v = 0; v < 256; v++) lut[v] = (float)v / MAX_8BIT;
+            const uint16_t *s16 = px;
+            int grey = comp < 3, alpha = comp == 2 || comp == 4;
+            for (size_t i = 0; i < npx; i++) {
+                float *d = out->rgba + 4 * i;
+                for (int c = 0; c < comp; c++) {
+                    size_t k = i * (size_t)comp + (size_t)c;
+                    d[grey && c == 1 ? 3 : c] = is16 ? (float)s16[k] / MAX_16BIT : lut[s8[k]];
+                }
+                if (grey) d[1] = d[2] = d[0];
+                if (!alpha) d[3] = 1.0f;
+            }
+            if (alpha) premultiply(out->rgba, npx);
+        }
+    }
+    free(px);
+    if (!out->rgb8 && !out->rgba)
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot read '%s': out of memory", path);
+    return WW_OK;
+}
+
+/* a PNG: our reader (io/png_read.h) for what it reads, stb_image for the rest (palette,
+ * interlaced, under 8 bits, colour keys) and for what ours rejects, so a file stb_image reads is
+ * never refused; a broken file is named with stb_image's reason */
 static ww_result load_png(const char *path, const unsigned char *file, size_t len,
                           ww_cmp_image *out, ww_error *err) {
+    ww_png_pixels pp;
+    ww_error mine = {0};
+    ww_result r = ww_png_decode(file, len, &pp, &mine);
+    if (r == WW_OK) return from_samples(path, pp.width, pp.height, pp.channels, pp.bits == 16, pp.px, out, err);
+    if (r == WW_E_NOMEM) {
+        if (err) *err = mine;
+        return r;
+    }
     int w, h, comp;
     if (len > INT_MAX || !stbi_info_from_memory(file, (int)len, &w, &h, &comp))
         return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
                             len > INT_MAX ? "file too large" : stbi_failure_reason());
     int is16 = stbi_is_16_bit_from_memory(file, (int)len);
-    size_t npx = (size_t)w * (size_t)h;
-    if (!is16 && (comp == 1 || comp == 3)) {
-        /* 8-bit without alpha: the rgb8 layout, stb's own buffer (grey spread by stb) */
-        out->rgb8 = stbi_load_from_memory(file, (int)len, &w, &h, &comp, 3);
-        if (!out->rgb8)
-            return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
-                                stbi_failure_reason());
-        out->width = w;
-        out->height = h;
-        out->channels = comp;
-        out->bits = 8;
-        return WW_OK;
-    }
-    out->rgba = alloc_pixels(npx);
-    if (!out->rgba)
-        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot read '%s': out of memory", path);
-
-    /* decoded as stored (asking stb for RGBA would cost one more image-sized buffer, 900 page
-     * faults at 1280x720), then spread to RGBA here: grey to R, G, B, a missing alpha 1;
-     * v / (2^bits - 1) is the same float for an 8-bit level and its 16-bit twin (v * 257) */
+    /* decoded as stored: asking stb for RGBA would cost one more image-sized buffer */
     void *px = is16 ? (void *)stbi_load_16_from_memory(file, (int)len, &w, &h, &comp, 0)
                     : (void *)stbi_load_from_memory(file, (int)len, &w, &h, &comp, 0);
     if (!px || comp < 1 || comp > 4) {
         stbi_image_free(px);
-        free(out->rgba);
-        out->rgba = NULL;
         return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
                             px ? "unexpected channel count" : stbi_failure_reason());
     }
-    float lut[256];
-    for (int v = 0; v < 256; v++) lut[v] = (float)v / MAX_8BIT;
-    const uint16_t *s16 = px;
-    const unsigned char *s8 = px;
-    int grey = comp < 3, alpha = comp == 2 || comp == 4;
-    for (size_t i = 0; i < npx; i++) {
-        float *d = out->rgba + 4 * i;
-        for (int c = 0; c < comp; c++) {
-            size_t k = i * (size_t)comp + (size_t)c;
-            d[grey && c == 1 ? 3 : c] = is16 ? (float)s16[k] / MAX_16BIT : lut[s8[k]];
-        }
-        if (grey) d[1] = d[2] = d[0];
-        if (!alpha) d[3] = 1.0f;
-    }
-    stbi_image_free(px);
-    if (comp == 2 || comp == 4) premultiply(out->rgba, npx);
-    out->width = w;
-    out->height = h;
-    out->channels = comp;
-    out->bits = is16 ? 16 : 8;
-    return WW_OK;
+    return from_samples(path, w, h, comp, is16, px, out, err);
 }
 
 /* the channel list of an EXR header (OpenEXR file layout: attributes name\0 type\0 size value,
