@@ -473,6 +473,27 @@ TEST(compare_rgb8_layout_matches_rgba) {
         ENSURE(r8.diff_pixels == q->diff_pixels && r8.yiq_pixels == q->yiq_pixels &&
                r8.aa_pixels == q->aa_pixels);
     }
+    /* the pair loaded and measured on one second thread (ww_cmp_pair, what `compare` runs):
+     * the same figures; a missing file or a size mismatch leaves both images empty */
+    ww_cmp_image pa, pb;
+    ww_cmp_result rp;
+    ENSURE_EQ_INT(ww_cmp_pair(f0, f1, &o, &pa, &pb, &rp, &err), WW_OK);
+    ENSURE(rp.max_abs == r8.max_abs && rp.rmse == r8.rmse && rp.ssim == r8.ssim &&
+           rp.rel_mean == r8.rel_mean && rp.diff_pixels == r8.diff_pixels &&
+           rp.yiq_pixels == r8.yiq_pixels && rp.aa_pixels == r8.aa_pixels);
+    ENSURE(pa.rgb8 && pb.rgb8);
+    ww_cmp_image_free(&pa);
+    ww_cmp_image_free(&pb);
+    char missing[700], small[700];
+    snprintf(missing, sizeof missing, "%s/none.png", dir);
+    ENSURE_EQ_INT(ww_cmp_pair(f0, missing, &o, &pa, &pb, &rp, &err), WW_E_NOFILE);
+    ENSURE(!pa.rgb8 && !pa.rgba && !pb.rgb8 && !pb.rgba);
+    snprintf(small, sizeof small, "%s/small.png", dir);
+    static const unsigned char px4[16 * 3] = {0};
+    write_png(small, 4, 4, 3, px4);
+    ENSURE_EQ_INT(ww_cmp_pair(small, f1, &o, &pa, &pb, &rp, &err), WW_E_INCONSISTENT);
+    ENSURE(!pa.rgb8 && !pb.rgb8);
+
     snprintf(d8, sizeof d8, "%s/diff8.png", dir);
     snprintf(d32, sizeof d32, "%s/diff32.png", dir);
     ENSURE_EQ_INT(ww_cmp_write_diff(d8, &a, &b, &o, &err), WW_OK);

@@ -86,8 +86,7 @@ static ww_result compare_pair(const cmp_args *a, const char *name, const char *p
                               const char *diff, int *pass, ww_error *err) {
     ww_cmp_image e, x;
     ww_cmp_result res;
-    ww_result r = ww_cmp_load_pair(pe, pa, &e, &x, err);
-    if (r == WW_OK) r = ww_cmp_images(&e, &x, &a->o, &res, err);
+    ww_result r = ww_cmp_pair(pe, pa, &a->o, &e, &x, &res, err);
     if (r == WW_OK && diff) r = ww_cmp_write_diff(diff, &e, &x, &a->o, err);
     ww_cmp_image_free(&e);
     ww_cmp_image_free(&x);

@@ -7,6 +7,8 @@
 
 #include <math.h>
 #include <pthread.h>
+#include <sched.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -485,33 +487,72 @@ static void sums_add(sums *s, const sums *t) {
     s->diff += t->diff, s->yiq += t->yiq, s->aa += t->aa, s->nonfinite += t->nonfinite;
 }
 
-/* the two halves of the image on two threads (one when a thread cannot start): the sums, and
- * the mean SSIM */
+/* the metrics in row bands taken in turn from a counter by whichever thread is free (a thread
+ * that starts late, as a woken core on a VM can, 1-4 ms, does less), the bands' sums added in
+ * band order: the same figures whoever ran which band. A band re-reads the SSIM window's height
+ * of rows below it, so bands are not made thinner than BAND_MIN_ROWS */
+#define BANDS_MAX 8
+#define BAND_MIN_ROWS 48
+
+typedef struct bands {
+    band_job job[BANDS_MAX];
+    int n;
+    atomic_int next;
+} bands;
+
+static void bands_make(bands *w, const ww_cmp_image *a, const ww_cmp_image *b,
+                       const ww_cmp_opts *o, const level_tables *t) {
+    int rows = (a->height + BANDS_MAX - 1) / BANDS_MAX;
+    if (rows < BAND_MIN_ROWS) rows = BAND_MIN_ROWS;
+    w->n = 0;
+    for (int y = 0; y < a->height; y += rows)
+        w->job[w->n++] = (band_job){.a = a, .b = b, .o = o, .t = t, .y0 = y,
+                                    .y1 = y + rows < a->height ? y + rows : a->height};
+    atomic_init(&w->next, 0);
+}
+
+static void bands_work(bands *w) {
+    for (int k; (k = atomic_fetch_add(&w->next, 1)) < w->n;) band_run(&w->job[k]);
+}
+
+static void *bands_thread(void *arg) {
+    bands_work(arg);
+    return NULL;
+}
+
+/* a second thread for the metrics: a pair's loader already running (cmp_pair), else NULL (one
+ * is started) */
+typedef struct pair_worker pair_worker;
+static void pair_worker_run(pair_worker *pw, bands *w);
+
+/* the sums and the mean SSIM */
 static ww_result measure(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
-                         sums *s, double *ssim, ww_error *err) {
-    int half = a->height / 2;
+                         pair_worker *pw, sums *s, double *ssim, ww_error *err) {
     level_tables tables;
     if (a->rgb8) level_tables_make(&tables);
-    band_job j[2] = {{.a = a, .b = b, .o = o, .t = &tables, .y0 = 0, .y1 = half},
-                     {.a = a, .b = b, .o = o, .t = &tables, .y0 = half, .y1 = a->height}};
-    pthread_t t;
-    int threaded = pthread_create(&t, NULL, band_run, &j[1]) == 0;
-    band_run(&j[0]);
-    if (threaded)
-        pthread_join(t, NULL);
-    else
-        band_run(&j[1]);
-    for (int k = 0; k < 2; k++)
-        if (j[k].r != WW_OK) {
-            if (err) *err = j[k].err;
-            return j[k].r;
+    bands w;
+    bands_make(&w, a, b, o, &tables);
+    if (pw) {
+        pair_worker_run(pw, &w);
+    } else {
+        pthread_t t;
+        int threaded = pthread_create(&t, NULL, bands_thread, &w) == 0;
+        bands_work(&w);
+        if (threaded) pthread_join(t, NULL);
+    }
+    *s = (sums){0};
+    double total = 0;
+    for (int k = 0; k < w.n; k++) {
+        if (w.job[k].r != WW_OK) {
+            if (err) *err = w.job[k].err;
+            return w.job[k].r;
         }
-    *s = j[0].s;
-    sums_add(s, &j[1].s);
+        sums_add(s, &w.job[k].s);
+        total += w.job[k].ssim_total;
+    }
     int wx = a->width < SSIM_WINDOW ? a->width : SSIM_WINDOW;
     int wy = a->height < SSIM_WINDOW ? a->height : SSIM_WINDOW;
-    *ssim = (j[0].ssim_total + j[1].ssim_total) /
-            ((double)(a->width - wx + 1) * (double)(a->height - wy + 1));
+    *ssim = total / ((double)(a->width - wx + 1) * (double)(a->height - wy + 1));
     return WW_OK;
 }
 
@@ -568,8 +609,9 @@ static ww_result check_kinds(const ww_cmp_image *a, const ww_cmp_image *b, ww_er
     return WW_OK;
 }
 
-ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
-                        ww_cmp_result *res, ww_error *err) {
+/* ww_cmp_images with the metrics' second thread pw (NULL: one is started) */
+static ww_result images_with(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
+                             pair_worker *pw, ww_cmp_result *res, ww_error *err) {
     memset(res, 0, sizeof *res);
     ww_result r = check_kinds(a, b, err);
     if (r != WW_OK) return r;
@@ -578,7 +620,8 @@ ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_c
         /* mixed layouts (an RGB file against an RGBA one): the rgb8 one in rgba, then as usual */
         ww_cmp_image wide;
         r = ww_cmp_to_rgba(a->rgb8 ? a : b, &wide, err);
-        if (r == WW_OK) r = a->rgb8 ? ww_cmp_images(&wide, b, o, res, err) : ww_cmp_images(a, &wide, o, res, err);
+        if (r == WW_OK)
+            r = a->rgb8 ? images_with(&wide, b, o, pw, res, err) : images_with(a, &wide, o, pw, res, err);
         free(wide.rgba);
         return r;
     }
@@ -599,7 +642,7 @@ ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_c
     }
 
     sums s;
-    r = measure(a, b, o, &s, &res->ssim, err);
+    r = measure(a, b, o, pw, &s, &res->ssim, err);
     if (r != WW_OK) return r;
     double scale = a->hdr ? 1.0 : LEVELS;
     res->max_abs = s.max_abs * scale;
@@ -616,4 +659,72 @@ ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_c
     res->nonfinite = s.nonfinite;
     apply_rules(o, res);
     return WW_OK;
+}
+
+ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
+                        ww_cmp_result *res, ww_error *err) {
+    return images_with(a, b, o, NULL, res, err);
+}
+
+/* ---- a pair from files, on two threads ------------------------------------------------------ */
+
+/* The second thread loads b, then waits for the metrics' bands and takes its share. It waits by
+ * spinning (sched_yield), only while the first thread loads a: a core left idle on this VM takes
+ * 1-4 ms to wake, which a second pthread_create for the metrics paid every time. */
+struct pair_worker {
+    pthread_t thread;
+    const char *path_b;
+    ww_cmp_image *b;
+    ww_error err;
+    ww_result r;
+    atomic_int loaded;     /* 1: b is loaded (r says how) */
+    _Atomic(bands *) work; /* the bands to share; PAIR_STOP: none will come */
+};
+
+#define PAIR_STOP ((bands *)&pair_stop_mark)
+static const char pair_stop_mark;
+
+static void *pair_thread(void *arg) {
+    pair_worker *pw = arg;
+    pw->r = ww_cmp_load_one(pw->path_b, pw->b, &pw->err);
+    atomic_store(&pw->loaded, 1);
+    bands *w;
+    while ((w = atomic_load(&pw->work)) == NULL) sched_yield();
+    if (w != PAIR_STOP) bands_work(w);
+    return NULL;
+}
+
+static void pair_worker_run(pair_worker *pw, bands *w) {
+    atomic_store(&pw->work, w);
+    bands_work(w);
+    pthread_join(pw->thread, NULL);
+}
+
+ww_result ww_cmp_pair(const char *path_a, const char *path_b, const ww_cmp_opts *o,
+                      ww_cmp_image *a, ww_cmp_image *b, ww_cmp_result *res, ww_error *err) {
+    ww_cmp_pin_stb();
+    pair_worker pw = {.path_b = path_b, .b = b};
+    atomic_init(&pw.loaded, 0);
+    atomic_init(&pw.work, NULL);
+    int threaded = pthread_create(&pw.thread, NULL, pair_thread, &pw) == 0;
+    ww_result r = ww_cmp_load_one(path_a, a, err);
+    if (threaded) {
+        while (!atomic_load(&pw.loaded)) sched_yield();
+    } else {
+        pw.r = ww_cmp_load_one(path_b, b, &pw.err);
+    }
+    if (r == WW_OK && pw.r != WW_OK) {
+        r = pw.r;
+        if (err) *err = pw.err;
+    }
+    if (r == WW_OK) r = images_with(a, b, o, threaded ? &pw : NULL, res, err);
+    if (threaded && atomic_load(&pw.work) == NULL) { /* no bands were handed over */
+        atomic_store(&pw.work, PAIR_STOP);
+        pthread_join(pw.thread, NULL);
+    }
+    if (r != WW_OK) {
+        ww_cmp_image_free(a);
+        ww_cmp_image_free(b);
+    }
+    return r;
 }

@@ -125,6 +125,12 @@ void ww_cmp_image_free(ww_cmp_image *im);
 ww_result ww_cmp_images(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
                         ww_cmp_result *res, ww_error *err);
 
+/* ww_cmp_load_pair then ww_cmp_images, one thread beside this one for both (its second image,
+ * then its share of the metrics): the same figures, without a second thread start. On success
+ * the images are kept (for ww_cmp_write_diff; free both); on failure both are left empty */
+ww_result ww_cmp_pair(const char *path_a, const char *path_b, const ww_cmp_opts *o,
+                      ww_cmp_image *a, ww_cmp_image *b, ww_cmp_result *res, ww_error *err);
+
 /* diff image as RGB8 PNG (atomic), pixelmatch's convention: the expected image (a) as grey
  * faded towards white (10% contrast), pixels over the YIQ threshold judged anti-aliasing yellow,
  * every other differing pixel (over the YIQ threshold or over opts.threshold) red */

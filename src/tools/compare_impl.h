@@ -20,6 +20,11 @@
 /* pixel kinds of the diff image */
 enum { WW_CMP_SAME = 0, WW_CMP_DIFF = 1, WW_CMP_AA = 2 };
 
+/* pin stb_image's run-time settings (once per thread that starts decoders; they are globals of
+ * stb's) and load one image without pinning (ww_cmp_load's body, safe on two threads at once) */
+void ww_cmp_pin_stb(void);
+ww_result ww_cmp_load_one(const char *path, ww_cmp_image *out, ww_error *err);
+
 /* pixel i as float RGBA, colour premultiplied, from either layout (as the rgba layout holds it) */
 void ww_cmp_pixel(const ww_cmp_image *im, size_t i, float px[4]);
 /* an image in the rgba layout made from an rgb8 one, hashed as such (a pair of mixed layouts is

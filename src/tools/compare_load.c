@@ -216,14 +216,14 @@ static ww_result load_exr(const char *path, const unsigned char *file, size_t le
 }
 
 /* stb's run-time settings, pinned before any decode (rows top first, no conversions) */
-static void pin_stb(void) {
+void ww_cmp_pin_stb(void) {
     stbi_set_flip_vertically_on_load(0);
     stbi_set_unpremultiply_on_load(0);
     stbi_convert_iphone_png_to_rgb(0);
 }
 
 /* the loader proper: reads no global that it writes, so two may run at once */
-static ww_result load_any(const char *path, ww_cmp_image *out, ww_error *err) {
+ww_result ww_cmp_load_one(const char *path, ww_cmp_image *out, ww_error *err) {
     memset(out, 0, sizeof *out);
     unsigned char *file;
     size_t len;
@@ -241,8 +241,8 @@ static ww_result load_any(const char *path, ww_cmp_image *out, ww_error *err) {
 }
 
 ww_result ww_cmp_load(const char *path, ww_cmp_image *out, ww_error *err) {
-    pin_stb();
-    return load_any(path, out, err);
+    ww_cmp_pin_stb();
+    return ww_cmp_load_one(path, out, err);
 }
 
 /* one load on a worker thread */
@@ -255,19 +255,19 @@ typedef struct load_job {
 
 static void *load_thread(void *arg) {
     load_job *j = arg;
-    j->r = load_any(j->path, j->im, &j->err);
+    j->r = ww_cmp_load_one(j->path, j->im, &j->err);
     return NULL;
 }
 
 ww_result ww_cmp_load_pair(const char *path_a, const char *path_b, ww_cmp_image *a,
                            ww_cmp_image *b, ww_error *err) {
-    pin_stb();
+    ww_cmp_pin_stb();
 
     /* b on a second thread, a on this one; without a thread, one after the other */
     load_job jb = {.path = path_b, .im = b};
     pthread_t t;
     int threaded = pthread_create(&t, NULL, load_thread, &jb) == 0;
-    ww_result r = load_any(path_a, a, err);
+    ww_result r = ww_cmp_load_one(path_a, a, err);
     if (threaded)
         pthread_join(t, NULL);
     else

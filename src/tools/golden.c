@@ -259,12 +259,12 @@ static ww_result check_frame(const ww_scene *sc, const ww_golden_opts *o, const 
     }
     ww_cmp_image a = {0}, b = {0};
     ww_error e = {0};
-    /* both decoded at once; after a failure, one by one to tell whose it was */
-    int loaded = ww_cmp_load_pair(f->golden, actual, &a, &b, &e) == WW_OK;
-    if (!loaded && (r = ww_cmp_load(actual, &b, err))) goto done; /* just rendered: an error */
-    if (!loaded && ww_cmp_load(f->golden, &a, &e)) {
+    /* both decoded and measured at once; after a failure, one by one to tell whose it was */
+    int measured = ww_cmp_pair(f->golden, actual, cmp, &a, &b, &f->res, &e) == WW_OK;
+    if (!measured && (r = ww_cmp_load(actual, &b, err))) goto done; /* just rendered: an error */
+    if (!measured && ww_cmp_load(f->golden, &a, &e)) {
         snprintf(f->why, sizeof f->why, "unreadable golden: %.300s", e.msg);
-    } else if (ww_cmp_images(&a, &b, cmp, &f->res, &e)) {
+    } else if (!measured && ww_cmp_images(&a, &b, cmp, &f->res, &e)) {
         snprintf(f->why, sizeof f->why, "not comparable: %.300s", e.msg);
     } else {
         f->measured = 1;
