@@ -586,3 +586,23 @@ TEST(compare_opt_arg) {
     i = 0;
     ENSURE(!ww_cmp_opt_arg(1, other, &i, &o, &r, &err));
 }
+
+/* bench compare runs, and prints every figure (no time is asserted: only that each was taken) */
+TEST(compare_bench_json) {
+    if (!ww_test_have_gl()) return;
+    const char *dir = ww_test_tmpdir("compare_bench");
+    char out[600];
+    snprintf(out, sizeof out, "%s/bench.json", dir);
+    ENSURE_EQ_INT(ww_test_ww("bench compare --size 64x36 --repeats 2 --json", out, NULL), 0);
+    char *t = ww_test_read_file(out, NULL);
+    ENSURE(t && ww_test_json_valid(t));
+    static const char *const keys[] = {"\"ours_ms\":", "\"metrics_ms\":", "\"identical_ms\":",
+                                       "\"process_ms\":", "\"process_median_ms\":",
+                                       "\"imagemagick_ms\":", "\"ratio_process_median\":", NULL};
+    /* each was measured (a number; the identical pair at 64x36 may round to 0.000 ms) */
+    for (int k = 0; t && keys[k]; k++) ENSURE_MSG(num_after(t, keys[k]) >= 0, "%s in %s", keys[k], t);
+    ENSURE_MSG(num_after(t, "\"process_ms\":") > 0 && num_after(t, "\"imagemagick_ms\":") > 0,
+               "two processes take time: %s", t);
+    free(t);
+    ENSURE_EQ_INT(ww_test_ww("bench compare --size 64", NULL, NULL), 2);
+}

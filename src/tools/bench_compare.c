@@ -128,21 +128,26 @@ static void print_table(const ww_bench_compare_opts *o, const ours_times *us, co
         return;
     }
     fprintf(to, "  ImageMagick `compare -metric RMSE`      %8.1f ms (%.1f)\n", im->best, im->median);
-    fprintf(to, "  ImageMagick / ours: %.1fx in process, %.1fx process against process "
-                "(target >= %.0fx)\n",
-            im->best / us->full.best, im->best / proc->best, TARGET_RATIO);
+    double x_in = im->best / us->full.best, x_proc = im->best / proc->best;
+    double x_med = im->median / proc->median;
+    fprintf(to, "  ImageMagick / ours: %.1fx in process, %.1fx process against process, %.1fx by "
+                "medians (target >= %.0fx: %s)\n",
+            x_in, x_proc, x_med, TARGET_RATIO,
+            x_proc >= TARGET_RATIO && x_med >= TARGET_RATIO ? "met" : "not met");
 }
 
 static void print_json(const ww_bench_compare_opts *o, const ours_times *us, const timing *proc,
                        const timing *im, int have_im, FILE *to) {
     fprintf(to, "{\"bench\":\"compare\",\"width\":%d,\"height\":%d,\"repeats\":%d,"
                 "\"ours_ms\":%.3f,\"ours_median_ms\":%.3f,\"metrics_ms\":%.3f,\"identical_ms\":%.3f,"
-                "\"process_ms\":%.3f",
+                "\"process_ms\":%.3f,\"process_median_ms\":%.3f",
             o->width, o->height, o->repeats, us->full.best, us->full.median, us->metrics.best,
-            us->identical.best, proc->best);
+            us->identical.best, proc->best, proc->median);
     if (have_im)
-        fprintf(to, ",\"imagemagick_ms\":%.3f,\"ratio\":%.3f,\"ratio_process\":%.3f", im->best,
-                im->best / us->full.best, im->best / proc->best);
+        fprintf(to, ",\"imagemagick_ms\":%.3f,\"imagemagick_median_ms\":%.3f,\"ratio\":%.3f,"
+                    "\"ratio_process\":%.3f,\"ratio_process_median\":%.3f",
+                im->best, im->median, im->best / us->full.best, im->best / proc->best,
+                im->median / proc->median);
     fprintf(to, "}\n");
 }
 
