@@ -241,7 +241,7 @@ TEST(rbench_bench_render_json) {
     ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     static const char *const keys[] = {"\"passes\":[{\"name\":\"main\",\"ms\":",
                                        "{\"name\":\"tonemap\",\"ms\":", "\"pass_timer\":",
-                                       "\"fps\":", "\"floor_x\":", NULL};
+                                       "\"fps\":", "\"floor_x\":", "\"gpu_floor_ms\":", NULL};
     /* backends x 2 sizes (a backend that cannot open prints an error line instead) */
     int nb = backends_here(), n = json_lines_with(out, keys);
     ENSURE_MSG(n == 2 * nb, "%d JSON rows for %d backends", n, nb);

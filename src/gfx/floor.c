@@ -12,7 +12,28 @@ static double now_seconds(void) {
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error *err) {
+/* GPU ms per pass: n passes back to back inside one GL_TIME_ELAPSED query; -1 without a timer */
+static double timed_on_gpu(const ww_gl *gl, int n) {
+    GLint bits = 0;
+    gl->GetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+    if (bits <= 0) return -1.0;
+    GLuint q = 0;
+    GLuint64 ns = 0;
+    gl->GenQueries(1, &q);
+    gl->BeginQuery(GL_TIME_ELAPSED, q);
+    for (int i = 0; i < n; i++) {
+        gl->DrawArrays(GL_TRIANGLES, 0, 3);
+        gl->Flush();
+    }
+    gl->EndQuery(GL_TIME_ELAPSED);
+    gl->GetQueryObjectui64v(q, GL_QUERY_RESULT, &ns);
+    gl->DeleteQueries(1, &q);
+    return 1e-6 * (double)ns / n;
+}
+
+ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, double *gpu_ms,
+                            ww_error *err) {
+    *gpu_ms = -1.0;
     GLuint prog = 0, tex = 0, fbo = 0, vao = 0;
     ww_result r = ww_gfx_program(gl, "fullscreen.vert.glsl", "floor.frag.glsl", NULL, &prog, err);
     if (r != WW_OK) return r;
@@ -40,6 +61,7 @@ ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error 
             gl->Finish();
         }
         *ms = 1e3 * (now_seconds() - t0) / n;
+        *gpu_ms = timed_on_gpu(gl, n);
     }
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
     gl->DeleteVertexArrays(1, &vao);

@@ -41,8 +41,12 @@ ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err);
  * water, the fog drawn in its place) is seen; depth is caller scratch of width * height floats */
 ww_result ww_renderer_read_coverage(ww_renderer *r, ww_image *im, float *depth, ww_error *err);
 /* ms for one trivial full-screen pass (constant colour) into an RGBA16F target of w x h: the
- * backend's fill floor, which bench sets render times against */
-ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, ww_error *err);
+ * backend's fill floor, which bench sets render times against. ms: wall clock with glFinish
+ * after each pass (as the frames are timed); gpu_ms: the pass alone by a GL timer query over
+ * passes drawn back to back, -1 where the driver's timer has no bits (on a GPU the first holds a
+ * round trip to the driver, the second the fill) */
+ww_result ww_gfx_fill_floor(const ww_gl *gl, int w, int h, double *ms, double *gpu_ms,
+                            ww_error *err);
 
 /* the wave field as the water shaders evaluate it (shaders/gerstner.glsl, the functions the
  * water vertex shader displaces its mesh with, fade off): for n rest points given relative to the
