@@ -2,7 +2,8 @@
  * 3.2.6): literals and match lengths on the fixed literal/length code, distances on the 5-bit
  * code, extra bits after each. Matches are found by hashing the next four bytes into a table of
  * last positions (one candidate, checked and extended to 258 bytes), taken greedily; the zlib
- * wrapper (RFC 1950) is a 2-byte header and the Adler-32 of the input.
+ * wrapper (RFC 1950) is a 2-byte header and the Adler-32 of the input (inflate.h), with the
+ * tables of rfc1951.h shared with the reader.
  */
 #include "io/deflate.h"
 
@@ -10,25 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "io/inflate.h"
+#include "io/rfc1951.h"
+
 #define HASH_BITS 15
 #define WINDOW 32768      /* deflate's largest distance */
 #define MIN_MATCH 4       /* shorter matches cost more bits than their literals on fixed codes */
-#define MAX_MATCH 258
-#define ADLER_MOD 65521u
-#define ADLER_BLOCK 5552  /* bytes summed before a reduction cannot overflow 32 bits (zlib's NMAX) */
-
-/* RFC 1951 3.2.5: base length and extra bits of length codes 257..285, base distance and extra
- * bits of distance codes 0..29 */
-static const uint16_t LEN_BASE[29] = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,  15,  17,  19,  23, 27,
-                                      31, 35, 43, 51, 59, 67, 83, 99, 115, 131, 163, 195, 227, 258};
-static const uint8_t LEN_EXTRA[29] = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
-                                      2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
-static const uint16_t DIST_BASE[30] = {1,    2,    3,    4,    5,    7,     9,     13,    17,  25,
-                                       33,   49,   65,   97,   129,  193,   257,   385,   513, 769,
-                                       1025, 1537, 2049, 3073, 4097, 6145,  8193,  12289, 16385,
-                                       24577};
-static const uint8_t DIST_EXTRA[30] = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
-                                       6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
 
 typedef struct bits {
     unsigned char *out;
@@ -83,20 +71,6 @@ static uint32_t hash4(const unsigned char *p) {
     return (v * 2654435761u) >> (32 - HASH_BITS); /* Knuth's multiplicative hash */
 }
 
-static uint32_t adler32(const unsigned char *p, size_t len) {
-    uint32_t a = 1, b = 0;
-    while (len > 0) {
-        size_t n = len < ADLER_BLOCK ? len : ADLER_BLOCK;
-        len -= n;
-        while (n--) {
-            a += *p++;
-            b += a;
-        }
-        a %= ADLER_MOD;
-        b %= ADLER_MOD;
-    }
-    return (b << 16) | a;
-}
 
 unsigned char *ww_zlib_fast(const unsigned char *data, size_t len, size_t *out_len) {
     if (len >= UINT32_MAX) return NULL; /* positions are kept in 32 bits */
@@ -144,7 +118,7 @@ unsigned char *ww_zlib_fast(const unsigned char *data, size_t len, size_t *out_l
     }
     put_symbol(&b, 256); /* end of block */
     if (b.count > 0) b.out[b.n++] = (unsigned char)b.acc; /* the last partial byte, zero-padded */
-    uint32_t adler = adler32(data, len);
+    uint32_t adler = ww_adler32(1, data, len);
     for (int k = 3; k >= 0; k--) b.out[b.n++] = (unsigned char)(adler >> (8 * k));
     free(head);
     *out_len = b.n;

@@ -214,6 +214,32 @@ static inline double yiq_delta_ldr(const float *p, const float *q) {
     return delta;
 }
 
+/* a pixel over the YIQ threshold: anti-aliasing (when detected) or a difference */
+static void count_over_yiq(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp_opts *o,
+                           int x, int y, sums *s) {
+    if (o->detect_aa && (ww_cmp_antialiased(a, b, x, y) || ww_cmp_antialiased(b, a, x, y)))
+        s->aa++;
+    else
+        s->yiq++;
+}
+
+/* the sums of an 8- or 16-bit pass, kept in registers while a band runs */
+typedef struct ldr_sums { double abs, sq, rel, max_abs, rel_max; } ldr_sums;
+
+/* one channel pair of an 8- or 16-bit image (values in [0, 1]) into the sums (its square only for
+ * a colour channel); its difference in levels */
+static inline double ldr_channel(double u, double v, int colour, ldr_sums *a) {
+    double d = u > v ? u - v : v - u;
+    if (colour) a->sq += d * d;
+    if (d == 0) return 0;
+    double rel = d / (u > v ? u : v);
+    a->abs += d;
+    a->rel += rel;
+    if (d > a->max_abs) a->max_abs = d;
+    if (rel > a->rel_max) a->rel_max = rel;
+    return d * LEVELS;
+}
+
 /* diff_pass for an 8- or 16-bit pair: pixel_channels without the HDR cases, the sums in
  * registers; the same figures to the bit (the relative error's floor cannot bind: two values
  * that differ are at least 1/65535 apart, so the larger is above REL_FLOOR) */
@@ -222,41 +248,27 @@ static void diff_pass_ldr(const ww_cmp_image *a, const ww_cmp_image *b, const ww
     int nch = has_alpha(a) || has_alpha(b) ? 4 : 3;
     double limit = o->threshold + level_slack(a);
     double max_delta = WW_CMP_YIQ_MAX_DELTA * o->yiq * o->yiq;
-    double sabs = s->abs, ssq = s->sq, srel = s->rel, max_abs = s->max_abs, rel_max = s->rel_max;
-    size_t same = 0, npx = 0;
+    ldr_sums acc = {s->abs, s->sq, s->rel, s->max_abs, s->rel_max};
+    size_t npx = 0;
     long diff = 0;
     for (int y = y0; y < y1; y++) {
         size_t row = (size_t)y * (size_t)a->width;
         for (int x = 0; x < a->width; x++) {
             const float *p = a->rgba + 4 * (row + (size_t)x), *q = b->rgba + 4 * (row + (size_t)x);
             npx++;
-            if (same_pixel(p, q)) {
-                same++;
-                continue;
-            }
+            if (same_pixel(p, q)) continue;
             double worst = 0;
             for (int c = 0; c < nch; c++) {
-                double u = p[c], v = q[c];
-                double d = u > v ? u - v : v - u;
-                if (c < 3) ssq += d * d;
-                if (d == 0) continue;
-                double rel = d / (u > v ? u : v);
-                sabs += d;
-                srel += rel;
-                if (d > max_abs) max_abs = d;
-                if (rel > rel_max) rel_max = rel;
-                if (d * LEVELS > worst) worst = d * LEVELS;
+                double l = ldr_channel(p[c], q[c], c < 3, &acc);
+                if (l > worst) worst = l;
             }
             if (worst > limit) diff++;
             if (!(yiq_delta_ldr(p, q) > max_delta)) continue;
-            if (o->detect_aa && (ww_cmp_antialiased(a, b, x, y) || ww_cmp_antialiased(b, a, x, y)))
-                s->aa++;
-            else
-                s->yiq++;
+            count_over_yiq(a, b, o, x, y, s);
         }
     }
-    (void)same;
-    s->abs = sabs, s->sq = ssq, s->rel = srel, s->max_abs = max_abs, s->rel_max = rel_max;
+    s->abs = acc.abs, s->sq = acc.sq, s->rel = acc.rel, s->max_abs = acc.max_abs;
+    s->rel_max = acc.rel_max;
     s->n += npx * (size_t)nch;
     s->nsq += npx * 3;
     s->diff += diff;
@@ -281,10 +293,7 @@ static void diff_pass(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp
             if (worst == INFINITY) s->nonfinite++;
             if (worst > limit) s->diff++;
             if (!(ww_cmp_yiq_delta(p, q) > max_delta)) continue;
-            if (o->detect_aa && (ww_cmp_antialiased(a, b, x, y) || ww_cmp_antialiased(b, a, x, y)))
-                s->aa++;
-            else
-                s->yiq++;
+            count_over_yiq(a, b, o, x, y, s);
         }
     }
 }
@@ -312,7 +321,7 @@ static void diff_pass_rgb8(const ww_cmp_image *a, const ww_cmp_image *b, const w
                            const level_tables *t, int y0, int y1, sums *s) {
     double limit = o->threshold + level_slack(a);
     double max_delta = WW_CMP_YIQ_MAX_DELTA * o->yiq * o->yiq;
-    double sabs = s->abs, ssq = s->sq, srel = s->rel, max_abs = s->max_abs, rel_max = s->rel_max;
+    ldr_sums acc = {s->abs, s->sq, s->rel, s->max_abs, s->rel_max};
     size_t npx = 0;
     long diff = 0;
     for (int y = y0; y < y1; y++) {
@@ -323,17 +332,9 @@ static void diff_pass_rgb8(const ww_cmp_image *a, const ww_cmp_image *b, const w
             if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) continue;
             double worst = 0, dw[3];
             for (int c = 0; c < 3; c++) {
-                double u = t->v[p[c]], v = t->v[q[c]];
                 dw[c] = t->white[p[c]] - t->white[q[c]];
-                double d = u > v ? u - v : v - u;
-                ssq += d * d;
-                if (d == 0) continue;
-                double rel = d / (u > v ? u : v);
-                sabs += d;
-                srel += rel;
-                if (d > max_abs) max_abs = d;
-                if (rel > rel_max) rel_max = rel;
-                if (d * LEVELS > worst) worst = d * LEVELS;
+                double l = ldr_channel(t->v[p[c]], t->v[q[c]], 1, &acc);
+                if (l > worst) worst = l;
             }
             if (worst > limit) diff++;
             double delta = 0;
@@ -342,13 +343,11 @@ static void diff_pass_rgb8(const ww_cmp_image *a, const ww_cmp_image *b, const w
                 delta += yiq_w[k] * e * e;
             }
             if (!(delta > max_delta)) continue;
-            if (o->detect_aa && (ww_cmp_antialiased(a, b, x, y) || ww_cmp_antialiased(b, a, x, y)))
-                s->aa++;
-            else
-                s->yiq++;
+            count_over_yiq(a, b, o, x, y, s);
         }
     }
-    s->abs = sabs, s->sq = ssq, s->rel = srel, s->max_abs = max_abs, s->rel_max = rel_max;
+    s->abs = acc.abs, s->sq = acc.sq, s->rel = acc.rel, s->max_abs = acc.max_abs;
+    s->rel_max = acc.rel_max;
     s->n += npx * 3;
     s->nsq += npx * 3;
     s->diff += diff;
