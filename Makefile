@@ -2,8 +2,10 @@
 #
 #   make            build ./waterworld (warnings are errors, -ffp-contract=off)
 #   make demo       install what is missing, build, render scenes/demo.yaml into out/demo/
-#   make test       install, build, run every test, then the same suite under ASan + UBSan
+#   make test       install, build, run the test suite, then the same suite under ASan + UBSan
+#   make unit       the test suite only (T=NAME runs the tests whose name holds NAME)
 #   make asan       the test suite under AddressSanitizer + UBSan only
+#   make test-long  the long tier: soaks, benchmarks as tests, the largest renders
 #   make golden     re-render the golden images in golden/ (read README first)
 #   make bench      speed and memory figures (not part of test)
 #   make fuzz       libFuzzer on the scene loader, then the OBJ reader, FUZZ_SECONDS each
@@ -27,7 +29,10 @@ TEST_OBJ:= $(TEST_SRC:%.c=$(BUILD)/%.o)
 SHADERS := $(sort $(wildcard shaders/*.glsl))
 BIN     ?= waterworld
 
-.PHONY: all deps demo test unit asan golden bench fuzz soak clean help
+# the test runner runs this many tests at once (default: the CPU count)
+JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
+
+.PHONY: all deps demo test unit asan test-long golden bench fuzz soak clean help
 all: $(BIN)
 
 # V=1 shows the full command lines
@@ -54,30 +59,36 @@ $(BUILD)/gen/shaders_embed.c: $(SHADERS) scripts/embed-shaders.sh
 $(BUILD)/gen/shaders_embed.o: $(BUILD)/gen/shaders_embed.c
 	$(Q)$(CC) $(CPPFLAGS) $(CFLAGS) -c -o $@ $<
 
-# the test binary wraps the allocator so a test can count allocations inside ww_step
+# the test binary wraps the allocator so a test can count allocations inside ww_step, and fork
+# and ww_backend_open so that the runner can hold unit tests to their tier
 $(BUILD)/ww-tests: $(TEST_OBJ) $(BUILD)/libww.a
 	@echo "  LD  $@"
-	$(Q)$(CC) $(CFLAGS) -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc -o $@ $^ $(LDLIBS)
+	$(Q)$(CC) $(CFLAGS) -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=fork,--wrap=ww_backend_open \
+	    -o $@ $^ $(LDLIBS)
 
 deps:
 	@sh scripts/install-deps.sh
 
 unit: $(BIN) $(BUILD)/ww-tests
-	WW_BIN=./$(BIN) $(BUILD)/ww-tests $(T)
+	WW_BIN=./$(BIN) $(BUILD)/ww-tests -j $(JOBS) $(T)
 
 test: deps
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BIN) $(BUILD)/ww-tests
 	@$(MAKE) --no-print-directory unit
 	@$(MAKE) --no-print-directory asan
+
+test-long: $(BIN) $(BUILD)/ww-tests
+	WW_BIN=./$(BIN) $(BUILD)/ww-tests -j $(JOBS) --tier long $(T)
 
 # intercept_tls_get_addr=0: LeakSanitizer's scan of dynamic TLS reads a stale DTV entry left by
 # the GL driver's libraries on this glibc (2.36) and its tracer dies with SIGSEGV ("DTLS 10 at
 # 0xcb6-...", now and then, after a render); without the interception the scan skips dynamic TLS
 asan:
-	@$(MAKE) --no-print-directory BUILD=build/asan BIN=build/asan/waterworld OPT="-O1 -g" \
+	@$(MAKE) --no-print-directory -j$(JOBS) BUILD=build/asan BIN=build/asan/waterworld OPT="-O1 -g" \
 	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	    build/asan/waterworld build/asan/ww-tests
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ASAN_OPTIONS=detect_leaks=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1 WW_BIN=build/asan/waterworld \
-	    WW_ASAN=1 build/asan/ww-tests $(T)
+	    WW_ASAN=1 build/asan/ww-tests -j $(JOBS) $(T)
 
 demo: deps
 	@$(MAKE) --no-print-directory $(BIN)
@@ -124,6 +135,6 @@ clean:
 	rm -rf build $(BIN)
 
 help:
-	@sed -n '1,11p' Makefile
+	@sed -n '1,13p' Makefile
 
 -include $(LIB_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BUILD)/src/cli/main.d

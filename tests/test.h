@@ -1,11 +1,21 @@
 /* test.h - the one tiny test framework (after Box2D's test_macros.h).
  *
  *   TEST(loader_unknown_key) { ENSURE(x == 1); ENSURE_NEAR(h, 0.25, WAVE_HEIGHT_TOL); }
+ *   TEST_PROC(cli_render_png) { REQUIRE_GL(); ... ww_test_ww("render ...", ...) ... }
+ *   TEST_LONG(soak_hour) { ... }
  *
- * Tests register themselves; `ww-tests [FILTER...]` runs those whose name contains a filter.
+ * Tests register themselves in one of three tiers:
+ *   TEST       unit: in process, no GL context, no child process (the runner fails a unit test
+ *              that asks for either, so the tier stays honest);
+ *   TEST_PROC  render and process tests: GL, or the binary under test run as a process;
+ *   TEST_LONG  soaks, benchmarks and the largest renders: `make test-long`, not `make test`.
+ * The runner (tests/main.c) runs each test in its own child process and its own temporary
+ * folder, several at once (-j), and ends with "N passed, N failed, N skipped" and the reason of
+ * every skip. A test that cannot run here says so with SKIP or REQUIRE_*: it counts as skipped,
+ * never as passed. WW_REQUIRE_GL=1 (or a list: gl,egl,osmesa) makes a test skipped for want of
+ * GL, or of a backend named in the list, fail instead: CI sets it where the backends must open.
  * Tolerances are named for what they allow and scaled by WW_TOL_SCALE (0 shows the residuals:
  * every NEAR check fails and prints the real difference).
- * The runner ends with "N passed, N failed".
  */
 #ifndef WW_TEST_H
 #define WW_TEST_H
@@ -15,18 +25,71 @@
 #include <stdio.h>
 
 typedef void (*ww_test_fn)(void);
-void ww_test_register(const char *name, ww_test_fn fn);
+enum { WW_TIER_UNIT = 0, WW_TIER_PROC = 1, WW_TIER_LONG = 2 };
+void ww_test_register(const char *name, ww_test_fn fn, int tier);
+/* why a test is skipped: the kind decides what WW_REQUIRE_GL turns into a failure */
+enum { WW_SKIP_OTHER = 0, WW_SKIP_GL = 1, WW_SKIP_EGL = 2, WW_SKIP_OSMESA = 3 };
+void ww_test_skip(int kind, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* the current test is a unit test that wants a process or GL: record the failure (the tier) */
+void ww_test_needs_proc(const char *what);
 void ww_test_fail(const char *file, int line, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 double ww_test_tol(double tol);      /* tol scaled by WW_TOL_SCALE */
 int ww_test_failed_now(void);        /* the current test has failed a check */
 
-#define TEST(name)                                                                              \
+#define WW_TEST_TIER(name, tier)                                                                \
     static void test_##name(void);                                                              \
     __attribute__((constructor)) static void reg_##name(void) {                                 \
-        ww_test_register(#name, test_##name);                                                   \
+        ww_test_register(#name, test_##name, tier);                                             \
     }                                                                                           \
     static void test_##name(void)
+#define TEST(name) WW_TEST_TIER(name, WW_TIER_UNIT)
+#define TEST_PROC(name) WW_TEST_TIER(name, WW_TIER_PROC)
+#define TEST_LONG(name) WW_TEST_TIER(name, WW_TIER_LONG)
+
+/* end the current test as skipped, with the reason (printf-style) */
+#define SKIP(...)                                                                               \
+    do {                                                                                        \
+        ww_test_skip(WW_SKIP_OTHER, __VA_ARGS__);                                               \
+        return;                                                                                 \
+    } while (0)
+
+/* skip unless a GL backend opens here (the reason is the backend's own message) */
+#define REQUIRE_GL()                                                                            \
+    do {                                                                                        \
+        if (!ww_test_have_gl()) {                                                               \
+            ww_test_skip(WW_SKIP_GL, "no GL backend opens: %s", ww_test_gl_error());            \
+            return;                                                                             \
+        }                                                                                       \
+    } while (0)
+
+/* skip unless this backend (WW_BACKEND_EGL or WW_BACKEND_OSMESA) opens here */
+#define REQUIRE_BACKEND(kind)                                                                   \
+    do {                                                                                        \
+        if (!ww_test_have_backend(kind)) {                                                      \
+            ww_test_skip((kind) == 1 ? WW_SKIP_EGL : WW_SKIP_OSMESA, "%s",                      \
+                         ww_test_backend_error(kind));                                          \
+            return;                                                                             \
+        }                                                                                       \
+    } while (0)
+
+/* skip unless this machine's renderer is the one that blessed the flat goldens (golden/KEY) */
+#define REQUIRE_BLESSED_RENDERER()                                                              \
+    do {                                                                                        \
+        if (!ww_test_renderer_is_blessed()) {                                                   \
+            ww_test_skip(WW_SKIP_OTHER, "this renderer did not bless golden/ (golden/KEY)");    \
+            return;                                                                             \
+        }                                                                                       \
+    } while (0)
+
+/* skip unless a command is on PATH (ImageMagick's compare, oiiotool, ffprobe, chromium...) */
+#define REQUIRE_TOOL(cmd)                                                                       \
+    do {                                                                                        \
+        if (!ww_test_have_tool(cmd)) {                                                          \
+            ww_test_skip(WW_SKIP_OTHER, "%s is not installed", cmd);                            \
+            return;                                                                             \
+        }                                                                                       \
+    } while (0)
 
 #define ENSURE(c)                                                                               \
     do {                                                                                        \
@@ -69,7 +132,8 @@ long ww_test_alloc_count(void);
 int ww_test_run(const char *cmdline, const char *out_path, const char *err_path);
 /* the waterworld binary under test ($WW_BIN, default ./waterworld) */
 const char *ww_test_bin(void);
-/* a fresh folder under build/test-tmp/ named after the test; returns its path */
+/* a fresh folder named name inside the current test's own temporary folder; returns its path
+ * (a static buffer: copy it to keep it) */
 const char *ww_test_tmpdir(const char *name);
 /* 1 when both files can be read and hold the same bytes */
 int ww_test_files_equal(const char *a, const char *b);
@@ -85,8 +149,15 @@ int ww_test_file_contains(const char *path, const char *needle);
 int ww_test_json_valid(const char *text);
 /* every line of text is one JSON object ending in a newline; the count, or -1 at the first bad */
 int ww_test_json_lines(const char *text);
-/* 1 when a GL backend can be opened here */
+/* 1 when a GL backend can be opened here (the runner asks once, in a child of its own) */
 int ww_test_have_gl(void);
+/* why none opens, when ww_test_have_gl() is 0 */
+const char *ww_test_gl_error(void);
+/* 1 when this backend kind (1 EGL, 2 OSMesa: ww_backend_kind) opens here; why not */
+int ww_test_have_backend(int kind);
+const char *ww_test_backend_error(int kind);
+/* 1 when cmd is found on PATH */
+int ww_test_have_tool(const char *cmd);
 
 /* tests/golden.c: images */
 /* this machine's GL renderer is the one that blessed golden/ (golden/RENDERER) */

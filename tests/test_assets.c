@@ -270,7 +270,7 @@ TEST(assets_models_graph_errors) {
     }
 }
 
-TEST(assets_bad_scene_exits_2) {
+TEST_PROC(assets_bad_scene_exits_2) {
     ENSURE_EQ_INT(ww_test_ww("plan tests/bad/inconsistent_cubemap_face_size.yaml", NULL, NULL), 2);
     ENSURE_EQ_INT(ww_test_ww("plan tests/bad/nofile_model_obj.yaml", NULL, NULL), 2);
 }
@@ -291,8 +291,8 @@ static int centre_pixel(const char *png, unsigned char rgb[3]) {
 
 /* a view along each axis of the six-colour cubemap shows that face's colour at its centre:
  * the camera hangs 500 m up with a 5 m far plane, so no water covers the view down */
-TEST(assets_skybox_face_orientation) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(assets_skybox_face_orientation) {
+    REQUIRE_GL();
     static const struct {
         const char *name;
         double yaw, pitch;
@@ -339,12 +339,14 @@ static void golden_of(const char *name) {
     ww_test_check_golden(golden, png);
 }
 
-TEST(assets_golden_skybox) {
-    if (ww_test_have_gl()) golden_of("skybox");
+TEST_PROC(assets_golden_skybox) {
+    REQUIRE_GL();
+    golden_of("skybox");
 }
 
-TEST(assets_golden_skydome) {
-    if (ww_test_have_gl()) golden_of("skydome");
+TEST_PROC(assets_golden_skydome) {
+    REQUIRE_GL();
+    golden_of("skydome");
 }
 
 /* the sky region: above the horizon of scenes/features/skybox.yaml's camera (measured: the
@@ -358,8 +360,8 @@ static const double WATER_RECT[4] = {0.0, 0.56, 1.0, 1.0};
 #define SKY_DIFF_THRESH 8    /* 8-bit levels: a pixel differs */
 #define REFLECTION_THRESH 40 /* 8-bit levels: a reflected cloud or sun, not a tint */
 
-TEST(assets_toggle_sky_gradient_vs_cubemap) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(assets_toggle_sky_gradient_vs_cubemap) {
+    REQUIRE_GL();
     const char *dir = ww_test_tmpdir("assets_toggle_sky");
     char on[600], off[600], a[700], b[700];
     snprintf(on, sizeof on, "%s/on", dir);

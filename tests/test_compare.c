@@ -236,7 +236,7 @@ TEST(compare_aa_edge) {
 
 /* ImageMagick writes the twins: 16-bit RGB, 8-bit grey and opaque RGBA of an 8-bit RGB grey
  * picture */
-TEST(compare_twins_16bit_grey) {
+TEST_PROC(compare_twins_16bit_grey) {
     const char *dir = ww_test_tmpdir("compare_twins");
     char p8[600], p16[600], pg[600], pa[600], cmd[4096];
     snprintf(p8, sizeof p8, "%s/rgb8.png", dir);
@@ -273,7 +273,7 @@ TEST(compare_twins_16bit_grey) {
     ww_cmp_image_free(&g);
 }
 
-TEST(compare_cli_exit_codes) {
+TEST_PROC(compare_cli_exit_codes) {
     const char *dir = ww_test_tmpdir("compare_exit");
     char pa[600], pb[600], pc[600], pt[600], args[4096], out[600];
     snprintf(pa, sizeof pa, "%s/a.png", dir);
@@ -314,7 +314,7 @@ TEST(compare_cli_exit_codes) {
     ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 2);
 }
 
-TEST(compare_cli_folders_json_diff) {
+TEST_PROC(compare_cli_folders_json_diff) {
     const char *dir = ww_test_tmpdir("compare_dirs");
     char e[600], a[600], d[600], p[700], args[4096], out[600];
     snprintf(e, sizeof e, "%s/expected", dir);
@@ -371,7 +371,7 @@ TEST(compare_cli_folders_json_diff) {
 }
 
 /* our RMSE/PSNR against ImageMagick's on an RGBA pair (premultiplied colour, alpha not counted) */
-TEST(compare_imagemagick_alpha) {
+TEST_PROC(compare_imagemagick_alpha) {
     const char *dir = ww_test_tmpdir("compare_im_alpha");
     char pa[600], pb[600], cmd[2048], out[600];
     snprintf(pa, sizeof pa, "%s/a.png", dir);
@@ -398,8 +398,8 @@ TEST(compare_imagemagick_alpha) {
 }
 
 /* two rendered frames against ImageMagick compare and OpenImageIO idiff */
-TEST(compare_tools_agree_on_frames) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(compare_tools_agree_on_frames) {
+    REQUIRE_GL();
     const char *dir = ww_test_tmpdir("compare_frames");
     char cmd[4096], f0[600], f1[600], out[600];
     snprintf(cmd, sizeof cmd, "%s render scenes/demo.yaml --frames 0:2 --size 256x144 -o %s --quiet",
@@ -438,8 +438,8 @@ TEST(compare_tools_agree_on_frames) {
 /* an RGB PNG is held in the rgb8 layout, whose 8-bit paths must give the figures of the float
  * rgba layout to the bit: the same pair compared in both layouts, every field equal, the same
  * diff image; a pair of mixed layouts too */
-TEST(compare_rgb8_layout_matches_rgba) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(compare_rgb8_layout_matches_rgba) {
+    REQUIRE_GL();
     const char *dir = ww_test_tmpdir("compare_layouts");
     char cmd[4096], f0[600], f1[600], d8[600], d32[600];
     snprintf(cmd, sizeof cmd, "%s render scenes/lake.yaml --frames 0:3 --size 256x144 -o %s --quiet",
@@ -588,8 +588,8 @@ TEST(compare_opt_arg) {
 }
 
 /* bench compare runs, and prints every figure (no time is asserted: only that each was taken) */
-TEST(compare_bench_json) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(compare_bench_json) {
+    REQUIRE_GL();
     const char *dir = ww_test_tmpdir("compare_bench");
     char out[600];
     snprintf(out, sizeof out, "%s/bench.json", dir);

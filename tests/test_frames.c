@@ -216,8 +216,8 @@ TEST(frames_completeness_checks_catch_truncation) {
 
 /* ---- writers, read by other tools ---------------------------------------------------------- */
 
-TEST(frames_exr_read_by_oiiotool) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_exr_read_by_oiiotool) {
+    REQUIRE_GL();
     char dir[160], a[1024], info[900];
     tmp("frames_exr", dir, sizeof dir);
     struct { const char *args, *type, *comp; } cases[] = {
@@ -262,8 +262,8 @@ TEST(frames_exr_read_by_oiiotool) {
 
 /* --alpha: RGBA8 whose alpha is 0 exactly where only the sky is seen. The demo's camera looks at
  * the horizon: the top row is sky, the bottom row water; the RGB equals the RGB-only frame. */
-TEST(frames_png_alpha_is_sky_coverage) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_png_alpha_is_sky_coverage) {
+    REQUIRE_GL();
     char dir[160], a[2048];
     tmp("frames_alpha", dir, sizeof dir);
     snprintf(a, sizeof a, "render " SCENE " --size %dx%d --frames 1 --alpha -o %s/rgba --quiet", W, H, dir);
@@ -299,8 +299,8 @@ TEST(frames_png_alpha_is_sky_coverage) {
     ww_image_free(&rb);
 }
 
-TEST(frames_y4m_and_raw_streams) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_y4m_and_raw_streams) {
+    REQUIRE_GL();
     char dir[160], a[2048];
     tmp("frames_y4m", dir, sizeof dir);
     const int n = 3;
@@ -358,8 +358,8 @@ TEST(frames_y4m_and_raw_streams) {
     free(back);
 }
 
-TEST(frames_make_video) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_make_video) {
+    REQUIRE_GL();
     char dir[160], a[2048];
     tmp("frames_video", dir, sizeof dir);
     snprintf(a, sizeof a, "WW_BIN=%s MAKE_VIDEO_PRESET=ultrafast sh -c 'scripts/make-video.sh " SCENE
@@ -391,8 +391,8 @@ TEST(frames_make_video) {
 
 /* ---- interruption and resume --------------------------------------------------------------- */
 
-TEST(frames_sigkill_then_resume_matches_one_run) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_sigkill_then_resume_matches_one_run) {
+    REQUIRE_GL();
     char dir[160], a[2048], err_path[1024], first[1024];
     tmp("frames_kill", dir, sizeof dir);
     const int n = 24;
@@ -441,8 +441,8 @@ TEST(frames_sigkill_then_resume_matches_one_run) {
     ENSURE_EQ_INT(ww_test_ww(a, NULL, NULL), 2);
 }
 
-TEST(frames_sigint_finishes_in_flight_and_exits_130) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_sigint_finishes_in_flight_and_exits_130) {
+    REQUIRE_GL();
     char dir[160], a[2048], err_path[1024], first[1024];
     tmp("frames_int", dir, sizeof dir);
     /* far more frames than are ever written: the signal lands mid-run on any renderer (a GPU
@@ -486,8 +486,8 @@ TEST(frames_sigint_finishes_in_flight_and_exits_130) {
 
 /* ---- threads, stats, progress -------------------------------------------------------------- */
 
-TEST(frames_threads_give_identical_bytes) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_threads_give_identical_bytes) {
+    REQUIRE_GL();
     char dir[160], a[2048], b[1024];
     tmp("frames_threads", dir, sizeof dir);
     const int n = 6;
@@ -501,8 +501,8 @@ TEST(frames_threads_give_identical_bytes) {
     ENSURE_EQ_INT(same_frames(a, b, n), 0);
 }
 
-TEST(frames_stats_and_progress) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_stats_and_progress) {
+    REQUIRE_GL();
     char dir[160], a[2048], err_path[1024], stats[1024];
     tmp("frames_stats", dir, sizeof dir);
     const int n = 4;
@@ -532,8 +532,8 @@ TEST(frames_stats_and_progress) {
     free(e);
 }
 
-TEST(frames_bench_output_tiny) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(frames_bench_output_tiny) {
+    REQUIRE_GL();
     char dir[160], out[1024];
     tmp("frames_bench", dir, sizeof dir);
     snprintf(out, sizeof out, "%s/out.jsonl", dir);

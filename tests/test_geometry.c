@@ -183,7 +183,7 @@ TEST(meshgen_fish_tail_weight) {
 #define TOGGLE_THRESH 2 /* LDR codes: a pixel differs when a channel moves by more than this */
 
 static void golden_of(const char *name) {
-    if (!ww_test_have_gl()) return;
+    REQUIRE_GL();
     char scene[256], gold[256], dir[512], actual[600];
     snprintf(scene, sizeof scene, "scenes/features/%s.yaml", name);
     snprintf(gold, sizeof gold, "golden/features/%s.png", name);
@@ -193,11 +193,11 @@ static void golden_of(const char *name) {
     ww_test_check_golden(gold, actual);
 }
 
-TEST(geometry_golden_shadows) { golden_of("shadows"); }
-TEST(geometry_golden_caustics) { golden_of("caustics"); }
-TEST(geometry_golden_lights) { golden_of("lights"); }
-TEST(geometry_golden_fog) { golden_of("fog"); }
-TEST(geometry_golden_lake_dusk) { golden_of("lake_dusk"); }
+TEST_PROC(geometry_golden_shadows) { golden_of("shadows"); }
+TEST_PROC(geometry_golden_caustics) { golden_of("caustics"); }
+TEST_PROC(geometry_golden_lights) { golden_of("lights"); }
+TEST_PROC(geometry_golden_fog) { golden_of("fog"); }
+TEST_PROC(geometry_golden_lake_dusk) { golden_of("lake_dusk"); }
 
 /* scene rendered twice, with and without `set`, into a and b; diff within rect */
 static int toggle(const char *name, const char *set, const double rect[4], ww_test_region *d,
@@ -215,8 +215,8 @@ static int toggle(const char *name, const char *set, const double rect[4], ww_te
 
 /* the shadow scene looks down from under water: the seabed fills the lower 55% of the image, the
  * surface seen from below the top; shadows fall only on the seabed */
-TEST(geometry_shadows_toggle) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(geometry_shadows_toggle) {
+    REQUIRE_GL();
     const double seabed[4] = {0.0, 0.45, 1.0, 1.0};
     ww_test_region d;
     char a[600], b[600];
@@ -238,8 +238,8 @@ TEST(geometry_shadows_toggle) {
 }
 
 /* caustics light the seabed under water and nothing above it */
-TEST(geometry_caustics_toggle) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(geometry_caustics_toggle) {
+    REQUIRE_GL();
     const double seabed[4] = {0.0, 0.45, 1.0, 1.0};
     ww_test_region d;
     char a[600], b[600];
@@ -254,8 +254,8 @@ TEST(geometry_caustics_toggle) {
 }
 
 /* the lights light the boat and the cubes, not the sky */
-TEST(geometry_lights_toggle) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(geometry_lights_toggle) {
+    REQUIRE_GL();
     const double sky[4] = {0.0, 0.0, 1.0, 0.2};
     ww_test_region d;
     char a[600], b[600];
@@ -267,8 +267,8 @@ TEST(geometry_lights_toggle) {
 }
 
 /* fog: denser fog moves the geometry's pixels; the sky keeps its colour */
-TEST(geometry_fog_toggle) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(geometry_fog_toggle) {
+    REQUIRE_GL();
     const double sky[4] = {0.0, 0.0, 1.0, 0.25};
     ww_test_region d;
     char a[600], b[600];
@@ -279,8 +279,8 @@ TEST(geometry_fog_toggle) {
 
 /* instancing: the lake's 12 fish, 5 cubes, boat, chest... come out as one draw per mesh type,
  * whatever the number of objects (the draw count of the main pass's geometry) */
-TEST(geometry_one_draw_per_mesh_type) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(geometry_one_draw_per_mesh_type) {
+    REQUIRE_GL();
     ww_set sets[] = {{"render.size=[64, 36]"}};
     ww_scene *sc = NULL;
     ww_error err = {0};

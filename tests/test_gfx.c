@@ -141,33 +141,6 @@ static ww_result render(ww_backend_kind kind, const world *w, ww_image *ldr, ww_
     return rc;
 }
 
-int ww_test_have_gl(void) {
-    static int have = -1; /* opening a context costs tens of ms: ask once */
-    if (have < 0) {
-        ww_backend *b = NULL;
-        ww_error err = {0};
-        have = ww_backend_open(WW_BACKEND_AUTO, &b, &err) == WW_OK;
-        ww_backend_close(b);
-    }
-    return have;
-}
-
-/* the library a backend needs is installed here (else its test has nothing to check) */
-static int have_lib(const char *a, const char *b) {
-    void *h = dlopen(a, RTLD_LAZY | RTLD_LOCAL);
-    if (!h && b) h = dlopen(b, RTLD_LAZY | RTLD_LOCAL);
-    if (h) dlclose(h);
-    return h != NULL;
-}
-
-#define REQUIRE_GL()                                                                            \
-    do {                                                                                        \
-        if (!ww_test_have_gl()) {                                                               \
-            fprintf(stderr, "(skipped: no GL backend here) ");                                  \
-            return;                                                                             \
-        }                                                                                       \
-    } while (0)
-
 static int gl_version_at_least(const char *v, int major, int minor) {
     int ma = 0, mi = 0;
     if (!v || sscanf(v, "%d.%d", &ma, &mi) != 2) return 0;
@@ -190,27 +163,18 @@ static void check_backend(ww_backend_kind kind, const char *describe_prefix) {
     ww_backend_close(b);
 }
 
-TEST(gfx_backend_egl_opens) {
-    if (!have_lib("libEGL.so.1", NULL)) {
-        fprintf(stderr, "(skipped: no libEGL.so.1) ");
-        return;
-    }
+TEST_PROC(gfx_backend_egl_opens) {
+    REQUIRE_BACKEND(WW_BACKEND_EGL);
     check_backend(WW_BACKEND_EGL, "egl/");
 }
 
-TEST(gfx_backend_osmesa_opens) {
-    if (!have_lib("libOSMesa.so.8", "libOSMesa.so.6")) {
-        fprintf(stderr, "(skipped: no libOSMesa) ");
-        return;
-    }
+TEST_PROC(gfx_backend_osmesa_opens) {
+    REQUIRE_BACKEND(WW_BACKEND_OSMESA);
     check_backend(WW_BACKEND_OSMESA, "osmesa");
 }
 
-TEST(gfx_backend_egl_platform_env) {
-    if (!have_lib("libEGL.so.1", NULL)) {
-        fprintf(stderr, "(skipped: no libEGL.so.1) ");
-        return;
-    }
+TEST_PROC(gfx_backend_egl_platform_env) {
+    REQUIRE_BACKEND(WW_BACKEND_EGL);
     ww_backend *b = NULL;
     ww_error err = {0};
 
@@ -281,7 +245,7 @@ static int project_dir(const world *w, const double d[3], int *px, int *py) {
     return *px >= 0 && *px < w->sc->width && *py >= 0 && *py < w->sc->height;
 }
 
-TEST(gfx_render_sky_and_water) {
+TEST_PROC(gfx_render_sky_and_water) {
     REQUIRE_GL();
     world *w = world_new(GFX_W, GFX_H);
     ww_image ldr, hdr;
@@ -333,12 +297,10 @@ static size_t count_diff(const ww_image *a, const ww_image *b, int tol) {
     return bad;
 }
 
-TEST(gfx_egl_and_osmesa_identical) {
+TEST_PROC(gfx_egl_and_osmesa_identical) {
     REQUIRE_GL();
-    if (!have_lib("libEGL.so.1", NULL) || !have_lib("libOSMesa.so.8", "libOSMesa.so.6")) {
-        fprintf(stderr, "(skipped: needs both EGL and OSMesa) ");
-        return;
-    }
+    REQUIRE_BACKEND(WW_BACKEND_EGL);
+    REQUIRE_BACKEND(WW_BACKEND_OSMESA);
     world *w = world_new(GFX_W, GFX_H);
     ww_image a, b;
     ENSURE(ww_image_alloc(&a, GFX_W, GFX_H, 4, WW_PIX_U8) == 0);
@@ -352,7 +314,7 @@ TEST(gfx_egl_and_osmesa_identical) {
     world_free(w);
 }
 
-TEST(gfx_render_repeatable) {
+TEST_PROC(gfx_render_repeatable) {
     REQUIRE_GL();
     world *w = world_new(GFX_W, GFX_H);
     ww_image a, b;
@@ -386,7 +348,7 @@ TEST(gfx_render_repeatable) {
     world_free(w);
 }
 
-TEST(gfx_render_far_from_origin) {
+TEST_PROC(gfx_render_far_from_origin) {
     REQUIRE_GL();
     /* the same camera-relative world at the origin and at (1e5, 3, -1e5) m, t = 1e6 s: the
      * origin phases are shifted by -k D.offset so the waves around the camera are the same */
@@ -417,7 +379,7 @@ TEST(gfx_render_far_from_origin) {
 
 /* drawing only the wedge of the water mesh in view must not change a pixel: poses looking
  * level, down, steeply down, up, across the snap grid, over big waves */
-TEST(gfx_water_wedge_culling_changes_no_pixel) {
+TEST_PROC(gfx_water_wedge_culling_changes_no_pixel) {
     REQUIRE_GL();
     world *w = world_new(GFX_W, GFX_H);
     add_wave(w->sc, 140.0, 30.0, 1.5, 0.9); /* 1.35 m sideways displacement on top */
@@ -462,7 +424,7 @@ static int write_shader_dir(const char *dir, const char *broken) {
     return 0;
 }
 
-TEST(gfx_shader_dir_override) {
+TEST_PROC(gfx_shader_dir_override) {
     REQUIRE_GL();
     const char *tmp = ww_test_tmpdir("gfx_shader_dir_override");
     ENSURE(tmp != NULL);
@@ -629,7 +591,7 @@ static void probe_waves(ww_scene *sc, ww_wave_model model, double exponent) {
     }
 }
 
-TEST(gfx_water_probe_matches_cpu) {
+TEST_PROC(gfx_water_probe_matches_cpu) {
     REQUIRE_GL();
     static const struct {
         const char *name;

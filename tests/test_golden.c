@@ -180,8 +180,8 @@ TEST(golden_scene_section_becomes_compare_options) {
 
 /* ---- GL: the workflow ---------------------------------------------------------------------- */
 
-TEST(golden_pass_then_changed_golden_fails_with_red_diff) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(golden_pass_then_changed_golden_fails_with_red_diff) {
+    REQUIRE_GL();
     char dir[512], g[600], o[600], a[4096], errp[600], p[700], q[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_pass_fail"));
     snprintf(g, sizeof g, "%s/golden", dir);
@@ -234,8 +234,8 @@ TEST(golden_pass_then_changed_golden_fails_with_red_diff) {
     ENSURE(ww_test_file_contains(p, "PASS: 3 frames, 3 passed"));
 }
 
-TEST(golden_per_renderer_folder_wins_over_flat) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(golden_per_renderer_folder_wins_over_flat) {
+    REQUIRE_GL();
     char dir[512], g[600], o[600], a[4096], key[WW_GOLDEN_KEY_SIZE], flat[700], mine[800], rep[700];
     key_here(key, sizeof key);
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_per_renderer"));
@@ -266,8 +266,8 @@ TEST(golden_per_renderer_folder_wins_over_flat) {
     ENSURE(ww_test_file_contains(rep, "(flat)") || ww_test_file_contains(rep, ">flat<"));
 }
 
-TEST(golden_fallback_list_is_honoured) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(golden_fallback_list_is_honoured) {
+    REQUIRE_GL();
     char dir[512], g[600], o[600], a[4096], flat[700], other[800], rep[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_fallback"));
     snprintf(g, sizeof g, "%s/golden", dir);
@@ -288,8 +288,8 @@ TEST(golden_fallback_list_is_honoured) {
     ENSURE_EQ_INT(render(a, NULL), 1);
 }
 
-TEST(golden_missing_frame_fails_and_is_listed) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(golden_missing_frame_fails_and_is_listed) {
+    REQUIRE_GL();
     char dir[512], g[600], o[600], a[4096], errp[600], rep[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_missing"));
     snprintf(g, sizeof g, "%s/golden", dir);
@@ -306,8 +306,8 @@ TEST(golden_missing_frame_fails_and_is_listed) {
     ENSURE(ww_test_file_contains(rep, "frame_00002.png</a>: none of"));
 }
 
-TEST(golden_scene_thresholds_apply_and_command_line_wins) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(golden_scene_thresholds_apply_and_command_line_wins) {
+    REQUIRE_GL();
     char dir[512], g[600], o[600], a[4096], sp[600], p[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_thresholds"));
     snprintf(g, sizeof g, "%s/golden", dir);
@@ -346,8 +346,8 @@ TEST(golden_scene_thresholds_apply_and_command_line_wins) {
     ENSURE_EQ_INT(render(a, NULL), 1);
 }
 
-TEST(golden_folder_missing_or_holding_the_output_is_bad_input) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(golden_folder_missing_or_holding_the_output_is_bad_input) {
+    REQUIRE_GL();
     char dir[512], g[600], o[600], a[4096], key[WW_GOLDEN_KEY_SIZE], errp[600], p[700];
     key_here(key, sizeof key);
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_bad_dirs"));
@@ -371,8 +371,8 @@ TEST(golden_folder_missing_or_holding_the_output_is_bad_input) {
     ENSURE_MSG(!file_exists(p), "%s made although it lies in the golden folder", p);
 }
 
-TEST(golden_report_escapes_what_it_shows) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(golden_report_escapes_what_it_shows) {
+    REQUIRE_GL();
     char dir[512], g[600], o[600], a[4096], sp[600], rep[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_escape"));
     /* a scene and a golden folder whose names are HTML */
@@ -395,12 +395,9 @@ TEST(golden_report_escapes_what_it_shows) {
 
 /* the report as a browser shows it, from a copy of the output folder with the goldens gone (a
  * CI artifact): the golden's green rectangle and the diff's red are on the page */
-TEST(golden_report_renders_in_headless_chromium) {
-    if (!ww_test_have_gl()) return;
-    if (ww_test_run("command -v chromium", NULL, NULL) != 0) {
-        fprintf(stderr, "(skipped: no chromium) ");
-        return;
-    }
+TEST_PROC(golden_report_renders_in_headless_chromium) {
+    REQUIRE_GL();
+    REQUIRE_TOOL("chromium");
     char dir[512], g[600], o[600], art[600], a[4096], p[700], shot[600], cmd[4096];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_chromium"));
     snprintf(g, sizeof g, "%s/golden", dir);
@@ -434,8 +431,9 @@ TEST(golden_report_renders_in_headless_chromium) {
 
 /* the project's own goldens (flat, blessed on the renderer named in golden/KEY) pass through
  * render --golden on that renderer, and golden/KEY is this renderer's key there */
-TEST(golden_project_goldens_pass_on_the_blessed_renderer) {
-    if (!ww_test_have_gl() || !ww_test_renderer_is_blessed()) return;
+TEST_PROC(golden_project_goldens_pass_on_the_blessed_renderer) {
+    REQUIRE_GL();
+    REQUIRE_BLESSED_RENDERER();
     char key[WW_GOLDEN_KEY_SIZE], a[1024];
     key_here(key, sizeof key);
     char *blessed = ww_test_read_file("golden/KEY", NULL);

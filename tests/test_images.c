@@ -17,8 +17,8 @@ static int render(const char *args) {
     return ww_test_run(c, NULL, NULL);
 }
 
-TEST(images_golden_minimal) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(images_golden_minimal) {
+    REQUIRE_GL();
     char dir[512], args[1024], actual[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_minimal"));
     snprintf(args, sizeof args, "scenes/minimal.yaml --frames 1 -o %s", dir);
@@ -27,8 +27,8 @@ TEST(images_golden_minimal) {
     ww_test_check_golden("golden/minimal/frame_00000.png", actual);
 }
 
-TEST(images_golden_demo_two_frames) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(images_golden_demo_two_frames) {
+    REQUIRE_GL();
     char dir[512], args[1024], actual[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_demo"));
     snprintf(args, sizeof args, "scenes/demo.yaml --size 256x144 --frames 1 -o %s", dir);
@@ -49,23 +49,10 @@ static void same_files(const char *pa, const char *pb) {
     free(b);
 }
 
-TEST(images_egl_and_osmesa_identical) {
-    if (!ww_test_have_gl()) return;
-    ww_backend *b = NULL;
-    ww_error err = {0};
-    int have_egl = ww_backend_open(WW_BACKEND_EGL, &b, &err) == WW_OK;
-    if (b) ww_backend_close(b);
-    b = NULL;
-    int have_osmesa = ww_backend_open(WW_BACKEND_OSMESA, &b, &err) == WW_OK;
-    if (b) ww_backend_close(b);
-    /* Mesa's llvmpipe (the renderer that blessed golden/) serves both; a GPU driver has no OSMesa */
-    if (!ww_test_renderer_is_blessed() && !(have_egl && have_osmesa)) {
-        fprintf(stderr, "(skipped: needs EGL and OSMesa; egl %d, osmesa %d) ", have_egl, have_osmesa);
-        return;
-    }
-    ENSURE_MSG(have_egl && have_osmesa, "both backends are expected on this machine (egl %d, osmesa %d)",
-               have_egl, have_osmesa);
-    if (!have_egl || !have_osmesa) return;
+TEST_PROC(images_egl_and_osmesa_identical) {
+    REQUIRE_GL();
+    REQUIRE_BACKEND(WW_BACKEND_EGL);
+    REQUIRE_BACKEND(WW_BACKEND_OSMESA);
     char dir[512], args[1024], pa[700], pb[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("backends"));
     snprintf(args, sizeof args, "scenes/demo.yaml --size 256x144 --frames 90:91 --backend egl -o %s/egl", dir);
@@ -77,8 +64,8 @@ TEST(images_egl_and_osmesa_identical) {
     same_files(pa, pb);
 }
 
-TEST(images_llvmpipe_thread_count_does_not_matter) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(images_llvmpipe_thread_count_does_not_matter) {
+    REQUIRE_GL();
     char dir[512], args[1024], pa[700], pb[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("threads"));
     snprintf(args, sizeof args, "scenes/minimal.yaml --frames 1 -o %s/t1", dir);
@@ -95,14 +82,11 @@ TEST(images_llvmpipe_thread_count_does_not_matter) {
 
 /* every feature golden (blessed through EGL) comes out of OSMesa byte for byte: the two
  * backends run one pipeline, so every pass must be identical on both */
-TEST(images_feature_goldens_on_osmesa) {
-    if (!ww_test_have_gl() || !ww_test_renderer_is_blessed()) return;
-    ww_backend *b = NULL;
-    ww_error err = {0};
-    int have_osmesa = ww_backend_open(WW_BACKEND_OSMESA, &b, &err) == WW_OK;
-    if (b) ww_backend_close(b);
-    ENSURE_MSG(have_osmesa, "the blessing Mesa serves OSMesa too: %s", err.msg);
-    DIR *d = have_osmesa ? opendir("scenes/features") : NULL;
+TEST_PROC(images_feature_goldens_on_osmesa) {
+    REQUIRE_GL();
+    REQUIRE_BLESSED_RENDERER();
+    REQUIRE_BACKEND(WW_BACKEND_OSMESA);
+    DIR *d = opendir("scenes/features");
     int n = 0;
     for (struct dirent *e; d && (e = readdir(d));) {
         size_t len = strlen(e->d_name);
@@ -117,5 +101,5 @@ TEST(images_feature_goldens_on_osmesa) {
         n++;
     }
     if (d) closedir(d);
-    ENSURE_MSG(!have_osmesa || n >= 16, "%d feature scenes", n);
+    ENSURE_MSG(n >= 16, "%d feature scenes", n);
 }

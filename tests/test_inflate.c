@@ -201,7 +201,7 @@ static unsigned char *gzip_to_zlib(const char *dir, const blob *b, int level, si
     return z;
 }
 
-TEST(inflate_round_trip_gzip_dynamic) {
+TEST_PROC(inflate_round_trip_gzip_dynamic) {
     const char *d = ww_test_tmpdir("inflate_gzip");
     ENSURE(d != NULL);
     if (!d) return;
@@ -343,7 +343,7 @@ TEST(inflate_bad_headers) {
 }
 
 /* a short stream of each kind, cut at every length: never WW_OK, never out of bounds */
-TEST(inflate_truncated) {
+TEST_PROC(inflate_truncated) {
     const char *d = ww_test_tmpdir("inflate_truncated");
     char dir[512];
     snprintf(dir, sizeof dir, "%s", d ? d : ".");
@@ -372,7 +372,7 @@ TEST(inflate_truncated) {
 
 /* seeded single-bit flips: WW_OK only with the right bytes (the Adler-32 still matched), else an
  * error; an output buffer of exactly the right size, so ASan sees any overrun */
-TEST(inflate_bit_flips) {
+TEST_PROC(inflate_bit_flips) {
     const char *d = ww_test_tmpdir("inflate_flips");
     char dir[512];
     snprintf(dir, sizeof dir, "%s", d ? d : ".");
@@ -535,7 +535,7 @@ static int write_source_png(const char *path, int ch) {
 
 /* ImageMagick's 16-bit PNGs (libpng, dynamic Huffman, adaptive filters); a blur makes the samples
  * use all 16 bits */
-TEST(png_read_16bit_imagemagick) {
+TEST_PROC(png_read_16bit_imagemagick) {
     const char *d = ww_test_tmpdir("png_read_16");
     ENSURE(d != NULL);
     if (!d) return;
@@ -569,7 +569,7 @@ TEST(png_read_16bit_imagemagick) {
 }
 
 /* palette, interlaced and 1-bit files are valid but left to stb_image: WW_E_RANGE */
-TEST(png_read_fallback_kinds) {
+TEST_PROC(png_read_fallback_kinds) {
     const char *d = ww_test_tmpdir("png_read_fallback");
     ENSURE(d != NULL);
     if (!d) return;

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/mathx.h"
+#include "gfx/backend.h"
 #include "io/writers.h"
 #include "test.h"
 
@@ -46,36 +47,36 @@ static int plan_lists(const char *name, const char *args, const char *pass) {
     return ww_test_file_contains(out, needle);
 }
 
-TEST(optics_golden_reflection) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_golden_reflection) {
+    REQUIRE_GL();
     check_feature_golden("reflection");
 }
 
-TEST(optics_golden_foam) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_golden_foam) {
+    REQUIRE_GL();
     check_feature_golden("foam");
 }
 
-TEST(optics_golden_underwater) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_golden_underwater) {
+    REQUIRE_GL();
     check_feature_golden("underwater");
 }
 
-TEST(optics_golden_alpha_blend) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_golden_alpha_blend) {
+    REQUIRE_GL();
     check_feature_golden("alpha_blend");
 }
 
-TEST(optics_golden_refraction) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_golden_refraction) {
+    REQUIRE_GL();
     check_feature_golden("refraction");
 }
 
 /* reflection off: the water below the horizon changes (the mirrored sky, distorted, instead of
  * the sky along each reflected normal), the sky above it not at all, and the pass leaves the
  * plan. The camera looks 2 deg down with a 60 deg fov: the horizon lies 47% down the image. */
-TEST(optics_toggle_reflection) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_toggle_reflection) {
+    REQUIRE_GL();
     char on[700], off[700];
     ENSURE_EQ_INT(render_feature("reflection", "on", NULL, on, sizeof on), 0);
     ENSURE_EQ_INT(render_feature("reflection", "off", "--set render.reflection=false", off,
@@ -93,8 +94,8 @@ TEST(optics_toggle_reflection) {
 
 /* refraction off (the seabed stays on): the water changes, the sky above the horizon (20% down
  * the image for a camera 20.6 deg down) does not, and the prepass leaves the plan */
-TEST(optics_toggle_refraction) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_toggle_refraction) {
+    REQUIRE_GL();
     ENSURE_EQ_INT(plan_lists("refraction", NULL, "prepass"), 1);
     ENSURE_EQ_INT(plan_lists("refraction", "--set render.refraction=false", "prepass"), 0);
     char on[700], off[700];
@@ -111,8 +112,8 @@ TEST(optics_toggle_refraction) {
 
 /* foam off: only water pixels change (the camera looks 8 deg down: the horizon is 38% down),
  * and enough of them that the folds and steep crests are foamed */
-TEST(optics_toggle_foam) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_toggle_foam) {
+    REQUIRE_GL();
     char on[700], off[700];
     ENSURE_EQ_INT(render_feature("foam", "on", NULL, on, sizeof on), 0);
     ENSURE_EQ_INT(render_feature("foam", "off", "--set water.look.foam=false", off, sizeof off),
@@ -181,13 +182,13 @@ done:
     ww_image_free(&b);
 }
 
-TEST(optics_fresnel_schlick_matches_formula) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_fresnel_schlick_matches_formula) {
+    REQUIRE_GL();
     check_fresnel(1, 0.02, 0.98, 5.0);
 }
 
-TEST(optics_fresnel_bias_scale_matches_formula) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_fresnel_bias_scale_matches_formula) {
+    REQUIRE_GL();
     check_fresnel(0, 0.1, 0.8, 2.5);
 }
 
@@ -200,8 +201,8 @@ static double luminance(const ww_image *im, double fx, double fy) {
 /* from below, looking up: the sky shows through a bright disc around the zenith (the image's
  * centre) and the corners, 55 deg and more off the vertical, lie outside the 48.6 deg window in
  * total internal reflection; the same scene from above the water is another picture */
-TEST(optics_underwater_snell_window) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_underwater_snell_window) {
+    REQUIRE_GL();
     char below[700], above[700];
     ENSURE_EQ_INT(render_feature("underwater", "below", NULL, below, sizeof below), 0);
     ENSURE_EQ_INT(render_feature("underwater", "above", "--set 'camera.path[0].position=[0,3,0]'",
@@ -226,8 +227,8 @@ TEST(optics_underwater_snell_window) {
 
 /* alpha blend off: the water turns opaque, so the seabed below stops showing: water pixels
  * change, the sky does not (the camera looks 12 deg down: the horizon is 31% down) */
-TEST(optics_toggle_alpha_blend) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_toggle_alpha_blend) {
+    REQUIRE_GL();
     char on[700], off[700];
     ENSURE_EQ_INT(render_feature("alpha_blend", "on", NULL, on, sizeof on), 0);
     ENSURE_EQ_INT(render_feature("alpha_blend", "off", "--set water.look.alpha_blend=false", off,
@@ -241,7 +242,7 @@ TEST(optics_toggle_alpha_blend) {
 }
 
 /* render.grid scales the water mesh's rings and segments; the plan says so */
-TEST(optics_grid_scales_mesh) {
+TEST_PROC(optics_grid_scales_mesh) {
     char out[600];
     snprintf(out, sizeof out, "%s/plan.txt", ww_test_tmpdir("optics_grid"));
     ENSURE_EQ_INT(ww_test_ww("plan scenes/features/reflection.yaml --set render.grid=2", out, NULL),
@@ -252,14 +253,15 @@ TEST(optics_grid_scales_mesh) {
 }
 
 /* EGL and OSMesa give the same bytes for the optics (the noise is integer hashes of positions) */
-TEST(optics_backends_identical) {
-    if (!ww_test_have_gl()) return;
+TEST_PROC(optics_backends_identical) {
+    REQUIRE_BACKEND(WW_BACKEND_EGL);
+    REQUIRE_BACKEND(WW_BACKEND_OSMESA);
     char egl[700], osm[700];
     if (render_feature("foam", "egl", "--backend egl --set render.reflection=true", egl,
                        sizeof egl) != 0 ||
         render_feature("foam", "osmesa", "--backend osmesa --set render.reflection=true", osm,
                        sizeof osm) != 0) {
-        fprintf(stderr, "(skipped: both backends are needed) ");
+        ENSURE_MSG(0, "a render on one of the backends failed");
         return;
     }
     const double all[4] = {0.0, 0.0, 1.0, 1.0};

@@ -34,13 +34,6 @@
 static const double HUD_MARKER_RECT[4] = {0.35, 0.7, 0.65, 1.0}; /* x0 y0 x1 y1, image fractions */
 #define HUD_MARKER_MIN_PX 60       /* the diamond, its glow and the arrow */
 
-#define REQUIRE_GL()                                                                            \
-    do {                                                                                        \
-        if (!ww_test_have_gl()) {                                                               \
-            fprintf(stderr, "(skipped: no GL backend here) ");                                  \
-            return;                                                                             \
-        }                                                                                       \
-    } while (0)
 
 /* render frame 0 of scene with args into tmp dir `name`; the PNG's path in out */
 static int render_to(const char *scene, const char *args, const char *name, char *out, size_t cap) {
@@ -170,13 +163,13 @@ TEST(post_bloom_kernel_sums_to_one) {
     ENSURE_NEAR(o[2], 3.2307692308, BLOOM_KERNEL_TOL);
 }
 
-TEST(post_bloom_golden) {
+TEST_PROC(post_bloom_golden) {
     REQUIRE_GL();
     golden("bloom");
 }
 
 /* bloom off: the pixels that change lie around what is bright (the sun and its glitter) */
-TEST(post_bloom_toggle) {
+TEST_PROC(post_bloom_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/bloom.yaml";
     char on[1024], off[1024];
@@ -207,14 +200,14 @@ done:
     ww_image_free(&b.im);
 }
 
-TEST(post_shafts_golden) {
+TEST_PROC(post_shafts_golden) {
     REQUIRE_GL();
     golden("shafts");
 }
 
 /* shafts off under water: a large share of the frame loses light, and no pixel gains any
  * (the shafts only add) */
-TEST(post_shafts_toggle) {
+TEST_PROC(post_shafts_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/shafts.yaml";
     char on[1024], off[1024];
@@ -239,13 +232,13 @@ done:
     ww_image_free(&b.im);
 }
 
-TEST(post_fxaa_golden) {
+TEST_PROC(post_fxaa_golden) {
     REQUIRE_GL();
     golden("fxaa");
 }
 
 /* FXAA changes pixels on or next to luma edges of its input, and only those */
-TEST(post_fxaa_toggle) {
+TEST_PROC(post_fxaa_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/fxaa.yaml";
     char on[1024], off[1024];
@@ -273,14 +266,14 @@ done:
     ww_image_free(&b.im);
 }
 
-TEST(post_hud_golden) {
+TEST_PROC(post_hud_golden) {
     REQUIRE_GL();
     golden("hud");
 }
 
 /* the HUD changes only its text box (top left) and the chest marker; the scene's chest lies
  * under the camera, so the marker sits at the bottom edge, near the middle */
-TEST(post_hud_toggle) {
+TEST_PROC(post_hud_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/hud.yaml";
     char on[1024], off[1024];
@@ -313,7 +306,7 @@ done:
 
 /* MSAA 4 against none: only pixels on or next to edges change (the resolve averages samples
  * only where a triangle's edge crosses the pixel); `plan` shows the samples and their bytes */
-TEST(post_msaa_toggle) {
+TEST_PROC(post_msaa_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/fxaa.yaml";
     char on[1024], off[1024];

@@ -481,7 +481,7 @@ TEST(scene_bad_files_fail_with_code_and_place) {
     }
 }
 
-TEST(scene_only_yaml_tree_includes_yaml_h) {
+TEST_PROC(scene_only_yaml_tree_includes_yaml_h) {
     const char *dir = ww_test_tmpdir("scene_yaml_h");
     ENSURE(dir != NULL);
     if (!dir) return;

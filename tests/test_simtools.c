@@ -81,7 +81,7 @@ TEST(simtools_script_merge_order) {
 }
 
 /* the scene with the script's events written into it steps to the same hash as scene + script */
-TEST(simtools_script_same_as_inline) {
+TEST_PROC(simtools_script_same_as_inline) {
     const char *dir = ww_test_tmpdir("simtools_script_same_as_inline");
     char scene[512], script[512], inline_scene[512], out1[512], out2[512];
     snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
@@ -186,7 +186,7 @@ TEST(simtools_script_errors) {
     ENSURE(strcmp(err.file, script) == 0 && err.line == 2);
 }
 
-TEST(simtools_script_cli) {
+TEST_PROC(simtools_script_cli) {
     const char *dir = ww_test_tmpdir("simtools_script_cli");
     char scene[512], script[512], errf[512], args[2048];
     snprintf(scene, sizeof scene, "%s/scene.yaml", dir);
@@ -283,7 +283,7 @@ TEST(simtools_events_jsonl) {
 }
 
 /* simulate --events on a scene with no object system: an empty file; '-' is stdout */
-TEST(simtools_events_cli) {
+TEST_PROC(simtools_events_cli) {
     const char *dir = ww_test_tmpdir("simtools_events_cli");
     char path[512], out[512], args[2048];
     snprintf(path, sizeof path, "%s/events.jsonl", dir);
@@ -306,7 +306,7 @@ TEST(simtools_events_cli) {
 
 /* the real systems of scenes/soak.yaml: every line parses and names a known kind; its stones
  * skip and sink, its boat starts and its cubes are pressed */
-TEST(simtools_events_soak_scene) {
+TEST_PROC(simtools_events_soak_scene) {
     const char *dir = ww_test_tmpdir("simtools_events_soak_scene");
     char path[512], args[2048];
     snprintf(path, sizeof path, "%s/events.jsonl", dir);
@@ -373,7 +373,7 @@ TEST(simtools_fields_by_name) {
 /* ---- soak ------------------------------------------------------------------------------------ */
 
 /* the first minute of `make soak`: every system, 7200 steps at 120 Hz, no NaN or Inf */
-TEST(simtools_soak_short) {
+TEST_PROC(simtools_soak_short) {
     const char *dir = ww_test_tmpdir("simtools_soak_short");
     char errf[512];
     snprintf(errf, sizeof errf, "%s/stderr.txt", dir);
@@ -387,7 +387,7 @@ TEST(simtools_soak_short) {
 
 /* ---- bench sim ------------------------------------------------------------------------------ */
 
-TEST(simtools_bench_sim_tiny) {
+TEST_PROC(simtools_bench_sim_tiny) {
     const char *dir = ww_test_tmpdir("simtools_bench_sim_tiny");
     char out[512], png[512], args[2048];
     snprintf(out, sizeof out, "%s/stdout.txt", dir);

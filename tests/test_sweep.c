@@ -96,7 +96,7 @@ static ww_sweep *make_sweep(const char *const *vary, int nvary, long long random
     return s;
 }
 
-TEST(sweep_grid_order_and_values) {
+TEST_PROC(sweep_grid_order_and_values) {
     /* the first axis slowest; A:B:N has N values with both ends; lists keep their words */
     const char *vary[] = {"water.waves.list[0].amplitude=0.1:0.5:5", "water.waves.model=gerstner,flat"};
     ww_sweep *s = make_sweep(vary, 2, 0, 0);
@@ -161,7 +161,7 @@ TEST(sweep_grid_order_and_values) {
     free(csv);
 }
 
-TEST(sweep_random_reproducible_for_a_seed) {
+TEST_PROC(sweep_random_reproducible_for_a_seed) {
     const char *vary[] = {"water.waves.list[0].amplitude=0:1", "water.waves.model=gerstner,flat,sines"};
     ww_sweep *a = make_sweep(vary, 2, 2000, 7), *b = make_sweep(vary, 2, 2000, 7),
              *c = make_sweep(vary, 2, 2000, 8);
@@ -215,7 +215,7 @@ TEST(sweep_random_reproducible_for_a_seed) {
     free(t);
 }
 
-TEST(sweep_rows_are_the_points_wave_stats) {
+TEST_PROC(sweep_rows_are_the_points_wave_stats) {
     /* every metric cell is ww_wave_stats_compute of the scene loaded with the point's --set,
      * to the last bit (the text is the shortest that reads back as the same double); and hs
      * grows with the amplitude it is swept over */
@@ -272,7 +272,7 @@ TEST(sweep_rows_are_the_points_wave_stats) {
     free(csv);
 }
 
-TEST(sweep_jobs_output_byte_identical) {
+TEST_PROC(sweep_jobs_output_byte_identical) {
     char dir[512], a[600], b[600], args[1024], p[700], q[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("sweep_jobs"));
     snprintf(a, sizeof a, "%s/one", dir);
@@ -301,7 +301,7 @@ TEST(sweep_jobs_output_byte_identical) {
     ENSURE(ww_test_files_equal(p, q));
 }
 
-TEST(sweep_emit_jobs_lines_reproduce_rows) {
+TEST_PROC(sweep_emit_jobs_lines_reproduce_rows) {
     char dir[512], outd[600], jobs[600], args[2048], path[700], one[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("sweep_emit"));
     snprintf(outd, sizeof outd, "%s/full", dir);
@@ -351,7 +351,7 @@ TEST(sweep_emit_jobs_lines_reproduce_rows) {
     free(full);
 }
 
-TEST(sweep_bad_vary_exit_2_before_any_work) {
+TEST_PROC(sweep_bad_vary_exit_2_before_any_work) {
     char dir[512], outd[600], errf[600], args[1024];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("sweep_bad"));
     snprintf(outd, sizeof outd, "%s/out", dir);
@@ -394,7 +394,7 @@ TEST(sweep_bad_vary_exit_2_before_any_work) {
     ENSURE(stat(outd, &sb) != 0); /* nothing written, not even the folder */
 }
 
-TEST(sweep_invalid_point_is_an_error_row) {
+TEST_PROC(sweep_invalid_point_is_an_error_row) {
     char dir[512], outd[600], path[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("sweep_error_row"));
     snprintf(outd, sizeof outd, "%s/out", dir);
@@ -474,7 +474,7 @@ TEST(sweep_contact_layout_and_text) {
     ww_image_free(&im);
 }
 
-TEST(sweep_thumbs_contact_sheet) {
+TEST_PROC(sweep_thumbs_contact_sheet) {
     /* without GL: a clear failure (exit 3) before any work */
     char dir[512], outd[700], errf[700], args[1400], path[800];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("sweep_thumbs"));
@@ -488,7 +488,7 @@ TEST(sweep_thumbs_contact_sheet) {
     free(e);
     struct stat sb;
     ENSURE(stat(outd, &sb) != 0);
-    if (!ww_test_have_gl()) return;
+    REQUIRE_GL();
 
     /* three heights of sea and a point that does not load: 2 x 2 cells of 160x90 */
     snprintf(outd, sizeof outd, "%s/out", dir);

@@ -110,7 +110,7 @@ static int read_csv(const char *path, int ncols, const char *header, csv_row *ro
     return n;
 }
 
-TEST(tools_probe_rows_match_water_height) {
+TEST_PROC(tools_probe_rows_match_water_height) {
     char dir[512], scene[600], out[600], errf[600], args[2048];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_probe"));
     snprintf(scene, sizeof scene, "%s/sea.yaml", dir);
@@ -163,7 +163,7 @@ TEST(tools_probe_rows_match_water_height) {
     ENSURE_NEAR(many[5].v[0], 1.1, CSV_TIME_TOL);
 }
 
-TEST(tools_probe_ripple_arrives_after_its_event) {
+TEST_PROC(tools_probe_ripple_arrives_after_its_event) {
     char dir[512], scene[600], out[600], errf[600], args[2048];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_probe_ripple"));
     snprintf(scene, sizeof scene, "%s/pond.yaml", dir);
@@ -207,7 +207,7 @@ TEST(tools_probe_ripple_arrives_after_its_event) {
     ENSURE_NEAR(far, 0.0, FLAT_TOL);
 }
 
-TEST(tools_probe_and_waves_usage_errors_exit_2) {
+TEST_PROC(tools_probe_and_waves_usage_errors_exit_2) {
     char dir[512], scene[600], errf[600], args[2048];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_usage"));
     snprintf(scene, sizeof scene, "%s/sea.yaml", dir);
@@ -257,7 +257,7 @@ TEST(tools_probe_and_waves_usage_errors_exit_2) {
 
 /* ---- waves --stats ------------------------------------------------------------------------------ */
 
-TEST(tools_waves_stats_json_of_sines) {
+TEST_PROC(tools_waves_stats_json_of_sines) {
     char dir[512], scene[600], out[600], args[2048];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_waves_stats"));
     snprintf(scene, sizeof scene, "%s/sines.yaml", dir);
@@ -335,7 +335,7 @@ TEST(tools_plot_writes_a_png_with_its_line) {
 
 /* ---- bench waves -------------------------------------------------------------------------------- */
 
-TEST(tools_bench_waves_tiny_prints_its_tables_and_figure) {
+TEST_PROC(tools_bench_waves_tiny_prints_its_tables_and_figure) {
     char dir[512], out[600], errf[600], fig[600], args[2048];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_bench_waves"));
     snprintf(out, sizeof out, "%s/out.txt", dir);

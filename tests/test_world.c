@@ -27,7 +27,7 @@ static char *simulate(const char *args, const char *tag) {
     return ww_test_read_file(out, NULL);
 }
 
-TEST(world_lake_hash_pinned_repeatable_and_sliced) {
+TEST_PROC(world_lake_hash_pinned_repeatable_and_sliced) {
     char *a = simulate("scenes/lake.yaml --hash", "a");
     char *b = simulate("scenes/lake.yaml --hash", "b");
     /* frames 300..599 after simulating 0..299 without output: the same final state */
@@ -78,7 +78,7 @@ TEST(world_lake_script_does_what_it_says) {
     ENSURE(n[WW_SE_CHEST_SPAWN] >= 1 && n[WW_SE_CHEST_COLLECT] == 1);
 }
 
-TEST(world_reef_script_does_what_it_says) {
+TEST_PROC(world_reef_script_does_what_it_says) {
     int n[WW_SE_COUNT];
     count_kinds("scenes/reef.yaml", n);
     ENSURE(n[WW_SE_CAMERA_BLOCKED] == 1);

@@ -1,13 +1,14 @@
 /* util.c - helpers shared by the test files: run the binary, temporary folders, read files. */
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "test.h"
 
 int ww_test_run(const char *cmdline, const char *out_path, const char *err_path) {
+    ww_test_needs_proc("runs a process");
     char buf[4096];
     snprintf(buf, sizeof buf, "%s >%s 2>%s </dev/null", cmdline, out_path ? out_path : "/dev/null",
              err_path ? err_path : "/dev/null");
@@ -19,20 +20,6 @@ int ww_test_run(const char *cmdline, const char *out_path, const char *err_path)
 const char *ww_test_bin(void) {
     const char *b = getenv("WW_BIN");
     return b && b[0] ? b : "./waterworld";
-}
-
-const char *ww_test_tmpdir(const char *name) {
-    /* one static buffer per call site is enough: callers copy the path they keep */
-    static char path[512];
-    const char *root = getenv("WW_ASAN") ? "build/test-tmp-asan" : "build/test-tmp";
-    mkdir("build", 0777);
-    mkdir(root, 0777);
-    snprintf(path, sizeof path, "%s/%s", root, name);
-    char cmd[600];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", path);
-    if (system(cmd) != 0) return NULL;
-    if (mkdir(path, 0777) != 0 && errno != EEXIST) return NULL;
-    return path;
 }
 
 char *ww_test_read_file(const char *path, size_t *len) {
@@ -55,6 +42,19 @@ char *ww_test_read_file(const char *path, size_t *len) {
     buf[n] = 0;
     if (len) *len = n;
     return buf;
+}
+
+int ww_test_have_tool(const char *cmd) {
+    const char *path = getenv("PATH");
+    if (!path || strchr(cmd, '/')) return access(cmd, X_OK) == 0;
+    char dir[4096];
+    while (*path) {
+        size_t n = strcspn(path, ":");
+        snprintf(dir, sizeof dir, "%.*s/%s", (int)n, n ? path : ".", cmd);
+        if (access(dir, X_OK) == 0) return 1;
+        path += n + (path[n] == ':');
+    }
+    return 0;
 }
 
 int ww_test_ww(const char *args, const char *out_path, const char *err_path) {
