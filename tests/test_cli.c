@@ -239,6 +239,44 @@ TEST_PROC(cli_render_exr_reads_back_linear_hdr) {
     ww_image_free(&ldr);
 }
 
+/* the whole render job without GL: the null backend feeds every writer black frames, so the
+ * frame files, their names and the streams' sizes are checked on any machine */
+TEST_PROC(cli_render_null_backend_writes_every_format) {
+    char dir[512], args[1400], p[900];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_null"));
+    const char *fmt[] = {"png", "exr"};
+    for (int k = 0; k < 2; k++) {
+        snprintf(args, sizeof args, "render scenes/demo.yaml --backend null --size 64x36 --frames 3 "
+                 "--format %s -o %s/%s --quiet", fmt[k], dir, fmt[k]);
+        ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
+        snprintf(p, sizeof p, "%s/%s", dir, fmt[k]);
+        ENSURE_EQ_INT(count_files(p), 3);
+        snprintf(p, sizeof p, "%s/%s/frame_00002.%s", dir, fmt[k], fmt[k]);
+        struct stat sb;
+        ENSURE_MSG(stat(p, &sb) == 0 && sb.st_size > 0, "%s", p);
+    }
+    /* raw: 64 x 36 x 3 bytes a frame; y4m: its header, then a FRAME line and 3 planes a frame */
+    snprintf(args, sizeof args, "render scenes/demo.yaml --backend null --size 64x36 --frames 3 "
+             "--format raw -o %s/v.rgb --quiet", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
+    snprintf(p, sizeof p, "%s/v.rgb", dir);
+    size_t n = 0;
+    char *raw = ww_test_read_file(p, &n);
+    ENSURE(raw && n == 64u * 36u * 3u * 3u);
+    free(raw);
+    snprintf(args, sizeof args, "render scenes/demo.yaml --backend null --size 64x36 --frames 3 "
+             "--format y4m -o %s/v.y4m --quiet", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
+    snprintf(p, sizeof p, "%s/v.y4m", dir);
+    char *y4m = ww_test_read_file(p, &n);
+    ENSURE(y4m && strncmp(y4m, "YUV4MPEG2 W64 H36 F30:1", 23) == 0);
+    size_t header = y4m ? (size_t)(strchr(y4m, '\n') - y4m) + 1 : 0;
+    ENSURE_EQ_INT(n, header + 3 * (6 + 64 * 36 * 3));
+    free(y4m);
+    /* a backend name that does not exist is a usage error */
+    ENSURE_EQ_INT(ww_test_ww("render scenes/demo.yaml --backend nul --frames 1 --format none", NULL, NULL), 2);
+}
+
 /* peak RSS of a child, from wait4 (the shell execs the binary, so the child is waterworld).
  * Mesa's shader cache is off for it: with the cache on, the first run on a fresh machine compiles
  * every shader and peaks ~15 MB above the runs that find them cached, whatever the frame count */

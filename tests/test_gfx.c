@@ -163,6 +163,39 @@ static void check_backend(ww_backend_kind kind, const char *describe_prefix) {
     ww_backend_close(b);
 }
 
+/* the null backend: no GL, but the renderer is built from the plan, runs its passes and reads back
+ * black frames of the right size, so the job's outputs can be tested anywhere */
+TEST(gfx_null_backend_renders_black_frames_without_gl) {
+    ww_backend *b = NULL;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_backend_open(WW_BACKEND_NULL, &b, &err), WW_OK);
+    if (!b) return;
+    ENSURE(ww_backend_get_kind(b) == WW_BACKEND_NULL);
+    ENSURE(strcmp(ww_backend_describe(b), "null") == 0);
+    ENSURE(strcmp(ww_backend_renderer(b), "null") == 0);
+    ENSURE(strncmp(ww_backend_version(b), "3.3", 3) == 0);
+    world *w = world_new(GFX_W, GFX_H);
+    ww_renderer *r = NULL;
+    ww_image ldr = {0}, hdr = {0};
+    ENSURE_EQ_INT(ww_image_alloc(&ldr, GFX_W, GFX_H, 3, WW_PIX_U8), 0);
+    ENSURE_EQ_INT(ww_image_alloc(&hdr, GFX_W, GFX_H, 4, WW_PIX_F32), 0);
+    if (!ldr.u8 || !hdr.f32) return;
+    memset(ldr.u8, 0x7f, (size_t)GFX_W * GFX_H * 3); /* so that the read is seen to write */
+    ENSURE_EQ_INT(ww_renderer_new(ww_backend_gl(b), w->sc, &w->plan, &r, &err), WW_OK);
+    for (int f = 0; r && f < 2; f++) ENSURE_EQ_INT(ww_render_frame(r, w->sc, &w->st, &err), WW_OK);
+    if (r) ENSURE_EQ_INT(ww_renderer_read_ldr(r, &ldr, &err), WW_OK);
+    if (r) ENSURE_EQ_INT(ww_renderer_read_hdr(r, &hdr, &err), WW_OK);
+    size_t nonzero = 0;
+    for (size_t i = 0; i < (size_t)GFX_W * GFX_H * 3; i++)
+        nonzero += ldr.u8[i] != 0;
+    ENSURE_EQ_INT(nonzero, 0);
+    ww_image_free(&ldr);
+    ww_image_free(&hdr);
+    ww_renderer_free(r);
+    world_free(w);
+    ww_backend_close(b);
+}
+
 TEST_PROC(gfx_backend_egl_opens) {
     REQUIRE_BACKEND(WW_BACKEND_EGL);
     check_backend(WW_BACKEND_EGL, "egl/");

@@ -26,7 +26,8 @@ static const char usage[] =
     "  --frames N|A:B       the first N frames, or frames A..B-1 (the prefix is simulated,\n"
     "                       not rendered, so a slice is byte-identical to a full run)\n"
     "  --size WxH           render size (default: the scene's render.size)\n"
-    "  --backend B          auto (EGL, then OSMesa) | egl | osmesa\n"
+    "  --backend B          auto (EGL, then OSMesa) | egl | osmesa | null (no GL: black frames,\n"
+    "                       for testing the job and its outputs)\n"
     "  --set KEY=VALUE      override a scene value, e.g. --set water.waves.list[0].amplitude=0.4\n"
     "  --script FILE        a YAML file with a script: list, merged with the scene's events\n"
     "  --threads N          encoder threads beside the render thread (default: cores - 1, >= 1)\n"
@@ -124,7 +125,7 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "--format wants png, exr, y4m, raw or none, got '%s'", format);
     if (backend && (int)(jo.backend = (ww_backend_kind)ww_backend_kind_parse(backend)) < 0)
-        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--backend wants auto, egl or osmesa, got '%s'", backend);
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--backend wants auto, egl, osmesa or null, got '%s'", backend);
     if (threads && (r = parse_threads(threads, &jo.threads, err))) return r;
     if (compression) {
         static const char *const names[] = {"zip", "none", "piz"};

@@ -38,7 +38,7 @@ static const char usage[] =
     "                       DIR/contact_sheet.png, labelled with the values (needs -o and GL)\n"
     "  --thumb-size WxH     thumbnail size (default 160x90)\n"
     "  --thumb-frame F      the frame rendered (default 0)\n"
-    "  --backend B          auto | egl | osmesa, for thumbnails\n"
+    "  --backend B          auto | egl | osmesa | null, for thumbnails\n"
     "  --quiet              no summary on stderr\n"
     "\n"
     "A point whose values do not load (out of range, fold: error) is a row with status error;\n"
@@ -148,7 +148,7 @@ ww_result ww_cmd_sweep(int argc, char **argv, ww_error *err) {
     if ((size || frame) && !o.thumbs)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--thumb-size and --thumb-frame go with --thumbs");
     if (backend && (int)(o.backend = (ww_backend_kind)ww_backend_kind_parse(backend)) < 0)
-        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--backend wants auto, egl or osmesa, got '%s'", backend);
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--backend wants auto, egl, osmesa or null, got '%s'", backend);
     if (emit && point)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--emit-jobs prints the --point commands; give one or the other");
 

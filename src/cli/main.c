@@ -12,7 +12,7 @@ static const char usage[] =
     "usage: waterworld COMMAND [options]   (waterworld COMMAND --help for each)\n"
     "\n"
     "  render   SCENE.yaml [-o DIR|FILE|-] [--format png|exr|y4m|raw|none] [--frames N|A:B]\n"
-    "                      [--size WxH] [--backend auto|egl|osmesa] [--script FILE] [--set KEY=VALUE]...\n"
+    "                      [--size WxH] [--backend auto|egl|osmesa|null] [--script FILE] [--set KEY=VALUE]...\n"
     "                      [--threads N] [--resume] [--stats FILE] [--audio FILE.wav] [--golden DIR]\n"
     "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--events FILE.jsonl] [--hash]\n"
     "                      [--stats] [--script FILE] [--set KEY=VALUE]...\n"

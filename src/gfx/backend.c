@@ -46,6 +46,7 @@ int ww_backend_kind_parse(const char *s) {
     if (strcmp(s, "auto") == 0) return WW_BACKEND_AUTO;
     if (strcmp(s, "egl") == 0) return WW_BACKEND_EGL;
     if (strcmp(s, "osmesa") == 0) return WW_BACKEND_OSMESA;
+    if (strcmp(s, "null") == 0) return WW_BACKEND_NULL;
     return -1;
 }
 
@@ -76,8 +77,9 @@ static ww_result check_context(ww_backend *b, ww_error *err) {
 static ww_result open_one(ww_backend_kind kind, ww_backend *b, ww_error *err) {
     memset(b, 0, sizeof *b);
     b->kind = kind;
-    ww_result rc = kind == WW_BACKEND_EGL ? ww_backend_egl_open(b, err)
-                                          : ww_backend_osmesa_open(b, err);
+    ww_result rc = kind == WW_BACKEND_EGL      ? ww_backend_egl_open(b, err)
+                   : kind == WW_BACKEND_OSMESA ? ww_backend_osmesa_open(b, err)
+                                               : ww_backend_null_open(b, err);
     if (rc != WW_OK) return rc;
     rc = check_context(b, err);
     if (rc != WW_OK) {

@@ -22,5 +22,6 @@ struct ww_backend {
 /* each returns WW_E_BACKEND with a message naming the failed call and what to install or set */
 ww_result ww_backend_egl_open(ww_backend *b, ww_error *err);
 ww_result ww_backend_osmesa_open(ww_backend *b, ww_error *err);
+ww_result ww_backend_null_open(ww_backend *b, ww_error *err);
 
 #endif

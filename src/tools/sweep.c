@@ -915,7 +915,7 @@ static void sh_word(FILE *f, const char *w, int first) {
 
 ww_result ww_sweep_emit_jobs(const ww_sweep *s, FILE *to, ww_error *err) {
     const ww_sweep_opts *o = &s->o;
-    static const char *const backend_name[] = {"auto", "egl", "osmesa"};
+    static const char *const backend_name[] = {"auto", "egl", "osmesa", "null"};
     char num[64];
     for (long long i = 0; i < s->npoints; i++) {
         sh_word(to, o->exe ? o->exe : "waterworld", 1);
