@@ -88,7 +88,7 @@ asan:
 	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
 	    build/asan/waterworld build/asan/ww-tests
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ASAN_OPTIONS=detect_leaks=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1 WW_BIN=build/asan/waterworld \
-	    WW_ASAN=1 build/asan/ww-tests -j $(JOBS) $(T)
+	    WW_ASAN=1 build/asan/ww-tests -j $(JOBS) --tier unit,proc $(T)
 
 demo: deps
 	@$(MAKE) --no-print-directory $(BIN)

@@ -1,7 +1,9 @@
 /* main.c - the test runner: registration, tiers, one child process and one temporary folder per
  * test, several at once, skips with their reasons, the allocation counter, the closing line.
  *
- *   ww-tests [-j N] [--tier unit|proc|test|long|all] [--shuffle SEED] [--list] [FILTER...]
+ *   ww-tests [-j N] [--tier T[,T...]] [--shuffle SEED] [--list] [FILTER...]
+ *
+ * T: unit, proc, image, long; test (= unit,proc,image, the default) or all.
  *
  * A test runs in a forked child with its output in a log of its own, so a crash, a leak report or
  * a hang is that test's failure alone and parallel tests never interleave their lines. The parent
@@ -24,7 +26,7 @@
 #include "test.h"
 
 #define MAX_TESTS 1024
-#define DEFAULT_TIMEOUT_S 600.0
+#define DEFAULT_TIMEOUT_S 300.0 /* a hung test fails after this (WW_TEST_TIMEOUT, seconds) */
 
 enum { ST_PASS = 0, ST_FAIL = 1, ST_SKIP = 3 };
 
@@ -60,7 +62,8 @@ typedef struct {
 /* registration runs before main (constructors), so the registry is file-scope by necessity */
 static runner R = {.tol_scale = 1.0};
 
-static const char *tier_name[] = {"unit", "proc", "long"};
+#define NTIERS 4
+static const char *tier_name[NTIERS] = {"unit", "proc", "image", "long"};
 
 void ww_test_register(const char *name, ww_test_fn fn, int tier) {
     if (R.ntests < MAX_TESTS) R.tests[R.ntests++] = (test_entry){name, fn, tier, -1.0, 0, 0, 0, 0, ""};
@@ -262,7 +265,8 @@ typedef struct {
     unsigned shuffle;   /* 0: longest first */
     int list;
     double timeout;
-    const char *times;  /* durations of the last run */
+    char home[256];     /* the folder of the test binary */
+    char times[300];    /* durations of the last run, in home */
     char **filters;
     int nfilters;
 } options;
@@ -302,11 +306,13 @@ static void save_times(const char *path) {
 
 static unsigned lcg(unsigned *s) { return *s = *s * 1103515245u + 12345u, *s >> 8; }
 
-/* unit tests first (they are quick and say most about a change), then the rest, each tier
- * longest first (unknown durations count as long); --shuffle proves the order does not matter */
+/* unit tests first (they are quick and say most about a change), then the rest longest first
+ * (unknown durations count as long), which keeps the cores busy to the end; --shuffle proves
+ * the order does not matter */
 static int by_tier_then_longest(const void *a, const void *b) {
     const test_entry *x = *(test_entry *const *)a, *y = *(test_entry *const *)b;
-    if (x->tier != y->tier) return x->tier - y->tier;
+    int ux = x->tier != WW_TIER_UNIT, uy = y->tier != WW_TIER_UNIT;
+    if (ux != uy) return ux - uy;
     double ex = x->expected < 0 ? 1e9 : x->expected, ey = y->expected < 0 ? 1e9 : y->expected;
     if (ex != ey) return ex > ey ? -1 : 1;
     return strcmp(x->name, y->name);
@@ -424,13 +430,33 @@ static int run_all(const options *o, test_entry **order, int n, const char *root
     return 0;
 }
 
+/* "unit,proc" -> a bit per tier; 0 for a bad name */
+static int parse_tiers(const char *s) {
+    int bits = 0;
+    while (*s) {
+        size_t n = strcspn(s, ",");
+        int b = 0;
+        for (int k = 0; k < NTIERS; k++)
+            if (strlen(tier_name[k]) == n && strncmp(s, tier_name[k], n) == 0) b = 1 << k;
+        if (n == 4 && strncmp(s, "test", 4) == 0) b = 1 << WW_TIER_UNIT | 1 << WW_TIER_PROC | 1 << WW_TIER_IMAGE;
+        if (n == 3 && strncmp(s, "all", 3) == 0) b = (1 << NTIERS) - 1;
+        if (!b) return 0;
+        bits |= b;
+        s += n + (s[n] == ',');
+    }
+    return bits;
+}
+
 static int parse_options(int argc, char **argv, options *o) {
     const char *j = getenv("WW_TEST_JOBS");
     long ncpu = sysconf(_SC_NPROCESSORS_ONLN);
     o->jobs = j ? atoi(j) : ncpu > 0 ? (int)ncpu : 1;
-    o->tiers = 1 << WW_TIER_UNIT | 1 << WW_TIER_PROC;
+    o->tiers = parse_tiers("test");
     o->timeout = getenv("WW_TEST_TIMEOUT") ? atof(getenv("WW_TEST_TIMEOUT")) : DEFAULT_TIMEOUT_S;
-    o->times = getenv("WW_ASAN") ? "build/test-times-asan.txt" : "build/test-times.txt";
+    /* beside the binary: build/, build/asan/ and build/cov/ keep their own */
+    const char *slash = strrchr(argv[0], '/');
+    snprintf(o->home, sizeof o->home, "%.*s", slash ? (int)(slash - argv[0]) : 1, slash ? argv[0] : ".");
+    snprintf(o->times, sizeof o->times, "%s/test-times.txt", o->home);
     o->filters = calloc((size_t)argc, sizeof *o->filters);
     for (int a = 1; a < argc; a++) {
         const char *s = argv[a];
@@ -439,13 +465,7 @@ static int parse_options(int argc, char **argv, options *o) {
         else if (strcmp(s, "--list") == 0) o->list = 1;
         else if (strcmp(s, "--shuffle") == 0 && a + 1 < argc) o->shuffle = (unsigned)strtoul(argv[++a], NULL, 10) | 1u;
         else if (strcmp(s, "--tier") == 0 && a + 1 < argc) {
-            const char *t = argv[++a];
-            if (strcmp(t, "unit") == 0) o->tiers = 1 << WW_TIER_UNIT;
-            else if (strcmp(t, "proc") == 0) o->tiers = 1 << WW_TIER_PROC;
-            else if (strcmp(t, "test") == 0) o->tiers = 1 << WW_TIER_UNIT | 1 << WW_TIER_PROC;
-            else if (strcmp(t, "long") == 0) o->tiers = 1 << WW_TIER_LONG;
-            else if (strcmp(t, "all") == 0) o->tiers = 7;
-            else return -1;
+            if (!(o->tiers = parse_tiers(argv[++a]))) return -1;
         } else if (s[0] == '-') return -1;
         else o->filters[o->nfilters++] = argv[a];
     }
@@ -455,8 +475,8 @@ static int parse_options(int argc, char **argv, options *o) {
 int main(int argc, char **argv) {
     options o = {0};
     if (parse_options(argc, argv, &o) != 0) {
-        fprintf(stderr, "usage: ww-tests [-j N] [--tier unit|proc|test|long|all] [--shuffle SEED] "
-                        "[--list] [FILTER...]\n");
+        fprintf(stderr, "usage: ww-tests [-j N] [--tier T[,T...]] [--shuffle SEED] [--list] "
+                        "[FILTER...]\n  T: unit, proc, image, long; test (unit,proc,image) or all\n");
         return 2;
     }
     const char *scale = getenv("WW_TOL_SCALE");
@@ -487,9 +507,8 @@ int main(int argc, char **argv) {
     }
 
     /* every run in a fresh folder of its own, so two runs at once never share a file */
-    const char *base = getenv("WW_ASAN") ? "build/test-tmp-asan" : "build/test-tmp";
-    char root[512];
-    mkdir("build", 0777);
+    char base[300], root[512];
+    snprintf(base, sizeof base, "%s/test-tmp", o.home);
     mkdir(base, 0777);
     snprintf(root, sizeof root, "%s/run-XXXXXX", base);
     if (!mkdtemp(root)) {
@@ -509,8 +528,9 @@ int main(int argc, char **argv) {
     double wall = now_s() - t0;
 
     int passed = 0, failed = 0, skipped = 0;
-    double tier_s[3] = {0}, tier_wall[3][2] = {{1e300, 0}, {1e300, 0}, {1e300, 0}};
-    int tier_n[3] = {0};
+    double tier_s[NTIERS] = {0}, tier_wall[NTIERS][2];
+    int tier_n[NTIERS] = {0};
+    for (int k = 0; k < NTIERS; k++) tier_wall[k][0] = 1e300, tier_wall[k][1] = 0;
     for (int i = 0; i < n; i++) {
         const test_entry *t = order[i];
         if (!t->pid) continue;
@@ -525,7 +545,7 @@ int main(int argc, char **argv) {
     if (!stopped) save_times(o.times);
 
     fprintf(stderr, "\n");
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < NTIERS; k++)
         if (tier_n[k])
             fprintf(stderr, "tier %-4s %4d tests, %7.1f s of test time, %6.1f s wall\n", tier_name[k],
                     tier_n[k], tier_s[k], tier_wall[k][1] - tier_wall[k][0]);

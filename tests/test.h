@@ -8,6 +8,10 @@
  *   TEST       unit: in process, no GL context, no child process (the runner fails a unit test
  *              that asks for either, so the tier stays honest);
  *   TEST_PROC  render and process tests: GL, or the binary under test run as a process;
+ *   TEST_IMAGE render tests whose subject is the picture (goldens, feature toggles, backends
+ *              and thread counts giving the same pixels): what they run on the CPU is what the
+ *              process tests run too, so the sanitizer build leaves them out (`make asan`;
+ *              scripts/sanitizer-coverage.sh shows that nothing the suite executes is lost);
  *   TEST_LONG  soaks, benchmarks and the largest renders: `make test-long`, not `make test`.
  * The runner (tests/main.c) runs each test in its own child process and its own temporary
  * folder, several at once (-j), and ends with "N passed, N failed, N skipped" and the reason of
@@ -25,7 +29,7 @@
 #include <stdio.h>
 
 typedef void (*ww_test_fn)(void);
-enum { WW_TIER_UNIT = 0, WW_TIER_PROC = 1, WW_TIER_LONG = 2 };
+enum { WW_TIER_UNIT = 0, WW_TIER_PROC = 1, WW_TIER_IMAGE = 2, WW_TIER_LONG = 3 };
 void ww_test_register(const char *name, ww_test_fn fn, int tier);
 /* why a test is skipped: the kind decides what WW_REQUIRE_GL turns into a failure */
 enum { WW_SKIP_OTHER = 0, WW_SKIP_GL = 1, WW_SKIP_EGL = 2, WW_SKIP_OSMESA = 3 };
@@ -45,6 +49,7 @@ int ww_test_failed_now(void);        /* the current test has failed a check */
     static void test_##name(void)
 #define TEST(name) WW_TEST_TIER(name, WW_TIER_UNIT)
 #define TEST_PROC(name) WW_TEST_TIER(name, WW_TIER_PROC)
+#define TEST_IMAGE(name) WW_TEST_TIER(name, WW_TIER_IMAGE)
 #define TEST_LONG(name) WW_TEST_TIER(name, WW_TIER_LONG)
 
 /* end the current test as skipped, with the reason (printf-style) */

@@ -291,7 +291,7 @@ static int centre_pixel(const char *png, unsigned char rgb[3]) {
 
 /* a view along each axis of the six-colour cubemap shows that face's colour at its centre:
  * the camera hangs 500 m up with a 5 m far plane, so no water covers the view down */
-TEST_PROC(assets_skybox_face_orientation) {
+TEST_IMAGE(assets_skybox_face_orientation) {
     REQUIRE_GL();
     static const struct {
         const char *name;
@@ -339,12 +339,12 @@ static void golden_of(const char *name) {
     ww_test_check_golden(golden, png);
 }
 
-TEST_PROC(assets_golden_skybox) {
+TEST_IMAGE(assets_golden_skybox) {
     REQUIRE_GL();
     golden_of("skybox");
 }
 
-TEST_PROC(assets_golden_skydome) {
+TEST_IMAGE(assets_golden_skydome) {
     REQUIRE_GL();
     golden_of("skydome");
 }
@@ -360,7 +360,7 @@ static const double WATER_RECT[4] = {0.0, 0.56, 1.0, 1.0};
 #define SKY_DIFF_THRESH 8    /* 8-bit levels: a pixel differs */
 #define REFLECTION_THRESH 40 /* 8-bit levels: a reflected cloud or sun, not a tint */
 
-TEST_PROC(assets_toggle_sky_gradient_vs_cubemap) {
+TEST_IMAGE(assets_toggle_sky_gradient_vs_cubemap) {
     REQUIRE_GL();
     const char *dir = ww_test_tmpdir("assets_toggle_sky");
     char on[600], off[600], a[700], b[700];

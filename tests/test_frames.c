@@ -532,7 +532,7 @@ TEST_PROC(frames_stats_and_progress) {
     free(e);
 }
 
-TEST_PROC(frames_bench_output_tiny) {
+TEST_LONG(frames_bench_output_tiny) {
     REQUIRE_GL();
     char dir[160], out[1024];
     tmp("frames_bench", dir, sizeof dir);

@@ -193,11 +193,11 @@ static void golden_of(const char *name) {
     ww_test_check_golden(gold, actual);
 }
 
-TEST_PROC(geometry_golden_shadows) { golden_of("shadows"); }
-TEST_PROC(geometry_golden_caustics) { golden_of("caustics"); }
-TEST_PROC(geometry_golden_lights) { golden_of("lights"); }
-TEST_PROC(geometry_golden_fog) { golden_of("fog"); }
-TEST_PROC(geometry_golden_lake_dusk) { golden_of("lake_dusk"); }
+TEST_IMAGE(geometry_golden_shadows) { golden_of("shadows"); }
+TEST_IMAGE(geometry_golden_caustics) { golden_of("caustics"); }
+TEST_IMAGE(geometry_golden_lights) { golden_of("lights"); }
+TEST_IMAGE(geometry_golden_fog) { golden_of("fog"); }
+TEST_IMAGE(geometry_golden_lake_dusk) { golden_of("lake_dusk"); }
 
 /* scene rendered twice, with and without `set`, into a and b; diff within rect */
 static int toggle(const char *name, const char *set, const double rect[4], ww_test_region *d,
@@ -215,7 +215,7 @@ static int toggle(const char *name, const char *set, const double rect[4], ww_te
 
 /* the shadow scene looks down from under water: the seabed fills the lower 55% of the image, the
  * surface seen from below the top; shadows fall only on the seabed */
-TEST_PROC(geometry_shadows_toggle) {
+TEST_IMAGE(geometry_shadows_toggle) {
     REQUIRE_GL();
     const double seabed[4] = {0.0, 0.45, 1.0, 1.0};
     ww_test_region d;
@@ -238,7 +238,7 @@ TEST_PROC(geometry_shadows_toggle) {
 }
 
 /* caustics light the seabed under water and nothing above it */
-TEST_PROC(geometry_caustics_toggle) {
+TEST_IMAGE(geometry_caustics_toggle) {
     REQUIRE_GL();
     const double seabed[4] = {0.0, 0.45, 1.0, 1.0};
     ww_test_region d;
@@ -254,7 +254,7 @@ TEST_PROC(geometry_caustics_toggle) {
 }
 
 /* the lights light the boat and the cubes, not the sky */
-TEST_PROC(geometry_lights_toggle) {
+TEST_IMAGE(geometry_lights_toggle) {
     REQUIRE_GL();
     const double sky[4] = {0.0, 0.0, 1.0, 0.2};
     ww_test_region d;
@@ -267,7 +267,7 @@ TEST_PROC(geometry_lights_toggle) {
 }
 
 /* fog: denser fog moves the geometry's pixels; the sky keeps its colour */
-TEST_PROC(geometry_fog_toggle) {
+TEST_IMAGE(geometry_fog_toggle) {
     REQUIRE_GL();
     const double sky[4] = {0.0, 0.0, 1.0, 0.25};
     ww_test_region d;

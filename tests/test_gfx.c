@@ -330,7 +330,7 @@ static size_t count_diff(const ww_image *a, const ww_image *b, int tol) {
     return bad;
 }
 
-TEST_PROC(gfx_egl_and_osmesa_identical) {
+TEST_IMAGE(gfx_egl_and_osmesa_identical) {
     REQUIRE_GL();
     REQUIRE_BACKEND(WW_BACKEND_EGL);
     REQUIRE_BACKEND(WW_BACKEND_OSMESA);
@@ -347,7 +347,7 @@ TEST_PROC(gfx_egl_and_osmesa_identical) {
     world_free(w);
 }
 
-TEST_PROC(gfx_render_repeatable) {
+TEST_IMAGE(gfx_render_repeatable) {
     REQUIRE_GL();
     world *w = world_new(GFX_W, GFX_H);
     ww_image a, b;
@@ -381,7 +381,7 @@ TEST_PROC(gfx_render_repeatable) {
     world_free(w);
 }
 
-TEST_PROC(gfx_render_far_from_origin) {
+TEST_IMAGE(gfx_render_far_from_origin) {
     REQUIRE_GL();
     /* the same camera-relative world at the origin and at (1e5, 3, -1e5) m, t = 1e6 s: the
      * origin phases are shifted by -k D.offset so the waves around the camera are the same */
@@ -412,7 +412,7 @@ TEST_PROC(gfx_render_far_from_origin) {
 
 /* drawing only the wedge of the water mesh in view must not change a pixel: poses looking
  * level, down, steeply down, up, across the snap grid, over big waves */
-TEST_PROC(gfx_water_wedge_culling_changes_no_pixel) {
+TEST_IMAGE(gfx_water_wedge_culling_changes_no_pixel) {
     REQUIRE_GL();
     world *w = world_new(GFX_W, GFX_H);
     add_wave(w->sc, 140.0, 30.0, 1.5, 0.9); /* 1.35 m sideways displacement on top */

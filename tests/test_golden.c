@@ -432,7 +432,7 @@ TEST_PROC(golden_report_renders_in_headless_chromium) {
 
 /* the project's own goldens (flat, blessed on the renderer named in golden/KEY) pass through
  * render --golden on that renderer, and golden/KEY is this renderer's key there */
-TEST_PROC(golden_project_goldens_pass_on_the_blessed_renderer) {
+TEST_IMAGE(golden_project_goldens_pass_on_the_blessed_renderer) {
     REQUIRE_GL();
     REQUIRE_BLESSED_RENDERER();
     char key[WW_GOLDEN_KEY_SIZE], a[1024];

@@ -17,7 +17,7 @@ static int render(const char *args) {
     return ww_test_run(c, NULL, NULL);
 }
 
-TEST_PROC(images_golden_minimal) {
+TEST_IMAGE(images_golden_minimal) {
     REQUIRE_GL();
     char dir[512], args[1024], actual[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_minimal"));
@@ -27,7 +27,7 @@ TEST_PROC(images_golden_minimal) {
     ww_test_check_golden("golden/minimal/frame_00000.png", actual);
 }
 
-TEST_PROC(images_golden_demo_two_frames) {
+TEST_IMAGE(images_golden_demo_two_frames) {
     REQUIRE_GL();
     char dir[512], args[1024], actual[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("golden_demo"));
@@ -49,7 +49,7 @@ static void same_files(const char *pa, const char *pb) {
     free(b);
 }
 
-TEST_PROC(images_egl_and_osmesa_identical) {
+TEST_IMAGE(images_egl_and_osmesa_identical) {
     REQUIRE_GL();
     REQUIRE_BACKEND(WW_BACKEND_EGL);
     REQUIRE_BACKEND(WW_BACKEND_OSMESA);
@@ -64,7 +64,7 @@ TEST_PROC(images_egl_and_osmesa_identical) {
     same_files(pa, pb);
 }
 
-TEST_PROC(images_llvmpipe_thread_count_does_not_matter) {
+TEST_IMAGE(images_llvmpipe_thread_count_does_not_matter) {
     REQUIRE_GL();
     char dir[512], args[1024], pa[700], pb[700];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("threads"));
@@ -82,7 +82,7 @@ TEST_PROC(images_llvmpipe_thread_count_does_not_matter) {
 
 /* every feature golden (blessed through EGL) comes out of OSMesa byte for byte: the two
  * backends run one pipeline, so every pass must be identical on both */
-TEST_PROC(images_feature_goldens_on_osmesa) {
+TEST_IMAGE(images_feature_goldens_on_osmesa) {
     REQUIRE_GL();
     REQUIRE_BLESSED_RENDERER();
     REQUIRE_BACKEND(WW_BACKEND_OSMESA);

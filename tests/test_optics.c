@@ -47,27 +47,27 @@ static int plan_lists(const char *name, const char *args, const char *pass) {
     return ww_test_file_contains(out, needle);
 }
 
-TEST_PROC(optics_golden_reflection) {
+TEST_IMAGE(optics_golden_reflection) {
     REQUIRE_GL();
     check_feature_golden("reflection");
 }
 
-TEST_PROC(optics_golden_foam) {
+TEST_IMAGE(optics_golden_foam) {
     REQUIRE_GL();
     check_feature_golden("foam");
 }
 
-TEST_PROC(optics_golden_underwater) {
+TEST_IMAGE(optics_golden_underwater) {
     REQUIRE_GL();
     check_feature_golden("underwater");
 }
 
-TEST_PROC(optics_golden_alpha_blend) {
+TEST_IMAGE(optics_golden_alpha_blend) {
     REQUIRE_GL();
     check_feature_golden("alpha_blend");
 }
 
-TEST_PROC(optics_golden_refraction) {
+TEST_IMAGE(optics_golden_refraction) {
     REQUIRE_GL();
     check_feature_golden("refraction");
 }
@@ -75,7 +75,7 @@ TEST_PROC(optics_golden_refraction) {
 /* reflection off: the water below the horizon changes (the mirrored sky, distorted, instead of
  * the sky along each reflected normal), the sky above it not at all, and the pass leaves the
  * plan. The camera looks 2 deg down with a 60 deg fov: the horizon lies 47% down the image. */
-TEST_PROC(optics_toggle_reflection) {
+TEST_IMAGE(optics_toggle_reflection) {
     REQUIRE_GL();
     char on[700], off[700];
     ENSURE_EQ_INT(render_feature("reflection", "on", NULL, on, sizeof on), 0);
@@ -94,7 +94,7 @@ TEST_PROC(optics_toggle_reflection) {
 
 /* refraction off (the seabed stays on): the water changes, the sky above the horizon (20% down
  * the image for a camera 20.6 deg down) does not, and the prepass leaves the plan */
-TEST_PROC(optics_toggle_refraction) {
+TEST_IMAGE(optics_toggle_refraction) {
     REQUIRE_GL();
     ENSURE_EQ_INT(plan_lists("refraction", NULL, "prepass"), 1);
     ENSURE_EQ_INT(plan_lists("refraction", "--set render.refraction=false", "prepass"), 0);
@@ -112,7 +112,7 @@ TEST_PROC(optics_toggle_refraction) {
 
 /* foam off: only water pixels change (the camera looks 8 deg down: the horizon is 38% down),
  * and enough of them that the folds and steep crests are foamed */
-TEST_PROC(optics_toggle_foam) {
+TEST_IMAGE(optics_toggle_foam) {
     REQUIRE_GL();
     char on[700], off[700];
     ENSURE_EQ_INT(render_feature("foam", "on", NULL, on, sizeof on), 0);
@@ -182,12 +182,12 @@ done:
     ww_image_free(&b);
 }
 
-TEST_PROC(optics_fresnel_schlick_matches_formula) {
+TEST_IMAGE(optics_fresnel_schlick_matches_formula) {
     REQUIRE_GL();
     check_fresnel(1, 0.02, 0.98, 5.0);
 }
 
-TEST_PROC(optics_fresnel_bias_scale_matches_formula) {
+TEST_IMAGE(optics_fresnel_bias_scale_matches_formula) {
     REQUIRE_GL();
     check_fresnel(0, 0.1, 0.8, 2.5);
 }
@@ -201,7 +201,7 @@ static double luminance(const ww_image *im, double fx, double fy) {
 /* from below, looking up: the sky shows through a bright disc around the zenith (the image's
  * centre) and the corners, 55 deg and more off the vertical, lie outside the 48.6 deg window in
  * total internal reflection; the same scene from above the water is another picture */
-TEST_PROC(optics_underwater_snell_window) {
+TEST_IMAGE(optics_underwater_snell_window) {
     REQUIRE_GL();
     char below[700], above[700];
     ENSURE_EQ_INT(render_feature("underwater", "below", NULL, below, sizeof below), 0);
@@ -227,7 +227,7 @@ TEST_PROC(optics_underwater_snell_window) {
 
 /* alpha blend off: the water turns opaque, so the seabed below stops showing: water pixels
  * change, the sky does not (the camera looks 12 deg down: the horizon is 31% down) */
-TEST_PROC(optics_toggle_alpha_blend) {
+TEST_IMAGE(optics_toggle_alpha_blend) {
     REQUIRE_GL();
     char on[700], off[700];
     ENSURE_EQ_INT(render_feature("alpha_blend", "on", NULL, on, sizeof on), 0);
@@ -253,7 +253,7 @@ TEST_PROC(optics_grid_scales_mesh) {
 }
 
 /* EGL and OSMesa give the same bytes for the optics (the noise is integer hashes of positions) */
-TEST_PROC(optics_backends_identical) {
+TEST_IMAGE(optics_backends_identical) {
     REQUIRE_BACKEND(WW_BACKEND_EGL);
     REQUIRE_BACKEND(WW_BACKEND_OSMESA);
     char egl[700], osm[700];

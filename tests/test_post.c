@@ -163,13 +163,13 @@ TEST(post_bloom_kernel_sums_to_one) {
     ENSURE_NEAR(o[2], 3.2307692308, BLOOM_KERNEL_TOL);
 }
 
-TEST_PROC(post_bloom_golden) {
+TEST_IMAGE(post_bloom_golden) {
     REQUIRE_GL();
     golden("bloom");
 }
 
 /* bloom off: the pixels that change lie around what is bright (the sun and its glitter) */
-TEST_PROC(post_bloom_toggle) {
+TEST_IMAGE(post_bloom_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/bloom.yaml";
     char on[1024], off[1024];
@@ -200,14 +200,14 @@ done:
     ww_image_free(&b.im);
 }
 
-TEST_PROC(post_shafts_golden) {
+TEST_IMAGE(post_shafts_golden) {
     REQUIRE_GL();
     golden("shafts");
 }
 
 /* shafts off under water: a large share of the frame loses light, and no pixel gains any
  * (the shafts only add) */
-TEST_PROC(post_shafts_toggle) {
+TEST_IMAGE(post_shafts_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/shafts.yaml";
     char on[1024], off[1024];
@@ -232,13 +232,13 @@ done:
     ww_image_free(&b.im);
 }
 
-TEST_PROC(post_fxaa_golden) {
+TEST_IMAGE(post_fxaa_golden) {
     REQUIRE_GL();
     golden("fxaa");
 }
 
 /* FXAA changes pixels on or next to luma edges of its input, and only those */
-TEST_PROC(post_fxaa_toggle) {
+TEST_IMAGE(post_fxaa_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/fxaa.yaml";
     char on[1024], off[1024];
@@ -266,14 +266,14 @@ done:
     ww_image_free(&b.im);
 }
 
-TEST_PROC(post_hud_golden) {
+TEST_IMAGE(post_hud_golden) {
     REQUIRE_GL();
     golden("hud");
 }
 
 /* the HUD changes only its text box (top left) and the chest marker; the scene's chest lies
  * under the camera, so the marker sits at the bottom edge, near the middle */
-TEST_PROC(post_hud_toggle) {
+TEST_IMAGE(post_hud_toggle) {
     REQUIRE_GL();
     const char *scene = "scenes/features/hud.yaml";
     char on[1024], off[1024];

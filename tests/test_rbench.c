@@ -220,7 +220,7 @@ static int backends_here(void) {
     return n;
 }
 
-TEST_PROC(rbench_bench_render_json) {
+TEST_LONG(rbench_bench_render_json) {
     REQUIRE_GL();
     char dir[512], out[600], errf[600];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_render_json"));
@@ -246,7 +246,7 @@ TEST_PROC(rbench_bench_render_json) {
     ENSURE_EQ_INT(ww_test_ww("bench render --size 64", NULL, NULL), 2);
 }
 
-TEST_PROC(rbench_bench_render_table) {
+TEST_LONG(rbench_bench_render_table) {
     REQUIRE_GL();
     char dir[512], out[600], errf[600];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_render_table"));
@@ -269,7 +269,7 @@ TEST_PROC(rbench_bench_render_table) {
     ENSURE_EQ_INT(ww_test_ww("bench render --knob render.grid", NULL, NULL), 2);
 }
 
-TEST_PROC(rbench_bench_quality_json) {
+TEST_LONG(rbench_bench_quality_json) {
     REQUIRE_GL();
     char dir[512], out[600], errf[600], args[1200];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_quality_json"));
@@ -287,7 +287,7 @@ TEST_PROC(rbench_bench_quality_json) {
     ENSURE(ww_test_file_contains(out, "\"psnr\":null,\"identical\":true"));
 }
 
-TEST_PROC(rbench_bench_quality_table_and_figure) {
+TEST_LONG(rbench_bench_quality_table_and_figure) {
     REQUIRE_GL();
     char dir[512], out[600], errf[600], fig[600], args[1200];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_quality_table"));

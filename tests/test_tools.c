@@ -335,7 +335,7 @@ TEST(tools_plot_writes_a_png_with_its_line) {
 
 /* ---- bench waves -------------------------------------------------------------------------------- */
 
-TEST_PROC(tools_bench_waves_tiny_prints_its_tables_and_figure) {
+TEST_LONG(tools_bench_waves_tiny_prints_its_tables_and_figure) {
     char dir[512], out[600], errf[600], fig[600], args[2048];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("tools_bench_waves"));
     snprintf(out, sizeof out, "%s/out.txt", dir);
