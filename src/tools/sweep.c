@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/readfile.h"
 #include "core/rng.h"
 #include "io/image.h"
 #include "io/json.h"
@@ -1065,7 +1066,8 @@ ww_result ww_sweep_new(const ww_sweep_opts *o, ww_sweep **out, ww_error *err) {
     }
 
     /* the scene, read once; its first point shows whether the keys exist */
-    if ((r = ww_read_file(o->scene_path, &s->text, &s->len, err))) goto fail;
+    if ((r = ww_file_read_max(o->scene_path, WW_SCENE_MAX_BYTES, WW_SCENE_MAX_BYTES, &s->text,
+                                &s->len, err))) goto fail;
     ww_scene *sc = NULL;
     ww_error first = {0};
     ww_result fr = load_point(s, o->point >= 0 ? o->point : 0, &sc, &first);
