@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/mathx.h"
 #include "core/rng.h"
@@ -408,9 +410,19 @@ ww_result wwc_resolve_path(ctx *c, const ww_node *n, char *out, size_t size) {
     if (len < 0 || (size_t)len >= size)
         return wwc_fail(c, WW_E_RANGE, n, "the file name '%.60s...' is longer than %zu characters",
                         n->text, size - 1);
-    FILE *f = fopen(out, "rb");
-    if (!f) return wwc_fail(c, WW_E_NOFILE, n, "cannot open '%s': %s", out, strerror(errno));
-    fclose(f);
+    /* looked at, not opened: opening a FIFO would wait for a writer. The file is read at load
+     * and again when it is drawn or played, so it must be a regular file (a pipe gives its bytes
+     * once, /dev/zero never ends) */
+    struct stat st;
+    if (stat(out, &st) != 0 || access(out, R_OK) != 0)
+        return wwc_fail(c, WW_E_NOFILE, n, "cannot open '%s': %s", out, strerror(errno));
+    if (S_ISDIR(st.st_mode))
+        return wwc_fail(c, WW_E_NOFILE, n, "'%s' is a folder: expected a file", out);
+    if (!S_ISREG(st.st_mode))
+        return wwc_fail(c, WW_E_NOFILE, n,
+                        "'%s' is not a regular file (a device, FIFO or socket): expected a file "
+                        "that can be read twice, at load and when it is used",
+                        out);
     return WW_OK;
 }
 
