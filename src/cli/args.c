@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "tools/audio.h"
 
 int ww_cli_is_help(const char *arg) { return strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0; }
 
@@ -70,6 +71,12 @@ ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "%s needs a scene file (waterworld %s --help)",
                             cmd, cmd);
     ww_result r = ww_scene_load_with_script(o->scene_path, o->script, o->sets, o->nsets, sc, err);
+    /* the WAV files' headers (images' are looked at by the loader): every command refuses a bad
+     * file at its scene line, not only the one that plays it */
+    if (!r && (r = ww_audio_check(*sc, err))) {
+        ww_scene_free(*sc);
+        *sc = NULL;
+    }
     if (r) return r;
     /* what the loader accepted but noticed (a folding sea under water.fold: warn, ...) */
     for (int i = 0; i < (*sc)->nwarnings; i++) fprintf(stderr, "%s\n", (*sc)->warnings[i]);
