@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "io/outpath.h"
 #include "tools/sweep.h"
 
 static const char usage[] =
@@ -159,6 +160,10 @@ ww_result ww_cmd_sweep(int argc, char **argv, ww_error *err) {
         exe[len] = 0;
         o.exe = exe;
     }
+
+    /* the output folder before any point is loaded (a file in its place fails now, not at the
+     * end of the grid) */
+    if (o.out_dir && (r = ww_check_out_dir("-o", o.out_dir, err))) return r;
 
     o.scene_path = so.scene_path;
     o.sets = so.sets;
