@@ -37,9 +37,9 @@
 /* every range of the schema, in file order; angles are checked in degrees */
 static const rule R_SEED = WHOLE(0, 9007199254740991.0, ""); /* 2^53 - 1, exact in a double */
 static const rule R_DT = OPEN_LO(0, 1, "s");
-static const rule R_FPS = OPEN_LO(0, 1000, "frames/s");
-static const rule R_DURATION = OPEN_LO(0, 1e7, "s");
-static const rule R_START = CLOSED(0, 1e9, "s");
+static const rule R_FPS = OPEN_LO(0, WW_FPS_MAX, "frames/s");
+static const rule R_DURATION = OPEN_LO(0, WW_DURATION_MAX, "s");
+static const rule R_START = CLOSED(0, WW_TIME_MAX, "s");
 static const rule R_HOURS = CLOSED(0, 24, "h");
 static const rule R_LEVEL = CLOSED(-1e6, 1e6, "m");
 static const rule R_DEPTH = OPEN_LO(0, 1e4, "m");
@@ -69,10 +69,10 @@ static const rule R_RIPPLE_WAVENUMBER = OPEN_LO(0, 1e4, "rad/m");
 static const rule R_FOV = CLOSED(1, 179, "deg");
 static const rule R_NEAR = OPEN_LO(0, 100, "m");
 static const rule R_FAR_MAX = CLOSED(0, 1e7, "m"); /* lo is near, open: built in compile_camera */
-static const rule R_KEY_TIME = CLOSED(0, 1e9, "s");
+static const rule R_KEY_TIME = CLOSED(0, WW_TIME_MAX, "s");
 static const rule R_POSITION = FINITE("m");
 static const rule R_PITCH = CLOSED(-89.9, 89.9, "deg");
-static const rule R_EVENT_TIME = CLOSED(0, 1e9, "s");
+static const rule R_EVENT_TIME = CLOSED(0, WW_TIME_MAX, "s");
 
 /* script actions: an event holds "t" and exactly one of these; an action with a range is a
  * number, one without is read by its function from the event's mapping (compile_event) */
