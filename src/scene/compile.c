@@ -938,6 +938,11 @@ static ww_result compile_camera(ctx *c, const section *top) {
     sc->interp = (ww_interp)interp;
     TRY(wwc_get_word(c, &s, "collide", BOOL_WORDS, &sc->camera_collide));
     TRY(wwc_get_list(c, &s, "path", WW_MAX_KEYS, &path));
+    /* no path is the default camera; an empty one is a path that lost its keys */
+    if (path && path->n == 0)
+        return wwc_fail(c, WW_E_RANGE, path,
+                        "camera.path is an empty list: expected at least one key {t, position, "
+                        "look_at} (or no path at all for the default camera)");
 
     /* keys in strictly increasing time */
     int i = 0;
