@@ -520,6 +520,8 @@ TEST_PROC(bounds_cli_streams_and_caps_exit_2) {
     ENSURE(ww_test_write_text(path, "time: {duration: 1}\naudio: {music: {file: long.wav}}\n") == 0);
     snprintf(args, sizeof args, "render %s --audio %s/a.wav -o %s/f", path, dir, dir);
     ensure_exit2(args, errf, "long.yaml:2:23");
+    snprintf(args, sizeof args, "sweep %s --vary seed=1:2:2", path);
+    ensure_exit2(args, errf, "long.yaml:2:23");
     struct stat st;
     ENSURE(stat(wav, &st) == 0);
     snprintf(path, sizeof path, "%s/f", dir);

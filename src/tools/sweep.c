@@ -22,6 +22,7 @@
 #include "io/writers.h"
 #include "sim/floater_stats.h"
 #include "sim/wave_stats.h"
+#include "tools/audio.h"
 #include "tools/contact.h"
 #include "tools/job.h"
 
@@ -1076,7 +1077,9 @@ ww_result ww_sweep_new(const ww_sweep_opts *o, ww_sweep **out, ww_error *err) {
         r = fr;
         goto fail;
     }
-    if (fr == WW_OK && o->thumbs && o->thumb_frame >= sc->frame_count) {
+    /* the scene's WAV files, by their headers, as every command that loads a scene checks them */
+    if (fr == WW_OK) r = ww_audio_check(sc, err);
+    if (!r && fr == WW_OK && o->thumbs && o->thumb_frame >= sc->frame_count) {
         r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--thumb-frame %lld is past the scene's %lld frames",
                          (long long)o->thumb_frame, (long long)sc->frame_count);
     }
