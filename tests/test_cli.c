@@ -90,9 +90,10 @@ TEST_PROC(cli_runtime_failures_exit_3) {
     char dir[512], errf[600], args[1024];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("cli_runtime"));
     snprintf(errf, sizeof errf, "%s/err.txt", dir);
-    /* an output folder that cannot be made: a path component is a regular file */
+    /* an output folder that cannot be made (a path component is a regular file) is bad input,
+     * found before any work (test_bounds.c): exit 2, not 3 */
     snprintf(args, sizeof args, "render scenes/minimal.yaml --frames 1 -o %s/err.txt/frames", dir);
-    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 3);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 2);
     ENSURE(ww_test_file_contains(errf, "err.txt/frames"));
     /* a backend that cannot open: the message says why and what to do */
     REQUIRE_GL();

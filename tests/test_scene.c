@@ -87,9 +87,16 @@ TEST(scene_defaults_fill_every_field) {
     ww_scene_free(sc);
 }
 
-TEST(scene_empty_camera_path_gives_the_default_key) {
+/* no path is the default camera; an empty one is an error at the list, not a silent default */
+TEST(scene_empty_camera_path_is_an_error) {
     ww_error err = {0};
     ww_scene *sc = load_text("camera:\n  fov: 70\n  path: []\n", NULL, 0, &err);
+    ENSURE(sc == NULL);
+    ENSURE_EQ_INT(err.code, WW_E_RANGE);
+    ENSURE_EQ_INT(err.line, 3);
+    ENSURE_EQ_INT(err.column, 9);
+    ww_scene_free(sc);
+    sc = load_text("camera:\n  fov: 70\n", NULL, 0, &err);
     ENSURE_MSG(sc != NULL, "%s", err.msg);
     if (!sc) return;
     ENSURE_EQ_INT(sc->ncam, 1);

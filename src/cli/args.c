@@ -3,11 +3,13 @@
  * WW_E_USAGE naming the option.
  */
 #include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli/cli.h"
+#include "tools/audio.h"
 
 int ww_cli_is_help(const char *arg) { return strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0; }
 
@@ -54,15 +56,16 @@ int ww_cli_scene_arg(int argc, char **argv, int *i, ww_cli_scene_opts *o, ww_res
     return 1;
 }
 
-/* a whole non-negative integer, or -1 */
+/* a whole non-negative integer: its value, or -1 when s does not start with a digit, -2 when it
+ * is past what a long long holds; *end after its digits */
 static long long parse_count(const char *s, const char **end) {
+    *end = s;
     if (*s < '0' || *s > '9') return -1;
     errno = 0;
     char *e = NULL;
     long long v = strtoll(s, &e, 10);
-    if (errno) return -1;
     *end = e;
-    return v;
+    return errno == ERANGE ? -2 : v;
 }
 
 ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc, ww_error *err) {
@@ -70,6 +73,12 @@ ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "%s needs a scene file (waterworld %s --help)",
                             cmd, cmd);
     ww_result r = ww_scene_load_with_script(o->scene_path, o->script, o->sets, o->nsets, sc, err);
+    /* the WAV files' headers (images' are looked at by the loader): every command refuses a bad
+     * file at its scene line, not only the one that plays it */
+    if (!r && (r = ww_audio_check(*sc, err))) {
+        ww_scene_free(*sc);
+        *sc = NULL;
+    }
     if (r) return r;
     /* what the loader accepted but noticed (a folding sea under water.fold: warn, ...) */
     for (int i = 0; i < (*sc)->nwarnings; i++) fprintf(stderr, "%s\n", (*sc)->warnings[i]);
@@ -77,11 +86,14 @@ ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc
     const char *e = NULL;
     long long w = parse_count(o->size, &e), h = -1;
     if (w >= 0 && (*e == 'x' || *e == 'X')) h = parse_count(e + 1, &e);
-    if (w < 16 || h < 16 || w > 16384 || h > 16384 || *e != 0) {
+    /* the range of the scene's render.size */
+    if (w < WW_SIZE_MIN || h < WW_SIZE_MIN || w > WW_SIZE_MAX || h > WW_SIZE_MAX || *e != 0) {
         ww_scene_free(*sc);
         *sc = NULL;
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
-                            "--size wants WIDTHxHEIGHT with each in 16..16384, got '%s'", o->size);
+                            "--size wants WIDTHxHEIGHT with each in %d..%d (as render.size), got "
+                            "'%s'",
+                            WW_SIZE_MIN, WW_SIZE_MAX, o->size);
     }
     (*sc)->width = (int)w;
     (*sc)->height = (int)h;
@@ -93,17 +105,24 @@ ww_result ww_cli_frames(const char *text, const ww_scene *sc, int64_t *first, in
     *first = 0;
     *last = sc->frame_count;
     if (!text) return WW_OK;
-    const char *e = NULL;
+    const char *e = NULL, *bt = text;
     long long a = parse_count(text, &e), b;
     if (a >= 0 && *e == ':') {
-        b = parse_count(e + 1, &e);
+        bt = e + 1;
+        b = parse_count(bt, &e);
     } else {
         b = a;
         a = 0;
     }
-    if (b < 0 || *e != 0 || b <= a)
+    /* a number too large for a long long is past any scene's frames (at most 1e10) */
+    if (a == -2 || b == -2) b = LLONG_MAX;
+    else if (a < 0 || b < 0 || *e != 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
-                            "--frames wants N or A:B with A < B (frames A..B-1), got '%s'", text);
+                            "--frames wants N or A:B in whole frames (frames A..B-1), got '%s'%s",
+                            text, *e == '.' || *e == 'e' || *e == 'E' ? ": not a whole number" : "");
+    if (b <= a)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--frames %s holds no frame: expected N >= 1, or A:B with A < B", text);
     if (b > sc->frame_count)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "--frames %s goes past the scene's %lld frames (time.duration %g s at %g fps)",

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "io/outpath.h"
 #include "tools/bench.h"
 #include "tools/bench_waves.h"
 
@@ -53,6 +54,8 @@ static const char usage[] =
     "  -o DIR            folder for the waves, sim and quality figures (default out/bench)\n"
     "  --frames N        frames per configuration (default 20)\n"
     "  --json            one JSON object per line\n";
+
+#define BENCH_MAX_FRAMES 1000000 /* --frames per configuration */
 
 /* a whole number in [lo, hi] from text, or -1 */
 static long long parse_whole(const char *text, long long lo, long long hi) {
@@ -160,8 +163,10 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: unknown argument '%s' (see --help)", argv[i]);
     }
     if (r) return r;
-    if (frames && (o.frames = atoi(frames)) <= 0)
-        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frames wants a positive count, got '%s'", frames);
+    if (frames && (o.frames = (int)parse_whole(frames, 1, BENCH_MAX_FRAMES)) <= 0)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frames wants a count in 1..%d, got '%s'",
+                            BENCH_MAX_FRAMES, frames);
+    if (out && (r = ww_check_out_dir("-o", out, err))) return r;
     int waves = strcmp(what, "waves") == 0, sim = strcmp(what, "sim") == 0;
     if (strcmp(what, "quality") == 0) {
         const char *q[] = {size, frame, repeats, knob};

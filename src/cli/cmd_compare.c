@@ -10,6 +10,7 @@
 
 #include "cli/cli.h"
 #include "io/json.h"
+#include "io/outpath.h"
 #include "io/writers.h"
 #include "tools/compare.h"
 
@@ -277,6 +278,14 @@ ww_result ww_cmd_compare(int argc, char **argv, ww_error *err) {
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "compare: '%s' is a %s and '%s' a %s: give two files or two folders",
                             a.expected, de ? "folder" : "file", a.actual, da ? "folder" : "file");
+    /* the diff is written at the end: a bad place for it is found before any image is read,
+     * and it never overwrites what it compares */
+    if (a.diff) {
+        r = de ? ww_check_out_dir("--diff", a.diff, err) : ww_check_out_file("--diff", a.diff, 0, err);
+        if (!r) r = ww_check_out_distinct("EXPECTED", a.expected, "--diff", a.diff, err);
+        if (!r) r = ww_check_out_distinct("ACTUAL", a.actual, "--diff", a.diff, err);
+        if (r) return r;
+    }
     if (de) return compare_dirs(&a, err);
     int pass = 0;
     r = compare_pair(&a, a.actual, a.expected, a.actual, a.diff, &pass, err);

@@ -35,12 +35,15 @@ static const char usage[] =
     "  --to T1           last sample time, s (default: start + duration); samples at\n"
     "                    T0, T0 + DT, ... up to T1\n"
     "  --every DT        sample spacing, s (default: one frame, 1 / fps)\n"
+    "Times are limited as the scene's own: T0 >= time.start, T1 <= 1e9 s (or the scene's end),\n"
+    "0 < DT <= 1e7 s, and at most 10 million sample times.\n"
     "  --set KEY=VALUE   override a scene value\n"
     "  --script FILE     a YAML file with a script: list, merged with the scene's events\n"
     "\n"
     "A query that does not converge (a sea at its folding limit) still prints its best answer;\n"
     "a warning on stderr counts them.\n"
-    "Exit: 0 done, 2 bad input (bad --at, T0 > T1, DT <= 0, T0 before the start), 3 NaN or I/O.\n";
+    "Exit: 0 done, 2 bad input (bad --at, T0 > T1, DT <= 0, a time out of its limits), 3 NaN or\n"
+    "I/O.\n";
 
 /* a finite number filling all of s up to end (or to the end of s when end is 0) */
 static int parse_number(const char *s, char end, double *v, const char **rest) {
@@ -79,14 +82,24 @@ static ww_result probe_run(const ww_scene *sc, const probe_opts *po, ww_error *e
     if (po->from && (r = parse_time("--from", po->from, &t0, err))) return r;
     if (po->to && (r = parse_time("--to", po->to, &t1, err))) return r;
     if (po->every && (r = parse_time("--every", po->every, &dt, err))) return r;
-    if (!(dt > 0.0))
-        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--every wants a positive time, got %g", dt);
+    /* the scene's own limits: a sample time is one a scene may name (time.start, an event's t),
+     * or inside this scene's run; a spacing is at most a duration */
+    double latest = fmax(WW_TIME_MAX, sc->start + sc->duration);
+    if (!(dt > 0.0) || dt > WW_DURATION_MAX)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--every wants a time in (0, %g] s (as time.duration), got %g",
+                            WW_DURATION_MAX, dt);
     if (t0 > t1)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--from %g is after --to %g", t0, t1);
     if (t0 < sc->start)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "--from %g is before the scene's start (time.start %g s): there is no "
                             "state to probe", t0, sc->start);
+    if (t1 > latest)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "%s %g is past the latest time a scene may name (%g s, as time.start "
+                            "and event times)",
+                            po->to ? "--to" : "--from", po->to ? t1 : t0, latest);
     double span = (t1 - t0) / dt;
     if (span + 1.0 > (double)PROBE_MAX_ROWS)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,

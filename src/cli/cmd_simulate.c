@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "io/outpath.h"
 #include "io/stream.h"
 #include "sim/state.h"
 #include "sim/step.h"
@@ -105,6 +106,9 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
     if (o.trace && o.events && strcmp(o.trace, "-") != 0 && strcmp(o.trace, o.events) == 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "simulate: --trace and --events name the same file '%s'", o.trace);
+    /* the outputs before the scene: a folder named by --trace is found before any step */
+    if (o.trace && (r = ww_check_out_file("--trace", o.trace, 1, err))) return r;
+    if (o.events && (r = ww_check_out_file("--events", o.events, 1, err))) return r;
 
     ww_scene *sc = NULL;
     ww_state *st = NULL;

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "io/outpath.h"
 #include "tools/sweep.h"
 
 static const char usage[] =
@@ -71,10 +72,16 @@ static ww_result parse_seed(const char *t, uint64_t *seed, ww_error *err) {
     return WW_OK;
 }
 
+/* WIDTHxHEIGHT, each a whole number (the range is the sweep's, checked with the other options) */
 static ww_result parse_size(const char *t, int *w, int *h, ww_error *err) {
-    int n = 0;
-    if (sscanf(t, "%d%*[xX]%d%n", w, h, &n) != 2 || t[n] != 0)
+    char *e = NULL, *f = NULL;
+    errno = 0;
+    long a = (t[0] >= '0' && t[0] <= '9') ? strtol(t, &e, 10) : -1;
+    long b = a >= 0 && (*e == 'x' || *e == 'X') && e[1] >= '0' && e[1] <= '9' ? strtol(e + 1, &f, 10) : -1;
+    if (a < 0 || b < 0 || errno || *f || a > INT_MAX || b > INT_MAX)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--thumb-size wants WIDTHxHEIGHT, got '%s'", t);
+    *w = (int)a;
+    *h = (int)b;
     return WW_OK;
 }
 
@@ -159,6 +166,10 @@ ww_result ww_cmd_sweep(int argc, char **argv, ww_error *err) {
         exe[len] = 0;
         o.exe = exe;
     }
+
+    /* the output folder before any point is loaded (a file in its place fails now, not at the
+     * end of the grid) */
+    if (o.out_dir && (r = ww_check_out_dir("-o", o.out_dir, err))) return r;
 
     o.scene_path = so.scene_path;
     o.sets = so.sets;

@@ -54,11 +54,21 @@ static ww_result upload_cubemap(const ww_gl *gl, const ww_scene *sc, GLuint *out
     gl->GenTextures(1, &tex);
     gl->BindTexture(GL_TEXTURE_CUBE_MAP, tex);
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    /* decoded here, one face at a time, and freed once uploaded: the scene holds only the
+     * faces' sizes, so commands that draw nothing never decode them */
     for (int i = 0; i < 6; i++) {
         WW_ASSERT(d->cubemap_image[i] >= 0 && d->cubemap_image[i] < sc->assets->nimage);
         const ww_image_data *im = &sc->assets->image[d->cubemap_image[i]];
+        unsigned char *rgba = NULL;
+        ww_result r = ww_assets_decode(im, &rgba, err);
+        if (r) {
+            gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
+            gl->DeleteTextures(1, &tex);
+            return r;
+        }
         gl->TexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)i, 0, GL_SRGB8_ALPHA8, im->width,
-                       im->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, im->rgba);
+                       im->height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+        ww_assets_pixels_free(rgba);
     }
     gl->GenerateMipmap(GL_TEXTURE_CUBE_MAP);
     gl->TexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);

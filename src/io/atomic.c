@@ -12,6 +12,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/readfile.h"
+
 ww_result ww_make_dirs(const char *path, ww_error *err) {
     size_t n = strlen(path);
     if (n == 0)
@@ -51,53 +53,7 @@ ww_result ww_make_dirs(const char *path, ww_error *err) {
 }
 
 ww_result ww_read_file(const char *path, unsigned char **data, size_t *len, ww_error *err) {
-    *data = NULL;
-    *len = 0;
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        return ww_error_set(err, WW_E_NOFILE, NULL, 0, 0, "cannot read '%s': %s", path,
-                            strerror(errno));
-    struct stat st;
-    int e = fstat(fd, &st) != 0 ? errno : S_ISDIR(st.st_mode) ? EISDIR : 0;
-    if (e != 0) {
-        close(fd);
-        return ww_error_set(err, WW_E_NOFILE, NULL, 0, 0, "cannot read '%s': %s", path,
-                            strerror(e));
-    }
-
-    /* size from fstat, but read to the end in case the file changed meanwhile */
-    size_t cap = (size_t)st.st_size + 1, n = 0;
-    unsigned char *buf = malloc(cap);
-    for (;;) {
-        if (!buf) {
-            close(fd);
-            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "cannot read '%s': out of memory",
-                                path);
-        }
-        if (n == cap) {
-            unsigned char *nb = cap <= SIZE_MAX / 2 ? realloc(buf, cap * 2) : NULL;
-            if (!nb) free(buf);
-            buf = nb;
-            cap *= 2;
-            continue;
-        }
-        ssize_t got = read(fd, buf + n, cap - n);
-        if (got < 0 && errno == EINTR) continue;
-        if (got < 0) {
-            e = errno;
-            free(buf);
-            close(fd);
-            return ww_error_set(err, WW_E_NOFILE, NULL, 0, 0, "cannot read '%s': %s", path,
-                                strerror(e));
-        }
-        if (got == 0) break;
-        n += (size_t)got;
-    }
-    close(fd);
-    buf[n] = 0;
-    *data = buf;
-    *len = n;
-    return WW_OK;
+    return ww_file_read_max(path, SIZE_MAX / 2, WW_READ_STREAM_MAX, data, len, err);
 }
 
 /* write all of data to fd, retrying short writes and interruptions; 0 ok, else errno */

@@ -58,7 +58,10 @@ ww_result ww_read_exr(const char *path, ww_image *out, ww_error *err);
 ww_result ww_read_exr_meta(const char *path, int *frame, double *time, char *scene,
                            size_t scene_cap, char *renderer, size_t renderer_cap, ww_error *err);
 
-/* a whole file into malloc'd memory (NUL-terminated past len); WW_E_NOFILE when it cannot */
+/* a whole file into malloc'd memory (NUL-terminated past len); WW_E_NOFILE when it cannot.
+ * A regular file is read to its size; anything else (a pipe, /dev/zero) to WW_READ_STREAM_MAX
+ * bytes, past which it is WW_E_RANGE: no read grows without bound (core/readfile.h). */
+#define WW_READ_STREAM_MAX ((size_t)256 << 20)
 ww_result ww_read_file(const char *path, unsigned char **data, size_t *len, ww_error *err);
 
 #endif

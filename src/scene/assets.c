@@ -1,20 +1,117 @@
-/* assets.c - the files a scene names, decoded once at load (scene/assets.h): images through
- * stb_image (core/stb_image_impl.c: PNG, TGA, JPEG) into RGBA8, OBJ models through obj.c. Each
- * path is kept once, whatever names it how often.
+/* assets.c - the files a scene names (scene/assets.h): images looked at through stb_image's
+ * header reader at load and decoded (core/stb_image_impl.c: PNG, TGA, JPEG) into RGBA8 only when
+ * drawn, OBJ models through obj.c. Each path is kept once, whatever names it how often. Every
+ * read is capped (scene/assets.h, scene/obj.h) and every error names the scene's place.
  */
 #include "scene/assets.h"
 
+#include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <stb/stb_image.h>
 
+#include "core/readfile.h"
 #include "scene/obj.h"
 
-#define IMAGE_MAX_BYTES (64u << 20)  /* largest image file read */
-#define IMAGE_MAX_SIDE 8192          /* texels per side */
-#define ASSETS_MAX 1024              /* images, and meshes, per scene */
+/* bytes read to find an image's size: a PNG's IHDR and a TGA's header are at the start; a JPEG's
+ * frame header follows its APP segments (EXIF, ICC), which rarely pass this; when they do the
+ * whole file is read (under its cap) and looked at again */
+#define IMAGE_PEEK_BYTES 65536
+
+ww_result ww_assets_check_file(const char *path, size_t max, const char *from, int line,
+                               int column, ww_error *err) {
+    struct stat st;
+    if (stat(path, &st) != 0 || access(path, R_OK) != 0)
+        return ww_error_set(err, WW_E_NOFILE, from, line, column, "cannot open '%s': %s", path,
+                            strerror(errno));
+    if (S_ISDIR(st.st_mode))
+        return ww_error_set(err, WW_E_NOFILE, from, line, column,
+                            "'%s' is a folder: expected a file", path);
+    if (!S_ISREG(st.st_mode))
+        return ww_error_set(err, WW_E_NOFILE, from, line, column,
+                            "'%s' is not a regular file (a device, FIFO or socket): expected a "
+                            "file",
+                            path);
+    if ((unsigned long long)st.st_size > (unsigned long long)max)
+        return ww_error_set(err, WW_E_RANGE, from, line, column,
+                            "'%s' is %lld bytes: expected at most %zu (%.0f MiB)", path,
+                            (long long)st.st_size, max, (double)max / (1 << 20));
+    return WW_OK;
+}
+
+/* err moved to the place that named the file, its message kept (the readers below io/ know the
+ * file, not who named it) */
+static ww_result at_place(ww_result r, const char *from, int line, int column, ww_error *err) {
+    if (!err) return r;
+    snprintf(err->file, sizeof err->file, "%s", from ? from : "");
+    err->line = line;
+    err->column = column;
+    return r;
+}
+
+/* up to cap bytes from the start of path; *got how many */
+static int read_prefix(const char *path, unsigned char *buf, size_t cap, size_t *got) {
+    *got = 0;
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) return -1;
+    while (*got < cap) {
+        ssize_t n = read(fd, buf + *got, cap - *got);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        *got += (size_t)n;
+    }
+    close(fd);
+    return 0;
+}
+
+/* pin stb's run-time settings (io/png.c may have set them): rows top first, as stored */
+static void stb_settings(void) {
+    stbi_set_flip_vertically_on_load(0);
+    stbi_set_unpremultiply_on_load(0);
+    stbi_convert_iphone_png_to_rgb(0);
+}
+
+/* width and height from the header, the whole file read only when the start does not hold it */
+static ww_result image_size(const char *path, const char *from, int line, int column, int *w,
+                            int *h, ww_error *err) {
+    unsigned char *peek = malloc(IMAGE_PEEK_BYTES);
+    size_t got = 0;
+    if (!peek) return ww_error_set(err, WW_E_NOMEM, from, line, column, "out of memory");
+    if (read_prefix(path, peek, IMAGE_PEEK_BYTES, &got) != 0) {
+        free(peek);
+        return ww_error_set(err, WW_E_NOFILE, from, line, column, "cannot open '%s': %s", path,
+                            strerror(errno));
+    }
+    int comp;
+    stb_settings();
+    int ok = stbi_info_from_memory(peek, (int)got, w, h, &comp);
+    free(peek);
+    if (!ok && got == IMAGE_PEEK_BYTES) {
+        unsigned char *file;
+        size_t len;
+        ww_result r = ww_file_read_max(path, WW_IMAGE_MAX_BYTES, WW_IMAGE_MAX_BYTES, &file, &len, err);
+        if (r) return at_place(r, from, line, column, err);
+        ok = len <= INT_MAX && stbi_info_from_memory(file, (int)len, w, h, &comp);
+        free(file);
+    }
+    if (!ok)
+        return ww_error_set(err, WW_E_SYNTAX, from, line, column,
+                            "'%s' is not a PNG, TGA or JPEG image: %s", path,
+                            stbi_failure_reason());
+    return WW_OK;
+}
+
+static long long texels(const ww_assets *a) {
+    long long n = 0;
+    for (int i = 0; i < a->nimage; i++) n += (long long)a->image[i].width * a->image[i].height;
+    return n;
+}
 
 ww_result ww_assets_image(ww_assets *a, const char *path, const char *from, int line, int column,
                           int *index, ww_error *err) {
@@ -26,55 +123,77 @@ ww_result ww_assets_image(ww_assets *a, const char *path, const char *from, int 
     if (strlen(path) >= WW_ASSET_PATH)
         return ww_error_set(err, WW_E_RANGE, from, line, column, "image path too long: '%.60s...'",
                             path);
-    if (a->nimage >= ASSETS_MAX)
+    if (a->nimage >= WW_ASSETS_MAX)
         return ww_error_set(err, WW_E_RANGE, from, line, column, "more than %d images",
-                            ASSETS_MAX);
-    char *file;
-    size_t len;
-    ww_result r = ww_assets_read_file(path, IMAGE_MAX_BYTES, from, line, column, &file, &len, err);
-    if (r != WW_OK) return r;
-
-    /* pin stb's run-time settings (io/png.c may have set them): rows top first, as stored */
-    stbi_set_flip_vertically_on_load(0);
-    stbi_set_unpremultiply_on_load(0);
-    stbi_convert_iphone_png_to_rgb(0);
-    int w, h, comp;
-    unsigned char *px = NULL;
-    if (!stbi_info_from_memory((const unsigned char *)file, (int)len, &w, &h, &comp)) {
-        free(file);
-        return ww_error_set(err, WW_E_SYNTAX, from, line, column,
-                            "'%s' is not a PNG, TGA or JPEG image: %s", path,
-                            stbi_failure_reason());
-    }
-    if (w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE) {
-        free(file);
+                            WW_ASSETS_MAX);
+    ww_result r = ww_assets_check_file(path, WW_IMAGE_MAX_BYTES, from, line, column, err);
+    int w = 0, h = 0;
+    if (!r) r = image_size(path, from, line, column, &w, &h, err);
+    if (r) return r;
+    if (w > WW_IMAGE_MAX_SIDE || h > WW_IMAGE_MAX_SIDE)
         return ww_error_set(err, WW_E_RANGE, from, line, column,
                             "'%s' is %dx%d: expected at most %d texels per side", path, w, h,
-                            IMAGE_MAX_SIDE);
-    }
-    px = stbi_load_from_memory((const unsigned char *)file, (int)len, &w, &h, &comp, 4);
-    free(file);
-    if (!px)
-        return ww_error_set(err, WW_E_SYNTAX, from, line, column, "cannot decode '%s': %s", path,
-                            stbi_failure_reason());
+                            WW_IMAGE_MAX_SIDE);
+    long long before = texels(a);
+    if (before + (long long)w * h > WW_IMAGE_MAX_TEXELS)
+        return ww_error_set(err, WW_E_RANGE, from, line, column,
+                            "'%s' (%dx%d) makes the scene's images %lld texels: expected at most "
+                            "%lld (six faces of %d^2)",
+                            path, w, h, before + (long long)w * h, WW_IMAGE_MAX_TEXELS,
+                            WW_IMAGE_MAX_SIDE);
 
     ww_image_data *grown = realloc(a->image, (size_t)(a->nimage + 1) * sizeof *grown);
-    size_t bytes = (size_t)w * (size_t)h * 4;
-    unsigned char *rgba = malloc(bytes);
-    if (grown) a->image = grown;
-    if (!grown || !rgba) {
-        free(rgba);
-        stbi_image_free(px);
-        return ww_error_set(err, WW_E_NOMEM, from, line, column, "out of memory for '%s'", path);
-    }
-    /* our own allocation, so that ww_assets_free need not know stb's allocator */
-    memcpy(rgba, px, bytes);
-    stbi_image_free(px);
+    if (!grown) return ww_error_set(err, WW_E_NOMEM, from, line, column, "out of memory for '%s'", path);
+    a->image = grown;
     ww_image_data *im = &a->image[a->nimage];
-    *im = (ww_image_data){.width = w, .height = h, .rgba = rgba};
-    memcpy(im->path, path, strlen(path) + 1);
+    *im = (ww_image_data){.width = w, .height = h, .line = line, .column = column};
+    snprintf(im->path, sizeof im->path, "%s", path);
+    snprintf(im->from, sizeof im->from, "%s", from ? from : "");
     *index = a->nimage++;
     return WW_OK;
+}
+
+ww_result ww_assets_decode(const ww_image_data *im, unsigned char **rgba, ww_error *err) {
+    const char *from = im->from[0] ? im->from : NULL;
+    *rgba = NULL;
+    unsigned char *file;
+    size_t len;
+    ww_result r = ww_assets_check_file(im->path, WW_IMAGE_MAX_BYTES, from, im->line, im->column, err);
+    if (!r && (r = ww_file_read_max(im->path, WW_IMAGE_MAX_BYTES, WW_IMAGE_MAX_BYTES, &file, &len, err)))
+        r = at_place(r, from, im->line, im->column, err);
+    if (r) return r;
+
+    /* the size was checked at load; a file replaced since must still match it */
+    int w = 0, h = 0, comp;
+    stb_settings();
+    int same = len <= INT_MAX && stbi_info_from_memory(file, (int)len, &w, &h, &comp) &&
+               w == im->width && h == im->height;
+    unsigned char *px = same ? stbi_load_from_memory(file, (int)len, &w, &h, &comp, 4) : NULL;
+    free(file);
+    if (!same)
+        return ww_error_set(err, WW_E_SYNTAX, from, im->line, im->column,
+                            "'%s' changed since the scene was loaded: it is %dx%d, was %dx%d",
+                            im->path, w, h, im->width, im->height);
+    if (!px)
+        return ww_error_set(err, WW_E_SYNTAX, from, im->line, im->column,
+                            "cannot decode '%s': %s", im->path, stbi_failure_reason());
+    *rgba = px;
+    return WW_OK;
+}
+
+void ww_assets_pixels_free(unsigned char *rgba) { stbi_image_free(rgba); }
+
+ww_result ww_assets_named_at(ww_result r, const char *from, int line, int column, ww_error *err) {
+    if (!err || !from || strcmp(err->file, from) == 0) return r;
+    size_t n = strlen(err->msg);
+    snprintf(err->msg + n, sizeof err->msg - n, " (named at %s:%d:%d)", from, line, column);
+    return r;
+}
+
+static long long scene_triangles(const ww_assets *a) {
+    long long n = 0;
+    for (int i = 0; i < a->nmesh; i++) n += a->mesh[i].nindex / 3;
+    return n;
 }
 
 ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int line, int column,
@@ -87,9 +206,9 @@ ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int li
     if (strlen(path) >= WW_ASSET_PATH)
         return ww_error_set(err, WW_E_RANGE, from, line, column, "OBJ path too long: '%.60s...'",
                             path);
-    if (a->nmesh >= ASSETS_MAX)
+    if (a->nmesh >= WW_ASSETS_MAX)
         return ww_error_set(err, WW_E_RANGE, from, line, column, "more than %d OBJ files",
-                            ASSETS_MAX);
+                            WW_ASSETS_MAX);
     char *text;
     size_t len;
     ww_result r = ww_assets_read_file(path, WW_OBJ_MAX_BYTES, from, line, column, &text, &len, err);
@@ -97,13 +216,22 @@ ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int li
     ww_mesh_data m;
     r = ww_obj_parse(a, path, text, len, &m, err);
     free(text);
-    if (r != WW_OK) return r;
+    /* a file without faces (a binary file, a point cloud) is wrong as a whole: the scene's place */
+    if (r == WW_E_EMPTY)
+        return ww_error_set(err, r, from, line, column,
+                            "'%s' holds no faces: expected an OBJ model with 'f' lines", path);
+    if (r != WW_OK) return ww_assets_named_at(r, from, line, column, err);
+    long long total = scene_triangles(a) + m.nindex / 3;
+    if (total > WW_OBJ_MAX_ELEMENTS) {
+        ww_mesh_data_free(&m);
+        return ww_error_set(err, WW_E_RANGE, from, line, column,
+                            "'%s' makes the scene's OBJ models %lld triangles: expected at most "
+                            "%d in all",
+                            path, total, WW_OBJ_MAX_ELEMENTS);
+    }
     ww_mesh_data *grown = realloc(a->mesh, (size_t)(a->nmesh + 1) * sizeof *grown);
     if (!grown) {
-        free(m.vertex);
-        free(m.index);
-        free(m.sub);
-        free(m.material);
+        ww_mesh_data_free(&m);
         return ww_error_set(err, WW_E_NOMEM, from, line, column, "out of memory for '%s'", path);
     }
     a->mesh = grown;
@@ -114,15 +242,8 @@ ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int li
 
 void ww_assets_free(ww_assets *a) {
     if (!a) return;
-    for (int i = 0; i < a->nimage; i++) free(a->image[i].rgba);
     free(a->image);
-    for (int i = 0; i < a->nmesh; i++) {
-        ww_mesh_data *m = &a->mesh[i];
-        free(m->vertex);
-        free(m->index);
-        free(m->sub);
-        free(m->material);
-    }
+    for (int i = 0; i < a->nmesh; i++) ww_mesh_data_free(&a->mesh[i]);
     free(a->mesh);
     *a = (ww_assets){0};
 }

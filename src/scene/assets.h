@@ -1,10 +1,16 @@
-/* assets.h - the files a scene names (OBJ models with their MTL materials, PNG/TGA textures,
- * cubemap faces), decoded once at load into plain data the scene owns. A missing or broken file is
- * a load error at the scene's line that named it (or the OBJ/MTL file's own line for what is
- * wrong inside it). gfx/ uploads from here; nothing reads files after loading.
+/* assets.h - the files a scene names (OBJ models with their MTL materials, PNG/TGA/JPEG
+ * textures, cubemap faces). OBJ and MTL files are parsed at load into plain data the scene owns
+ * (the loader needs a model's bounds); images are only looked at when the scene loads (the file
+ * exists, is a regular file under the size cap, its header says a size under the caps) and are
+ * decoded by the commands that draw them, when they draw them: `plan` and `simulate` never pay
+ * for an 8192x8192 face. A missing or broken file is a load error at the scene's line that named
+ * it (or the OBJ/MTL file's own line for what is wrong inside it, with the scene's line in the
+ * message); an image broken past its header fails when decoded, at the same scene line.
  *
  *   ww_assets *a = sc->assets;                  // NULL when the scene names no file
- *   a->image[i]  RGBA8, top row first           // sky.cubemap faces, material textures
+ *   a->image[i]  path, width, height, and where it was named
+ *   ww_assets_decode(&a->image[i], &rgba, &err) // RGBA8, top row first; then
+ *   ww_assets_pixels_free(rgba)                 // (gfx/sky.c uploads each face, then frees it)
  *   a->mesh[i]   triangles, per-vertex position / normal / uv, one range per material
  *   freed by ww_scene_free
  *
@@ -21,10 +27,19 @@
 
 #define WW_ASSET_PATH 256
 
+/* the caps on images (README, "Limits"); the OBJ reader's are in scene/obj.h */
+#define WW_IMAGE_MAX_BYTES ((size_t)256 << 20) /* one image file: an 8192^2 RGBA8 PNG stored
+                                                * without compression is 256 MiB */
+#define WW_IMAGE_MAX_SIDE 8192                 /* texels per side, read from the header */
+#define WW_IMAGE_MAX_TEXELS (6LL * 8192 * 8192)/* all images of a scene: one 8192^2 cubemap
+                                                * (1.5 GiB as RGBA8) */
+#define WW_ASSETS_MAX 1024                     /* images, and OBJ files, per scene */
+
 typedef struct ww_image_data {
     char path[WW_ASSET_PATH];
-    int width, height;
-    unsigned char *rgba;        /* width * height * 4 bytes, top row first */
+    int width, height;          /* from the file's header at load */
+    char from[WW_ASSET_PATH];   /* the scene (or MTL) file that named it, and where */
+    int line, column;
 } ww_image_data;
 
 typedef struct ww_material {
@@ -62,10 +77,15 @@ typedef struct ww_assets {
     ww_mesh_data *mesh;
 } ww_assets;
 
-/* a decoded image (PNG, TGA, JPEG: what stb_image reads), kept once per path; *index its slot.
- * Errors name `from` at line:column (the scene key or MTL line that named it). */
+/* an image (PNG, TGA, JPEG: what stb_image reads), kept once per path; *index its slot. Only
+ * its header is read here. Errors name `from` at line:column (the scene key or MTL line that
+ * named it). */
 ww_result ww_assets_image(ww_assets *a, const char *path, const char *from, int line, int column,
                           int *index, ww_error *err);
+/* the image's pixels, RGBA8 top row first (width x height x 4 bytes), decoded now; the caller
+ * frees them with ww_assets_pixels_free. Errors name the place that named the image. */
+ww_result ww_assets_decode(const ww_image_data *im, unsigned char **rgba, ww_error *err);
+void ww_assets_pixels_free(unsigned char *rgba);
 /* an OBJ file with its MTL libraries and their textures, kept once per path */
 ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int line, int column,
                         int *index, ww_error *err);

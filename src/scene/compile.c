@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/mathx.h"
 #include "core/rng.h"
@@ -35,9 +37,9 @@
 /* every range of the schema, in file order; angles are checked in degrees */
 static const rule R_SEED = WHOLE(0, 9007199254740991.0, ""); /* 2^53 - 1, exact in a double */
 static const rule R_DT = OPEN_LO(0, 1, "s");
-static const rule R_FPS = OPEN_LO(0, 1000, "frames/s");
-static const rule R_DURATION = OPEN_LO(0, 1e7, "s");
-static const rule R_START = CLOSED(0, 1e9, "s");
+static const rule R_FPS = OPEN_LO(0, WW_FPS_MAX, "frames/s");
+static const rule R_DURATION = OPEN_LO(0, WW_DURATION_MAX, "s");
+static const rule R_START = CLOSED(0, WW_TIME_MAX, "s");
 static const rule R_HOURS = CLOSED(0, 24, "h");
 static const rule R_LEVEL = CLOSED(-1e6, 1e6, "m");
 static const rule R_DEPTH = OPEN_LO(0, 1e4, "m");
@@ -67,10 +69,10 @@ static const rule R_RIPPLE_WAVENUMBER = OPEN_LO(0, 1e4, "rad/m");
 static const rule R_FOV = CLOSED(1, 179, "deg");
 static const rule R_NEAR = OPEN_LO(0, 100, "m");
 static const rule R_FAR_MAX = CLOSED(0, 1e7, "m"); /* lo is near, open: built in compile_camera */
-static const rule R_KEY_TIME = CLOSED(0, 1e9, "s");
+static const rule R_KEY_TIME = CLOSED(0, WW_TIME_MAX, "s");
 static const rule R_POSITION = FINITE("m");
 static const rule R_PITCH = CLOSED(-89.9, 89.9, "deg");
-static const rule R_EVENT_TIME = CLOSED(0, 1e9, "s");
+static const rule R_EVENT_TIME = CLOSED(0, WW_TIME_MAX, "s");
 
 /* script actions: an event holds "t" and exactly one of these; an action with a range is a
  * number, one without is read by its function from the event's mapping (compile_event) */
@@ -408,9 +410,19 @@ ww_result wwc_resolve_path(ctx *c, const ww_node *n, char *out, size_t size) {
     if (len < 0 || (size_t)len >= size)
         return wwc_fail(c, WW_E_RANGE, n, "the file name '%.60s...' is longer than %zu characters",
                         n->text, size - 1);
-    FILE *f = fopen(out, "rb");
-    if (!f) return wwc_fail(c, WW_E_NOFILE, n, "cannot open '%s': %s", out, strerror(errno));
-    fclose(f);
+    /* looked at, not opened: opening a FIFO would wait for a writer. The file is read at load
+     * and again when it is drawn or played, so it must be a regular file (a pipe gives its bytes
+     * once, /dev/zero never ends) */
+    struct stat st;
+    if (stat(out, &st) != 0 || access(out, R_OK) != 0)
+        return wwc_fail(c, WW_E_NOFILE, n, "cannot open '%s': %s", out, strerror(errno));
+    if (S_ISDIR(st.st_mode))
+        return wwc_fail(c, WW_E_NOFILE, n, "'%s' is a folder: expected a file", out);
+    if (!S_ISREG(st.st_mode))
+        return wwc_fail(c, WW_E_NOFILE, n,
+                        "'%s' is not a regular file (a device, FIFO or socket): expected a file "
+                        "that can be read twice, at load and when it is used",
+                        out);
     return WW_OK;
 }
 
@@ -926,6 +938,11 @@ static ww_result compile_camera(ctx *c, const section *top) {
     sc->interp = (ww_interp)interp;
     TRY(wwc_get_word(c, &s, "collide", BOOL_WORDS, &sc->camera_collide));
     TRY(wwc_get_list(c, &s, "path", WW_MAX_KEYS, &path));
+    /* no path is the default camera; an empty one is a path that lost its keys */
+    if (path && path->n == 0)
+        return wwc_fail(c, WW_E_RANGE, path,
+                        "camera.path is an empty list: expected at least one key {t, position, "
+                        "look_at} (or no path at all for the default camera)");
 
     /* keys in strictly increasing time */
     int i = 0;

@@ -1,7 +1,9 @@
 /* compile_audio.c - the scene's `audio:` section (scene/desc_audio.h): master volume, the music
  * bed, spatialisation and engine knobs, and a WAV file per sound. Files are resolved against the
- * folder of the file that names them and checked to be readable here; they are decoded when a
- * track is made (tools/audio.c), with their place kept for messages.
+ * folder of the file that names them and checked to be readable regular files here; their
+ * headers are checked against io/wav.h's caps when a command loads the scene (tools/audio.h's
+ * ww_audio_check, from cli/args.c) and they are decoded when a track is made (tools/audio.c),
+ * with their place kept for messages.
  */
 #include <string.h>
 

@@ -20,7 +20,7 @@ static const rule R_TIME_CONSTANT = CLOSED(0, 1e3, "s");
 static const rule R_SEAT = CLOSED(-1e2, 1e2, "m");
 static const rule R_LOOK_PITCH = CLOSED(-89, 89, "deg");
 static const rule R_INPUT = CLOSED(-1, 1, "");
-static const rule R_UNTIL = CLOSED(0, 1e9, "s");
+static const rule R_UNTIL = CLOSED(0, WW_TIME_MAX, "s");
 
 /* the words of `camera:`, indexed by ev->index */
 static const char *const CAMERA_WORDS[] = {"free", "boat", NULL};

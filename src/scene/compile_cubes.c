@@ -101,7 +101,8 @@ ww_result wwc_cubes(ctx *c, const section *objects) {
     ww_cubes_desc *cd = &c->sc->cubes;
     const ww_node *list;
     TRY(wwc_get_list(c, objects, "cubes", WW_MAX_CUBES, &list));
-    if (!list) return WW_OK;
+    /* cubes: [] is no cubes, as when the key is absent (--set objects.cubes=[] removes them) */
+    if (!list || list->n == 0) return WW_OK;
     int n = 0;
     for (const ww_node *item = list->first; item; item = item->next, n++)
         TRY(compile_cube(c, item, n, &cd->cube[n]));

@@ -91,7 +91,7 @@ ww_result wwc_get_list(ctx *c, const section *s, const char *key, int max,
                        const ww_node **out);
 
 /* a file name written at node n, resolved against the folder of the file n was written in
- * (absolute names stay), checked to be readable: an error at n otherwise */
+ * (absolute names stay), checked to be a readable regular file: an error at n otherwise */
 ww_result wwc_resolve_path(ctx *c, const ww_node *n, char *out, size_t size);
 
 /* ---- how the scene is drawn (compile_render.c) ------------------------------------------- */

@@ -12,7 +12,7 @@
 #include "scene/assets.h"
 #include "scene/compile_impl.h"
 
-static const rule R_CHEST_FIRST = CLOSED(0, 1e9, "s");
+static const rule R_CHEST_FIRST = CLOSED(0, WW_TIME_MAX, "s");
 static const rule R_CHEST_EVERY = OPEN_LO(0, 1e9, "s");
 static const rule R_CHEST_TTL = OPEN_LO(0, 1e9, "s");
 static const rule R_CHEST_RADIUS = CLOSED(0, 1e4, "m");

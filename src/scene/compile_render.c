@@ -12,7 +12,7 @@
 #include "scene/assets.h"
 #include "scene/compile_impl.h"
 
-static const rule R_SIZE = WHOLE(16, 16384, "px");
+static const rule R_SIZE = WHOLE(WW_SIZE_MIN, WW_SIZE_MAX, "px");
 static const rule R_EXPOSURE = OPEN_LO(0, 100, "");
 static const rule R_GAMMA = CLOSED(0.5, 5, "");
 static const rule R_HOURS = CLOSED(0, 24, "h");

@@ -13,6 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/readfile.h"
+
 /* the MTL defaults (Wavefront's: Kd 0.8 grey, no specular, opaque) */
 static const float DEFAULT_KD = 0.8f;
 static const float DEFAULT_NS = 32.0f;
@@ -137,53 +139,48 @@ static int join_path(char *out, size_t size, const char *from, const char *name,
 
 ww_result ww_assets_read_file(const char *path, size_t max, const char *from, int line,
                               int column, char **text, size_t *len, ww_error *err) {
+    unsigned char *buf = NULL;
     *text = NULL;
     *len = 0;
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return ww_error_set(err, WW_E_NOFILE, from, line, column, "cannot open '%s': %s", path,
-                            strerror(errno));
-    char *buf = NULL;
-    size_t n = 0, cap = 0;
-    for (;;) {
-        if (n == cap) {
-            size_t next = cap ? cap * 2 : 65536;
-            if (cap >= max + 1) {
-                free(buf);
-                fclose(f);
-                return ww_error_set(err, WW_E_RANGE, from, line, column,
-                                    "'%s' is larger than %zu bytes", path, max);
-            }
-            if (next > max + 1) next = max + 1;
-            char *p = realloc(buf, next + 1);
-            if (!p) {
-                free(buf);
-                fclose(f);
-                return ww_error_set(err, WW_E_NOMEM, from, line, column,
-                                    "out of memory reading '%s'", path);
-            }
-            buf = p;
-            cap = next;
+    ww_result r = ww_assets_check_file(path, max, from, line, column, err);
+    if (r) return r;
+    if ((r = ww_file_read_max(path, max, max, &buf, len, err))) {
+        if (err) {
+            snprintf(err->file, sizeof err->file, "%s", from ? from : "");
+            err->line = line;
+            err->column = column;
         }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) break;
+        return r;
     }
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) {
-        free(buf);
-        return ww_error_set(err, WW_E_NOFILE, from, line, column, "cannot read '%s'", path);
-    }
-    if (n > max) {
-        free(buf);
-        return ww_error_set(err, WW_E_RANGE, from, line, column, "'%s' is larger than %zu bytes",
-                            path, max);
-    }
-    buf[n] = '\0';
-    *text = buf;
-    *len = n;
+    *text = (char *)buf;
     return WW_OK;
+}
+
+void ww_mesh_data_free(ww_mesh_data *m) {
+    free(m->vertex);
+    free(m->index);
+    free(m->sub);
+    free(m->material);
+    *m = (ww_mesh_data){0};
+}
+
+/* OBJ and MTL are text: a NUL byte means a binary file (a binary STL or glTF, a compressed
+ * model), which would otherwise read as lines of unknown keywords and no faces */
+static ww_result check_text(const char *path, const char *text, size_t len, ww_error *err) {
+    const char *nul = memchr(text, 0, len);
+    if (!nul) return WW_OK;
+    int line = 1, col = 1;
+    for (const char *p = text; p < nul; p++) {
+        if (*p == '\n') {
+            line++;
+            col = 1;
+        } else {
+            col++;
+        }
+    }
+    return ww_error_set(err, WW_E_SYNTAX, path, line, col,
+                        "a NUL byte: '%s' is not a text file (expected Wavefront OBJ/MTL text)",
+                        path);
 }
 
 /* ---- MTL ---------------------------------------------------------------------------------- */
@@ -210,7 +207,7 @@ static ww_result parse_mtl(ww_assets *a, const char *path, const char *text, siz
                            ww_error *err) {
     cur c = {.p = text, .end = text + len, .bol = text, .line = 1, .file = path};
     ww_material *m = NULL;
-    ww_result r = WW_OK;
+    ww_result r = check_text(path, text, len, err);
     for (; c.p < c.end && r == WW_OK; next_line(&c)) {
         const char *kw;
         int col = (skip_blank(&c), column(&c));
@@ -388,7 +385,7 @@ static ww_result parse_mtllib(cur *c, ww_assets *a, obj *o, ww_error *err) {
         if (r != WW_OK) return r;
         r = parse_mtl(a, file, text, len, &o->mats, err);
         free(text);
-        if (r != WW_OK) return r;
+        if (r != WW_OK) return ww_assets_named_at(r, c->file, c->line, col, err);
     }
     if (!any) return fail(c, WW_E_SYNTAX, column(c), err, "%s", "mtllib: expected a file name");
     return WW_OK;
@@ -544,9 +541,9 @@ ww_result ww_obj_parse(ww_assets *a, const char *path, const char *text, size_t 
              .subs = {.size = sizeof(sub), .max = WW_OBJ_MAX_ELEMENTS},
              .mats = {.size = sizeof(ww_material), .max = WW_OBJ_MAX_MATERIALS}};
     cur c = {.p = text, .end = text + len, .bol = text, .line = 1, .file = path};
-    ww_result r = WW_OK;
     *out = (ww_mesh_data){0};
     snprintf(out->path, sizeof out->path, "%s", path);
+    ww_result r = check_text(path, text, len, err);
     for (; c.p < c.end && r == WW_OK; next_line(&c)) {
         const char *kw;
         int col = (skip_blank(&c), column(&c));
@@ -578,12 +575,6 @@ ww_result ww_obj_parse(ww_assets *a, const char *path, const char *text, size_t 
     }
     if (r == WW_OK) r = build(&o, path, out, err);
     obj_free(&o);
-    if (r != WW_OK) {
-        free(out->vertex);
-        free(out->index);
-        free(out->sub);
-        free(out->material);
-        *out = (ww_mesh_data){0};
-    }
+    if (r != WW_OK) ww_mesh_data_free(out);
     return r;
 }

@@ -37,5 +37,14 @@ ww_result ww_obj_parse(ww_assets *a, const char *path, const char *text, size_t 
  * from:line:column (the place that named the file) */
 ww_result ww_assets_read_file(const char *path, size_t max, const char *from, int line,
                               int column, char **text, size_t *len, ww_error *err);
+/* path is a readable regular file of at most max bytes (looked at, not opened: a FIFO would
+ * wait for a writer); errors name from:line:column (assets.c) */
+ww_result ww_assets_check_file(const char *path, size_t max, const char *from, int line,
+                               int column, ww_error *err);
+/* r, with " (named at from:line:column)" added to the message of an error raised inside a file
+ * that from named (the error keeps its own place: the OBJ's or MTL's line) */
+ww_result ww_assets_named_at(ww_result r, const char *from, int line, int column, ww_error *err);
+/* frees the arrays of one mesh and zeroes it */
+void ww_mesh_data_free(ww_mesh_data *m);
 
 #endif

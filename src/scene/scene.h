@@ -32,6 +32,20 @@
 #define WW_MAX_EVENTS 1024
 #define WW_MAX_WARNINGS 8
 
+/* what a load reads, capped so that no input asks for unbounded memory or time (README,
+ * "Limits"): past a cap the load stops with WW_E_RANGE naming the file, and the scene line that
+ * named it. The caps of the files a scene names are in scene/assets.h and scene/obj.h. */
+#define WW_SCENE_MAX_BYTES ((size_t)4 << 20) /* a scene or --script file, bytes */
+#define WW_SCENE_MAX_NODES 262144            /* YAML keys and values of one file with its --set */
+
+/* limits shared by the scene and the command line, so that neither accepts what the other
+ * refuses */
+#define WW_TIME_MAX 1e9          /* s: time.start, camera key times, event times */
+#define WW_DURATION_MAX 1e7      /* s: time.duration */
+#define WW_FPS_MAX 1000.0        /* frames/s: time.fps */
+#define WW_SIZE_MIN 16           /* px: render.size, --size, each side */
+#define WW_SIZE_MAX 16384
+
 /* water.waves.model. Every family is a list of components (ww_wave) evaluated by src/sim/waves.h
  * and shaders/gerstner.glsl; the model decides the profile of each component:
  *   FLAT        no components

@@ -12,6 +12,8 @@
 #include <yaml.h>
 
 #include "core/arena.h"
+#include "core/readfile.h"
+#include "scene/scene.h"
 
 #define TREE_BLOCK_BYTES (64u * 1024u)
 #define TREE_MAX_DEPTH 64
@@ -24,6 +26,7 @@ typedef struct tree_block {
 struct ww_tree {
     ww_node *root;
     tree_block *blocks;    /* newest first; freed together */
+    int nodes;             /* made so far, against WW_SCENE_MAX_NODES */
 };
 
 typedef struct parser {
@@ -58,6 +61,7 @@ static void *tree_alloc(ww_tree *t, size_t n) {
 ww_node *ww_tree_node(ww_tree *t, ww_node_kind kind, ww_mark mark) {
     ww_node *n = tree_alloc(t, sizeof *n);
     if (!n) return NULL;
+    t->nodes++;
     n->kind = kind;
     n->mark = mark;
     n->text = "";
@@ -273,6 +277,11 @@ static ww_result parse_node(parser *p, const yaml_event_t *ev, int depth, ww_nod
         return ww_error_set(p->err, WW_E_SYNTAX, m.file, m.line, m.column,
                             "nested more than %d levels deep: expected a flatter scene",
                             TREE_MAX_DEPTH);
+    /* the largest scene the format allows (every list at its cap) holds a tenth of this */
+    if (p->t->nodes >= WW_SCENE_MAX_NODES)
+        return ww_error_set(p->err, WW_E_RANGE, m.file, m.line, m.column,
+                            "more than %d YAML keys and values: expected a smaller scene",
+                            WW_SCENE_MAX_NODES);
     switch (ev->type) {
     case YAML_SCALAR_EVENT: return parse_scalar(p, ev, out);
     case YAML_SEQUENCE_START_EVENT: return parse_seq(p, ev, depth, out);
@@ -372,33 +381,15 @@ ww_result ww_tree_parse(const char *name, const char *text, size_t len, ww_tree 
 
 ww_result ww_tree_load(const char *path, ww_tree **out, ww_error *err) {
     *out = NULL;
-    FILE *f = fopen(path, "rb");
-    if (!f) return ww_error_set(err, WW_E_NOFILE, path, 0, 0, "cannot open '%s': %s", path,
-                                strerror(errno));
-
-    /* the whole file, grown by doubling */
-    size_t cap = 4096, len = 0, got;
-    char *buf = malloc(cap);
-    while (buf && (got = fread(buf + len, 1, cap - len, f)) > 0) {
-        len += got;
-        if (len == cap) {
-            char *nb = realloc(buf, cap * 2);
-            if (!nb) free(buf);
-            buf = nb;
-            cap *= 2;
-        }
+    unsigned char *buf = NULL;
+    size_t len = 0;
+    ww_result r = ww_file_read_max(path, WW_SCENE_MAX_BYTES, WW_SCENE_MAX_BYTES, &buf, &len, err);
+    if (r) {
+        /* the reader's message names the file; the place is the file itself */
+        if (err) snprintf(err->file, sizeof err->file, "%s", path);
+        return r;
     }
-    int bad = ferror(f);
-    int errnum = errno;
-    fclose(f);
-    if (!buf) return ww_error_set(err, WW_E_NOMEM, path, 0, 0, "out of memory reading '%s'", path);
-    if (bad) {
-        free(buf);
-        return ww_error_set(err, WW_E_NOFILE, path, 0, 0, "cannot read '%s': %s", path,
-                            strerror(errnum));
-    }
-
-    ww_result r = ww_tree_parse(path, buf, len, out, err);
+    r = ww_tree_parse(path, (const char *)buf, len, out, err);
     free(buf);
     return r;
 }

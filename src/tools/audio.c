@@ -262,39 +262,57 @@ void ww_audio_step(ww_audio *a, const ww_scene *sc, const ww_state *st) {
 
 /* ---- clips --------------------------------------------------------------------------------- */
 
-/* a WAV named in the scene, linearly resampled to 44.1 kHz; errors name the scene's place */
+/* a WAV named in the scene, linearly resampled to 44.1 kHz as it is read (io/wav.h: the file is
+ * never held whole, the clip is the only allocation); errors name the scene's place */
 static ww_result load_file(const ww_audio_file *f, const char *what, ww_clip *out, ww_error *err) {
     ww_wav w;
     ww_error e;
-    ww_result r = ww_wav_read(f->path, &w, &e);
-    if (r) return ww_error_set(err, r, f->file, f->line, f->column, "%s: '%s': %s", what, f->path, e.msg);
-    double step = (double)w.rate / WW_AUDIO_RATE;
     *out = (ww_clip){0};
-    out->channels = w.channels;
-    out->frames = (int64_t)((double)(w.frames - 1) / step) + 1;
-    out->data = malloc((size_t)out->frames * (size_t)w.channels * sizeof *out->data);
-    if (!out->data) {
-        ww_wav_free(&w);
-        return ww_error_set(err, WW_E_NOMEM, f->file, f->line, f->column, "out of memory for '%s'", f->path);
-    }
-    for (int64_t i = 0; i < out->frames; i++) {
-        double p = (double)i * step;
-        int64_t j = (int64_t)p, k = j + 1 < w.frames ? j + 1 : j;
-        double t = p - (double)j;
-        for (int ch = 0; ch < w.channels; ch++)
-            out->data[i * w.channels + ch] = (float)((1.0 - t) * w.data[j * w.channels + ch] +
-                                                     t * w.data[k * w.channels + ch]);
-    }
-    ww_wav_free(&w);
+    ww_result r = ww_wav_read_resampled(f->path, WW_AUDIO_RATE, &w, &e);
+    if (r) return ww_error_set(err, r, f->file, f->line, f->column, "%s: '%s': %s", what, f->path, e.msg);
+    *out = (ww_clip){.data = w.data, .frames = w.frames, .channels = w.channels};
     return WW_OK;
 }
 
-static ww_result load_clips(ww_audio *a, ww_error *err) {
-    static const char *const names[] = {
+static const char *const SOUND_KEYS[] = {
 #define WW_SOUND_NAME(id, name, what) "audio.sounds." name,
-        WW_AUDIO_SOUNDS(WW_SOUND_NAME)
+    WW_AUDIO_SOUNDS(WW_SOUND_NAME)
 #undef WW_SOUND_NAME
-    };
+};
+
+/* one named file's header: its length added to *seconds, against the scene's cap */
+static ww_result check_file(const ww_audio_file *f, const char *what, double *seconds,
+                            ww_error *err) {
+    if (!f->path[0]) return WW_OK;
+    ww_wav w;
+    ww_error e = {0};
+    ww_result r = ww_wav_info(f->path, &w, &e);
+    if (r) return ww_error_set(err, r, f->file, f->line, f->column, "%s: '%s': %s", what, f->path, e.msg);
+    double s = (double)w.frames / w.rate;
+    *seconds += s;
+    if (*seconds > WW_AUDIO_MAX_FILE_SECONDS)
+        return ww_error_set(err, WW_E_RANGE, f->file, f->line, f->column,
+                            "%s: '%s' (%.1f s) makes the scene's sound files %.1f s long: "
+                            "expected at most %.0f s in all",
+                            what, f->path, s, *seconds, WW_AUDIO_MAX_FILE_SECONDS);
+    return WW_OK;
+}
+
+ww_result ww_audio_check(const ww_scene *sc, ww_error *err) {
+    const ww_audio_desc *d = &sc->audio;
+    double seconds = 0.0;
+    ww_result r = WW_OK;
+    if (!d->on) return WW_OK;
+    for (int s = 0; s < WW_SOUND_COUNT && !r; s++)
+        if (s != WW_SOUND_SPLASH) r = check_file(&d->sounds[s], SOUND_KEYS[s], &seconds, err);
+    for (int v = 0; v < d->nsplash && !r; v++)
+        r = check_file(&d->splash[v], SOUND_KEYS[WW_SOUND_SPLASH], &seconds, err);
+    if (!r) r = check_file(&d->music_file, "audio.music.file", &seconds, err);
+    return r;
+}
+
+static ww_result load_clips(ww_audio *a, ww_error *err) {
+    const char *const *names = SOUND_KEYS;
     ww_result r;
     for (int s = 0; s < WW_SOUND_COUNT; s++) {
         if (s == WW_SOUND_SPLASH) continue;
@@ -326,6 +344,18 @@ ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step
                        ww_error *err) {
     WW_ASSERT(first_step >= 0 && last_step >= first_step);
     *out = NULL;
+    /* the mix is held whole (float stereo, 353 kB a second): its length is capped before any
+     * file is read or any step taken */
+    double seconds = (double)(last_step - first_step) * sc->dt;
+    if (seconds > WW_AUDIO_MAX_TRACK_SECONDS)
+        return ww_error_set(err, WW_E_RANGE, NULL, 0, 0,
+                            "--audio: a sound track of %.0f s: expected at most %.0f s (%.2f GB "
+                            "of mix); render it in slices with --frames A:B (their tracks butt "
+                            "together)",
+                            seconds, WW_AUDIO_MAX_TRACK_SECONDS,
+                            WW_AUDIO_MAX_TRACK_SECONDS * WW_AUDIO_RATE * 2 * sizeof(float) / 1e9);
+    ww_result r = ww_audio_check(sc, err);
+    if (r) return r;
     ww_audio *a = calloc(1, sizeof *a);
     if (!a) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sound track");
     a->d = sc->audio;
@@ -339,7 +369,7 @@ ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step
     smooth_init(&a->eng_rate, TAU_RATE);
     smooth_init(&a->underwater, TAU_UNDERWATER);
     smooth_init(&a->music_gain, TAU_DUCK);
-    ww_result r = load_clips(a, err);
+    r = load_clips(a, err);
     size_t frames = (size_t)(a->b1 - a->b0);
     if (!r && !(a->mix = calloc(frames * 2 + 2, sizeof *a->mix)))
         r = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for a %.0f s sound track",
@@ -381,25 +411,32 @@ static double limit(double x) {
 ww_result ww_audio_write(ww_audio *a, const char *path, ww_error *err) {
     mix_loops(a, a->b1);
     int64_t frames = a->b1 - a->b0;
-    int16_t *pcm = malloc((size_t)(frames * 2 + 1) * sizeof *pcm);
-    if (!pcm) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sound track");
+    /* the 16-bit samples overwrite the mix in place: sample i goes to byte 2i once the float at
+     * byte 4i it is made from was read (memcpy: the bytes change type, which no pointer cast may
+     * say in C) */
+    unsigned char *bytes = (unsigned char *)a->mix;
 
     /* TPDF dither of +-1 LSB from a counter-based draw per absolute sample; digital silence
      * (an exact 0) stays silent */
     for (int64_t i = 0; i < frames * 2; i++) {
-        double x = a->mix[i] * a->d.volume;
-        if (x == 0.0) {
-            pcm[i] = 0;
-            continue;
+        float m;
+        memcpy(&m, bytes + 4 * i, sizeof m);
+        double x = m * a->d.volume;
+        int16_t s = 0;
+        if (x != 0.0) {
+            uint64_t n = (uint64_t)(a->b0 + i / 2), ch = (uint64_t)(i % 2);
+            double tpdf = ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch) -
+                          ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch + 1);
+            double v = floor(limit(x) * PCM_FULL + tpdf + 0.5);
+            s = (int16_t)fmax(-PCM_FULL - 1.0, fmin(PCM_FULL, v));
         }
-        uint64_t n = (uint64_t)(a->b0 + i / 2), ch = (uint64_t)(i % 2);
-        double tpdf = ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch) -
-                      ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch + 1);
-        double v = floor(limit(x) * PCM_FULL + tpdf + 0.5);
-        pcm[i] = (int16_t)fmax(-PCM_FULL - 1.0, fmin(PCM_FULL, v));
+        memcpy(bytes + 2 * i, &s, sizeof s);
     }
+    const int16_t *pcm = (const int16_t *)(void *)bytes;
     ww_result r = ww_wav_write16(path, pcm, frames, 2, WW_AUDIO_RATE, err);
-    free(pcm);
+    /* the mix is spent: a second write would read 16-bit samples as floats */
+    free(a->mix);
+    a->mix = NULL;
     return r;
 }
 

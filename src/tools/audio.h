@@ -23,12 +23,25 @@
 #include "scene/scene.h"
 #include "sim/state.h"
 
+/* all the WAV files of a scene together, s: each is held resampled to 44.1 kHz float (one file
+ * is at most io/wav.h's WW_WAV_MAX_SECONDS); 900 s of stereo is 318 MB */
+#define WW_AUDIO_MAX_FILE_SECONDS 900.0
+
+/* the longest track one render makes (the mix is held whole, float stereo: 1.27 GB at the cap);
+ * a longer one is made in slices (--frames A:B), whose tracks butt together */
+#define WW_AUDIO_MAX_TRACK_SECONDS 3600.0
+
 typedef struct ww_audio ww_audio;
 
+/* the headers of the scene's WAV files against io/wav.h's caps and WW_AUDIO_MAX_FILE_SECONDS,
+ * without reading a sample: every command runs it when it loads a scene (cli/args.c), so a bad
+ * file is exit 2 at its scene line whatever the command; ww_audio_new runs it first too */
+ww_result ww_audio_check(const ww_scene *sc, ww_error *err);
 ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step, ww_audio **out,
                        ww_error *err);
 /* after each step: the step's events, the camera, the boat's speed, above or below water */
 void ww_audio_step(ww_audio *a, const ww_scene *sc, const ww_state *st);
+/* once: the mix is converted in place and freed */
 ww_result ww_audio_write(ww_audio *a, const char *path, ww_error *err);
 void ww_audio_free(ww_audio *a);
 

@@ -20,6 +20,7 @@
 
 #include "gfx/renderer.h"
 #include "io/image.h"
+#include "io/outpath.h"
 #include "io/queue.h"
 #include "io/stream.h"
 #include "io/writers.h"
@@ -471,7 +472,19 @@ static ww_result check_opts(const ww_job_opts *o, ww_error *err) {
                             o->format == WW_OUT_NONE ? "none" : ww_out_format_ext(o->format));
     if (o->alpha && o->format != WW_OUT_PNG && o->format != WW_OUT_EXR)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--alpha needs --format png or exr");
-    return WW_OK;
+
+    /* every output, before anything is read, stepped or drawn: a folder named by --audio is
+     * found now, not after the last frame */
+    ww_result r = WW_OK;
+    const char *stream = is_stream(o->format) ? o->out_dir : NULL;
+    if (o->format == WW_OUT_PNG || o->format == WW_OUT_EXR) r = ww_check_out_dir("-o", o->out_dir, err);
+    if (!r && stream) r = ww_check_out_file("-o", stream, 1, err);
+    if (!r && o->stats_path) r = ww_check_out_file("--stats", o->stats_path, 1, err);
+    if (!r && o->audio_path) r = ww_check_out_file("--audio", o->audio_path, 1, err);
+    if (!r) r = ww_check_out_distinct("-o", stream, "--stats", o->stats_path, err);
+    if (!r) r = ww_check_out_distinct("-o", stream, "--audio", o->audio_path, err);
+    if (!r) r = ww_check_out_distinct("--stats", o->stats_path, "--audio", o->audio_path, err);
+    return r;
 }
 
 /* the GL side and the state; the output (folder or stream) once nothing before it can fail */

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/readfile.h"
 #include "core/rng.h"
 #include "io/image.h"
 #include "io/json.h"
@@ -21,6 +22,7 @@
 #include "io/writers.h"
 #include "sim/floater_stats.h"
 #include "sim/wave_stats.h"
+#include "tools/audio.h"
 #include "tools/contact.h"
 #include "tools/job.h"
 
@@ -1065,7 +1067,8 @@ ww_result ww_sweep_new(const ww_sweep_opts *o, ww_sweep **out, ww_error *err) {
     }
 
     /* the scene, read once; its first point shows whether the keys exist */
-    if ((r = ww_read_file(o->scene_path, &s->text, &s->len, err))) goto fail;
+    if ((r = ww_file_read_max(o->scene_path, WW_SCENE_MAX_BYTES, WW_SCENE_MAX_BYTES, &s->text,
+                                &s->len, err))) goto fail;
     ww_scene *sc = NULL;
     ww_error first = {0};
     ww_result fr = load_point(s, o->point >= 0 ? o->point : 0, &sc, &first);
@@ -1074,7 +1077,9 @@ ww_result ww_sweep_new(const ww_sweep_opts *o, ww_sweep **out, ww_error *err) {
         r = fr;
         goto fail;
     }
-    if (fr == WW_OK && o->thumbs && o->thumb_frame >= sc->frame_count) {
+    /* the scene's WAV files, by their headers, as every command that loads a scene checks them */
+    if (fr == WW_OK) r = ww_audio_check(sc, err);
+    if (!r && fr == WW_OK && o->thumbs && o->thumb_frame >= sc->frame_count) {
         r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--thumb-frame %lld is past the scene's %lld frames",
                          (long long)o->thumb_frame, (long long)sc->frame_count);
     }
