@@ -42,28 +42,63 @@ static const double yiq_m[3][3] = {{0.29889531, 0.58662247, 0.11448223},
                                    {0.21147017, -0.52261711, 0.31114694}};
 static const double yiq_w[3] = {0.5053, 0.299, 0.1957}; /* their weights of dY^2, dI^2, dQ^2 */
 
-/* premultiplied colour on white, 8-bit scale: c + (1 - alpha), the "over white" blend */
+/* pixelmatch reads 8-bit RGBA. A pixel with alpha below 255 it blends on white, r a / 255 + 255 - a,
+ * and it takes the difference of two pixels as one integer over 255,
+ * (r1 a1 - r2 a2 - 255 (a1 - a2)) / 255, or as r1 - r2 when both are opaque (the same double).
+ * We hold r / 255 * a / 255 in a float (premultiplied); on_white gives back the integer
+ * r a + 255 (255 - a), the pixel on white in 255ths of a level: the floats' error is below 0.02
+ * of these, so rounding restores it exactly, and a difference of two, over 255, is pixelmatch's
+ * to the bit. A 16-bit value lands on the same grid, within about half of its own step. */
+#define WHITE_STEPS (LEVELS * LEVELS) /* 255ths of an 8-bit level in [0, 1] */
+/* added then subtracted, it rounds a double of magnitude below 2^51 to an integer (to nearest,
+ * as the FPU rounds; a libm call per value would cost more than the rest of the delta) */
+#define ROUND_TO_INT 0x1.8p52
+
+/* v in [0, 1] in 255ths of a level, rounded */
+static inline double on_grid(double v) {
+    return (v * WHITE_STEPS + ROUND_TO_INT) - ROUND_TO_INT;
+}
+
+/* premultiplied colour on white, c + (1 - alpha) (the "over white" blend), in 255ths of a level */
 static void on_white(const float *px, double out[3]) {
     double a = unit(px[3]);
-    for (int c = 0; c < 3; c++) out[c] = LEVELS * (unit(px[c]) + 1.0 - a);
+    for (int c = 0; c < 3; c++) out[c] = on_grid(unit(px[c]) + 1.0 - a);
 }
 
-double ww_cmp_luma_on_white(const float *px) {
-    double v[3];
-    on_white(px, v);
-    return yiq_m[0][0] * v[0] + yiq_m[0][1] * v[1] + yiq_m[0][2] * v[2];
+/* two pixels on white (on_white) to their difference in levels, pixelmatch's dr, dg, db */
+static inline void white_diff(const double u[3], const double v[3], double d[3]) {
+    for (int c = 0; c < 3; c++) d[c] = (u[c] - v[c]) / LEVELS;
 }
 
-double ww_cmp_yiq_delta(const float *p, const float *q) {
-    double u[3], v[3], d[3], delta = 0;
-    on_white(p, u);
-    on_white(q, v);
-    for (int c = 0; c < 3; c++) d[c] = u[c] - v[c];
+/* Y of a difference on white (Kotsarenko & Ramos's first row), in pixelmatch's order */
+static inline double yiq_y(const double d[3]) {
+    return yiq_m[0][0] * d[0] + yiq_m[0][1] * d[1] + yiq_m[0][2] * d[2];
+}
+
+/* the weighted YIQ delta of a difference on white, terms in pixelmatch's order */
+static inline double yiq_of(const double d[3]) {
+    double delta = 0;
     for (int k = 0; k < 3; k++) {
         double e = yiq_m[k][0] * d[0] + yiq_m[k][1] * d[1] + yiq_m[k][2] * d[2];
         delta += yiq_w[k] * e * e;
     }
     return delta;
+}
+
+double ww_cmp_luma_on_white(const float *px) {
+    static const double black[3] = {0, 0, 0};
+    double v[3], l[3];
+    on_white(px, v);
+    white_diff(v, black, l);
+    return yiq_y(l);
+}
+
+double ww_cmp_yiq_delta(const float *p, const float *q) {
+    double u[3], v[3], d[3];
+    on_white(p, u);
+    on_white(q, v);
+    white_diff(u, v, d);
+    return yiq_of(d);
 }
 
 static int same_pixel(const float *p, const float *q) {
@@ -80,16 +115,22 @@ static nbhd around(const ww_cmp_image *im, int x, int y) {
     return n;
 }
 
-/* pixels i and k of an image are the same, in either layout */
+/* pixels i and k of an image are the same, in either layout. pixelmatch compares the stored RGBA;
+ * we compare the premultiplied colour (the same for opaque pixels; under alpha 0 every colour is
+ * the same to us) */
 static int same_at(const ww_cmp_image *im, size_t i, size_t k) {
     if (im->rgb8) return memcmp(im->rgb8 + 3 * i, im->rgb8 + 3 * k, 3) == 0;
     return same_pixel(im->rgba + 4 * i, im->rgba + 4 * k);
 }
 
-static double luma_at(const ww_cmp_image *im, size_t i) {
-    float px[4];
-    ww_cmp_pixel(im, i, px);
-    return ww_cmp_luma_on_white(px);
+/* pixel i on white (on_white), in either layout: an rgb8 pixel's level k is 255 k there */
+static void white_at(const ww_cmp_image *im, size_t i, double out[3]) {
+    if (im->rgb8) {
+        const unsigned char *p = im->rgb8 + 3 * i;
+        out[0] = LEVELS * p[0], out[1] = LEVELS * p[1], out[2] = LEVELS * p[2];
+        return;
+    }
+    on_white(im->rgba + 4 * i, out);
 }
 
 /* 3+ neighbours identical to (x, y), a pixel on the image's edge counting one (pixelmatch) */
@@ -109,25 +150,32 @@ static int many_siblings(const ww_cmp_image *im, int x, int y) {
 int ww_cmp_antialiased(const ww_cmp_image *img, const ww_cmp_image *other, int x, int y) {
     nbhd n = around(img, x, y);
     size_t w = (size_t)img->width;
-    double centre = luma_at(img, (size_t)y * w + (size_t)x);
+    double centre[3];
+    white_at(img, (size_t)y * w + (size_t)x, centre);
     int zeroes = n.edge;
     double lo = 0, hi = 0;
     int lox = 0, loy = 0, hix = 0, hiy = 0;
 
-    /* brightness steps to the 8 neighbours: equal, darker (lowest) and brighter (highest) */
-    for (int j = n.y0; j <= n.y1; j++)
-        for (int i = n.x0; i <= n.x1; i++) {
+    /* brightness steps to the 8 neighbours, Y(centre - neighbour) as pixelmatch takes them:
+     * equal, lowest (the brightest neighbour) and highest (the darkest). The scan goes column by
+     * column, as pixelmatch's: of several equally bright neighbours the first one met is kept,
+     * and which one that is decides the sibling test below */
+    for (int i = n.x0; i <= n.x1; i++)
+        for (int j = n.y0; j <= n.y1; j++) {
             if (i == x && j == y) continue;
-            double d = luma_at(img, (size_t)j * w + (size_t)i) - centre;
-            if (d == 0) {
+            double v[3], d[3];
+            white_at(img, (size_t)j * w + (size_t)i, v);
+            white_diff(centre, v, d);
+            double step = yiq_y(d);
+            if (step == 0) {
                 if (++zeroes > 2) return 0; /* a flat area, not an edge's ramp */
-            } else if (d < lo) {
-                lo = d, lox = i, loy = j;
-            } else if (d > hi) {
-                hi = d, hix = i, hiy = j;
+            } else if (step < lo) {
+                lo = step, lox = i, loy = j;
+            } else if (step > hi) {
+                hi = step, hix = i, hiy = j;
             }
         }
-    /* a ramp needs both a darker and a brighter neighbour */
+    /* a ramp needs both a brighter and a darker neighbour */
     if (lo == 0 || hi == 0) return 0;
     /* ... and one of its ends in a flat area of both images */
     return (many_siblings(img, lox, loy) && many_siblings(other, lox, loy)) ||
@@ -205,13 +253,10 @@ int ww_cmp_pixel_kind(const ww_cmp_image *a, const ww_cmp_image *b, int x, int y
  * above its alpha): no clamp, no NaN. pixelmatch's delta for such a pair, as ww_cmp_yiq_delta
  * computes it (the same operations in the same order, so the same bits) */
 static inline double yiq_delta_ldr(const float *p, const float *q) {
-    double ap = p[3], aq = q[3], d[3], delta = 0;
-    for (int c = 0; c < 3; c++) d[c] = LEVELS * ((double)p[c] + 1.0 - ap) - LEVELS * ((double)q[c] + 1.0 - aq);
-    for (int k = 0; k < 3; k++) {
-        double e = yiq_m[k][0] * d[0] + yiq_m[k][1] * d[1] + yiq_m[k][2] * d[2];
-        delta += yiq_w[k] * e * e;
-    }
-    return delta;
+    double ap = p[3], aq = q[3], d[3];
+    for (int c = 0; c < 3; c++)
+        d[c] = (on_grid((double)p[c] + 1.0 - ap) - on_grid((double)q[c] + 1.0 - aq)) / LEVELS;
+    return yiq_of(d);
 }
 
 /* a pixel over the YIQ threshold: anti-aliasing (when detected) or a difference */
@@ -302,7 +347,6 @@ static void diff_pass(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp
  * from the level's float (so both layouts give the same figures to the bit) */
 typedef struct level_tables {
     double v[256];       /* the level as the float paths see it */
-    double white[256];   /* on white at alpha 1, 8-bit scale (on_white) */
     double luma[3][256]; /* SSIM's weighted channel at alpha 1 (ssim_luma_ldr) */
 } level_tables;
 
@@ -311,7 +355,6 @@ static void level_tables_make(level_tables *t) {
     for (unsigned k = 0; k < 256; k++) {
         double v = ww_cmp_level(k), a = 1.0;
         t->v[k] = v;
-        t->white[k] = LEVELS * (v + 1.0 - a);
         for (int c = 0; c < 3; c++) t->luma[c][k] = w[c] * (v + 1.0 - a);
     }
 }
@@ -330,19 +373,15 @@ static void diff_pass_rgb8(const ww_cmp_image *a, const ww_cmp_image *b, const w
             const unsigned char *p = a->rgb8 + 3 * (row + (size_t)x), *q = b->rgb8 + 3 * (row + (size_t)x);
             npx++;
             if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) continue;
+            /* pixelmatch's differences on white: (255 p - 255 q) / 255, exactly p - q */
             double worst = 0, dw[3];
             for (int c = 0; c < 3; c++) {
-                dw[c] = t->white[p[c]] - t->white[q[c]];
+                dw[c] = (double)p[c] - (double)q[c];
                 double l = ldr_channel(t->v[p[c]], t->v[q[c]], 1, &acc);
                 if (l > worst) worst = l;
             }
             if (worst > limit) diff++;
-            double delta = 0;
-            for (int k = 0; k < 3; k++) {
-                double e = yiq_m[k][0] * dw[0] + yiq_m[k][1] * dw[1] + yiq_m[k][2] * dw[2];
-                delta += yiq_w[k] * e * e;
-            }
-            if (!(delta > max_delta)) continue;
+            if (!(yiq_of(dw) > max_delta)) continue;
             count_over_yiq(a, b, o, x, y, s);
         }
     }

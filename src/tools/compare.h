@@ -32,7 +32,9 @@
  *                      relative error, below)
  *   yiq_pixels         pixelmatch (Kotsarenko & Ramos 2010 YIQ delta, both images blended on
  *   aa_pixels          white, 8-bit scale) over 35215 * yiq^2, split into not-anti-aliased and
- *                      anti-aliased (Vysniauskas 2009 detector, as pixelmatch adapts it)
+ *                      anti-aliased (Vysniauskas 2009 detector, as pixelmatch adapts it); on 8-bit
+ *                      files pixelmatch 7.2.0's counts exactly (with checkerboard: false; the
+ *                      differences on purpose are in compare_impl.h)
  *   ssim               mean SSIM (Wang, Bovik, Sheikh, Simoncelli 2004) of Rec. 601 luma on white
  *                      in [0, 1] (L = 1, C1 = (0.01 L)^2, C2 = (0.03 L)^2), over every 8x8 window
  *                      sliding one pixel at a time (uniform weights, population variances)
