@@ -207,8 +207,8 @@ static void held_pixel(const int s[4], float px[4]) {
     px[3] = a;
 }
 
-/* our delta is pixelmatch's to the bit, for every colour level under every alpha and for seeded
- * random pairs, opaque and not */
+/* our delta is pixelmatch's to the bit: every colour level under every alpha, every pair of
+ * opaque levels, and seeded random pairs, opaque and not */
 TEST(compare_yiq_delta_bits_pixelmatch) {
     long bad = 0;
     for (int v = 0; v < 256; v++)
@@ -220,6 +220,17 @@ TEST(compare_yiq_delta_bits_pixelmatch) {
             double want = pixelmatch_delta(p, q), got = ww_cmp_yiq_delta(fp, fq);
             if (got != want && bad++ < 5)
                 ENSURE_MSG(0, "level %d alpha %d: %.17g, pixelmatch %.17g", v, a, got, want);
+        }
+    /* opaque: every pair of levels, so every difference, in each channel */
+    for (int u = 0; u < 256; u++)
+        for (int v = 0; v < 256; v++) {
+            int p[4] = {u, v, (u + v) / 2, 255}, q[4] = {v, u, 255 - u, 255};
+            float fp[4], fq[4];
+            held_pixel(p, fp);
+            held_pixel(q, fq);
+            double want = pixelmatch_delta(p, q), got = ww_cmp_yiq_delta(fp, fq);
+            if (got != want && bad++ < 5)
+                ENSURE_MSG(0, "levels %d, %d: %.17g, pixelmatch %.17g", u, v, got, want);
         }
     uint32_t seed = 12345;
     for (int k = 0; k < 200000; k++) {

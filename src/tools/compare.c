@@ -45,29 +45,39 @@ static const double yiq_w[3] = {0.5053, 0.299, 0.1957}; /* their weights of dY^2
 /* pixelmatch reads 8-bit RGBA. A pixel with alpha below 255 it blends on white, r a / 255 + 255 - a,
  * and it takes the difference of two pixels as one integer over 255,
  * (r1 a1 - r2 a2 - 255 (a1 - a2)) / 255, or as r1 - r2 when both are opaque (the same double).
- * We hold r / 255 * a / 255 in a float (premultiplied); on_white gives back the integer
- * r a + 255 (255 - a), the pixel on white in 255ths of a level: the floats' error is below 0.02
- * of these, so rounding restores it exactly, and a difference of two, over 255, is pixelmatch's
- * to the bit. A 16-bit value lands on the same grid, within about half of its own step. */
-#define WHITE_STEPS (LEVELS * LEVELS) /* 255ths of an 8-bit level in [0, 1] */
+ * We hold r / 255 * a / 255 in a float (premultiplied). The difference of two such pixels on
+ * white, in 255ths of a level, is that integer off by less than 0.04 (the floats' rounding), so
+ * rounding it restores the integer, and over 255 it is pixelmatch's difference to the bit.
+ * 16-bit values (no pixelmatch to agree with) have their difference taken on the same grid. */
+#define WHITE_STEPS (LEVELS * LEVELS) /* 255ths of an 8-bit level in the unit of [0, 1] */
 /* added then subtracted, it rounds a double of magnitude below 2^51 to an integer (to nearest,
  * as the FPU rounds; a libm call per value would cost more than the rest of the delta) */
 #define ROUND_TO_INT 0x1.8p52
 
-/* v in [0, 1] in 255ths of a level, rounded */
+/* v in [-1, 1] in 255ths of a level, rounded */
 static inline double on_grid(double v) {
     return (v * WHITE_STEPS + ROUND_TO_INT) - ROUND_TO_INT;
 }
 
-/* premultiplied colour on white, c + (1 - alpha) (the "over white" blend), in 255ths of a level */
-static void on_white(const float *px, double out[3]) {
-    double a = unit(px[3]);
-    for (int c = 0; c < 3; c++) out[c] = on_grid(unit(px[c]) + 1.0 - a);
+/* pixels p and q over white, c + (1 - alpha) (premultiplied colour), to their difference in
+ * levels: pixelmatch's dr, dg, db. pixelmatch divides by 255; between opaque 8-bit pixels the
+ * grid's integer is 255 times whole levels, and times 1/255 gives the quotient's double (the
+ * test compare_yiq_delta_bits_pixelmatch tries every one) at a fraction of a division's cost.
+ * Values must be in [0, 1] (ww_cmp_yiq_delta clamps) */
+static inline void white_diff(const float *p, const float *q, double d[3]) {
+    static const double inv = 1.0 / LEVELS;
+    double ap = p[3], aq = q[3];
+    if (ap == 1.0 && aq == 1.0) {
+        for (int c = 0; c < 3; c++) d[c] = on_grid((double)p[c] - (double)q[c]) * inv;
+        return;
+    }
+    for (int c = 0; c < 3; c++)
+        d[c] = on_grid(((double)p[c] + 1.0 - ap) - ((double)q[c] + 1.0 - aq)) / LEVELS;
 }
 
-/* two pixels on white (on_white) to their difference in levels, pixelmatch's dr, dg, db */
-static inline void white_diff(const double u[3], const double v[3], double d[3]) {
-    for (int c = 0; c < 3; c++) d[c] = (u[c] - v[c]) / LEVELS;
+/* a pixel's values clamped to [0, 1], NaN as 0 (EXR) */
+static void clamp_px(const float *px, float out[4]) {
+    for (int c = 0; c < 4; c++) out[c] = unit(px[c]);
 }
 
 /* Y of a difference on white (Kotsarenko & Ramos's first row), in pixelmatch's order */
@@ -86,17 +96,16 @@ static inline double yiq_of(const double d[3]) {
 }
 
 double ww_cmp_luma_on_white(const float *px) {
-    static const double black[3] = {0, 0, 0};
-    double v[3], l[3];
-    on_white(px, v);
-    white_diff(v, black, l);
-    return yiq_y(l);
+    double a = unit(px[3]), v[3];
+    for (int c = 0; c < 3; c++) v[c] = LEVELS * (unit(px[c]) + 1.0 - a);
+    return yiq_y(v);
 }
 
 double ww_cmp_yiq_delta(const float *p, const float *q) {
-    double u[3], v[3], d[3];
-    on_white(p, u);
-    on_white(q, v);
+    float u[4], v[4];
+    double d[3];
+    clamp_px(p, u);
+    clamp_px(q, v);
     white_diff(u, v, d);
     return yiq_of(d);
 }
@@ -123,14 +132,18 @@ static int same_at(const ww_cmp_image *im, size_t i, size_t k) {
     return same_pixel(im->rgba + 4 * i, im->rgba + 4 * k);
 }
 
-/* pixel i on white (on_white), in either layout: an rgb8 pixel's level k is 255 k there */
-static void white_at(const ww_cmp_image *im, size_t i, double out[3]) {
+/* the difference over white of pixels i and k of an image, in levels (white_diff): an rgb8
+ * pair's is its level differences */
+static void white_step(const ww_cmp_image *im, size_t i, size_t k, double d[3]) {
     if (im->rgb8) {
-        const unsigned char *p = im->rgb8 + 3 * i;
-        out[0] = LEVELS * p[0], out[1] = LEVELS * p[1], out[2] = LEVELS * p[2];
+        const unsigned char *p = im->rgb8 + 3 * i, *q = im->rgb8 + 3 * k;
+        for (int c = 0; c < 3; c++) d[c] = (double)p[c] - (double)q[c];
         return;
     }
-    on_white(im->rgba + 4 * i, out);
+    float p[4], q[4];
+    clamp_px(im->rgba + 4 * i, p);
+    clamp_px(im->rgba + 4 * k, q);
+    white_diff(p, q, d);
 }
 
 /* 3+ neighbours identical to (x, y), a pixel on the image's edge counting one (pixelmatch) */
@@ -150,8 +163,7 @@ static int many_siblings(const ww_cmp_image *im, int x, int y) {
 int ww_cmp_antialiased(const ww_cmp_image *img, const ww_cmp_image *other, int x, int y) {
     nbhd n = around(img, x, y);
     size_t w = (size_t)img->width;
-    double centre[3];
-    white_at(img, (size_t)y * w + (size_t)x, centre);
+    size_t centre = (size_t)y * w + (size_t)x;
     int zeroes = n.edge;
     double lo = 0, hi = 0;
     int lox = 0, loy = 0, hix = 0, hiy = 0;
@@ -163,9 +175,8 @@ int ww_cmp_antialiased(const ww_cmp_image *img, const ww_cmp_image *other, int x
     for (int i = n.x0; i <= n.x1; i++)
         for (int j = n.y0; j <= n.y1; j++) {
             if (i == x && j == y) continue;
-            double v[3], d[3];
-            white_at(img, (size_t)j * w + (size_t)i, v);
-            white_diff(centre, v, d);
+            double d[3];
+            white_step(img, centre, (size_t)j * w + (size_t)i, d);
             double step = yiq_y(d);
             if (step == 0) {
                 if (++zeroes > 2) return 0; /* a flat area, not an edge's ramp */
@@ -253,9 +264,8 @@ int ww_cmp_pixel_kind(const ww_cmp_image *a, const ww_cmp_image *b, int x, int y
  * above its alpha): no clamp, no NaN. pixelmatch's delta for such a pair, as ww_cmp_yiq_delta
  * computes it (the same operations in the same order, so the same bits) */
 static inline double yiq_delta_ldr(const float *p, const float *q) {
-    double ap = p[3], aq = q[3], d[3];
-    for (int c = 0; c < 3; c++)
-        d[c] = (on_grid((double)p[c] + 1.0 - ap) - on_grid((double)q[c] + 1.0 - aq)) / LEVELS;
+    double d[3];
+    white_diff(p, q, d);
     return yiq_of(d);
 }
 

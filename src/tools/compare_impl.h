@@ -15,7 +15,7 @@
  * compare_pixelmatch_agrees_*), blending on white as its `checkerboard: false` does. Where we
  * differ on purpose: "identical neighbours" compares premultiplied colour, so pixels under alpha 0
  * are identical whatever colour they store (pixelmatch compares the stored RGBA); 16-bit and EXR
- * values enter on a grid of 1/255 of an 8-bit level (pixelmatch reads bytes only).
+ * values are differenced on a grid of 1/255 of an 8-bit level (pixelmatch reads bytes only).
  */
 #ifndef WW_COMPARE_IMPL_H
 #define WW_COMPARE_IMPL_H
