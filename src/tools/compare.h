@@ -24,10 +24,11 @@
  *                      in 8-bit levels (0..255; 16-bit files give fractional levels), EXR linear.
  *                      max_abs / 255 and mean_abs / 255 are OpenImageIO idiff's "Max error" and
  *                      "Mean error" (idiff counts alpha, premultiplied, when a file has it).
- *   rmse, psnr         ImageMagick 6's `compare -metric RMSE` (the normalised figure in
- *                      brackets) and `-metric PSNR`: the mean of (a - b)^2 over R, G, B only (alpha
- *                      not counted, colour premultiplied), rmse = sqrt(mean), psnr =
- *                      10 log10(1 / mean) dB (INFINITY when equal). Measured against IM 6.9.11.
+ *   rmse, psnr         ImageMagick's `compare -channel RGB -metric RMSE` (the normalised figure
+ *                      in brackets) and `-metric PSNR`: the mean of (a - b)^2 over R, G, B only
+ *                      (alpha not counted, colour premultiplied), rmse = sqrt(mean), psnr =
+ *                      10 log10(1 / mean) dB (INFINITY when equal). Measured against IM 6.9.11
+ *                      and 7.1.1 (IM 6 leaves alpha out without -channel RGB, IM 7 counts it).
  *   diff_pixels        pixels with any channel difference over --threshold (PNG: levels; EXR:
  *                      relative error, below)
  *   yiq_pixels         pixelmatch (Kotsarenko & Ramos 2010 YIQ delta, both images blended on
