@@ -639,8 +639,8 @@ static void pm_add(pm_pair *pairs, int *n, const char *dir, const char *a, const
 }
 
 /* our pixelmatch figures for a loaded pair at threshold t: counts with and without anti-aliasing
- * detection, and each pixel's class against pixelmatch's diff image (red a difference, yellow
- * anti-aliasing); 1 when all agree */
+ * detection, each pixel's class against pixelmatch's diff image (red a difference, yellow
+ * anti-aliasing), and our diff image against its; 1 when all agree */
 static int pm_check_pair(const pm_pair *p, const ww_cmp_image *a, const ww_cmp_image *b, double t,
                          long pm_diff, long pm_aa, const char *layout) {
     ww_cmp_opts o = ww_cmp_default_opts();
@@ -682,10 +682,25 @@ static int pm_check_pair(const pm_pair *p, const ww_cmp_image *a, const ww_cmp_i
                            "(0 same, 1 differs, 2 anti-aliasing)", p->name, layout, t, x, y, ours,
                            theirs);
         }
-    free(pm);
     ENSURE_MSG(wrong == 0, "%s, %s, threshold %g: %ld pixels classed otherwise", p->name, layout, t,
                wrong);
-    return ok && wrong == 0;
+
+    /* and our diff image is pixelmatch's, byte for byte (RGB: ours has no alpha) */
+    char ours_png[700];
+    snprintf(ours_png, sizeof ours_png, "%s.ours.png", p->out);
+    ww_image d = {0};
+    ENSURE_EQ_INT(ww_cmp_write_diff(ours_png, a, b, &o, &err), WW_OK);
+    ENSURE_EQ_INT(ww_read_png(ours_png, &d, &err), WW_OK);
+    long other = 0;
+    for (size_t i = 0; d.u8 && d.channels == 3 && i < npx; i++)
+        if (memcmp(d.u8 + 3 * i, pm + 4 * i, 3) != 0 && other++ == 0)
+            ENSURE_MSG(0, "%s, %s, threshold %g: diff image pixel %zu is %d %d %d, pixelmatch's "
+                       "%d %d %d", p->name, layout, t, i, d.u8[3 * i], d.u8[3 * i + 1],
+                       d.u8[3 * i + 2], pm[4 * i], pm[4 * i + 1], pm[4 * i + 2]);
+    ENSURE(d.channels == 3 && other == 0);
+    ww_image_free(&d);
+    free(pm);
+    return ok && wrong == 0 && other == 0;
 }
 
 /* pixelmatch (node tests/tools/pixelmatch.mjs) on every pair at each threshold, then ours, in
@@ -739,7 +754,7 @@ static void pm_check(const char *pmdir, const char *dir, const pm_pair *pairs, i
 
 /* pixelmatch 7.2.0 and ours on the golden frames (no GL needed): each feature as llvmpipe and an
  * NVIDIA GPU drew it, and the demo's frames 0 and 150; a few of them given alpha. The same
- * counts, anti-aliasing apart and counted, and the same class for every pixel */
+ * counts, anti-aliasing apart and counted, the same class for every pixel, the same diff image */
 TEST_PROC(compare_pixelmatch_agrees_on_goldens) {
     char pmdir[600];
     REQUIRE_PIXELMATCH(pmdir);

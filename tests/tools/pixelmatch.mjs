@@ -11,7 +11,8 @@
 //   {"version":"7.2.0","diff":N,"aa":M}
 // diff: pixelmatch's count with includeAA false (anti-aliasing not counted); aa: the pixels over
 // the threshold that it calls anti-aliasing (its count with includeAA true, less diff). OUT.rgba
-// gets its diff image: anti-aliasing yellow (255,255,0), differences red (255,0,0), the rest grey.
+// gets its diff image: anti-aliasing yellow (255,255,0), differences red (255,0,0), the rest grey
+// (written into a Uint8ClampedArray, as a canvas's ImageData is: grey values are rounded).
 // Semi-transparent pixels are blended on white (checkerboard false), as waterworld compare blends.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -35,7 +36,7 @@ const common = {
 
 for (let k = 0; k < files.length; k += 3) {
     const a = readFileSync(files[k]), b = readFileSync(files[k + 1]);
-    const out = new Uint8Array(a.length);
+    const out = new Uint8ClampedArray(a.length);
     const diff = pixelmatch(a, b, out, width, height, { ...common, includeAA: false });
     const all = pixelmatch(a, b, null, width, height, { ...common, includeAA: true });
     writeFileSync(files[k + 2], out);
