@@ -173,7 +173,8 @@ ww_result ww_bench_compare(const ww_bench_compare_opts *opts, FILE *to, ww_error
     if (r == WW_OK) {
         char *ours[] = {SELF, "compare", f0, f1, NULL};
         /* the same measure from IM 6 and 7: IM 7 counts alpha in RMSE unless told the channels */
-        char *magick7[] = {"magick", "compare", "-channel", "RGB", "-metric", "RMSE", f0, f1, "null:", NULL};
+        char *magick7[] = {"magick", "compare", "-channel", "RGB", "-metric", "RMSE", f0, f1,
+                           "null:", NULL};
         char *magick6[] = {"compare", "-channel", "RGB", "-metric", "RMSE", f0, f1, "null:", NULL};
         if (time_process(ours, o.repeats, &proc) != 0)
             r = ww_error_set(err, WW_E_IO, NULL, 0, 0, "bench compare: `waterworld compare` failed");
