@@ -3,9 +3,11 @@
  * OpenImageIO idiff's max/mean on rendered frames, the rules and exit codes, JSON, the diff image,
  * folders, and the EXR NaN/Inf rules.
  */
+#include <dirent.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "io/writers.h"
 #include "test.h"
@@ -20,6 +22,7 @@
 #define IM_PSNR_TOL 1e-3
 /* idiff prints 6 significant digits of values in [0, 1] */
 #define IDIFF_TOL 1e-6
+#define LEVELS_MAX 255.0       /* the largest difference of 8-bit levels */
 
 /* a w x h PNG (3 or 4 channels) from bytes */
 static void write_png(const char *path, int w, int h, int ch, const unsigned char *px) {
@@ -47,6 +50,21 @@ static ww_result cmp_files(const char *pa, const char *pb, const ww_cmp_opts *o,
     ww_cmp_image_free(&b);
     return r;
 }
+
+/* ImageMagick's command for tool ("compare" or "convert"): IM 7's `magick` (compare as its
+ * subcommand) where it is installed, else IM 6's own command; NULL with neither */
+static const char *imagemagick(const char *tool) {
+    int compare = strcmp(tool, "compare") == 0;
+    if (ww_test_have_tool("magick")) return compare ? "magick compare" : "magick";
+    return ww_test_have_tool(tool) ? tool : NULL;
+}
+
+/* skip unless ImageMagick 6 or 7 is installed; im names its command for tool */
+#define REQUIRE_IMAGEMAGICK(im, tool)                                                           \
+    do {                                                                                        \
+        if (!((im) = imagemagick(tool)))                                                        \
+            SKIP("ImageMagick is not installed (neither magick nor %s)", tool);                 \
+    } while (0)
 
 /* a number after key in text (e.g. "\"rmse\":"), NAN when absent */
 static double num_after(const char *text, const char *key) {
@@ -180,6 +198,76 @@ TEST(compare_yiq_pure_colours) {
     ENSURE_EQ_INT(r.yiq_pixels, 0);
 }
 
+/* pixelmatch's colorDelta (Kotsarenko & Ramos 2010 on 8-bit RGBA, a pixel with alpha below 255
+ * blended on white), written from its definition with integer samples as pixelmatch reads them:
+ * the reference for the bits of ours */
+static double pixelmatch_delta(const int p[4], const int q[4]) {
+    double dr = p[0] - q[0], dg = p[1] - q[1], db = p[2] - q[2];
+    if (p[3] < 255 || q[3] < 255) {
+        double da = p[3] - q[3];
+        dr = ((double)(p[0] * p[3]) - (double)(q[0] * q[3]) - 255 * da) / 255;
+        dg = ((double)(p[1] * p[3]) - (double)(q[1] * q[3]) - 255 * da) / 255;
+        db = ((double)(p[2] * p[3]) - (double)(q[2] * q[3]) - 255 * da) / 255;
+    }
+    double y = dr * 0.29889531 + dg * 0.58662247 + db * 0.11448223;
+    double i = dr * 0.59597799 - dg * 0.27417610 - db * 0.32180189;
+    double q2 = dr * 0.21147017 - dg * 0.52261711 + db * 0.31114694;
+    return 0.5053 * y * y + 0.299 * i * i + 0.1957 * q2 * q2;
+}
+
+/* a pixel as the loader holds an 8-bit RGBA sample: v / 255 in float, colour times alpha */
+static void held_pixel(const int s[4], float px[4]) {
+    float a = ww_cmp_level((unsigned)s[3]);
+    for (int c = 0; c < 3; c++) px[c] = ww_cmp_level((unsigned)s[c]) * a;
+    px[3] = a;
+}
+
+/* our delta is pixelmatch's to the bit: every colour level under every alpha, every pair of
+ * opaque levels, and seeded random pairs, opaque and not */
+TEST(compare_yiq_delta_bits_pixelmatch) {
+    long bad = 0;
+    for (int v = 0; v < 256; v++)
+        for (int a = 0; a < 256; a++) {
+            int p[4] = {v, 255 - v, v / 2, a}, q[4] = {0, 0, 0, 255};
+            float fp[4], fq[4];
+            held_pixel(p, fp);
+            held_pixel(q, fq);
+            double want = pixelmatch_delta(p, q), got = ww_cmp_yiq_delta(fp, fq);
+            if (got != want && bad++ < 5)
+                ENSURE_MSG(0, "level %d alpha %d: %.17g, pixelmatch %.17g", v, a, got, want);
+        }
+    /* opaque: every pair of levels, so every difference, in each channel */
+    for (int u = 0; u < 256; u++)
+        for (int v = 0; v < 256; v++) {
+            int p[4] = {u, v, (u + v) / 2, 255}, q[4] = {v, u, 255 - u, 255};
+            float fp[4], fq[4];
+            held_pixel(p, fp);
+            held_pixel(q, fq);
+            double want = pixelmatch_delta(p, q), got = ww_cmp_yiq_delta(fp, fq);
+            if (got != want && bad++ < 5)
+                ENSURE_MSG(0, "levels %d, %d: %.17g, pixelmatch %.17g", u, v, got, want);
+        }
+    uint32_t seed = 12345;
+    for (int k = 0; k < 200000; k++) {
+        int p[4], q[4];
+        for (int c = 0; c < 4; c++) {
+            seed = seed * 1664525u + 1013904223u;
+            p[c] = (int)(seed >> 24);
+            seed = seed * 1664525u + 1013904223u;
+            q[c] = (int)(seed >> 24);
+        }
+        if (k % 2) p[3] = q[3] = 255; /* half opaque: pixelmatch's r1 - r2 branch */
+        float fp[4], fq[4];
+        held_pixel(p, fp);
+        held_pixel(q, fq);
+        double want = pixelmatch_delta(p, q), got = ww_cmp_yiq_delta(fp, fq);
+        if (got != want && bad++ < 5)
+            ENSURE_MSG(0, "(%d %d %d %d) against (%d %d %d %d): %.17g, pixelmatch %.17g", p[0],
+                       p[1], p[2], p[3], q[0], q[1], q[2], q[3], got, want);
+    }
+    ENSURE_EQ_INT(bad, 0);
+}
+
 /* 8x8: black left of x = 4, white right of it, and a grey column at x = 4 (an edge's
  * anti-aliasing) whose grey differs between the two images */
 static void edge_image(unsigned char *px, unsigned char grey, int spot) {
@@ -237,6 +325,8 @@ TEST(compare_aa_edge) {
 /* ImageMagick writes the twins: 16-bit RGB, 8-bit grey and opaque RGBA of an 8-bit RGB grey
  * picture */
 TEST_PROC(compare_twins_16bit_grey) {
+    const char *im;
+    REQUIRE_IMAGEMAGICK(im, "convert");
     const char *dir = ww_test_tmpdir("compare_twins");
     char p8[600], p16[600], pg[600], pa[600], cmd[4096];
     snprintf(p8, sizeof p8, "%s/rgb8.png", dir);
@@ -246,9 +336,9 @@ TEST_PROC(compare_twins_16bit_grey) {
     unsigned char px[8 * 8 * 3];
     for (int i = 0; i < 64; i++) memset(px + 3 * i, (i * 53) % 256, 3);
     write_png(p8, 8, 8, 3, px);
-    snprintf(cmd, sizeof cmd, "convert %s -depth 16 PNG48:%s && convert %s -colorspace Gray "
-             "-define png:color-type=0 -depth 8 %s && convert %s -alpha opaque PNG32:%s", p8, p16,
-             p8, pg, p8, pa);
+    snprintf(cmd, sizeof cmd, "%s %s -depth 16 PNG48:%s && %s %s -colorspace Gray "
+             "-define png:color-type=0 -depth 8 %s && %s %s -alpha opaque PNG32:%s", im, p8, p16,
+             im, p8, pg, im, p8, pa);
     ENSURE_MSG(ww_test_run(cmd, NULL, NULL) == 0, "ImageMagick convert failed: %s", cmd);
     ww_cmp_image a, b, g;
     ww_error err = {0};
@@ -370,8 +460,12 @@ TEST_PROC(compare_cli_folders_json_diff) {
     ENSURE(ww_test_file_contains(out, "frame_00003.png: FAIL: extra"));
 }
 
-/* our RMSE/PSNR against ImageMagick's on an RGBA pair (premultiplied colour, alpha not counted) */
+/* our RMSE against ImageMagick's on an RGBA pair: premultiplied colour, alpha not counted. IM 6
+ * leaves alpha out of `compare -metric RMSE` by itself, IM 7 counts it unless told
+ * `-channel RGB` (0.360055 here without it), which gives IM 6's figure on both */
 TEST_PROC(compare_imagemagick_alpha) {
+    const char *im;
+    REQUIRE_IMAGEMAGICK(im, "compare");
     const char *dir = ww_test_tmpdir("compare_im_alpha");
     char pa[600], pb[600], cmd[2048], out[600];
     snprintf(pa, sizeof pa, "%s/a.png", dir);
@@ -386,19 +480,22 @@ TEST_PROC(compare_imagemagick_alpha) {
     }
     write_png(pa, 4, 4, 4, a);
     write_png(pb, 4, 4, 4, b);
-    snprintf(cmd, sizeof cmd, "compare -metric RMSE %s %s null:", pa, pb);
+    snprintf(cmd, sizeof cmd, "%s -channel RGB -metric RMSE %s %s null:", im, pa, pb);
     ENSURE(ww_test_run(cmd, NULL, out) >= 0); /* IM prints the metric on stderr */
-    char *im = ww_test_read_file(out, NULL);
-    double im_rmse = num_after(im, "(");
-    free(im);
+    char *said = ww_test_read_file(out, NULL);
+    double im_rmse = num_after(said, "(");
+    free(said);
     ww_cmp_opts o = ww_cmp_default_opts();
     ww_cmp_result r;
     ENSURE_EQ_INT(cmp_files(pa, pb, &o, &r), WW_OK);
     ENSURE_NEAR(r.rmse, im_rmse, IM_RMSE_TOL);
 }
 
-/* two rendered frames against ImageMagick compare and OpenImageIO idiff */
+/* two rendered frames against ImageMagick compare (6 or 7, over R, G, B) and OpenImageIO idiff */
 TEST_PROC(compare_tools_agree_on_frames) {
+    const char *im;
+    REQUIRE_IMAGEMAGICK(im, "compare");
+    REQUIRE_TOOL("idiff");
     REQUIRE_GL();
     const char *dir = ww_test_tmpdir("compare_frames");
     char cmd[4096], f0[600], f1[600], out[600];
@@ -414,15 +511,15 @@ TEST_PROC(compare_tools_agree_on_frames) {
     ENSURE_EQ_INT(cmp_files(f0, f1, &o, &r), WW_OK);
     ENSURE_MSG(r.max_abs > 0, "frames 0 and 1 of the demo should differ");
 
-    snprintf(cmd, sizeof cmd, "compare -metric RMSE %s %s null:", f0, f1);
+    snprintf(cmd, sizeof cmd, "%s -channel RGB -metric RMSE %s %s null:", im, f0, f1);
     ww_test_run(cmd, NULL, out); /* exit 1: they differ; the metric is on stderr */
     char *t = ww_test_read_file(out, NULL);
     ENSURE_NEAR(r.rmse, num_after(t, "("), IM_RMSE_TOL);
     free(t);
-    snprintf(cmd, sizeof cmd, "compare -metric PSNR %s %s null:", f0, f1);
+    snprintf(cmd, sizeof cmd, "%s -channel RGB -metric PSNR %s %s null:", im, f0, f1);
     ww_test_run(cmd, NULL, out);
     t = ww_test_read_file(out, NULL);
-    double im_psnr = t ? strtod(t, NULL) : NAN;
+    double im_psnr = t ? strtod(t, NULL) : NAN; /* IM 7 adds "(PSNR / 100)" after it */
     ENSURE_NEAR(r.psnr, im_psnr, IM_PSNR_TOL);
     free(t);
 
@@ -433,6 +530,301 @@ TEST_PROC(compare_tools_agree_on_frames) {
     ENSURE_NEAR(r.mean_abs / 255.0, num_after(t, "Mean error = "), IDIFF_TOL);
     ENSURE_NEAR(r.max_abs / 255.0, num_after(t, "Max error  = "), IDIFF_TOL);
     free(t);
+}
+
+/* ---- against the real pixelmatch ---------------------------------------------------------------- */
+
+#define PIXELMATCH_VERSION "7.2.0"
+/* pixelmatch's default threshold and one either side of it */
+static const double pm_thresholds[] = {0.05, 0.1, 0.2};
+#define PM_PAIRS_MAX 48
+
+/* the pixelmatch package that scripts/install-pixelmatch.sh unpacks into the user's cache
+ * ($WW_PIXELMATCH_DIR instead, when set); 1 when its index.js is there */
+static int pixelmatch_dir(char *dir, size_t n) {
+    const char *env = getenv("WW_PIXELMATCH_DIR"), *xdg = getenv("XDG_CACHE_HOME");
+    const char *home = getenv("HOME");
+    if (env && *env)
+        snprintf(dir, n, "%s", env);
+    else if (xdg && *xdg)
+        snprintf(dir, n, "%s/waterworld/pixelmatch-" PIXELMATCH_VERSION, xdg);
+    else
+        snprintf(dir, n, "%s/.cache/waterworld/pixelmatch-" PIXELMATCH_VERSION, home ? home : "");
+    char index[700];
+    snprintf(index, sizeof index, "%s/index.js", dir);
+    FILE *f = fopen(index, "rb");
+    if (f) fclose(f);
+    return f != NULL;
+}
+
+/* node and pixelmatch are here, or the test is skipped naming what is missing */
+#define REQUIRE_PIXELMATCH(dir)                                                                 \
+    do {                                                                                        \
+        REQUIRE_TOOL("node");                                                                   \
+        if (!pixelmatch_dir(dir, sizeof dir))                                                   \
+            SKIP("pixelmatch " PIXELMATCH_VERSION " is not in %s (scripts/install-pixelmatch.sh " \
+                 "fetches it)", dir);                                                           \
+    } while (0)
+
+/* one pair as both sides see it: ours from PNG files, pixelmatch from the same pixels as raw
+ * RGBA (straight alpha) */
+typedef struct pm_pair {
+    char png[2][600], raw[2][600], out[600];
+    char name[96];
+    int opaque;
+} pm_pair;
+
+/* a PNG's pixels as RGBA bytes (malloc'd), or NULL */
+static unsigned char *png_rgba(const char *path, int *w, int *h) {
+    ww_image im;
+    ww_error err = {0};
+    if (ww_read_png(path, &im, &err) != WW_OK) return NULL;
+    size_t npx = (size_t)im.width * (size_t)im.height;
+    unsigned char *px = malloc(4 * npx);
+    for (size_t i = 0; px && i < npx; i++) {
+        const unsigned char *s = im.u8 + (size_t)im.channels * i;
+        int grey = im.channels < 3;
+        for (int c = 0; c < 3; c++) px[4 * i + (size_t)c] = s[grey ? 0 : c];
+        px[4 * i + 3] = im.channels == 2 || im.channels == 4 ? s[im.channels - 1] : 255;
+    }
+    *w = im.width;
+    *h = im.height;
+    ww_image_free(&im);
+    return px;
+}
+
+static int write_bytes(const char *path, const unsigned char *p, size_t n) {
+    FILE *f = fopen(path, "wb");
+    if (!f) return -1;
+    size_t put = fwrite(p, 1, n, f);
+    return fclose(f) == 0 && put == n ? 0 : -1;
+}
+
+/* a pair of PNG files into the list: their pixels written raw for pixelmatch; with alpha_kind > 0
+ * both get an alpha channel (1: the same ramp across, 2: ramps across and down), alpha at least 1
+ * (under alpha 0 we differ on purpose: see README), and are written again as RGBA PNGs for us.
+ * One pixelmatch run takes one size: the first pair's sets w x h, a pair of another size is left
+ * out (returns 0) */
+static int pm_add(pm_pair *pairs, int *n, const char *dir, const char *a, const char *b,
+                  const char *name, int alpha_kind, int *w, int *h) {
+    ENSURE(*n < PM_PAIRS_MAX);
+    if (*n >= PM_PAIRS_MAX) return 0;
+    pm_pair *p = &pairs[*n];
+    snprintf(p->name, sizeof p->name, "%s%s", name,
+             alpha_kind == 1 ? " (alpha ramp)" : alpha_kind == 2 ? " (alphas differ)" : "");
+    p->opaque = alpha_kind == 0;
+    const char *src[2] = {a, b};
+    for (int k = 0; k < 2; k++) {
+        int pw = 0, ph = 0;
+        unsigned char *px = png_rgba(src[k], &pw, &ph);
+        ENSURE_MSG(px != NULL, "cannot read %s", src[k]);
+        if (!px) return 0;
+        if (*w != 0 && (pw != *w || ph != *h)) {
+            free(px);
+            return 0;
+        }
+        *w = pw, *h = ph;
+        snprintf(p->png[k], sizeof p->png[k], "%s", src[k]);
+        if (alpha_kind) {
+            for (int y = 0; y < ph; y++)
+                for (int x = 0; x < pw; x++) {
+                    int t = k == 1 && alpha_kind == 2 ? y * 254 / (ph - 1) : x * 254 / (pw - 1);
+                    px[4 * ((size_t)y * (size_t)pw + (size_t)x) + 3] = (unsigned char)(1 + t);
+                }
+            snprintf(p->png[k], sizeof p->png[k], "%s/%d_%c.png", dir, *n, "ab"[k]);
+            write_png(p->png[k], pw, ph, 4, px);
+        }
+        snprintf(p->raw[k], sizeof p->raw[k], "%s/%d_%c.rgba", dir, *n, "ab"[k]);
+        ENSURE(write_bytes(p->raw[k], px, 4 * (size_t)pw * (size_t)ph) == 0);
+        free(px);
+    }
+    snprintf(p->out, sizeof p->out, "%s/%d_pm.rgba", dir, *n);
+    (*n)++;
+    return 1;
+}
+
+/* our pixelmatch figures for a loaded pair at threshold t: counts with and without anti-aliasing
+ * detection, each pixel's class against pixelmatch's diff image (red a difference, yellow
+ * anti-aliasing), and with image, our diff image against its (one layout is enough:
+ * compare_rgb8_layout_matches_rgba finds the two layouts' diff images equal); 1 when all agree */
+static int pm_check_pair(const pm_pair *p, const ww_cmp_image *a, const ww_cmp_image *b, double t,
+                         long pm_diff, long pm_aa, const char *layout, int image) {
+    ww_cmp_opts o = ww_cmp_default_opts();
+    o.yiq = t;
+    ww_cmp_result r;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_cmp_images(a, b, &o, &r, &err), WW_OK);
+    ENSURE_MSG(r.yiq_pixels == pm_diff && r.aa_pixels == pm_aa,
+               "%s, %s, threshold %g: ours %ld (+%ld aa), pixelmatch %ld (+%ld aa)", p->name,
+               layout, t, r.yiq_pixels, r.aa_pixels, pm_diff, pm_aa);
+    int ok = r.yiq_pixels == pm_diff && r.aa_pixels == pm_aa;
+    o.detect_aa = 0; /* pixelmatch's includeAA */
+    ENSURE_EQ_INT(ww_cmp_images(a, b, &o, &r, &err), WW_OK);
+    ENSURE_MSG(r.yiq_pixels == pm_diff + pm_aa && r.aa_pixels == 0,
+               "%s, %s, threshold %g, anti-aliasing counted: ours %ld, pixelmatch %ld", p->name,
+               layout, t, r.yiq_pixels, pm_diff + pm_aa);
+    ok = ok && r.yiq_pixels == pm_diff + pm_aa;
+
+    size_t len = 0, npx = (size_t)a->width * (size_t)a->height;
+    unsigned char *pm = (unsigned char *)ww_test_read_file(p->out, &len);
+    ENSURE_MSG(pm && len == 4 * npx, "pixelmatch's diff image %s", p->out);
+    if (!pm || len != 4 * npx) {
+        free(pm);
+        return 0;
+    }
+    o = ww_cmp_default_opts();
+    o.yiq = t;
+    o.threshold = LEVELS_MAX; /* only pixelmatch's classes: no pixel is over 255 levels */
+    long wrong = 0;
+    for (int y = 0; y < a->height; y++)
+        for (int x = 0; x < a->width; x++) {
+            const unsigned char *q = pm + 4 * ((size_t)y * (size_t)a->width + (size_t)x);
+            int theirs = q[0] == 255 && q[1] == 0 && q[2] == 0     ? WW_CMP_DIFF
+                         : q[0] == 255 && q[1] == 255 && q[2] == 0 ? WW_CMP_AA
+                                                                   : WW_CMP_SAME;
+            int ours = ww_cmp_pixel_kind(a, b, x, y, &o);
+            if (ours != theirs && wrong++ == 0)
+                ENSURE_MSG(0, "%s, %s, threshold %g: pixel (%d, %d) is %d for us, %d for pixelmatch "
+                           "(0 same, 1 differs, 2 anti-aliasing)", p->name, layout, t, x, y, ours,
+                           theirs);
+        }
+    ENSURE_MSG(wrong == 0, "%s, %s, threshold %g: %ld pixels classed otherwise", p->name, layout, t,
+               wrong);
+
+    /* and our diff image is pixelmatch's, byte for byte (RGB: ours has no alpha) */
+    if (!image) {
+        free(pm);
+        return ok && wrong == 0;
+    }
+    char ours_png[700];
+    snprintf(ours_png, sizeof ours_png, "%s.ours.png", p->out);
+    ww_image d = {0};
+    ENSURE_EQ_INT(ww_cmp_write_diff(ours_png, a, b, &o, &err), WW_OK);
+    ENSURE_EQ_INT(ww_read_png(ours_png, &d, &err), WW_OK);
+    long other = 0;
+    for (size_t i = 0; d.u8 && d.channels == 3 && i < npx; i++)
+        if (memcmp(d.u8 + 3 * i, pm + 4 * i, 3) != 0 && other++ == 0)
+            ENSURE_MSG(0, "%s, %s, threshold %g: diff image pixel %zu is %d %d %d, pixelmatch's "
+                       "%d %d %d", p->name, layout, t, i, d.u8[3 * i], d.u8[3 * i + 1],
+                       d.u8[3 * i + 2], pm[4 * i], pm[4 * i + 1], pm[4 * i + 2]);
+    ENSURE(d.channels == 3 && other == 0);
+    ww_image_free(&d);
+    free(pm);
+    return ok && wrong == 0 && other == 0;
+}
+
+/* pixelmatch (node tests/tools/pixelmatch.mjs) on every pair at each threshold, then ours, in
+ * the layout the file loads in and, with both_layouts, an opaque pair in the float RGBA layout
+ * as well */
+static void pm_check(const char *pmdir, const char *dir, const pm_pair *pairs, int n, int w, int h,
+                     int both_layouts) {
+    char cmd[2048], out[600], list[600];
+    snprintf(out, sizeof out, "%s/pixelmatch.txt", dir);
+    snprintf(list, sizeof list, "%s/pairs.txt", dir);
+    FILE *f = fopen(list, "w");
+    ENSURE(f != NULL);
+    if (!f) return;
+    for (int k = 0; k < n; k++)
+        fprintf(f, "%s\t%s\t%s\n", pairs[k].raw[0], pairs[k].raw[1], pairs[k].out);
+    ENSURE(fclose(f) == 0);
+    ww_cmp_image a[PM_PAIRS_MAX], b[PM_PAIRS_MAX];
+    ww_error err = {0};
+    for (int k = 0; k < n; k++) {
+        ENSURE_EQ_INT(ww_cmp_load_pair(pairs[k].png[0], pairs[k].png[1], &a[k], &b[k], &err), WW_OK);
+        ENSURE_MSG(!pairs[k].opaque || a[k].rgb8, "%s: an opaque 8-bit frame loads as rgb8",
+                   pairs[k].name);
+    }
+    for (size_t ti = 0; ti < sizeof pm_thresholds / sizeof pm_thresholds[0]; ti++) {
+        double t = pm_thresholds[ti];
+        snprintf(cmd, sizeof cmd, "node tests/tools/pixelmatch.mjs '%s' %d %d %g '@%s'", pmdir, w,
+                 h, t, list);
+        ENSURE_MSG(ww_test_run(cmd, out, NULL) == 0, "%s", cmd);
+        char *text = ww_test_read_file(out, NULL);
+        const char *line = text;
+        for (int k = 0; k < n; k++) {
+            ENSURE_MSG(line && strstr(line, "\"version\":\"" PIXELMATCH_VERSION "\""),
+                       "pixelmatch %s answered: %s", PIXELMATCH_VERSION, line ? line : "nothing");
+            if (!line) break;
+            long pm_diff = (long)num_after(line, "\"diff\":"), pm_aa = (long)num_after(line, "\"aa\":");
+            line = strchr(line, '\n');
+            if (line) line++;
+            int ok = pm_check_pair(&pairs[k], &a[k], &b[k], t, pm_diff, pm_aa, "as loaded", 1);
+            if (ok && pairs[k].opaque && both_layouts) {
+                ww_cmp_image wa, wb;
+                ENSURE_EQ_INT(ww_cmp_to_rgba(&a[k], &wa, &err), WW_OK);
+                ENSURE_EQ_INT(ww_cmp_to_rgba(&b[k], &wb, &err), WW_OK);
+                pm_check_pair(&pairs[k], &wa, &wb, t, pm_diff, pm_aa, "float RGBA", 0);
+                ww_cmp_image_free(&wa);
+                ww_cmp_image_free(&wb);
+            }
+        }
+        free(text);
+    }
+    for (int k = 0; k < n; k++) {
+        ww_cmp_image_free(&a[k]);
+        ww_cmp_image_free(&b[k]);
+    }
+}
+
+/* pixelmatch 7.2.0 and ours on the golden frames (no GL needed): each feature as llvmpipe and an
+ * NVIDIA GPU drew it, and the demo's frames 0 and 150; a few of them given alpha. The same
+ * counts, anti-aliasing apart and counted, the same class for every pixel, the same diff image */
+TEST_PROC(compare_pixelmatch_agrees_on_goldens) {
+    char pmdir[600];
+    REQUIRE_PIXELMATCH(pmdir);
+    const char *dir = ww_test_tmpdir("compare_pm_goldens");
+    static pm_pair pairs[PM_PAIRS_MAX];
+    int n = 0, w = 0, h = 0;
+    static const char *const sets[] = {"golden/features", "golden/demo", "golden/minimal"};
+    for (size_t s = 0; s < sizeof sets / sizeof sets[0]; s++) {
+        char other[300];
+        snprintf(other, sizeof other, "%s/nvidia-580", sets[s]);
+        DIR *d = opendir(other);
+        ENSURE_MSG(d != NULL, "%s", other);
+        for (struct dirent *e; d && (e = readdir(d)) && n < PM_PAIRS_MAX - 4;) {
+            size_t len = strlen(e->d_name);
+            if (len < 5 || strcmp(e->d_name + len - 4, ".png") != 0) continue;
+            char a[600], b[600];
+            snprintf(a, sizeof a, "%s/%s", sets[s], e->d_name);
+            snprintf(b, sizeof b, "%s/%s", other, e->d_name);
+            /* (left out when its size is not the first pair's) */
+            if (access(a, R_OK) == 0) pm_add(pairs, &n, dir, a, b, a, 0, &w, &h);
+        }
+        if (d) closedir(d);
+    }
+    ENSURE_MSG(n >= 10, "only %d golden pairs found", n);
+    const char *f0 = "golden/demo/frame_00000.png", *f150 = "golden/demo/frame_00150.png";
+    ENSURE(pm_add(pairs, &n, dir, f0, f150, "demo frames 0 and 150", 0, &w, &h));
+    ENSURE(pm_add(pairs, &n, dir, f0, f150, "demo frames 0 and 150", 1, &w, &h));
+    ENSURE(pm_add(pairs, &n, dir, f0, f150, "demo frames 0 and 150", 2, &w, &h));
+    ENSURE(pm_add(pairs, &n, dir, "golden/features/fxaa.png", "golden/features/nvidia-580/fxaa.png",
+                  "fxaa", 2, &w, &h));
+    pm_check(pmdir, dir, pairs, n, w, h, 1);
+}
+
+/* pixelmatch 7.2.0 and ours on rendered demo frames at 1280x720: frames 0 and 11 (where the
+ * neighbour scan's order once made 27 pixels differ), 3 and 9, 10 and 11 */
+TEST_PROC(compare_pixelmatch_agrees_on_frames) {
+    char pmdir[600];
+    REQUIRE_PIXELMATCH(pmdir);
+    REQUIRE_GL();
+    const char *d = ww_test_tmpdir("compare_pm_frames");
+    char dir[600], cmd[4096];
+    snprintf(dir, sizeof dir, "%s", d);
+    snprintf(cmd, sizeof cmd, "%s render scenes/demo.yaml --frames 12 --size 1280x720 -o %s --quiet",
+             ww_test_bin(), dir);
+    ENSURE_EQ_INT(ww_test_run(cmd, NULL, NULL), 0);
+    static pm_pair pairs[3];
+    static const int frames[3][2] = {{0, 11}, {3, 9}, {10, 11}};
+    int n = 0, w = 0, h = 0;
+    for (int k = 0; k < 3; k++) {
+        char a[700], b[700], name[64];
+        snprintf(a, sizeof a, "%s/frame_%05d.png", dir, frames[k][0]);
+        snprintf(b, sizeof b, "%s/frame_%05d.png", dir, frames[k][1]);
+        snprintf(name, sizeof name, "demo frames %d and %d", frames[k][0], frames[k][1]);
+        ENSURE(pm_add(pairs, &n, dir, a, b, name, 0, &w, &h));
+    }
+    pm_check(pmdir, dir, pairs, n, w, h, 0); /* the float layout: on the goldens above */
 }
 
 /* an RGB PNG is held in the rgb8 layout, whose 8-bit paths must give the figures of the float

@@ -42,28 +42,72 @@ static const double yiq_m[3][3] = {{0.29889531, 0.58662247, 0.11448223},
                                    {0.21147017, -0.52261711, 0.31114694}};
 static const double yiq_w[3] = {0.5053, 0.299, 0.1957}; /* their weights of dY^2, dI^2, dQ^2 */
 
-/* premultiplied colour on white, 8-bit scale: c + (1 - alpha), the "over white" blend */
-static void on_white(const float *px, double out[3]) {
-    double a = unit(px[3]);
-    for (int c = 0; c < 3; c++) out[c] = LEVELS * (unit(px[c]) + 1.0 - a);
+/* pixelmatch reads 8-bit RGBA. A pixel with alpha below 255 it blends on white, r a / 255 + 255 - a,
+ * and it takes the difference of two pixels as one integer over 255,
+ * (r1 a1 - r2 a2 - 255 (a1 - a2)) / 255, or as r1 - r2 when both are opaque (the same double).
+ * We hold r / 255 * a / 255 in a float (premultiplied). The difference of two such pixels on
+ * white, in 255ths of a level, is that integer off by less than 0.04 (the floats' rounding), so
+ * rounding it restores the integer, and over 255 it is pixelmatch's difference to the bit.
+ * 16-bit values (no pixelmatch to agree with) have their difference taken on the same grid. */
+#define WHITE_STEPS (LEVELS * LEVELS) /* 255ths of an 8-bit level in the unit of [0, 1] */
+/* added then subtracted, it rounds a double of magnitude below 2^51 to an integer (to nearest,
+ * as the FPU rounds; a libm call per value would cost more than the rest of the delta) */
+#define ROUND_TO_INT 0x1.8p52
+
+/* v in [-1, 1] in 255ths of a level, rounded */
+static inline double on_grid(double v) {
+    return (v * WHITE_STEPS + ROUND_TO_INT) - ROUND_TO_INT;
 }
 
-double ww_cmp_luma_on_white(const float *px) {
-    double v[3];
-    on_white(px, v);
-    return yiq_m[0][0] * v[0] + yiq_m[0][1] * v[1] + yiq_m[0][2] * v[2];
+/* pixels p and q over white, c + (1 - alpha) (premultiplied colour), to their difference in
+ * levels: pixelmatch's dr, dg, db. pixelmatch divides by 255; between opaque 8-bit pixels the
+ * grid's integer is 255 times whole levels, and times 1/255 gives the quotient's double (the
+ * test compare_yiq_delta_bits_pixelmatch tries every one) at a fraction of a division's cost.
+ * Values must be in [0, 1] (ww_cmp_yiq_delta clamps) */
+static inline void white_diff(const float *p, const float *q, double d[3]) {
+    static const double inv = 1.0 / LEVELS;
+    double ap = p[3], aq = q[3];
+    if (ap == 1.0 && aq == 1.0) {
+        for (int c = 0; c < 3; c++) d[c] = on_grid((double)p[c] - (double)q[c]) * inv;
+        return;
+    }
+    for (int c = 0; c < 3; c++)
+        d[c] = on_grid(((double)p[c] + 1.0 - ap) - ((double)q[c] + 1.0 - aq)) / LEVELS;
 }
 
-double ww_cmp_yiq_delta(const float *p, const float *q) {
-    double u[3], v[3], d[3], delta = 0;
-    on_white(p, u);
-    on_white(q, v);
-    for (int c = 0; c < 3; c++) d[c] = u[c] - v[c];
+/* a pixel's values clamped to [0, 1], NaN as 0 (EXR) */
+static void clamp_px(const float *px, float out[4]) {
+    for (int c = 0; c < 4; c++) out[c] = unit(px[c]);
+}
+
+/* Y of a difference on white (Kotsarenko & Ramos's first row), in pixelmatch's order */
+static inline double yiq_y(const double d[3]) {
+    return yiq_m[0][0] * d[0] + yiq_m[0][1] * d[1] + yiq_m[0][2] * d[2];
+}
+
+/* the weighted YIQ delta of a difference on white, terms in pixelmatch's order */
+static inline double yiq_of(const double d[3]) {
+    double delta = 0;
     for (int k = 0; k < 3; k++) {
         double e = yiq_m[k][0] * d[0] + yiq_m[k][1] * d[1] + yiq_m[k][2] * d[2];
         delta += yiq_w[k] * e * e;
     }
     return delta;
+}
+
+double ww_cmp_luma_on_white(const float *px) {
+    double a = unit(px[3]), v[3];
+    for (int c = 0; c < 3; c++) v[c] = LEVELS * (unit(px[c]) + 1.0 - a);
+    return yiq_y(v);
+}
+
+double ww_cmp_yiq_delta(const float *p, const float *q) {
+    float u[4], v[4];
+    double d[3];
+    clamp_px(p, u);
+    clamp_px(q, v);
+    white_diff(u, v, d);
+    return yiq_of(d);
 }
 
 static int same_pixel(const float *p, const float *q) {
@@ -80,16 +124,26 @@ static nbhd around(const ww_cmp_image *im, int x, int y) {
     return n;
 }
 
-/* pixels i and k of an image are the same, in either layout */
+/* pixels i and k of an image are the same, in either layout. pixelmatch compares the stored RGBA;
+ * we compare the premultiplied colour (the same for opaque pixels; under alpha 0 every colour is
+ * the same to us) */
 static int same_at(const ww_cmp_image *im, size_t i, size_t k) {
     if (im->rgb8) return memcmp(im->rgb8 + 3 * i, im->rgb8 + 3 * k, 3) == 0;
     return same_pixel(im->rgba + 4 * i, im->rgba + 4 * k);
 }
 
-static double luma_at(const ww_cmp_image *im, size_t i) {
-    float px[4];
-    ww_cmp_pixel(im, i, px);
-    return ww_cmp_luma_on_white(px);
+/* the difference over white of pixels i and k of an image, in levels (white_diff): an rgb8
+ * pair's is its level differences */
+static void white_step(const ww_cmp_image *im, size_t i, size_t k, double d[3]) {
+    if (im->rgb8) {
+        const unsigned char *p = im->rgb8 + 3 * i, *q = im->rgb8 + 3 * k;
+        for (int c = 0; c < 3; c++) d[c] = (double)p[c] - (double)q[c];
+        return;
+    }
+    float p[4], q[4];
+    clamp_px(im->rgba + 4 * i, p);
+    clamp_px(im->rgba + 4 * k, q);
+    white_diff(p, q, d);
 }
 
 /* 3+ neighbours identical to (x, y), a pixel on the image's edge counting one (pixelmatch) */
@@ -109,25 +163,30 @@ static int many_siblings(const ww_cmp_image *im, int x, int y) {
 int ww_cmp_antialiased(const ww_cmp_image *img, const ww_cmp_image *other, int x, int y) {
     nbhd n = around(img, x, y);
     size_t w = (size_t)img->width;
-    double centre = luma_at(img, (size_t)y * w + (size_t)x);
+    size_t centre = (size_t)y * w + (size_t)x;
     int zeroes = n.edge;
     double lo = 0, hi = 0;
     int lox = 0, loy = 0, hix = 0, hiy = 0;
 
-    /* brightness steps to the 8 neighbours: equal, darker (lowest) and brighter (highest) */
-    for (int j = n.y0; j <= n.y1; j++)
-        for (int i = n.x0; i <= n.x1; i++) {
+    /* brightness steps to the 8 neighbours, Y(centre - neighbour) as pixelmatch takes them:
+     * equal, lowest (the brightest neighbour) and highest (the darkest). The scan goes column by
+     * column, as pixelmatch's: of several equally bright neighbours the first one met is kept,
+     * and which one that is decides the sibling test below */
+    for (int i = n.x0; i <= n.x1; i++)
+        for (int j = n.y0; j <= n.y1; j++) {
             if (i == x && j == y) continue;
-            double d = luma_at(img, (size_t)j * w + (size_t)i) - centre;
-            if (d == 0) {
+            double d[3];
+            white_step(img, centre, (size_t)j * w + (size_t)i, d);
+            double step = yiq_y(d);
+            if (step == 0) {
                 if (++zeroes > 2) return 0; /* a flat area, not an edge's ramp */
-            } else if (d < lo) {
-                lo = d, lox = i, loy = j;
-            } else if (d > hi) {
-                hi = d, hix = i, hiy = j;
+            } else if (step < lo) {
+                lo = step, lox = i, loy = j;
+            } else if (step > hi) {
+                hi = step, hix = i, hiy = j;
             }
         }
-    /* a ramp needs both a darker and a brighter neighbour */
+    /* a ramp needs both a brighter and a darker neighbour */
     if (lo == 0 || hi == 0) return 0;
     /* ... and one of its ends in a flat area of both images */
     return (many_siblings(img, lox, loy) && many_siblings(other, lox, loy)) ||
@@ -205,13 +264,9 @@ int ww_cmp_pixel_kind(const ww_cmp_image *a, const ww_cmp_image *b, int x, int y
  * above its alpha): no clamp, no NaN. pixelmatch's delta for such a pair, as ww_cmp_yiq_delta
  * computes it (the same operations in the same order, so the same bits) */
 static inline double yiq_delta_ldr(const float *p, const float *q) {
-    double ap = p[3], aq = q[3], d[3], delta = 0;
-    for (int c = 0; c < 3; c++) d[c] = LEVELS * ((double)p[c] + 1.0 - ap) - LEVELS * ((double)q[c] + 1.0 - aq);
-    for (int k = 0; k < 3; k++) {
-        double e = yiq_m[k][0] * d[0] + yiq_m[k][1] * d[1] + yiq_m[k][2] * d[2];
-        delta += yiq_w[k] * e * e;
-    }
-    return delta;
+    double d[3];
+    white_diff(p, q, d);
+    return yiq_of(d);
 }
 
 /* a pixel over the YIQ threshold: anti-aliasing (when detected) or a difference */
@@ -302,7 +357,6 @@ static void diff_pass(const ww_cmp_image *a, const ww_cmp_image *b, const ww_cmp
  * from the level's float (so both layouts give the same figures to the bit) */
 typedef struct level_tables {
     double v[256];       /* the level as the float paths see it */
-    double white[256];   /* on white at alpha 1, 8-bit scale (on_white) */
     double luma[3][256]; /* SSIM's weighted channel at alpha 1 (ssim_luma_ldr) */
 } level_tables;
 
@@ -311,7 +365,6 @@ static void level_tables_make(level_tables *t) {
     for (unsigned k = 0; k < 256; k++) {
         double v = ww_cmp_level(k), a = 1.0;
         t->v[k] = v;
-        t->white[k] = LEVELS * (v + 1.0 - a);
         for (int c = 0; c < 3; c++) t->luma[c][k] = w[c] * (v + 1.0 - a);
     }
 }
@@ -330,19 +383,15 @@ static void diff_pass_rgb8(const ww_cmp_image *a, const ww_cmp_image *b, const w
             const unsigned char *p = a->rgb8 + 3 * (row + (size_t)x), *q = b->rgb8 + 3 * (row + (size_t)x);
             npx++;
             if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) continue;
+            /* pixelmatch's differences on white: (255 p - 255 q) / 255, exactly p - q */
             double worst = 0, dw[3];
             for (int c = 0; c < 3; c++) {
-                dw[c] = t->white[p[c]] - t->white[q[c]];
+                dw[c] = (double)p[c] - (double)q[c];
                 double l = ldr_channel(t->v[p[c]], t->v[q[c]], 1, &acc);
                 if (l > worst) worst = l;
             }
             if (worst > limit) diff++;
-            double delta = 0;
-            for (int k = 0; k < 3; k++) {
-                double e = yiq_m[k][0] * dw[0] + yiq_m[k][1] * dw[1] + yiq_m[k][2] * dw[2];
-                delta += yiq_w[k] * e * e;
-            }
-            if (!(delta > max_delta)) continue;
+            if (!(yiq_of(dw) > max_delta)) continue;
             count_over_yiq(a, b, o, x, y, s);
         }
     }

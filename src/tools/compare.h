@@ -24,15 +24,18 @@
  *                      in 8-bit levels (0..255; 16-bit files give fractional levels), EXR linear.
  *                      max_abs / 255 and mean_abs / 255 are OpenImageIO idiff's "Max error" and
  *                      "Mean error" (idiff counts alpha, premultiplied, when a file has it).
- *   rmse, psnr         ImageMagick 6's `compare -metric RMSE` (the normalised figure in
- *                      brackets) and `-metric PSNR`: the mean of (a - b)^2 over R, G, B only (alpha
- *                      not counted, colour premultiplied), rmse = sqrt(mean), psnr =
- *                      10 log10(1 / mean) dB (INFINITY when equal). Measured against IM 6.9.11.
+ *   rmse, psnr         ImageMagick's `compare -channel RGB -metric RMSE` (the normalised figure
+ *                      in brackets) and `-metric PSNR`: the mean of (a - b)^2 over R, G, B only
+ *                      (alpha not counted, colour premultiplied), rmse = sqrt(mean), psnr =
+ *                      10 log10(1 / mean) dB (INFINITY when equal). Measured against IM 6.9.11
+ *                      and 7.1.1 (IM 6 leaves alpha out without -channel RGB, IM 7 counts it).
  *   diff_pixels        pixels with any channel difference over --threshold (PNG: levels; EXR:
  *                      relative error, below)
  *   yiq_pixels         pixelmatch (Kotsarenko & Ramos 2010 YIQ delta, both images blended on
  *   aa_pixels          white, 8-bit scale) over 35215 * yiq^2, split into not-anti-aliased and
- *                      anti-aliased (Vysniauskas 2009 detector, as pixelmatch adapts it)
+ *                      anti-aliased (Vysniauskas 2009 detector, as pixelmatch adapts it); on 8-bit
+ *                      files pixelmatch 7.2.0's counts exactly (with checkerboard: false; the
+ *                      differences on purpose are in compare_impl.h)
  *   ssim               mean SSIM (Wang, Bovik, Sheikh, Simoncelli 2004) of Rec. 601 luma on white
  *                      in [0, 1] (L = 1, C1 = (0.01 L)^2, C2 = (0.03 L)^2), over every 8x8 window
  *                      sliding one pixel at a time (uniform weights, population variances)

@@ -8,7 +8,14 @@
  * threshold in 0..1). A differing pixel is anti-aliasing (Vysniauskas 2009, "Anti-aliased
  * pixel and intensity slope detector") when, in either image, its 3x3 neighbourhood holds at most
  * two pixels of its own brightness, both a darker and a brighter one, and the darkest or the
- * brightest of them sits in a flat area (3+ identical neighbours) in both images.
+ * brightest of them (the first met, scanning column by column) sits in a flat area (3+ identical
+ * neighbours) in both images.
+ *
+ * On 8-bit files this is pixelmatch 7.2.0 to the bit (checked against it under node: tests
+ * compare_pixelmatch_agrees_*), blending on white as its `checkerboard: false` does. Where we
+ * differ on purpose: "identical neighbours" compares premultiplied colour, so pixels under alpha 0
+ * are identical whatever colour they store (pixelmatch compares the stored RGBA); 16-bit and EXR
+ * values are differenced on a grid of 1/255 of an 8-bit level (pixelmatch reads bytes only).
  */
 #ifndef WW_COMPARE_IMPL_H
 #define WW_COMPARE_IMPL_H
@@ -33,7 +40,7 @@ ww_result ww_cmp_to_rgba(const ww_cmp_image *in, ww_cmp_image *out, ww_error *er
 /* the float of an 8-bit level v, v / 255 rounded to float, as the rgba layout holds it */
 float ww_cmp_level(unsigned v);
 
-/* brightness (YIQ's Y) of pixel i blended on white, 8-bit scale; values clamped to [0, 1] */
+/* brightness (YIQ's Y) of a pixel blended on white, 8-bit scale; values clamped to [0, 1] */
 double ww_cmp_luma_on_white(const float *px);
 /* pixelmatch's delta between two pixels (>= 0) */
 double ww_cmp_yiq_delta(const float *p, const float *q);
