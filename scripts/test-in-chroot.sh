@@ -2,8 +2,9 @@
 # test-in-chroot.sh [--fresh] [--demo-only] RELEASE - try the two commands on another Debian
 # release as a new user would: make (or reuse) a debootstrap chroot of RELEASE (bookworm, trixie
 # or sid), copy a clean `git clone` of this repository's HEAD into it, run `make demo` and
-# `make test` there, and print what happened: install, build, `waterworld backends`, demo, the
-# test summaries with failures and skips, the Mesa and GCC versions.
+# `make test` there, and print what happened: install, build, `waterworld backends`, how far its
+# renders are from the goldens, demo, the test summaries with failures and skips, the Mesa and
+# GCC versions.
 #
 #   sudo sh scripts/test-in-chroot.sh trixie       # chroot in $WW_CHROOTS/trixie (/work/chroots)
 #   --fresh       make the chroot anew (a machine that has only make), instead of reusing it
@@ -21,7 +22,7 @@ while [ $# -gt 0 ]; do
     case "$1" in
     --fresh) fresh=1 ;;
     --demo-only) demo_only=1 ;;
-    -h | --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "test-in-chroot: unknown option $1" >&2; exit 2 ;;
     *) break ;;
     esac
@@ -142,6 +143,9 @@ fi
 say "backends:"
 inside './waterworld backends' 2>&1 | sed 's/^/  /'
 say "renderer key: $(inside './waterworld backends --key')"
+# how far this Mesa is from the committed goldens (the figures the tolerances come from)
+say "goldens, this renderer against golden/ (scripts/make-golden.sh --measure):"
+inside 'sh scripts/make-golden.sh --measure' 2>&1 | sed 's/^/  /'
 
 rc=0
 t0=$(date +%s)
