@@ -22,7 +22,7 @@ while [ $# -gt 0 ]; do
     case "$1" in
     --fresh) fresh=1 ;;
     --demo-only) demo_only=1 ;;
-    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h | --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "test-in-chroot: unknown option $1" >&2; exit 2 ;;
     *) break ;;
     esac
