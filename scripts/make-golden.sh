@@ -50,14 +50,13 @@ golden/demo/frame_00150.png:$tmp/demo/frame_00150.png"
 golden/features/$n.png:$tmp/features/$n/frame_00000.png"
     done
     echo "renderer $("$BIN" backends --renderer) (key $("$BIN" backends --key)) against the goldens of $(cat golden/KEY)"
-    printf '%-34s %5s %8s %9s\n' image max psnr_db differ_%
+    printf '%-30s %10s %8s %11s\n' image max_levels psnr_db differ_%
     echo "$pairs" | while IFS=: read -r g a; do
-        j=$("$BIN" compare "$g" "$a" --json || true)
+        j=$("$BIN" compare "$g" "$a" --json 2>/dev/null || true)
         field() { echo "$j" | sed -n "s/.*\"$1\":\([^,}]*\).*/\1/p"; }
-        psnr=$(field psnr)
-        [ "$psnr" = null ] && psnr=inf
-        printf '%-34s %5s %8s %9s\n' "${g#golden/}" "$(field max_abs)" "$psnr" "$(field diff_percent)"
-    done
+        echo "${g#golden/} $(field max_abs) $(field psnr) $(field diff_percent)"
+    done | awk '{ psnr = $3 == "null" ? "inf" : sprintf("%.1f", $3)
+                  printf "%-30s %10.0f %8s %11.4f\n", $1, $2, psnr, $4 }' 
     exit 0
 fi
 

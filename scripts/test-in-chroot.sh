@@ -118,7 +118,7 @@ say "== $release ($(inside 'cat /etc/debian_version'), chroot $root, commit $(gi
 t0=$(date +%s)
 if inside 'sh scripts/install-deps.sh' >"$logs/install.log" 2>&1; then
     what=$(sed -n 's/^install-deps: installing://p' "$logs/install.log")
-    say "install: ok ($(($(date +%s) - t0)) s; ${what:+installed$what}${what:-nothing was missing})"
+    say "install: ok ($(($(date +%s) - t0)) s; ${what:+installed$what}${what:+}$([ -n "$what" ] || echo "nothing was missing"))"
     again=$(inside 'sh scripts/install-deps.sh' 2>&1 || echo "exit $?")
     say "install: run again: ${again:-quiet, nothing to do}"
 else
