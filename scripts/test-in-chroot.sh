@@ -1,14 +1,15 @@
 #!/bin/sh
-# test-in-chroot.sh [--fresh] [--demo-only] RELEASE - try the two commands on another Debian
-# release as a new user would: make (or reuse) a debootstrap chroot of RELEASE (bookworm, trixie
-# or sid), copy a clean `git clone` of this repository's HEAD into it, run `make demo` and
-# `make test` there, and print what happened: install, build, `waterworld backends`, how far its
+# test-in-chroot.sh [--fresh] [--demo-only] [--root] RELEASE - try the two commands on another
+# Debian release as a new user would: make (or reuse) a debootstrap chroot of RELEASE (bookworm,
+# trixie or sid), copy a clean `git clone` of this repository's HEAD into the home of a user
+# with sudo, run `make demo` and `make test` there as that user, and print what happened: install, build, `waterworld backends`, how far its
 # renders are from the goldens, demo, the test summaries with failures and skips, the Mesa and
 # GCC versions.
 #
 #   sudo sh scripts/test-in-chroot.sh trixie       # chroot in $WW_CHROOTS/trixie (/work/chroots)
 #   --fresh       make the chroot anew (a machine that has only make), instead of reusing it
 #   --demo-only   `make demo` but not `make test` (minutes instead of most of an hour)
+#   --root        run them as root instead of the user "ww" (who has sudo, as the README asks)
 #
 # Needs root and debootstrap (installed when missing). The chroot gets /proc, /sys and /dev
 # (bound), unmounted again on exit. Logs: $WW_CHROOTS/RELEASE-logs/. The archive is the one apt
@@ -18,11 +19,13 @@ set -eu
 
 fresh=0
 demo_only=0
+as_root=0
 while [ $# -gt 0 ]; do
     case "$1" in
     --fresh) fresh=1 ;;
     --demo-only) demo_only=1 ;;
-    -h | --help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --root) as_root=1 ;;
+    -h | --help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "test-in-chroot: unknown option $1" >&2; exit 2 ;;
     *) break ;;
     esac
@@ -31,7 +34,7 @@ done
 release=${1:-}
 case "$release" in
 bookworm | trixie | sid) ;;
-*) echo "usage: test-in-chroot.sh [--fresh] [--demo-only] bookworm|trixie|sid" >&2; exit 2 ;;
+*) echo "usage: test-in-chroot.sh [--fresh] [--demo-only] [--root] bookworm|trixie|sid" >&2; exit 2 ;;
 esac
 [ "$(id -u)" -eq 0 ] || { echo "test-in-chroot: needs root (debootstrap, chroot, mount)" >&2; exit 2; }
 
@@ -54,7 +57,7 @@ if [ -z "$mirror" ]; then
 fi
 mirror=${mirror:-http://deb.debian.org/debian}
 
-# the chroot: made once (minbase plus make, what a new user has), then reused
+# the chroot: made once (minbase plus make and sudo, what a new user has), then reused
 # never delete through a mount left by a killed run (its /dev is the host's)
 if grep -q " $root/" /proc/mounts; then
     say "test-in-chroot: $root still has mounts (a run in progress, or one killed): see" \
@@ -70,7 +73,7 @@ if [ ! -e "$root/.waterworld-chroot" ]; then
         DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap >/dev/null
     rm -rf "$root.tmp"
     say "chroot: debootstrap $release from $mirror into $root (a few minutes)"
-    if ! debootstrap --variant=minbase --include=make,ca-certificates "$release" "$root.tmp" \
+    if ! debootstrap --variant=minbase --include=make,ca-certificates,sudo "$release" "$root.tmp" \
         "$mirror" >"$logs/debootstrap.log" 2>&1; then
         say "chroot: debootstrap failed; see $logs/debootstrap.log"
         tail -n 5 "$logs/debootstrap.log"
@@ -82,6 +85,17 @@ if [ ! -e "$root/.waterworld-chroot" ]; then
     mv "$root.tmp" "$root"
 fi
 cp /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+# the new user, ww, who may use sudo without a password (the installs ask for root)
+if ! chroot "$root" id -u ww >/dev/null 2>&1; then
+    chroot "$root" sh -c 'command -v sudo >/dev/null || { apt-get update -qq &&
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq sudo; } >/dev/null &&
+        useradd -m -s /bin/sh ww && echo "ww ALL=(ALL) NOPASSWD: ALL" >/etc/sudoers.d/ww &&
+        chmod 440 /etc/sudoers.d/ww'
+fi
+if [ "$as_root" = 1 ]; then home=/root; spec=0:0; else
+    home=/home/ww
+    spec=$(chroot "$root" id -u ww):$(chroot "$root" id -g ww)
+fi
 
 # mounts, undone on any exit; /dev is a recursive bind made a slave, so that unmounting it here
 # never reaches the host's /dev
@@ -104,17 +118,18 @@ mnt "$root/dev" --rbind /dev
 mount --make-rslave "$root/dev"
 
 # a clean clone of HEAD, where a new user would put it
-rm -rf "$root/root/waterworld"
-git clone -q --no-checkout "$repo" "$root/root/waterworld"
-git -C "$root/root/waterworld" checkout -q --detach "$head"
+rm -rf "$root$home/waterworld"
+git clone -q --no-checkout "$repo" "$root$home/waterworld"
+git -C "$root$home/waterworld" checkout -q --detach "$head"
+chown -R "$spec" "$root$home/waterworld"
 
-inside() { # run a shell command in the chroot as root in the clone, with a plain environment
-    chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb \
+inside() { # run a shell command in the chroot as the user in the clone, with a plain environment
+    chroot --userspec="$spec" "$root" /usr/bin/env -i HOME="$home" LANG=C.UTF-8 TERM=dumb \
         PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
-        sh -c "cd /root/waterworld && $1"
+        sh -c "cd $home/waterworld && $1"
 }
 
-say "== $release ($(inside 'cat /etc/debian_version'), chroot $root, commit $(git -C "$repo" rev-parse --short HEAD))"
+say "== $release ($(inside 'cat /etc/debian_version'), chroot $root, user $(inside 'id -un'), commit $(git -C "$repo" rev-parse --short HEAD))"
 t0=$(date +%s)
 if inside 'sh scripts/install-deps.sh' >"$logs/install.log" 2>&1; then
     what=$(sed -n 's/^install-deps: installing://p' "$logs/install.log")
@@ -161,6 +176,11 @@ fi
 t0=$(date +%s)
 inside 'nice make test' >"$logs/test.log" 2>&1 || rc=1
 say "test: make test exit $([ $rc = 0 ] && echo 0 || echo non-zero) ($(($(date +%s) - t0)) s); full log $logs/test.log"
+# make test stops when the normal suite fails: run the sanitizer suite on its own to see it too
+if [ "$(grep -cE '^[0-9]+ passed, [0-9]+ failed' "$logs/test.log")" = 1 ]; then
+    say "test: the normal suite failed, so make test stopped before the sanitizer suite; running make asan"
+    inside 'nice make asan' >>"$logs/test.log" 2>&1 || true
+fi
 # the runner's closing lines (normal build, then the sanitizer build), each failed test with
 # the first lines of its messages, and the skip reasons (counted over both runs)
 awk '
