@@ -85,17 +85,6 @@ if [ ! -e "$root/.waterworld-chroot" ]; then
     mv "$root.tmp" "$root"
 fi
 cp /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
-# the new user, ww, who may use sudo without a password (the installs ask for root)
-if ! chroot "$root" id -u ww >/dev/null 2>&1; then
-    chroot "$root" sh -c 'command -v sudo >/dev/null || { apt-get update -qq &&
-        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq sudo; } >/dev/null &&
-        useradd -m -s /bin/sh ww && echo "ww ALL=(ALL) NOPASSWD: ALL" >/etc/sudoers.d/ww &&
-        chmod 440 /etc/sudoers.d/ww'
-fi
-if [ "$as_root" = 1 ]; then home=/root; spec=0:0; else
-    home=/home/ww
-    spec=$(chroot "$root" id -u ww):$(chroot "$root" id -g ww)
-fi
 
 # mounts, undone on any exit; /dev is a recursive bind made a slave, so that unmounting it here
 # never reaches the host's /dev
@@ -116,6 +105,19 @@ mnt "$root/proc" -t proc proc
 mnt "$root/sys" -t sysfs -o ro sysfs
 mnt "$root/dev" --rbind /dev
 mount --make-rslave "$root/dev"
+
+# the new user, ww, who may use sudo without a password (the installs ask for root)
+if ! chroot "$root" id -u ww >/dev/null 2>&1; then
+    chroot "$root" sh -c 'command -v sudo >/dev/null || { apt-get update -qq &&
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq sudo; } &&
+        useradd -m -s /bin/sh ww && echo "ww ALL=(ALL) NOPASSWD: ALL" >/etc/sudoers.d/ww &&
+        chmod 440 /etc/sudoers.d/ww' >"$logs/user.log" 2>&1 ||
+        { say "chroot: could not add the user ww; see $logs/user.log"; exit 2; }
+fi
+if [ "$as_root" = 1 ]; then home=/root; spec=0:0; else
+    home=/home/ww
+    spec=$(chroot "$root" id -u ww):$(chroot "$root" id -g ww)
+fi
 
 # a clean clone of HEAD, where a new user would put it
 rm -rf "$root$home/waterworld"
