@@ -18,7 +18,22 @@ WARN    := -std=c11 -Wall -Wextra -Wpedantic -Werror -Wvla -Wimplicit-fallthroug
            -Wmissing-prototypes -Wstrict-prototypes
 CFLAGS  += $(OPT) $(WARN) -ffp-contract=off -fno-fast-math $(SAN)
 CPPFLAGS+= -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen -MMD -MP
-LDLIBS  += -lyaml -lOpenEXRCore -ldl -lm -lpthread
+
+# library flags from pkg-config (OpenEXR 3.2+ headers include their neighbours by bare name, so
+# its include folder must be on the path), with Debian's paths as the fallback where pkg-config
+# or a .pc file is missing. Include folders go in as -isystem: our -Werror judges our code, not
+# a library's headers. Of OpenEXR only the C library (OpenEXRCore) is linked. EGL and OSMesa
+# are opened with dlopen: EGL's headers only, OSMesa nothing at build time.
+PKG_CONFIG ?= pkg-config
+pkg_cflags = $(patsubst -I%,-isystem %,$(shell $(PKG_CONFIG) --cflags $(1) 2>/dev/null))
+EXR_PC_LIBS := $(shell $(PKG_CONFIG) --libs OpenEXR 2>/dev/null)
+EXR_CFLAGS  := $(or $(call pkg_cflags,OpenEXR),$(addprefix -isystem ,$(wildcard /usr/include/OpenEXR)))
+EXR_LIBS    := $(filter -L%,$(EXR_PC_LIBS)) $(or $(filter -lOpenEXRCore%,$(EXR_PC_LIBS)),-lOpenEXRCore)
+YAML_CFLAGS := $(call pkg_cflags,yaml-0.1)
+YAML_LIBS   := $(or $(shell $(PKG_CONFIG) --libs yaml-0.1 2>/dev/null),-lyaml)
+GL_CFLAGS   := $(call pkg_cflags,egl) $(call pkg_cflags,cglm)
+CPPFLAGS+= $(EXR_CFLAGS) $(YAML_CFLAGS) $(GL_CFLAGS)
+LDLIBS  += $(YAML_LIBS) $(EXR_LIBS) -ldl -lm -lpthread
 VERSION := $(shell cat VERSION 2>/dev/null || echo 0.0.0)
 CPPFLAGS+= -DWW_VERSION='"$(VERSION)"'
 

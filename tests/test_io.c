@@ -581,7 +581,12 @@ static exr_result_t write_core_exr(const char *path, const char *const *names, i
     if (!rv) rv = exr_write_header(ctx);
 
     /* one scanline per chunk; the library converts our floats when the file holds halves */
+    /* OpenEXR 3.4's initializer sets the first field (pipe_size) and leaves the rest to zero,
+     * which -Wmissing-field-initializers flags; the macro is the API, so that warning is off */
+    #pragma GCC diagnostic push
+    #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
+    #pragma GCC diagnostic pop
     for (int y = 0; !rv && y < H; y++) {
         exr_chunk_info_t ci;
         rv = exr_write_scanline_chunk_info(ctx, part, CORE_Y0 + y, &ci);

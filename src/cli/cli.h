@@ -43,5 +43,8 @@ ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc
 ww_result ww_cli_frames(const char *text, const ww_scene *sc, int64_t *first, int64_t *last,
                         ww_error *err);
 int ww_cli_is_help(const char *arg);
+/* `backends`' closing advice from which backends opened and EGL's GL_VERSION (its Mesa version
+ * says whether OSMesa can exist here); NULL when both opened */
+const char *ww_cli_backends_advice(int egl_ok, const char *egl_version, int osmesa_ok);
 
 #endif

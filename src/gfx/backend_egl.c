@@ -15,7 +15,9 @@
 
 #define EGL_LIB "libEGL.so.1"
 #define EGL_MAX_DEVICES 16
-#define EGL_ADVICE "install libegl1 and libegl-mesa0 (Debian), or use --backend osmesa"
+/* OSMesa, the other backend, is only there with a Mesa older than 25.1 */
+#define EGL_OTHER "try --backend osmesa (Mesa older than 25.1 only)"
+#define EGL_ADVICE "install libegl1, libegl-mesa0 and libgl1-mesa-dri (Debian), or " EGL_OTHER
 
 typedef struct egl_fns {
     PFNEGLGETPROCADDRESSPROC GetProcAddress;
@@ -234,10 +236,10 @@ static ww_result make_context(egl_impl *e, ww_error *err) {
     if (!has_ext(dpy_ext, "EGL_KHR_surfaceless_context"))
         return ww_error_set(err, WW_E_BACKEND, NULL, 0, 0,
                             "egl: the display lacks EGL_KHR_surfaceless_context (needed to render "
-                            "without a window); use --backend osmesa");
+                            "without a window); " EGL_OTHER);
     if (!e->f.BindAPI(EGL_OPENGL_API))
         return egl_fail(e, err, "eglBindAPI(EGL_OPENGL_API)",
-                        "this EGL has no desktop OpenGL; use --backend osmesa");
+                        "this EGL has no desktop OpenGL; " EGL_OTHER);
 
     /* any config will do: nothing is drawn to an EGL surface */
     EGLConfig cfg = EGL_NO_CONFIG_KHR;
@@ -249,7 +251,7 @@ static ww_result make_context(egl_impl *e, ww_error *err) {
         if (n < 1)
             return ww_error_set(err, WW_E_BACKEND, NULL, 0, 0,
                                 "egl: eglChooseConfig found no config with EGL_OPENGL_BIT; "
-                                "use --backend osmesa");
+                                EGL_OTHER);
     }
 
     const EGLint attrs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
@@ -260,7 +262,7 @@ static ww_result make_context(egl_impl *e, ww_error *err) {
         return egl_fail(e, err, "eglCreateContext (OpenGL 3.3 core)",
                         "the driver needs OpenGL 3.3 core (Mesa >= 10 with llvmpipe has it)");
     if (!e->f.MakeCurrent(e->dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, e->ctx))
-        return egl_fail(e, err, "eglMakeCurrent (no surface)", "use --backend osmesa");
+        return egl_fail(e, err, "eglMakeCurrent (no surface)", EGL_OTHER);
     return WW_OK;
 }
 
@@ -304,7 +306,7 @@ ww_result ww_backend_egl_open(ww_backend *b, ww_error *err) {
         if (missing)
             rc = ww_error_set(err, WW_E_BACKEND, NULL, 0, 0,
                               "egl: eglGetProcAddress(\"%s\") returned NULL; the driver's OpenGL "
-                              "is incomplete, use --backend osmesa",
+                              "is incomplete; " EGL_OTHER,
                               missing);
     }
     if (rc != WW_OK) egl_close(b);

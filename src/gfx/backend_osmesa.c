@@ -1,24 +1,62 @@
 /* backend_osmesa.c - a GL 3.3 core context from Mesa's off-screen OSMesa, loaded with dlopen.
  * OSMesa needs a client buffer to be current on; a tiny private one is enough because the
- * renderer draws into its own framebuffer objects. (Mesa 25.1 removed OSMesa; EGL is the default.)
+ * renderer draws into its own framebuffer objects. Mesa 25.1 removed OSMesa, so EGL is the
+ * default and this backend is optional: it needs no OSMesa header or library at build time.
  */
 #include <dlfcn.h>
 #include <stdlib.h>
 
-/* glcorearb.h (through gl.h) must come before osmesa.h's GL/gl.h, or the 1.1 entry point types
- * of the table go missing */
 #include "gfx/backend_impl.h"
 
-#include <GL/osmesa.h>
+/* The few parts of the OSMesa API (Mesa's GL/osmesa.h, OSMesa 11.2) this file uses, declared
+ * here so that a system without OSMesa (Debian 13's successors, any Mesa from 25.1) builds it:
+ * the context handle, the four entry points OSMesaCreateContextAttribs, OSMesaMakeCurrent,
+ * OSMesaDestroyContext and OSMesaGetProcAddress, and the attribute names and values passed to
+ * OSMesaCreateContextAttribs. */
+typedef struct osmesa_context *OSMesaContext;
+typedef void (*osm_proc)(void); /* OSMESAproc, without its empty parameter list */
+enum {
+    OSM_RGBA = 0x1908, /* OSMESA_RGBA = GL_RGBA */
+    OSM_FORMAT = 0x22,
+    OSM_DEPTH_BITS = 0x30,
+    OSM_STENCIL_BITS = 0x31,
+    OSM_ACCUM_BITS = 0x32,
+    OSM_PROFILE = 0x33,
+    OSM_CORE_PROFILE = 0x34,
+    OSM_CONTEXT_MAJOR_VERSION = 0x36,
+    OSM_CONTEXT_MINOR_VERSION = 0x37,
+};
 
-#define OSMESA_ADVICE "install libosmesa6 (Debian), or use --backend egl"
+/* where the header is installed, hold our copies to it (glcorearb.h, through backend_impl.h,
+ * must come before osmesa.h's GL/gl.h, or the 1.1 entry point types of the table go missing);
+ * WW_OSMESA_HEADER_CHECK=0 builds as where it is absent (a test does) */
+#ifndef WW_OSMESA_HEADER_CHECK
+#define WW_OSMESA_HEADER_CHECK 1
+#endif
+#if WW_OSMESA_HEADER_CHECK && defined(__has_include)
+#if __has_include(<GL/osmesa.h>)
+#include <GL/osmesa.h>
+_Static_assert(OSM_RGBA == OSMESA_RGBA && OSM_FORMAT == OSMESA_FORMAT &&
+                   OSM_DEPTH_BITS == OSMESA_DEPTH_BITS && OSM_STENCIL_BITS == OSMESA_STENCIL_BITS &&
+                   OSM_ACCUM_BITS == OSMESA_ACCUM_BITS && OSM_PROFILE == OSMESA_PROFILE &&
+                   OSM_CORE_PROFILE == OSMESA_CORE_PROFILE &&
+                   OSM_CONTEXT_MAJOR_VERSION == OSMESA_CONTEXT_MAJOR_VERSION &&
+                   OSM_CONTEXT_MINOR_VERSION == OSMESA_CONTEXT_MINOR_VERSION,
+               "OSMesa constants differ from GL/osmesa.h");
+#endif
+#endif
+
+/* what to do when OSMesa does not open; backend.c's auto mode has tried EGL first */
+#define OSMESA_ADVICE                                                                            \
+    "OSMesa is optional (Mesa 25.1 removed it): use --backend egl, or, with a Mesa older than "  \
+    "25.1, install libosmesa6 (Debian 12, 13)"
 #define OSMESA_BUF_SIZE 4 /* px, square */
 
 typedef OSMesaContext (*osm_create_fn)(const int *attribs, OSMesaContext share);
 typedef GLboolean (*osm_make_current_fn)(OSMesaContext c, void *buf, GLenum type, GLsizei w,
                                          GLsizei h);
 typedef void (*osm_destroy_fn)(OSMesaContext c);
-typedef OSMESAproc (*osm_get_proc_fn)(const char *name);
+typedef osm_proc (*osm_get_proc_fn)(const char *name);
 
 typedef struct osm_impl {
     void *lib;
@@ -99,13 +137,13 @@ ww_result ww_backend_osmesa_open(ww_backend *b, ww_error *err) {
     ww_result rc = load_lib(o, err);
     if (rc == WW_OK) {
         /* no depth, stencil or accumulation buffer: our framebuffers carry their own */
-        const int attrs[] = {OSMESA_FORMAT, OSMESA_RGBA,
-                             OSMESA_DEPTH_BITS, 0,
-                             OSMESA_STENCIL_BITS, 0,
-                             OSMESA_ACCUM_BITS, 0,
-                             OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                             OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                             OSMESA_CONTEXT_MINOR_VERSION, 3,
+        const int attrs[] = {OSM_FORMAT, OSM_RGBA,
+                             OSM_DEPTH_BITS, 0,
+                             OSM_STENCIL_BITS, 0,
+                             OSM_ACCUM_BITS, 0,
+                             OSM_PROFILE, OSM_CORE_PROFILE,
+                             OSM_CONTEXT_MAJOR_VERSION, 3,
+                             OSM_CONTEXT_MINOR_VERSION, 3,
                              0};
         o->ctx = o->CreateContextAttribs(attrs, NULL);
         if (!o->ctx)

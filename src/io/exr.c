@@ -142,7 +142,12 @@ static exr_result_t encode(exr_context_t ctx, const ww_image *im, const ww_exr_m
 
     int32_t lines = 0;
     if (rv == EXR_ERR_SUCCESS) rv = exr_get_scanlines_per_chunk(ctx, part, &lines);
+    /* OpenEXR 3.4's initializer sets the first field (pipe_size) and leaves the rest to zero,
+     * which -Wmissing-field-initializers flags; the macro is the API, so that warning is off */
+    #pragma GCC diagnostic push
+    #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
     exr_encode_pipeline_t enc = EXR_ENCODE_PIPELINE_INITIALIZER;
+    #pragma GCC diagnostic pop
     int started = 0;
     for (int y = 0; rv == EXR_ERR_SUCCESS && y < h; y += lines) {
         exr_chunk_info_t ci;
@@ -254,7 +259,12 @@ static exr_result_t decode(exr_context_t ctx, const exr_attr_box2i_t *dw, ww_ima
     float *scratch = malloc(5 * plane * sizeof(float));
     if (!scratch) return EXR_ERR_OUT_OF_MEMORY;
 
+    /* OpenEXR 3.4's initializer sets the first field (pipe_size) and leaves the rest to zero,
+     * which -Wmissing-field-initializers flags; the macro is the API, so that warning is off */
+    #pragma GCC diagnostic push
+    #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
     exr_decode_pipeline_t dec = EXR_DECODE_PIPELINE_INITIALIZER;
+    #pragma GCC diagnostic pop
     int started = 0;
     for (int y0 = 0; rv == EXR_ERR_SUCCESS && y0 < out->height; y0 += lines) {
         exr_chunk_info_t ci;
