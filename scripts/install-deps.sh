@@ -8,7 +8,8 @@ set -eu
 # build: compiler, libyaml, cglm, stb, OpenEXR (C API), EGL/GL headers
 # run:   EGL (glvnd + Mesa), llvmpipe (libgl1-mesa-dri)
 # tests: the outside tools our outputs are checked with: ImageMagick (compare), OpenImageIO
-#        (oiiotool, idiff), ffmpeg (ffprobe, make-video.sh), Chromium (the HTML report's picture)
+#        (oiiotool, idiff), ffmpeg (ffprobe, make-video.sh), Chromium (the HTML report's picture),
+#        and pixelmatch under Node.js (below)
 PKGS="gcc make libc6-dev pkg-config libyaml-dev libcglm-dev libstb-dev libopenexr-dev
 libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
 imagemagick openimageio-tools ffmpeg chromium"
@@ -57,7 +58,11 @@ want_optional() {
     optional=$rest
 }
 want_optional
-[ -z "$missing" ] && exit 0
+
+# the reference the compare tests check against: Node.js and pixelmatch 7.2.0 from the npm
+# registry, hash-pinned (scripts/install-pixelmatch.sh; quiet when there, a skip without network)
+pixelmatch() { [ "$fuzz" = 1 ] || sh "$(dirname "$0")/install-pixelmatch.sh"; }
+[ -z "$missing" ] && { pixelmatch; exit 0; }
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then
@@ -75,3 +80,4 @@ echo "install-deps: installing:$missing" >&2
 # shellcheck disable=SC2086
 $SUDO apt-get install -y -qq --no-install-recommends $missing >/dev/null
 echo "install-deps: done" >&2
+pixelmatch
