@@ -802,8 +802,9 @@ TEST_PROC(compare_pixelmatch_agrees_on_goldens) {
     pm_check(pmdir, dir, pairs, n, w, h, 1);
 }
 
-/* pixelmatch 7.2.0 and ours on rendered demo frames at 1280x720: frames 0 and 11 (where the
- * neighbour scan's order once made 27 pixels differ), 3 and 9, 10 and 11 */
+/* pixelmatch 7.2.0 and ours on rendered demo frames at 1280x720: frames 0 and 11, where the
+ * neighbour scan's order once made 27 pixels differ (each rendered alone: a slice gives the
+ * frame of a full run; the goldens above cover more pairs, layouts and alpha) */
 TEST_PROC(compare_pixelmatch_agrees_on_frames) {
     char pmdir[600];
     REQUIRE_PIXELMATCH(pmdir);
@@ -811,13 +812,15 @@ TEST_PROC(compare_pixelmatch_agrees_on_frames) {
     const char *d = ww_test_tmpdir("compare_pm_frames");
     char dir[600], cmd[4096];
     snprintf(dir, sizeof dir, "%s", d);
-    snprintf(cmd, sizeof cmd, "%s render scenes/demo.yaml --frames 12 --size 1280x720 -o %s --quiet",
-             ww_test_bin(), dir);
-    ENSURE_EQ_INT(ww_test_run(cmd, NULL, NULL), 0);
-    static pm_pair pairs[3];
-    static const int frames[3][2] = {{0, 11}, {3, 9}, {10, 11}};
+    static const int frames[1][2] = {{0, 11}};
+    for (int k = 0; k < 2; k++) {
+        snprintf(cmd, sizeof cmd, "%s render scenes/demo.yaml --frames %d:%d --size 1280x720 -o %s "
+                 "--quiet", ww_test_bin(), frames[0][k], frames[0][k] + 1, dir);
+        ENSURE_EQ_INT(ww_test_run(cmd, NULL, NULL), 0);
+    }
+    static pm_pair pairs[1];
     int n = 0, w = 0, h = 0;
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < 1; k++) {
         char a[700], b[700], name[64];
         snprintf(a, sizeof a, "%s/frame_%05d.png", dir, frames[k][0]);
         snprintf(b, sizeof b, "%s/frame_%05d.png", dir, frames[k][1]);
