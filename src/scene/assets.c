@@ -10,6 +10,7 @@
 
 #include <stb/stb_image.h>
 
+#include "core/stb_guard.h"
 #include "scene/obj.h"
 
 #define IMAGE_MAX_BYTES (64u << 20)  /* largest image file read */
@@ -40,7 +41,7 @@ ww_result ww_assets_image(ww_assets *a, const char *path, const char *from, int 
     stbi_convert_iphone_png_to_rgb(0);
     int w, h, comp;
     unsigned char *px = NULL;
-    if (!stbi_info_from_memory((const unsigned char *)file, (int)len, &w, &h, &comp)) {
+    if (!ww_stbi_info_from_memory((const unsigned char *)file, (int)len, &w, &h, &comp)) {
         free(file);
         return ww_error_set(err, WW_E_SYNTAX, from, line, column,
                             "'%s' is not a PNG, TGA or JPEG image: %s", path,
@@ -52,7 +53,7 @@ ww_result ww_assets_image(ww_assets *a, const char *path, const char *from, int 
                             "'%s' is %dx%d: expected at most %d texels per side", path, w, h,
                             IMAGE_MAX_SIDE);
     }
-    px = stbi_load_from_memory((const unsigned char *)file, (int)len, &w, &h, &comp, 4);
+    px = ww_stbi_load_from_memory((const unsigned char *)file, (int)len, &w, &h, &comp, 4);
     free(file);
     if (!px)
         return ww_error_set(err, WW_E_SYNTAX, from, line, column, "cannot decode '%s': %s", path,
