@@ -11,8 +11,8 @@ set -eu
 PKGS="gcc make libc6-dev pkg-config libyaml-dev libcglm-dev libstb-dev libopenexr-dev
 libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri libosmesa6 libosmesa6-dev
 imagemagick openimageio-tools ffmpeg chromium"
-# `make fuzz` only: clang with libFuzzer
-[ "${1:-}" = "--fuzz" ] && PKGS="clang libclang-rt-14-dev"
+# `make fuzz` only: clang with libFuzzer, zlib (the inflate target checks against it)
+[ "${1:-}" = "--fuzz" ] && PKGS="clang libclang-rt-14-dev zlib1g-dev"
 
 missing=""
 for p in $PKGS; do
