@@ -210,7 +210,9 @@ static const char *vet_png(const unsigned char *f, size_t len) {
         if (first != ihdr) return first ? "PNG: first chunk is not IHDR" : "PNG: a second IHDR";
         if (ihdr && n != PNG_IHDR_LEN) return "PNG: IHDR of the wrong length";
         first = 0;
-        if (memcmp(type, "IDAT", 4) == 0) {
+        if (ihdr) {
+            /* the header's fields are stb's to check */
+        } else if (memcmp(type, "IDAT", 4) == 0) {
             /* stb appends each IDAT to a buffer it allocates at the first non-empty one */
             if (n == 0 && !have_data) return "PNG: an empty IDAT chunk before the image data";
             have_data |= n > 0;
