@@ -135,9 +135,10 @@ TEST(fuzz_regress_jpeg_dht_smallest) {
     ENSURE(vet(&b) != NULL);
 }
 
-/* fuzz_image: a PNG whose first IDAT is empty made stb add an offset to its still-null data
- * pointer in stbi__parse_png_file (undefined behaviour, "applying zero offset to null pointer");
- * refused before stb sees it. Our own reader takes the file: the empty chunk adds no data */
+/* fuzzing the image path, stb_image 2.27 without the guard: a PNG whose first IDAT is empty
+ * makes stb add an offset to its still-null data pointer in stbi__parse_png_file (UBSan:
+ * "applying zero offset to null pointer", stb_image.h:5130); refused before stb sees it. Our own
+ * reader (the compare loader's) takes the file: the empty chunk adds no data */
 TEST(fuzz_regress_png_empty_first_idat) {
     bytes b;
     png_1x1(&b, "e", "");
