@@ -12,6 +12,7 @@
 
 #include "core/stb_guard.h"
 #include "io/inflate.h"
+#include "io/png_read.h"
 #include "io/writers.h"
 #include "scene/assets.h"
 #include "test.h"
@@ -53,7 +54,8 @@ static void chunk(bytes *b, const char *type, const void *data, uint32_t n) {
 }
 
 /* a 1x1 RGB PNG (one red pixel, stored deflate block) with the chunks of `before` ahead of its
- * IDAT and `after` behind it: "e" an empty IDAT, "x" an unknown critical chunk XYZW */
+ * IDAT and `after` behind it: "e" an empty IDAT, "x" an unknown critical chunk XYZW, "p" a
+ * suggested palette (PLTE) of 49 bytes, not a whole number of entries */
 static void png_1x1(bytes *b, const char *before, const char *after) {
     static const unsigned char ihdr[13] = {0, 0, 0, 1, 0, 0, 0, 1, 8, 2, 0, 0, 0};
     static const unsigned char raw[4] = {0, 255, 0, 0}; /* filter none, R G B */
@@ -64,7 +66,10 @@ static void png_1x1(bytes *b, const char *before, const char *after) {
     b->n = 0;
     put(b, "\x89PNG\r\n\x1a\n", 8);
     chunk(b, "IHDR", ihdr, 13);
-    for (const char *c = before; *c; c++) chunk(b, *c == 'e' ? "IDAT" : "XYZW", "abc", *c == 'e' ? 0 : 3);
+    static const unsigned char pal[49];
+    for (const char *c = before; *c; c++)
+        if (*c == 'p') chunk(b, "PLTE", pal, sizeof pal);
+        else chunk(b, *c == 'e' ? "IDAT" : "XYZW", "abc", *c == 'e' ? 0 : 3);
     chunk(b, "IDAT", z, sizeof z);
     for (const char *c = after; *c; c++) chunk(b, *c == 'e' ? "IDAT" : "XYZW", "abc", *c == 'e' ? 0 : 3);
     chunk(b, "IEND", NULL, 0);
@@ -166,6 +171,23 @@ TEST(fuzz_regress_png_empty_first_idat) {
     unsigned char *px = ww_stbi_load_from_memory(b.d, (int)b.n, &w, &h, &comp, 3);
     ENSURE(px && w == 1 && h == 1 && px[0] == 255 && px[1] == 0 && px[2] == 0);
     stbi_image_free(px);
+}
+
+/* fuzz_png, whose harness holds our reader's pixels against stb_image's: a truecolour PNG
+ * with a suggested palette of 49 bytes. stb refuses the file ("invalid PLTE"); our reader
+ * passes over the chunk, as libpng does (a benign error for a palette the decoding never
+ * reads). A difference of verdicts, not of pixels: the harness allows this one */
+TEST(fuzz_regress_png_odd_suggested_palette) {
+    bytes b;
+    png_1x1(&b, "p", "");
+    ww_png_pixels px;
+    ww_error err = {0};
+    ENSURE_MSG(ww_png_decode(b.d, b.n, &px, &err) == WW_OK, "%s", err.msg);
+    ENSURE(px.px && px.width == 1 && px.channels == 3 && ((unsigned char *)px.px)[0] == 255);
+    free(px.px);
+    int w, h, comp;
+    ENSURE(ww_stbi_load_from_memory(b.d, (int)b.n, &w, &h, &comp, 0) == NULL);
+    ENSURE(strcmp(stbi_failure_reason(), "invalid PLTE") == 0);
 }
 
 /* ---- the guard ------------------------------------------------------------------------------ */
