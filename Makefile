@@ -8,7 +8,7 @@
 #   make test-long  the long tier: soaks, benchmarks as tests, the largest renders
 #   make golden     re-render the golden images in golden/ (read README first)
 #   make bench      speed and memory figures (not part of test)
-#   make fuzz       libFuzzer on the scene loader, then the OBJ reader, FUZZ_SECONDS each
+#   make fuzz       libFuzzer on every reader, FUZZ_SECONDS each (make fuzz-NAME: one of them)
 #   make soak       one hour of simulated time at 120 Hz with every system on (not part of test)
 
 BUILD   ?= build
@@ -81,14 +81,23 @@ $(BUILD)/ww-tests: $(TEST_OBJ) $(BUILD)/libww.a
 	$(Q)$(CC) $(CFLAGS) -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=fork,--wrap=ww_backend_open \
 	    -o $@ $^ $(LDLIBS)
 
+# the fuzz targets built without libFuzzer (tests/fuzz/replay.c), to replay their seeds in the
+# test suite (fuzz_targets_replay_their_seeds), with this build's compiler and sanitizers
+FUZZ_TARGETS := scene obj png inflate exr wav image
+REPLAY  := $(FUZZ_TARGETS:%=$(BUILD)/fuzz-replay/fuzz_%)
+$(BUILD)/fuzz-replay/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_file.h tests/fuzz/replay.c $(BUILD)/libww.a
+	@mkdir -p $(dir $@)
+	@echo "  LD  $@"
+	$(Q)$(CC) $(CPPFLAGS) $(CFLAGS) -o $@ $< tests/fuzz/replay.c $(BUILD)/libww.a $(LDLIBS) -lz
+
 deps:
 	@sh scripts/install-deps.sh
 
-unit: $(BIN) $(BUILD)/ww-tests
+unit: $(BIN) $(BUILD)/ww-tests $(REPLAY)
 	WW_BIN=./$(BIN) $(BUILD)/ww-tests -j $(JOBS) $(T)
 
 test: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) $(BIN) $(BUILD)/ww-tests
+	@$(MAKE) --no-print-directory -j$(JOBS) $(BIN) $(BUILD)/ww-tests $(REPLAY)
 	@$(MAKE) --no-print-directory unit
 	@$(MAKE) --no-print-directory asan
 
@@ -101,7 +110,7 @@ test-long: $(BIN) $(BUILD)/ww-tests
 asan:
 	@$(MAKE) --no-print-directory -j$(JOBS) BUILD=build/asan BIN=build/asan/waterworld OPT="-O1 -g" \
 	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
-	    build/asan/waterworld build/asan/ww-tests
+	    build/asan/waterworld build/asan/ww-tests $(FUZZ_TARGETS:%=build/asan/fuzz-replay/fuzz_%)
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ASAN_OPTIONS=detect_leaks=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1 WW_BIN=build/asan/waterworld \
 	    WW_ASAN=1 build/asan/ww-tests -j $(JOBS) --tier unit,proc $(T)
 
@@ -122,20 +131,58 @@ bench: $(BIN)
 	./$(BIN) bench output
 	./$(BIN) bench compare
 
-# libFuzzer on the scene loader and the OBJ reader (clang; not part of test). FUZZ_SECONDS=60
-# each by default.
+# libFuzzer (clang) on every reader, one target each (tests/fuzz/fuzz_NAME.c):
+#   scene    the scene loader: YAML, --set, --script, compile, validate, plan, first steps
+#   obj      OBJ + MTL                      png      io/png_read.c (+ inflate), against stb_image
+#   inflate  io/inflate.c, against zlib     exr      io/exr.c (OpenEXRCore), the compare loader
+#   wav      io/wav.c and the resampler     image    textures, cubemaps, PNG/compare through stb
+# `make fuzz` runs each for FUZZ_SECONDS (60); `make fuzz-NAME` runs one. The library is built
+# with the fuzzer's coverage and ASan + UBSan into build/fuzz/; corpora grow in
+# build/fuzz/corpus/NAME/ from the seeds in tests/fuzz/corpus/NAME/; a crash is written to
+# build/fuzz/crash/NAME/ (rerun one: build/fuzz/fuzz_NAME FILE). FUZZ_ARGS adds libFuzzer flags.
 FUZZ_SECONDS ?= 60
-fuzz: deps
-	@command -v clang >/dev/null || sh scripts/install-deps.sh --fuzz
-	@mkdir -p build/fuzz/corpus && cp scenes/*.yaml tests/bad/*.yaml build/fuzz/corpus/
-	clang -g -O1 -std=c11 -fsanitize=fuzzer,address,undefined -D_DEFAULT_SOURCE -Isrc \
-	    -o build/fuzz/fuzz_scene tests/fuzz/fuzz_scene.c src/scene/*.c src/core/*.c -lyaml -lm
-	build/fuzz/fuzz_scene -max_total_time=$(FUZZ_SECONDS) build/fuzz/corpus
-	@mkdir -p build/fuzz/corpus_obj && cp tests/data/*.obj build/fuzz/corpus_obj/
-	clang -g -O1 -std=c11 -fsanitize=fuzzer,address,undefined -D_DEFAULT_SOURCE -Isrc \
-	    -o build/fuzz/fuzz_obj tests/fuzz/fuzz_obj.c src/scene/obj.c src/scene/assets.c \
-	    src/core/*.c -lm
-	build/fuzz/fuzz_obj -max_total_time=$(FUZZ_SECONDS) build/fuzz/corpus_obj
+FUZZ_ARGS    ?=
+FUZZ_SAN     := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_LEN_scene   := 16384
+FUZZ_LEN_obj     := 16384
+FUZZ_LEN_png     := 65536
+FUZZ_LEN_inflate := 65536
+FUZZ_LEN_exr     := 65536
+FUZZ_LEN_wav     := 65536
+FUZZ_LEN_image   := 65536
+FUZZ_DICT_scene  := -dict=tests/fuzz/scene.dict
+FUZZ_DICT_obj    := -dict=tests/fuzz/obj.dict
+# the repository's own files join the committed seeds
+FUZZ_SEEDS_scene := scenes tests/bad tests/data
+FUZZ_SEEDS_obj   := tests/data
+.PHONY: fuzz-lib fuzz-build fuzz-seeds $(FUZZ_TARGETS:%=fuzz-%)
+
+fuzz: fuzz-build
+	@for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-$$t || exit 1; done
+
+fuzz-build: $(FUZZ_TARGETS:%=build/fuzz/fuzz_%)
+
+fuzz-lib:
+	@sh scripts/install-deps.sh --fuzz
+	@$(MAKE) --no-print-directory BUILD=build/fuzz CC=clang OPT="-O1 -g" \
+	    SAN="-fsanitize=fuzzer-no-link $(FUZZ_SAN)" build/fuzz/libww.a
+
+build/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_file.h fuzz-lib
+	@echo "  LD  $@"
+	$(Q)clang -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L -Isrc -Ibuild/fuzz/gen $(WARN) -O1 -g \
+	    -fsanitize=fuzzer $(FUZZ_SAN) -o $@ $< build/fuzz/libww.a $(LDLIBS) -lz
+
+$(FUZZ_TARGETS:%=fuzz-%): fuzz-%: build/fuzz/fuzz_%
+	@mkdir -p build/fuzz/corpus/$* build/fuzz/crash/$*
+	build/fuzz/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 -timeout=10 \
+	    -max_len=$(FUZZ_LEN_$*) $(FUZZ_DICT_$*) -artifact_prefix=build/fuzz/crash/$*/ \
+	    -print_final_stats=1 $(FUZZ_ARGS) build/fuzz/corpus/$* tests/fuzz/corpus/$* $(FUZZ_SEEDS_$*)
+
+# the binary seeds of tests/fuzz/corpus/ (PNG, zlib streams, WAV, EXR), rewritten in place
+fuzz-seeds: $(BUILD)/libww.a
+	$(Q)$(CC) $(CPPFLAGS) $(CFLAGS) -o $(BUILD)/make_seeds tests/fuzz/make_seeds.c $(BUILD)/libww.a $(LDLIBS) -lz
+	@mkdir -p $(FUZZ_TARGETS:%=tests/fuzz/corpus/%)
+	$(BUILD)/make_seeds tests/fuzz/corpus
 
 # one hour at 120 Hz of SOAK_SCENE (every system on): exit 3 names the system, field, index and
 # step of a NaN or Inf; --stats prints simulated seconds per wall second. A 60 s version runs in

@@ -5,12 +5,13 @@
 # Needs root (or sudo) only when something is missing.
 set -eu
 
-# build: compiler, libyaml, cglm, stb, OpenEXR (C API), EGL/GL headers
+# build: compiler, libyaml, cglm, stb, OpenEXR (C API), EGL/GL headers; zlib for the test that
+#        replays the fuzz seeds (the inflate target checks our inflate against it)
 # run:   EGL (glvnd + Mesa), llvmpipe (libgl1-mesa-dri)
 # tests: the outside tools our outputs are checked with: ImageMagick (compare), OpenImageIO
 #        (oiiotool, idiff), ffmpeg (ffprobe, make-video.sh), Chromium (the HTML report's picture),
 #        and pixelmatch under Node.js (below)
-PKGS="gcc make libc6-dev pkg-config libyaml-dev libcglm-dev libstb-dev libopenexr-dev
+PKGS="gcc make libc6-dev pkg-config libyaml-dev libcglm-dev libstb-dev libopenexr-dev zlib1g-dev
 libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
 imagemagick openimageio-tools ffmpeg chromium"
 # optional, where the release has it: OSMesa, the second backend (Mesa 25.1 removed it, so
@@ -41,7 +42,7 @@ fuzz_pkgs() {
         v=$(clang --version | sed -n 's/.*clang version \([0-9]*\).*/\1/p' | head -n 1)
     fi
     [ -n "$v" ] || v=$(candidate_major clang)
-    echo "clang${v:+ libclang-rt-$v-dev}"
+    echo "clang${v:+ libclang-rt-$v-dev} zlib1g-dev"
 }
 if [ "$fuzz" = 1 ]; then PKGS=$(fuzz_pkgs); OPTIONAL=""; fi
 

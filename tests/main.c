@@ -53,6 +53,7 @@ typedef struct {
     double tol_scale;
     /* the GL probe, made once in a child of its own before any test starts: index 1 EGL,
      * 2 OSMesa (ww_backend_kind); gl_error says why neither opens */
+    char home[256]; /* the test binary's folder: build/, build/asan/ */
     int probed;
     int have[3];
     char error[3][768];
@@ -110,6 +111,7 @@ int ww_test_have_gl(void) {
 }
 
 const char *ww_test_gl_error(void) { return R.gl_error; }
+const char *ww_test_build_dir(void) { return R.home; }
 
 int ww_test_have_backend(int kind) {
     ww_test_needs_proc("asks for GL");
@@ -457,6 +459,7 @@ static int parse_options(int argc, char **argv, options *o) {
     const char *slash = strrchr(argv[0], '/');
     snprintf(o->home, sizeof o->home, "%.*s", slash ? (int)(slash - argv[0]) : 1, slash ? argv[0] : ".");
     snprintf(o->times, sizeof o->times, "%s/test-times.txt", o->home);
+    snprintf(R.home, sizeof R.home, "%s", o->home);
     o->filters = calloc((size_t)argc, sizeof *o->filters);
     for (int a = 1; a < argc; a++) {
         const char *s = argv[a];

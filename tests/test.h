@@ -161,6 +161,8 @@ const char *ww_test_gl_error(void);
 /* 1 when this backend kind (1 EGL, 2 OSMesa: ww_backend_kind) opens here; why not */
 int ww_test_have_backend(int kind);
 const char *ww_test_backend_error(int kind);
+/* the folder of the test binary (build, build/asan): what the Makefile built beside it */
+const char *ww_test_build_dir(void);
 /* 1 when cmd is found on PATH */
 int ww_test_have_tool(const char *cmd);
 

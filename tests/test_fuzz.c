@@ -132,3 +132,28 @@ TEST(fuzz_scene_loader_mutations_spectrum) { fuzz_file("scenes/spectrum.yaml", 3
 TEST(fuzz_scene_loader_mutations_ripples) { fuzz_file("scenes/ripples.yaml", 4); }
 TEST(fuzz_scene_loader_mutations_lake) { fuzz_file("scenes/lake.yaml", 5); }
 TEST(fuzz_scene_loader_mutations_reef) { fuzz_file("scenes/reef.yaml", 6); }
+
+/* every libFuzzer target (tests/fuzz/fuzz_NAME.c), built by the Makefile with this build's own
+ * compiler, flags and sanitizers around tests/fuzz/replay.c, replays its committed seeds and the
+ * repository's own inputs without a crash: the targets keep compiling as the readers change, and
+ * a seed that once crashed stays a regression test */
+TEST_PROC(fuzz_targets_replay_their_seeds) {
+    static const struct {
+        const char *name, *also;
+    } targets[] = {{"scene", "scenes/*.yaml tests/bad/*.yaml"}, {"obj", "tests/data/*.obj"},
+                   {"png", "tests/data/*.png"}, {"inflate", ""}, {"exr", ""}, {"wav", ""},
+                   {"image", "tests/data/*.png tests/data/*.tga tests/data/fuzz/*"}};
+    const char *dir = ww_test_tmpdir("replay");
+    for (size_t i = 0; i < sizeof targets / sizeof targets[0]; i++) {
+        char cmd[1024], out[600];
+        snprintf(out, sizeof out, "%s/%s.txt", dir, targets[i].name);
+        snprintf(cmd, sizeof cmd, "%s/fuzz-replay/fuzz_%s tests/fuzz/corpus/%s/* %s",
+                 ww_test_build_dir(), targets[i].name, targets[i].name, targets[i].also);
+        ENSURE_MSG(ww_test_run(cmd, out, out) == 0, "%s (see %s)", cmd, out);
+        char *text = ww_test_read_file(out, NULL);
+        int n = 0;
+        ENSURE_MSG(text && sscanf(text, "replayed %d inputs", &n) == 1 && n > 0, "%s: %s", cmd,
+                   text ? text : "(no output)");
+        free(text);
+    }
+}

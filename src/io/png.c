@@ -6,6 +6,7 @@
  */
 #include "io/writers.h"
 
+#include "core/stb_guard.h"
 #include "io/deflate.h"
 
 #include <fcntl.h>
@@ -147,13 +148,13 @@ ww_result ww_read_png(const char *path, ww_image *out, ww_error *err) {
 
     /* grey -> RGB, grey+alpha -> RGBA; 16-bit samples come back as their high bytes */
     int w, h, comp;
-    if (!stbi_info_from_memory(file, (int)len, &w, &h, &comp)) {
+    if (!ww_stbi_info_from_memory(file, (int)len, &w, &h, &comp)) {
         free(file);
         return ww_error_set(err, WW_E_SYNTAX, NULL, 0, 0, "'%s': not a PNG: %s", path,
                             stbi_failure_reason());
     }
     int want = (comp == 2 || comp == 4) ? 4 : 3;
-    unsigned char *px = stbi_load_from_memory(file, (int)len, &w, &h, &comp, want);
+    unsigned char *px = ww_stbi_load_from_memory(file, (int)len, &w, &h, &comp, want);
     free(file);
     if (!px)
         return ww_error_set(err, WW_E_SYNTAX, NULL, 0, 0, "'%s': not a PNG: %s", path,

@@ -17,6 +17,7 @@
 #include <stb/stb_image.h>
 
 #include "core/readfile.h"
+#include "core/stb_guard.h"
 #include "scene/obj.h"
 
 /* bytes read to find an image's size: a PNG's IHDR and a TGA's header are at the start; a JPEG's
@@ -88,16 +89,15 @@ static ww_result image_size(const char *path, const char *from, int line, int co
         return ww_error_set(err, WW_E_NOFILE, from, line, column, "cannot open '%s': %s", path,
                             strerror(errno));
     }
-    int comp;
     stb_settings();
-    int ok = stbi_info_from_memory(peek, (int)got, w, h, &comp);
+    int ok = ww_stbi_size_from_prefix(peek, (int)got, w, h);
     free(peek);
     if (!ok && got == IMAGE_PEEK_BYTES) {
         unsigned char *file;
         size_t len;
         ww_result r = ww_file_read_max(path, WW_IMAGE_MAX_BYTES, WW_IMAGE_MAX_BYTES, &file, &len, err);
         if (r) return at_place(r, from, line, column, err);
-        ok = len <= INT_MAX && stbi_info_from_memory(file, (int)len, w, h, &comp);
+        ok = len <= INT_MAX && ww_stbi_size_from_prefix(file, (int)len, w, h);
         free(file);
     }
     if (!ok)
@@ -166,9 +166,9 @@ ww_result ww_assets_decode(const ww_image_data *im, unsigned char **rgba, ww_err
     /* the size was checked at load; a file replaced since must still match it */
     int w = 0, h = 0, comp;
     stb_settings();
-    int same = len <= INT_MAX && stbi_info_from_memory(file, (int)len, &w, &h, &comp) &&
+    int same = len <= INT_MAX && ww_stbi_size_from_prefix(file, (int)len, &w, &h) &&
                w == im->width && h == im->height;
-    unsigned char *px = same ? stbi_load_from_memory(file, (int)len, &w, &h, &comp, 4) : NULL;
+    unsigned char *px = same ? ww_stbi_load_from_memory(file, (int)len, &w, &h, &comp, 4) : NULL;
     free(file);
     if (!same)
         return ww_error_set(err, WW_E_SYNTAX, from, im->line, im->column,

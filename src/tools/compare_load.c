@@ -14,6 +14,7 @@
 
 #include "core/bigalloc.h"
 #include "core/hash.h"
+#include "core/stb_guard.h"
 #include "io/png_read.h"
 #include "io/writers.h"
 
@@ -146,13 +147,13 @@ static ww_result load_png(const char *path, const unsigned char *file, size_t le
         return r;
     }
     int w, h, comp;
-    if (len > INT_MAX || !stbi_info_from_memory(file, (int)len, &w, &h, &comp))
+    if (len > INT_MAX || !ww_stbi_info_from_memory(file, (int)len, &w, &h, &comp))
         return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
                             len > INT_MAX ? "file too large" : stbi_failure_reason());
-    int is16 = stbi_is_16_bit_from_memory(file, (int)len);
+    int is16 = ww_stbi_is_16_bit_from_memory(file, (int)len);
     /* decoded as stored: asking stb for RGBA would cost one more image-sized buffer */
-    void *px = is16 ? (void *)stbi_load_16_from_memory(file, (int)len, &w, &h, &comp, 0)
-                    : (void *)stbi_load_from_memory(file, (int)len, &w, &h, &comp, 0);
+    void *px = is16 ? (void *)ww_stbi_load_16_from_memory(file, (int)len, &w, &h, &comp, 0)
+                    : (void *)ww_stbi_load_from_memory(file, (int)len, &w, &h, &comp, 0);
     if (!px || comp < 1 || comp > 4) {
         stbi_image_free(px);
         return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
