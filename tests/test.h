@@ -161,6 +161,8 @@ const char *ww_test_gl_error(void);
 /* 1 when this backend kind (1 EGL, 2 OSMesa: ww_backend_kind) opens here; why not */
 int ww_test_have_backend(int kind);
 const char *ww_test_backend_error(int kind);
+/* CRC-32 of PNG section 5.5, bit by bit: the tests' own, so a bad table in a reader shows */
+uint32_t ww_test_crc32(const unsigned char *p, size_t n);
 /* the folder of the test binary (build, build/asan): what the Makefile built beside it */
 const char *ww_test_build_dir(void);
 /* 1 when cmd is found on PATH */

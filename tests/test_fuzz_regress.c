@@ -35,22 +35,13 @@ static void put_be32(bytes *b, uint32_t v) {
     put(b, p, 4);
 }
 
-/* PNG section 5.5, bit by bit */
-static uint32_t crc(const unsigned char *p, size_t n) {
-    uint32_t c = 0xffffffffu;
-    for (size_t i = 0; i < n; i++) {
-        c ^= p[i];
-        for (int k = 0; k < 8; k++) c = c & 1u ? 0xedb88320u ^ (c >> 1) : c >> 1;
-    }
-    return c ^ 0xffffffffu;
-}
 
 static void chunk(bytes *b, const char *type, const void *data, uint32_t n) {
     put_be32(b, n);
     size_t at = b->n;
     put(b, type, 4);
     if (n) put(b, data, n);
-    put_be32(b, crc(b->d + at, n + 4));
+    put_be32(b, ww_test_crc32(b->d + at, n + 4));
 }
 
 /* a 1x1 RGB PNG (one red pixel, stored deflate block) with the chunks of `before` ahead of its

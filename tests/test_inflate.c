@@ -601,20 +601,11 @@ TEST_PROC(png_read_fallback_kinds) {
     }
 }
 
-/* PNG section 5.5, bit by bit: the tests' own CRC, so a bad table in the reader shows */
-static uint32_t test_crc(const unsigned char *p, size_t n) {
-    uint32_t c = 0xffffffffu;
-    for (size_t i = 0; i < n; i++) {
-        c ^= p[i];
-        for (int k = 0; k < 8; k++) c = c & 1u ? 0xedb88320u ^ (c >> 1) : c >> 1;
-    }
-    return c ^ 0xffffffffu;
-}
 
 /* set the CRC of the chunk at pos after editing it */
 static void fix_crc(unsigned char *png, size_t pos) {
     size_t n = (size_t)png[pos] << 24 | (size_t)png[pos + 1] << 16 | (size_t)png[pos + 2] << 8 | png[pos + 3];
-    uint32_t c = test_crc(png + pos + 4, n + 4);
+    uint32_t c = ww_test_crc32(png + pos + 4, n + 4);
     for (int i = 0; i < 4; i++) png[pos + 8 + n + (size_t)i] = (unsigned char)(c >> (24 - 8 * i));
 }
 

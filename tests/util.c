@@ -44,6 +44,15 @@ char *ww_test_read_file(const char *path, size_t *len) {
     return buf;
 }
 
+uint32_t ww_test_crc32(const unsigned char *p, size_t n) {
+    uint32_t c = 0xffffffffu;
+    for (size_t i = 0; i < n; i++) {
+        c ^= p[i];
+        for (int k = 0; k < 8; k++) c = c & 1u ? 0xedb88320u ^ (c >> 1) : c >> 1;
+    }
+    return c ^ 0xffffffffu;
+}
+
 int ww_test_have_tool(const char *cmd) {
     const char *path = getenv("PATH");
     if (!path || strchr(cmd, '/')) return access(cmd, X_OK) == 0;
