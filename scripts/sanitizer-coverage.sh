@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 B=build/cov
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 make --no-print-directory -j"$JOBS" BUILD=$B BIN=$B/waterworld OPT="-O0 -g --coverage" \
-    $B/waterworld $B/ww-tests >/dev/null
+    $B/waterworld $B/ww-tests $(for t in scene obj png inflate exr wav image; do echo $B/fuzz-replay/fuzz_$t; done) >/dev/null
 
 # functions with at least one line executed, as "file function", from the .gcda files present
 executed() {
