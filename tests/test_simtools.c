@@ -413,3 +413,16 @@ TEST_PROC(simtools_bench_sim_tiny) {
     if (text) ENSURE_EQ_INT(ww_test_json_lines(text), 10);
     free(text);
 }
+
+/* ten simulated minutes of the soak scene, every system on, at 120 Hz: no NaN or Inf (exit 3
+ * would name it), every step taken; the hour of `make soak` in small */
+TEST_LONG(simtools_soak_ten_minutes) {
+    const char *dir = ww_test_tmpdir("simtools_soak_long");
+    char errf[512];
+    snprintf(errf, sizeof errf, "%s/stderr.txt", dir);
+    ENSURE_EQ_INT(ww_test_ww("simulate scenes/soak.yaml --set time.dt=1/120 --set time.fps=30 "
+                             "--set time.duration=600 --stats",
+                             NULL, errf),
+                  0);
+    ENSURE(ww_test_file_contains(errf, "(71996 steps of 0.00833333 s)"));
+}
