@@ -85,6 +85,13 @@ if [ ! -e "$root/.waterworld-chroot" ]; then
     mv "$root.tmp" "$root"
 fi
 cp /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+# the host's own certificate authorities (a proxy's, where the registries are reached through
+# one) are trusted in the chroot as on the host, so downloads behave as they do here
+if ls /usr/local/share/ca-certificates/*.crt >/dev/null 2>&1; then
+    mkdir -p "$root/usr/local/share/ca-certificates"
+    cp /usr/local/share/ca-certificates/*.crt "$root/usr/local/share/ca-certificates/"
+    chroot "$root" update-ca-certificates >/dev/null 2>&1 || true
+fi
 
 # mounts, undone on any exit; /dev is a recursive bind made a slave, so that unmounting it here
 # never reaches the host's /dev
