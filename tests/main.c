@@ -7,9 +7,11 @@
  *
  * A test runs in a forked child with its output in a log of its own, so a crash, a leak report or
  * a hang is that test's failure alone and parallel tests never interleave their lines. The parent
- * keeps the last run's durations (build/test-times*.txt) and starts the longest tests first.
+ * keeps the last run's durations beside the binary (test-times.txt) and starts the longest
+ * tests first; each run works in a fresh folder of its own (test-tmp/run-XXXXXX beside the
+ * binary), so two runs can share a checkout.
  */
-#define _GNU_SOURCE /* nftw's FTW_ACTIONRETVAL-free flags, strsignal */
+#define _GNU_SOURCE /* nftw's FTW_DEPTH and FTW_PHYS, strsignal */
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
@@ -28,7 +30,8 @@
 #define MAX_TESTS 1024
 #define DEFAULT_TIMEOUT_S 300.0 /* a hung test fails after this (WW_TEST_TIMEOUT, seconds) */
 
-enum { ST_PASS = 0, ST_FAIL = 1, ST_SKIP = 3 };
+/* a child's exit status; ST_NONE: started, never finished (the run was interrupted) */
+enum { ST_NONE = -1, ST_PASS = 0, ST_FAIL = 1, ST_SKIP = 3 };
 
 typedef struct {
     const char *name;
@@ -51,9 +54,9 @@ typedef struct {
     int failed_now, skipped_now;
     unsigned require; /* bit per skip kind that fails instead (WW_REQUIRE_GL) */
     double tol_scale;
+    char home[256]; /* the test binary's folder: build/, build/asan/ */
     /* the GL probe, made once in a child of its own before any test starts: index 1 EGL,
      * 2 OSMesa (ww_backend_kind); gl_error says why neither opens */
-    char home[256]; /* the test binary's folder: build/, build/asan/ */
     int probed;
     int have[3];
     char error[3][768];
@@ -386,10 +389,12 @@ static int run_all(const options *o, test_entry **order, int n, const char *root
             test_entry *t = order[next++];
             fflush(NULL);
             t->start = now_s();
+            t->status = ST_NONE;
             pid_t pid = fork();
             if (pid == 0) run_child(t, root);
             if (pid < 0) {
-                fprintf(stderr, "%s: fork: %s\n", t->name, strerror(errno));
+                fprintf(stderr, "%-56s FAIL\n    fork: %s\n", t->name, strerror(errno));
+                t->pid = -1; /* counted, as failed */
                 t->status = ST_FAIL;
                 continue;
             }
@@ -538,7 +543,7 @@ int main(int argc, char **argv) {
         const test_entry *t = order[i];
         if (!t->pid) continue;
         passed += t->status == ST_PASS;
-        failed += t->status == ST_FAIL;
+        failed += t->status == ST_FAIL || t->status == ST_NONE;
         skipped += t->status == ST_SKIP;
         tier_n[t->tier]++;
         tier_s[t->tier] += t->secs;
@@ -563,7 +568,9 @@ int main(int argc, char **argv) {
     if (failed) {
         fprintf(stderr, "failed (logs and folders kept in %s):\n", root);
         for (int i = 0; i < n; i++)
-            if (order[i]->pid && order[i]->status == ST_FAIL) fprintf(stderr, "  %s\n", order[i]->name);
+            if (order[i]->pid && (order[i]->status == ST_FAIL || order[i]->status == ST_NONE))
+                fprintf(stderr, "  %s%s\n", order[i]->name,
+                        order[i]->status == ST_NONE ? " (stopped by the interrupt)" : "");
     } else rm_tree(root);
     printf("%d passed, %d failed, %d skipped\n", passed, failed, skipped);
     free(o.filters);
