@@ -12,12 +12,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/png_read.h"
 #include "io/wav.h"
+#include "io/writers.h"
 #include "scene/assets.h"
 #include "scene/obj.h"
 #include "scene/scene.h"
 #include "test.h"
 #include "tools/audio.h"
+#include "tools/compare.h"
 
 /* allocations the streaming resampler makes for a file, whatever its length: the clip and one
  * block of raw bytes */
@@ -621,4 +624,45 @@ TEST_PROC(bounds_cli_limits_agree_with_the_scene) {
     ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 0);
     snprintf(args, sizeof args, "simulate %s --set time.start=1e9 --frames 1", scene);
     ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 0);
+}
+
+/* the frame readers (PNG, EXR, the compare loader) take images up to the largest frame render
+ * makes, and refuse a larger one from its header: a PNG of 16385 x 1 is a few bytes, a
+ * 32768 x 32768 one 1 MB, which compare held as 17 GB of floats */
+TEST(bounds_frame_readers_capped_at_the_largest_frame) {
+    ENSURE_EQ_INT(WW_FRAME_MAX_SIDE, WW_SIZE_MAX);
+    const char *dir = ww_test_tmpdir("frame_cap");
+    char png[600], exr[600];
+    snprintf(png, sizeof png, "%s/wide.png", dir);
+    snprintf(exr, sizeof exr, "%s/wide.exr", dir);
+    ww_image im = {0}, hdr = {0}, back = {0};
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_image_alloc(&im, WW_FRAME_MAX_SIDE + 1, 1, 3, WW_PIX_U8), 0);
+    ENSURE_EQ_INT(ww_image_alloc(&hdr, WW_FRAME_MAX_SIDE + 1, 1, 4, WW_PIX_F32), 0);
+    if (!im.u8 || !hdr.f32) return;
+    memset(im.u8, 0, (size_t)im.width * 3);
+    memset(hdr.f32, 0, (size_t)hdr.width * 4 * sizeof(float));
+    ENSURE_EQ_INT(ww_write_png(png, &im, &err), WW_OK);
+    ww_exr_meta meta = {0};
+    ENSURE_EQ_INT(ww_write_exr(exr, &hdr, &meta, &err), WW_OK);
+    ENSURE_EQ_INT(ww_read_png(png, &back, &err), WW_E_RANGE);
+    ENSURE_MSG(strstr(err.msg, "16385x1"), "%s", err.msg);
+    ww_image_free(&back);
+    ENSURE(ww_read_exr(exr, &back, &err) != WW_OK);
+    ww_image_free(&back);
+    ww_cmp_image c;
+    ENSURE_EQ_INT(ww_cmp_load(png, &c, &err), WW_E_RANGE);
+    ww_cmp_image_free(&c);
+    ENSURE(ww_cmp_load(exr, &c, &err) != WW_OK);
+    ww_cmp_image_free(&c);
+    /* one pixel narrower is read */
+    ww_image_free(&im);
+    ENSURE_EQ_INT(ww_image_alloc(&im, WW_FRAME_MAX_SIDE, 1, 3, WW_PIX_U8), 0);
+    if (im.u8) memset(im.u8, 0, (size_t)im.width * 3);
+    ENSURE_EQ_INT(ww_write_png(png, &im, &err), WW_OK);
+    ENSURE_EQ_INT(ww_cmp_load(png, &c, &err), WW_OK);
+    ENSURE(c.width == WW_FRAME_MAX_SIDE && c.height == 1);
+    ww_cmp_image_free(&c);
+    ww_image_free(&im);
+    ww_image_free(&hdr);
 }

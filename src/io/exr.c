@@ -15,7 +15,7 @@
  * 2% more bytes. */
 #define EXR_ZIP_LEVEL 4
 /* the reader refuses data windows wider or taller than this before allocating anything */
-#define EXR_MAX_SIDE 32768
+#define EXR_MAX_SIDE WW_FRAME_MAX_SIDE /* io/image.h */
 
 /* the file as bytes in memory: what the library writes into, or reads from */
 typedef struct exr_mem {

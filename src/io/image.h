@@ -10,6 +10,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* the largest side of an image the frame readers take (io/png.c, io/png_read.c, io/exr.c and the
+ * compare loader): the largest frame render makes (render.size, WW_SIZE_MAX in scene/scene.h;
+ * a test holds the two equal). A larger file is refused from its header, before any pixel is
+ * decoded: a 1 MB PNG can declare 32768 x 32768 and ask compare for 17 GB of floats */
+#define WW_FRAME_MAX_SIDE 16384
+
 typedef enum ww_pixel { WW_PIX_U8 = 0, WW_PIX_F32 } ww_pixel;
 
 typedef struct ww_image {

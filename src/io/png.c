@@ -153,6 +153,12 @@ ww_result ww_read_png(const char *path, ww_image *out, ww_error *err) {
         return ww_error_set(err, WW_E_SYNTAX, NULL, 0, 0, "'%s': not a PNG: %s", path,
                             stbi_failure_reason());
     }
+    if (w > WW_FRAME_MAX_SIDE || h > WW_FRAME_MAX_SIDE) {
+        free(file);
+        return ww_error_set(err, WW_E_RANGE, NULL, 0, 0,
+                            "'%s' is %dx%d: expected at most %d on a side (the largest frame)",
+                            path, w, h, WW_FRAME_MAX_SIDE);
+    }
     int want = (comp == 2 || comp == 4) ? 4 : 3;
     unsigned char *px = ww_stbi_load_from_memory(file, (int)len, &w, &h, &comp, want);
     free(file);

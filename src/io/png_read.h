@@ -21,8 +21,9 @@
 #include <stddef.h>
 
 #include "core/error.h"
+#include "io/image.h"
 
-#define WW_PNG_MAX_DIM 32768                        /* as core/stb_image_impl.c's stb_image */
+#define WW_PNG_MAX_DIM WW_FRAME_MAX_SIDE             /* io/image.h */
 #define WW_PNG_MAX_BYTES ((size_t)0x7fffffff)        /* as stb_image: sizes fit in an int */
 
 typedef struct ww_png_pixels {

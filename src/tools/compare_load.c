@@ -150,6 +150,10 @@ static ww_result load_png(const char *path, const unsigned char *file, size_t le
     if (len > INT_MAX || !ww_stbi_info_from_memory(file, (int)len, &w, &h, &comp))
         return ww_error_set(err, WW_E_TYPE, NULL, 0, 0, "'%s': broken PNG: %s", path,
                             len > INT_MAX ? "file too large" : stbi_failure_reason());
+    if (w > WW_FRAME_MAX_SIDE || h > WW_FRAME_MAX_SIDE)
+        return ww_error_set(err, WW_E_RANGE, NULL, 0, 0,
+                            "'%s' is %dx%d: expected at most %d on a side (the largest frame)",
+                            path, w, h, WW_FRAME_MAX_SIDE);
     int is16 = ww_stbi_is_16_bit_from_memory(file, (int)len);
     /* decoded as stored: asking stb for RGBA would cost one more image-sized buffer */
     void *px = is16 ? (void *)ww_stbi_load_16_from_memory(file, (int)len, &w, &h, &comp, 0)
