@@ -37,6 +37,8 @@ static int64_t window_pixels(const uint8_t *f, size_t len) {
         if (strcmp((const char *)f + p, "dataWindow") == 0 && n == 16) {
             int64_t w = (int64_t)le32(f + v + 8) - le32(f + v) + 1;
             int64_t h = (int64_t)le32(f + v + 12) - le32(f + v + 4) + 1;
+            /* each side fits in 33 bits: their product may not fit in 64 */
+            if (w > MAX_PIXELS || h > MAX_PIXELS) return (int64_t)MAX_PIXELS + 1;
             return w > 0 && h > 0 ? w * h : 0;
         }
         p = v + n;
