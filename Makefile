@@ -174,7 +174,7 @@ build/fuzz/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_file.h fuzz-lib
 
 $(FUZZ_TARGETS:%=fuzz-%): fuzz-%: build/fuzz/fuzz_%
 	@mkdir -p build/fuzz/corpus/$* build/fuzz/crash/$*
-	build/fuzz/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 -timeout=10 \
+	build/fuzz/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 -timeout=60 \
 	    -max_len=$(FUZZ_LEN_$*) $(FUZZ_DICT_$*) -artifact_prefix=build/fuzz/crash/$*/ \
 	    -print_final_stats=1 $(FUZZ_ARGS) build/fuzz/corpus/$* tests/fuzz/corpus/$* $(FUZZ_SEEDS_$*)
 
