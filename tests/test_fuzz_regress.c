@@ -74,6 +74,34 @@ static void jpeg_dht(bytes *b, unsigned count) {
     for (int i = 0; i < 16; i++) b->d[b->n++] = (unsigned char)count;
 }
 
+/* a 1x1 grey baseline JPEG up to its scan's data (FF 00, RST0, more data; no EOI), after the
+ * tables `tables` names in order: q a quantisation table, d the DC and AC Huffman tables (one
+ * code each), a the AC table alone */
+static void jpeg_head(bytes *b, const char *tables) {
+    put(b, "\xff\xd8", 2);
+    for (const char *t = tables; *t; t++) {
+        if (*t == 'q') {
+            put(b, "\xff\xdb\x00\x43\x00", 5);
+            for (int i = 0; i < 64; i++) b->d[b->n++] = 1;
+        } else {
+            int both = *t == 'd';
+            static const unsigned char one_code[17] = {1};
+            put(b, "\xff\xc4\x00", 3);
+            b->d[b->n++] = (unsigned char)(2 + 18 * (both ? 2 : 1));
+            for (int c = both ? 0 : 1; c < 2; c++) {
+                b->d[b->n++] = (unsigned char)(c << 4);
+                put(b, one_code, 16);
+                b->d[b->n++] = 0;
+            }
+        }
+    }
+    static const unsigned char rest[] = {
+        0xff, 0xc0, 0x00, 0x0b, 8, 0, 1, 0, 1, 1, 1, 0x11, 0,              /* SOF0 1x1 grey */
+        0xff, 0xda, 0x00, 0x08, 1, 1, 0x00, 0, 63, 0,                      /* SOS */
+        0x12, 0xff, 0x00, 0x34, 0xff, 0xd0, 0x56};                         /* data, FF 00, RST0 */
+    put(b, rest, sizeof rest);
+}
+
 static const char *vet(const bytes *b) { return ww_image_vet(b->d, b->n); }
 
 static int says(const char *why, const char *needle) { return why && strstr(why, needle); }
@@ -133,6 +161,36 @@ TEST(fuzz_regress_jpeg_dht_smallest) {
     jpeg_dht(&b, 16); /* 256 codes: the table is full, not overrun (the file then ends) */
     ENSURE(!says(vet(&b), "more than 256 codes"));
     ENSURE(vet(&b) != NULL);
+}
+
+/* fuzz_image: a progressive JPEG whose AC scans name a Huffman table no DHT defined. stb 2.27
+ * decodes with the table's uninitialised memory; a fast-AC entry read from it took more bits
+ * than the reader held, and the next refill shifted by 33 ("shift exponent 33 is too large",
+ * stb_image.h:2065): seen only when that memory was not zero (MALLOC_PERTURB_ or a long run) */
+TEST(fuzz_regress_jpeg_undefined_huffman_table) {
+    const char *path = "tests/data/fuzz/jpeg_undefined_ac_table.jpg";
+    size_t len = 0;
+    unsigned char *f = (unsigned char *)ww_test_read_file(path, &len);
+    ENSURE(f != NULL);
+    if (!f) return;
+    ENSURE_MSG(says(ww_image_vet(f, len), "Huffman table used before it is defined"), "%s",
+               ww_image_vet(f, len));
+    int w, h, comp;
+    ENSURE(ww_stbi_load_from_memory(f, (int)len, &w, &h, &comp, 4) == NULL);
+    free(f);
+
+    /* the same check on a good baseline file: its first scan's tables removed from view by
+     * renaming the DHT marker to a comment (COM) makes the scan's tables undefined */
+    f = (unsigned char *)ww_test_read_file("tests/fuzz/corpus/image/baseline.jpg", &len);
+    ENSURE(f != NULL);
+    if (!f) return;
+    ENSURE(ww_image_vet(f, len) == NULL);
+    int renamed = 0;
+    for (size_t i = 0; i + 1 < len && !renamed; i++)
+        if (f[i] == 0xff && f[i + 1] == 0xc4) f[i + 1] = 0xfe, renamed = 1;
+    ENSURE(renamed);
+    ENSURE(says(ww_image_vet(f, len), "Huffman table used before it is defined"));
+    free(f);
 }
 
 /* fuzzing the image path, stb_image 2.27 without the guard: a PNG whose first IDAT is empty
@@ -236,27 +294,33 @@ TEST(stb_guard_jpeg_shapes) {
     ENSURE(says(vet(&b), "more than 256 codes"));
 
     /* the same table between two scans, after the frame header */
-    static const unsigned char head[] = {
-        0xff, 0xd8,                                                        /* SOI */
-        0xff, 0xc0, 0x00, 0x0b, 8, 0, 1, 0, 1, 1, 1, 0x11, 0,              /* SOF0 1x1 grey */
-        0xff, 0xda, 0x00, 0x08, 1, 1, 0x00, 0, 63, 0,                      /* SOS */
-        0x12, 0xff, 0x00, 0x34, 0xff, 0xd0, 0x56};                         /* data, FF 00, RST0 */
     b.n = 0;
-    put(&b, head, sizeof head);
+    jpeg_head(&b, "qd");
     put(&b, "\xff\xc4\x00\x13\x00", 5);
     for (int i = 0; i < 16; i++) b.d[b.n++] = 20;
     ENSURE(says(vet(&b), "more than 256 codes"));
 
     /* a scan that runs to the end of the file; a segment that does; no SOF at all */
     b.n = 0;
-    put(&b, head, sizeof head);
+    jpeg_head(&b, "qd");
     ENSURE(says(vet(&b), "end marker"));
     b.n = 0;
-    put(&b, head, sizeof head);
+    jpeg_head(&b, "qd");
     put(&b, "\xff\xd9", 2);
-    ENSURE(vet(&b) == NULL); /* well formed enough for stb: SOI, SOF, one scan, EOI */
+    ENSURE(vet(&b) == NULL); /* well formed enough for stb: SOI, tables, SOF, one scan, EOI */
     put(&b, "anything after EOI", 18);
     ENSURE(vet(&b) == NULL);
+    /* the scan's tables must be defined before it: no DHT, no DQT, neither, the AC
+     * table alone (a baseline scan needs its DC table too) */
+    const char *tables[] = {"d", "q", "", "qa"};
+    const char *missing[] = {"quantisation table", "Huffman table", "quantisation table",
+                             "Huffman table"};
+    for (int i = 0; i < 4; i++) {
+        b.n = 0;
+        jpeg_head(&b, tables[i]);
+        put(&b, "\xff\xd9", 2);
+        ENSURE_MSG(says(vet(&b), missing[i]), "%s: %s", tables[i], vet(&b));
+    }
     b.n = 0;
     put(&b, "\xff\xd8\xff\xe1\x40\x00" "Exif", 10);
     ENSURE(says(vet(&b), "past the end"));

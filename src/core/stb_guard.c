@@ -22,9 +22,18 @@ enum {
 
 /* ---- JPEG (ITU T.81 annex B), in stb_image 2.27's order ------------------------------------- */
 
+/* the reader, and which tables the segments so far defined: stb 2.27 decodes a scan with
+ * whatever its Huffman and quantisation tables hold, defined or not (uninitialised memory: a
+ * fast-AC entry read from it ran the bit count negative, a shift by 33 in
+ * stbi__grow_buffer_unsafe); libjpeg refuses a scan whose tables were never defined, and so do we */
 typedef struct rd {
     const unsigned char *p;
     size_t n, at;
+    unsigned huff;       /* bit 4 * class + id: class 0 DC, 1 AC */
+    unsigned quant;      /* bit id */
+    int progressive;     /* SOF2 */
+    int ncomp;
+    unsigned comp_id[4], comp_tq[4];
 } rd;
 
 static size_t left(const rd *r) { return r->at < r->n ? r->n - r->at : 0; }
@@ -72,6 +81,7 @@ static const char *segment(rd *r, unsigned m) {
         while (L > 0) {
             unsigned q = get8(r), sixteen = q >> 4;
             if (sixteen > 1 || (q & 15) > 3) return "JPEG: bad DQT table";
+            r->quant |= 1u << (q & 15);
             r->at += sixteen ? 128 : 64;
             L -= sixteen ? 129 : 65;
         }
@@ -84,6 +94,7 @@ static const char *segment(rd *r, unsigned m) {
             if (L < 17) return "JPEG: DHT tables do not fill the segment";
             unsigned q = get8(r), n = 0;
             if ((q >> 4) > 1 || (q & 15) > 3) return "JPEG: bad DHT header";
+            r->huff |= 1u << (4 * (q >> 4) + (q & 15));
             for (int i = 0; i < 16; i++) n += get8(r);
             /* stb builds the table before it checks anything: more codes overrun it */
             if (n > HUFF_MAX_CODES) return "JPEG: a Huffman table with more than 256 codes";
@@ -113,11 +124,13 @@ static const char *frame_header(rd *r, int *ncomp) {
     if (c != 1 && c != 3 && c != 4) return "JPEG: bad component count";
     if (len != 8 + 3 * c) return "JPEG: SOF of the wrong length";
     for (unsigned i = 0; i < c; i++) {
-        get8(r);
-        unsigned hv = get8(r), tq = get8(r);
+        unsigned id = get8(r), hv = get8(r), tq = get8(r);
         if ((hv >> 4) < 1 || (hv >> 4) > 4 || (hv & 15) < 1 || (hv & 15) > 4 || tq > 3)
             return "JPEG: bad component sampling or table";
+        r->comp_id[i] = id;
+        r->comp_tq[i] = tq;
     }
+    r->ncomp = (int)c;
     *ncomp = (int)c;
     return NULL;
 }
@@ -132,6 +145,22 @@ static const char *scan(rd *r, int ncomp, unsigned *next) {
     unsigned ns = get8(r);
     if (ns < 1 || ns > 4 || (int)ns > ncomp) return "JPEG: bad SOS component count";
     if (len != 6 + 2 * ns) return "JPEG: SOS of the wrong length";
+    /* the tables this scan decodes with: a baseline scan both of each component's; a
+     * progressive one the DC table in a DC scan (spectral start 0), the AC table otherwise */
+    const unsigned char *sel = r->p + r->at;
+    unsigned ss = sel[2 * ns];
+    for (unsigned i = 0; i < ns; i++) {
+        unsigned cs = sel[2 * i], td = sel[2 * i + 1] >> 4, ta = sel[2 * i + 1] & 15;
+        int k = 0;
+        while (k < r->ncomp && r->comp_id[k] != cs) k++;
+        if (k == r->ncomp) return "JPEG: a scan names a component the frame has not";
+        if (td > 3 || ta > 3) return "JPEG: bad SOS table";
+        if (!(r->quant >> r->comp_tq[k] & 1))
+            return "JPEG: a quantisation table used before it is defined";
+        int dc = !r->progressive || ss == 0, ac = !r->progressive || ss != 0;
+        if ((dc && !(r->huff >> td & 1)) || (ac && !(r->huff >> (4 + ta) & 1)))
+            return "JPEG: a Huffman table used before it is defined";
+    }
     r->at += len - 3;
     for (;;) {
         const unsigned char *ff = left(r) ? memchr(r->p + r->at, 0xff, left(r)) : NULL;
@@ -156,7 +185,10 @@ static const char *jpeg_header(rd *r, int *w, int *h, int *ncomp) {
     if (get_marker(r) != M_SOI) return "JPEG: no SOI";
     unsigned m = get_marker(r);
     for (;;) {
-        if (m == M_SOF0 || m == M_SOF1 || m == M_SOF2) break;
+        if (m == M_SOF0 || m == M_SOF1 || m == M_SOF2) {
+            r->progressive = m == M_SOF2;
+            break;
+        }
         const char *why = segment(r, m);
         if (why) return why;
         do {
@@ -175,7 +207,7 @@ static const char *jpeg_header(rd *r, int *w, int *h, int *ncomp) {
 }
 
 static const char *vet_jpeg(const unsigned char *f, size_t len) {
-    rd r = {f, len, 0};
+    rd r = {.p = f, .n = len};
     int ncomp = 0, w, h;
     const char *why = jpeg_header(&r, &w, &h, &ncomp);
     if (why) return why;
@@ -241,7 +273,7 @@ const char *ww_image_vet(const unsigned char *f, size_t len) {
     if (!f) return "no data";
     if (len >= PNG_SIG_LEN && memcmp(f, PNG_SIG, PNG_SIG_LEN) == 0) return vet_png(f, len);
     /* what stbi__jpeg_test takes for a JPEG: its first marker is SOI */
-    rd r = {f, len, 0};
+    rd r = {.p = f, .n = len};
     if (get_marker(&r) == M_SOI) return vet_jpeg(f, len);
     return NULL;
 }
@@ -259,7 +291,7 @@ int ww_image_header_size(const unsigned char *f, size_t len, int *w, int *h) {
         *h = (int)y;
         return 1;
     }
-    rd r = {f, len, 0};
+    rd r = {.p = f, .n = len};
     if (get_marker(&r) != M_SOI) return 0;
     r.at = 0;
     int ncomp;
