@@ -2,6 +2,7 @@
 #
 #   make            build ./waterworld (warnings are errors, -ffp-contract=off)
 #   make demo       install what is missing, build, render scenes/demo.yaml into out/demo/
+#   make review     one frame per shot of scenes/review.list: out/review/review.png + index.html
 #   make test       install, build, run the test suite, then the same suite under ASan + UBSan
 #   make unit       the test suite only (T=NAME runs the tests whose name holds NAME)
 #   make asan       the test suite under AddressSanitizer + UBSan only
@@ -47,7 +48,7 @@ BIN     ?= waterworld
 # the test runner runs this many tests at once (default: the CPU count)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps demo test unit asan test-long golden bench fuzz soak clean help
+.PHONY: all deps demo review test unit asan test-long golden bench fuzz soak clean help
 all: $(BIN)
 
 # V=1 shows the full command lines
@@ -119,6 +120,14 @@ demo: deps
 	./$(BIN) render scenes/demo.yaml -o out/demo
 	@echo "frames: out/demo/frame_00000.png ... frame_00299.png"
 	@echo "video:  ffmpeg -framerate 30 -i out/demo/frame_%05d.png -pix_fmt yuv420p demo.mp4"
+
+# the review set: every scene and feature in one labelled contact sheet and one HTML page
+# (REVIEW_ARGS adds options: --size 320x180, --jobs 1, --cols 6; see `waterworld review --help`)
+REVIEW_LIST ?= scenes/review.list
+REVIEW_OUT  ?= out/review
+REVIEW_ARGS ?=
+review: $(BIN)
+	./$(BIN) review $(REVIEW_LIST) -o $(REVIEW_OUT) $(REVIEW_ARGS)
 
 golden: $(BIN)
 	sh scripts/make-golden.sh ./$(BIN)
@@ -197,6 +206,6 @@ clean:
 	rm -rf build $(BIN)
 
 help:
-	@sed -n '1,13p' Makefile
+	@sed -n '1,14p' Makefile
 
 -include $(LIB_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BUILD)/src/cli/main.d
