@@ -1,6 +1,8 @@
 /* test_review.c - the review set (tools/review.h, `waterworld review`): the list's syntax and its
  * file:line:column errors, the contact sheet's layout and labels, the HTML page's structure, and
- * the command end to end on the null backend (black frames, no GL).
+ * the command end to end on the null backend (black frames, no GL). Then the first impression:
+ * scenes/tour.yaml (`make demo`) does what it shows, checked on the simulation alone, and
+ * scenes/review.list names frames its scenes have.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,6 +10,10 @@
 
 #include "io/image.h"
 #include "io/writers.h"
+#include "scene/scene.h"
+#include "sim/events.h"
+#include "sim/state.h"
+#include "sim/step.h"
 #include "test.h"
 #include "tools/contact.h"
 #include "tools/review.h"
@@ -328,4 +334,69 @@ TEST_PROC(cli_review_null_backend) {
     ENSURE_EQ_INT(ww_test_ww(args, NULL, err_path), 2);
     snprintf(place, sizeof place, "%s:1:1: error", list);
     ENSURE_MSG(ww_test_file_contains(err_path, place), "stderr lacks '%s'", place);
+}
+
+/* the tour: every frame's camera and the events of the whole run */
+TEST(tour_script_does_what_it_shows) {
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_MSG(ww_scene_load("scenes/tour.yaml", NULL, 0, &sc, &err) == WW_OK, "%s", err.msg);
+    if (!sc) return;
+    ENSURE(sc->audio.on); /* make demo muxes its sound track */
+    int n[WW_SE_COUNT] = {0};
+    double collect_t = -1, first_below = -1, last_below = -1;
+    long long frames_below = 0, frames_above = 0, frames_seat = 0;
+    ww_state *st = ww_state_new(sc);
+    int64_t last = sc->frame_count * sc->steps_per_frame;
+    for (int64_t s = 0; s <= last; s++) {
+        if (s > 0) ENSURE(ww_step(sc, st, &err) == WW_OK);
+        double t = sc->start + (double)s * sc->dt;
+        for (int i = 0; i < ww_events_count(sc, st); i++) {
+            int k = (int)st->events[i * WW_SIM_EVENT_STRIDE];
+            if (k > 0 && k < WW_SE_COUNT) n[k]++;
+            if (k == WW_SE_CHEST_COLLECT) collect_t = t;
+        }
+        if (s % sc->steps_per_frame || s == last) continue;
+        /* the camera of this frame: under the water (1 m below the still level) or above it */
+        double y = st->cam_pos[1];
+        if (y < -1.0) {
+            frames_below++;
+            if (first_below < 0) first_below = t;
+            last_below = t;
+        }
+        frames_above += y > 0.5;
+        frames_seat += st->boat_camera[0] == 1.0;
+    }
+    ENSURE(st->events_dropped[0] == 0.0);
+    /* stones skip, and one sinks at once; a cast lands, a fish bites and is caught */
+    ENSURE_MSG(n[WW_SE_STONE_THROW] == 3 && n[WW_SE_STONE_SKIP] >= 6 && n[WW_SE_STONE_SINK] == 3,
+               "throws %d skips %d sinks %d", n[WW_SE_STONE_THROW], n[WW_SE_STONE_SKIP], n[WW_SE_STONE_SINK]);
+    ENSURE(n[WW_SE_ROD_CAST] == 1 && n[WW_SE_LURE_LAND] == 1 && n[WW_SE_BITE] == 1 && n[WW_SE_CATCH] == 1);
+    /* the boat drives through the cubes (one pressed) and the camera rides in its seat */
+    ENSURE(n[WW_SE_BOAT_START] >= 1 && n[WW_SE_CUBE_PRESS] == 1 && n[WW_SE_CUBE_RELEASE] == 1);
+    ENSURE_MSG(frames_seat >= 100, "%lld frames in the seat", frames_seat);
+    /* a dive: under water for seconds in the second half, above water at the start and the end */
+    ENSURE_MSG(frames_below >= 150 && first_below > 13 && last_below < sc->duration - 1,
+               "%lld frames below, from %g s to %g s", frames_below, first_below, last_below);
+    ENSURE(frames_above >= 300 && st->cam_pos[1] > 0.5);
+    /* the chest is reached under water, during the dive */
+    ENSURE_MSG(n[WW_SE_CHEST_SPAWN] == 1 && n[WW_SE_CHEST_COLLECT] == 1 && collect_t > first_below &&
+                   collect_t < last_below,
+               "chest spawned %d, collected %d at %g s", n[WW_SE_CHEST_SPAWN], n[WW_SE_CHEST_COLLECT], collect_t);
+    ENSURE(st->prizes[0] == 1.0 && st->fish_caught[0] == 1.0);
+    ww_state_free(st);
+    ww_scene_free(sc);
+}
+
+/* the committed review list parses, and every shot's scene loads with its options and has the
+ * frame (what `make review` checks before rendering) */
+TEST(review_list_committed_is_valid) {
+    ww_review_list l;
+    ww_error err = {0};
+    ENSURE_MSG(ww_review_load("scenes/review.list", &l, &err) == WW_OK, "%s:%d:%d: %s", err.file, err.line,
+               err.column, err.msg);
+    if (!l.shots) return;
+    ENSURE(l.n >= 20);
+    ENSURE_MSG(ww_review_check(&l, &err) == WW_OK, "%s:%d:%d: %s", err.file, err.line, err.column, err.msg);
+    ww_review_free(&l);
 }
