@@ -3,6 +3,7 @@
  * labelled contact sheet and the HTML page from the frames (tools/review.h).
  */
 #include <errno.h>
+#include <signal.h>
 #include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -41,6 +42,11 @@ static const char usage[] =
     "\n"
     "A bad list line is an error at LIST:line:column (exit 2) before anything renders; a shot\n"
     "whose render fails leaves a marked cell, and the command exits with the render's failure.\n";
+
+/* Ctrl-C or SIGTERM during the renders: the children (same process group) get it too and stop
+ * cleanly; this process starts no more, collects them, removes their folders and exits 130 */
+static volatile sig_atomic_t stop_signal;
+static void on_signal(int sig) { stop_signal = sig; }
 
 typedef struct job {
     pid_t pid;
@@ -158,6 +164,15 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
     if (n <= 0) return ww_error_set(err, WW_E_IO, "/proc/self/exe", 0, 0, "cannot find this binary");
     exe[n] = 0;
 
+    /* handlers, not SIG_IGN: an ignored signal would stay ignored in the children */
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    stop_signal = 0;
+
     job running[64];
     int nrun = 0, next = 0, done = 0;
     ww_result first_fail = WW_OK;
@@ -165,7 +180,8 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
     double t0 = now_s();
     while (done < l->n) {
         /* start renders up to --jobs */
-        while (nrun < o->jobs && next < l->n) {
+        if (stop_signal && nrun == 0) break;
+        while (!stop_signal && nrun < o->jobs && next < l->n) {
             const ww_review_shot *s = &l->shots[next];
             char final[1100];
             ww_review_shot_path(o->out, s, final, sizeof final);
@@ -194,7 +210,7 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
             ww_result r = finish(o, s, status, &e);
             done++;
             if (r) {
-                ww_error_print(&e, stderr);
+                if (!stop_signal) ww_error_print(&e, stderr);
                 if (!first_fail) fail_err = e, first_fail = r;
             } else if (!o->quiet) {
                 fprintf(stderr, "review: [%d/%d] %-22s %5.1f s\n", done, l->n, s->name, now_s() - running[j].started);
@@ -203,6 +219,12 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
             break;
         }
     }
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+    if (stop_signal)
+        return ww_error_set(err, WW_E_INTERRUPTED, NULL, 0, 0,
+                            "interrupted by %s: %d of %d shots finished, no sheet written",
+                            stop_signal == SIGINT ? "SIGINT" : "SIGTERM", done, l->n);
     if (!o->quiet) fprintf(stderr, "review: %d shots rendered in %.1f s\n", l->n, now_s() - t0);
     if (first_fail) *err = fail_err;
     return first_fail;
@@ -279,6 +301,11 @@ ww_result ww_cmd_review(int argc, char **argv, ww_error *err) {
 
     ww_error render_err = {0};
     ww_result rr = o.no_render ? WW_OK : render_all(&o, &l, &render_err);
+    if (rr == WW_E_INTERRUPTED) {
+        *err = render_err;
+        ww_review_free(&l);
+        return rr;
+    }
     int missing = 0;
     r = ww_review_sheet(&l, o.out, &o.sheet, &missing, err);
     if (!r) r = ww_review_html(&l, o.out, err);
