@@ -125,7 +125,7 @@ DEMO_FRAMES ?=
 demo: deps
 	@$(MAKE) --no-print-directory $(BIN)
 	@mkdir -p out/demo
-	@rm -f out/demo/frame_*.png out/demo/sound.wav
+	@rm -f out/demo/frame_*.png out/demo/sound.wav out/demo.mp4
 	./$(BIN) render $(DEMO_SCENE) --size $(DEMO_SIZE) $(if $(DEMO_FRAMES),--frames $(DEMO_FRAMES)) \
 	    -o out/demo --audio out/demo/sound.wav --progress
 	@fps=$$(./$(BIN) plan $(DEMO_SCENE) | sed -n 's/^frames .* at \([0-9.]*\) fps.*/\1/p'); \
