@@ -1,7 +1,8 @@
 # waterworld - build, test, demo. `make help` lists the targets.
 #
 #   make            build ./waterworld (warnings are errors, -ffp-contract=off)
-#   make demo       install what is missing, build, render scenes/demo.yaml into out/demo/
+#   make demo       install what is missing, build, render the tour into out/demo/ and out/demo.mp4
+#   make review     one frame per shot of scenes/review.list: out/review/review.png + index.html
 #   make test       install, build, run the test suite, then the same suite under ASan + UBSan
 #   make unit       the test suite only (T=NAME runs the tests whose name holds NAME)
 #   make asan       the test suite under AddressSanitizer + UBSan only
@@ -47,7 +48,7 @@ BIN     ?= waterworld
 # the test runner runs this many tests at once (default: the CPU count)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps demo test unit asan test-long golden bench fuzz soak clean help
+.PHONY: all deps demo review test unit asan test-long golden bench fuzz soak clean help
 all: $(BIN)
 
 # V=1 shows the full command lines
@@ -114,11 +115,39 @@ asan:
 	LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp ASAN_OPTIONS=detect_leaks=1:intercept_tls_get_addr=0 UBSAN_OPTIONS=print_stacktrace=1 WW_BIN=build/asan/waterworld \
 	    WW_ASAN=1 build/asan/ww-tests -j $(JOBS) --tier unit,proc $(T)
 
+# the tour (scenes/tour.yaml: stones, rod, boat, seat view, a dive to the chest, the sunset) with
+# its sound track: frames and out/demo/sound.wav in out/demo/, then out/demo.mp4 (H.264 + AAC,
+# tagged BT.709) when ffmpeg is here. DEMO_SIZE=1920x1080 for full HD, DEMO_FRAMES=N for the
+# first N frames only, DEMO_SCENE for another scene (one with an audio: section)
+DEMO_SCENE  ?= scenes/tour.yaml
+DEMO_SIZE   ?= 640x360
+DEMO_FRAMES ?=
 demo: deps
 	@$(MAKE) --no-print-directory $(BIN)
-	./$(BIN) render scenes/demo.yaml -o out/demo
-	@echo "frames: out/demo/frame_00000.png ... frame_00299.png"
-	@echo "video:  ffmpeg -framerate 30 -i out/demo/frame_%05d.png -pix_fmt yuv420p demo.mp4"
+	@mkdir -p out/demo
+	@rm -f out/demo/frame_*.png out/demo/sound.wav out/demo.mp4
+	./$(BIN) render $(DEMO_SCENE) --size $(DEMO_SIZE) $(if $(DEMO_FRAMES),--frames $(DEMO_FRAMES)) \
+	    -o out/demo --audio out/demo/sound.wav --progress
+	@fps=$$(./$(BIN) plan $(DEMO_SCENE) | sed -n 's/^frames .* at \([0-9.]*\) fps.*/\1/p'); \
+	if ! command -v ffmpeg >/dev/null 2>&1; then \
+	    echo "video: skipped, ffmpeg is not installed (apt-get install ffmpeg); frames and sound are in out/demo/"; \
+	else \
+	    ffmpeg -hide_banner -loglevel error -y -framerate $$fps -i out/demo/frame_%05d.png \
+	        -i out/demo/sound.wav -map 0:v -map 1:a -c:v libx264 -preset medium -crf 20 \
+	        -vf scale=out_color_matrix=bt709:out_range=tv -pix_fmt yuv420p -colorspace bt709 \
+	        -color_primaries bt709 -color_trc bt709 -color_range tv -c:a aac -b:a 192k -shortest \
+	        -movflags +faststart -f mp4 out/demo.mp4.tmp && mv -f out/demo.mp4.tmp out/demo.mp4 && \
+	    echo "video: out/demo.mp4 (with its sound track)"; \
+	fi
+	@echo "frames: out/demo/frame_00000.png ..., sound: out/demo/sound.wav"
+
+# the review set: every scene and feature in one labelled contact sheet and one HTML page
+# (REVIEW_ARGS adds options: --size 320x180, --jobs 1, --cols 6; see `waterworld review --help`)
+REVIEW_LIST ?= scenes/review.list
+REVIEW_OUT  ?= out/review
+REVIEW_ARGS ?=
+review: $(BIN)
+	./$(BIN) review $(REVIEW_LIST) -o $(REVIEW_OUT) $(REVIEW_ARGS)
 
 golden: $(BIN)
 	sh scripts/make-golden.sh ./$(BIN)
@@ -197,6 +226,6 @@ clean:
 	rm -rf build $(BIN)
 
 help:
-	@sed -n '1,13p' Makefile
+	@sed -n '1,14p' Makefile
 
 -include $(LIB_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BUILD)/src/cli/main.d

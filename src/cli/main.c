@@ -29,6 +29,9 @@ static const char usage[] =
     "  bench    waves [--json] [-o DIR]  the wave field's speed against its error, and a figure\n"
     "  compare  EXPECTED ACTUAL [--diff FILE] [--max M] [--psnr-min DB] [--yiq Y] [--json]...\n"
     "                                    two images or folders of frames; exit 1 when they differ\n"
+    "  review   LIST [-o DIR] [--jobs N] [--size WxH] [--no-render]\n"
+    "                                    one frame per shot of a review list, a labelled contact\n"
+    "                                    sheet and an HTML page (make review)\n"
     "  backends [--renderer] [--key]     which GL backends open here, on what; the golden key\n"
     "  --help | --version\n"
     "\n"
@@ -50,6 +53,7 @@ static const command commands[] = {
     {"probe", ww_cmd_probe},
     {"waves", ww_cmd_waves},
     {"compare", ww_cmd_compare},
+    {"review", ww_cmd_review},
 };
 
 int main(int argc, char **argv) {

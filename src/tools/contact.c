@@ -110,6 +110,34 @@ int ww_contact_text(ww_image *im, int x, int y, int max_w, const char *text, con
     return cx - x;
 }
 
+int ww_contact_fit(const ww_image *src, int w, int h, ww_image *out) {
+    WW_ASSERT(src->type == WW_PIX_U8 && src->channels >= 3 && w > 0 && h > 0);
+    if (ww_image_alloc(out, w, h, 3, WW_PIX_U8) != 0) return -1;
+    size_t sw = (size_t)src->width, sh = (size_t)src->height, ch = (size_t)src->channels;
+    for (size_t y = 0; y < (size_t)h; y++) {
+        /* source rows [y0, y1): at least one */
+        size_t y0 = y * sh / (size_t)h, y1 = (y + 1) * sh / (size_t)h;
+        if (y1 <= y0) y1 = y0 + 1;
+        for (size_t x = 0; x < (size_t)w; x++) {
+            size_t x0 = x * sw / (size_t)w, x1 = (x + 1) * sw / (size_t)w;
+            if (x1 <= x0) x1 = x0 + 1;
+            unsigned long sum[3] = {0, 0, 0};
+            for (size_t sy = y0; sy < y1; sy++) {
+                const uint8_t *p = src->u8 + (sy * sw + x0) * ch;
+                for (size_t sx = x0; sx < x1; sx++, p += ch) {
+                    sum[0] += p[0];
+                    sum[1] += p[1];
+                    sum[2] += p[2];
+                }
+            }
+            unsigned long n = (unsigned long)((y1 - y0) * (x1 - x0));
+            uint8_t *d = out->u8 + (y * (size_t)w + x) * 3;
+            for (int c = 0; c < 3; c++) d[c] = (uint8_t)((sum[c] + n / 2) / n);
+        }
+    }
+    return 0;
+}
+
 void ww_contact_put(ww_image *sheet, const ww_contact_layout *L, int i, const ww_image *thumb,
                     const char *label) {
     WW_ASSERT(i >= 0 && i < L->n && sheet->type == WW_PIX_U8 && sheet->channels == 3);

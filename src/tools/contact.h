@@ -7,6 +7,8 @@
  *   ww_contact_put(&sheet, &L, i, &thumb, "#3\namplitude=0.2");     // thumb may be NULL
  *   ww_write_png(path, &sheet, &err); ww_image_free(&sheet);       // the caller frees the sheet
  *
+ * Thumbnails of another size are scaled first: ww_contact_fit(&frame, L.thumb_w, L.thumb_h, &thumb).
+ *
  * Layout (what the tests compute too): cell i sits at column i % cols, row i / cols; a cell is the
  * thumbnail (thumb_w x thumb_h) above its label (label_h = lines * WW_CONTACT_LINE_H +
  * WW_CONTACT_PAD); cells are WW_CONTACT_GAP px apart and from the border, so
@@ -42,6 +44,10 @@ int ww_contact_new(const ww_contact_layout *L, ww_image *sheet);
  * as having no image when thumb is NULL; then draw the label's lines ('\n'-separated) below */
 void ww_contact_put(ww_image *sheet, const ww_contact_layout *L, int i, const ww_image *thumb,
                     const char *label);
+/* scale src (U8, 3 or 4 channels) to w x h into out (RGB8, allocated here; the caller frees it):
+ * each output pixel is the mean of the source pixels under it (the nearest one when enlarging);
+ * 0 ok, -1 out of memory */
+int ww_contact_fit(const ww_image *src, int w, int h, ww_image *out);
 /* draw one line of text with its top-left corner at (x, y), clipped to the image and to max_w px
  * (cut with ".." when wider); returns the width drawn, px */
 int ww_contact_text(ww_image *im, int x, int y, int max_w, const char *text, const uint8_t rgb[3]);
