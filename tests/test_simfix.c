@@ -102,3 +102,28 @@ TEST_PROC(numfmt_sweep_grid_values_are_written_as_meant) {
     ENSURE(ww_test_file_contains(cmd, "\n1,0.2,"));
     ENSURE(!ww_test_file_contains(cmd, "0.20000000000000004"));
 }
+
+/* ---- the project's goldens through render --golden ------------------------------------------ */
+
+/* golden/features/NAME.png is frame 0 of scenes/features/NAME.yaml: render --golden finds it (a
+ * comparison, pass or fail by this renderer), where it used to look only for frame_00000.png */
+TEST_PROC(golden_features_layout_is_found_by_render_golden) {
+    REQUIRE_GL();
+    char dir[512], args[1200], err_path[600];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("fog"));
+    snprintf(err_path, sizeof err_path, "%s/stderr.txt", dir);
+    snprintf(args, sizeof args,
+             "render scenes/features/fog.yaml --frames 1 -o %s/out --golden golden/features",
+             dir);
+    int rc = ww_test_ww(args, NULL, err_path);
+    ENSURE_MSG(rc == 0 || rc == 1, "exit %d", rc);
+    ENSURE(ww_test_file_contains(err_path, "0 missing"));
+    ENSURE(!ww_test_file_contains(err_path, "MISSING"));
+    ENSURE(ww_test_file_contains(err_path, "golden/features"));
+    /* frame 1 has no single-frame golden: still reported missing, with the paths tried */
+    snprintf(args, sizeof args,
+             "render scenes/features/fog.yaml --frames 1:2 -o %s/out1 --golden golden/features",
+             dir);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, err_path), 1);
+    ENSURE(ww_test_file_contains(err_path, "1 missing"));
+}
