@@ -15,7 +15,7 @@
 
 /* `simulate --hash` of the whole run; re-pin only for an intended change of the simulation */
 #define LAKE_HASH "feec0f8c9b1dd77d"
-#define REEF_HASH "332f0b291a98e930"
+#define REEF_HASH "d0e016e40ac5e4c1"
 
 static char cmd[2048];
 
