@@ -232,3 +232,60 @@ TEST(collide_camera_never_passes_through_a_crate) {
     ENSURE(f.far_side > 0 && f.crossings > 0);
     printf("  collide off: far side %d frames, crossings %d\n", f.far_side, f.crossings);
 }
+
+/* ---- a parent's scale is its own --------------------------------------------------------------- */
+
+#define MODEL_FRAME_TOL 1e-12 /* a few roundings of the matrix products, m */
+
+/* column c of a model's world matrix: its axis c in the world, as long as its own scale */
+static double column_length(const ww_model_desc *m, int c) {
+    const double *w = m->world + 4 * c;
+    return sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+}
+
+static double column_dot(const ww_model_desc *m, int a, int b) {
+    const double *u = m->world + 4 * a, *v = m->world + 4 * b;
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+TEST(models_child_of_a_stretched_parent_keeps_its_shape_and_metres) {
+    /* a plank 4 m long along its x, turned yaw 30; a post on it 1.5 m along the plank, its
+     * own scale [0.2, 2, 0.2]; a lamp on the post 1 m up, turned about its own axis */
+    static const char *text =
+        "time: {dt: 1/120, fps: 30, duration: 1}\n"
+        "objects:\n"
+        "  models:\n"
+        "    - {name: plank, mesh: box, position: [2, 0, -3], rotation: 30, scale: [4, 1, 1]}\n"
+        "    - {name: post, mesh: box, parent: plank, position: [1.5, 0, 0], scale: [0.2, 2, 0.2]}\n"
+        "    - {name: lamp, mesh: sphere, parent: post, position: [0, 1, 0], rotation: [0, 0, 45],"
+        " scale: 0.3}\n";
+    ww_scene *sc = load(text);
+    if (!sc) return;
+    const ww_model_desc *plank = &sc->models.model[0], *post = &sc->models.model[1],
+                        *lamp = &sc->models.model[2];
+    /* the plank is stretched, its children are not: each axis as long as its own scale and the
+     * axes at right angles (no shear) */
+    ENSURE_NEAR(column_length(plank, 0), 4.0, MODEL_FRAME_TOL);
+    const double post_scale[3] = {0.2, 2.0, 0.2};
+    for (int c = 0; c < 3; c++) {
+        ENSURE_NEAR(column_length(post, c), post_scale[c], MODEL_FRAME_TOL);
+        ENSURE_NEAR(column_length(lamp, c), 0.3, MODEL_FRAME_TOL);
+        for (int d = c + 1; d < 3; d++) {
+            ENSURE_NEAR(column_dot(post, c, d), 0.0, MODEL_FRAME_TOL);
+            ENSURE_NEAR(column_dot(lamp, c, d), 0.0, MODEL_FRAME_TOL);
+        }
+    }
+    /* where the README says: 1.5 m along the plank's turned x (yaw 30 turns +x toward +z) */
+    double a = ww_m_rad(30.0);
+    ENSURE_NEAR(post->world[12], 2.0 + 1.5 * cos(a), MODEL_FRAME_TOL);
+    ENSURE_NEAR(post->world[13], 0.0, MODEL_FRAME_TOL);
+    ENSURE_NEAR(post->world[14], -3.0 + 1.5 * sin(a), MODEL_FRAME_TOL);
+    /* and the lamp 1 m above the post's origin, whatever the post's own scale */
+    ENSURE_NEAR(lamp->world[12], post->world[12], MODEL_FRAME_TOL);
+    ENSURE_NEAR(lamp->world[13], 1.0, MODEL_FRAME_TOL);
+    ENSURE_NEAR(lamp->world[14], post->world[14], MODEL_FRAME_TOL);
+    /* the post's camera bounds: its own box (0.2 x 2 x 0.2) turned by 30 degrees */
+    ENSURE_NEAR(post->max[1] - post->min[1], 2.0, MODEL_FRAME_TOL);
+    ENSURE_NEAR(post->max[0] - post->min[0], 0.2 * cos(a) + 0.2 * sin(a), MODEL_FRAME_TOL);
+    ww_scene_free(sc);
+}
