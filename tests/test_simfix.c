@@ -12,7 +12,9 @@
 #include "sim/fish.h"
 #include "sim/state.h"
 #include "sim/step.h"
+#include "io/image.h"
 #include "test.h"
+#include "tools/plot.h"
 #include "tools/sweep.h"
 
 /* ---- numbers as people write them ----------------------------------------------------------- */
@@ -396,4 +398,129 @@ TEST(fish_avoid_the_boat_and_the_cubes) {
     ENSURE(off.boat > 50 && off.cube > 50);
     ENSURE(on.boat * AVOID_FACTOR <= off.boat);
     ENSURE(on.cube * AVOID_FACTOR <= off.cube);
+}
+
+/* ---- bench sim: errors that converge ------------------------------------------------------ */
+
+/* within 1 s: a stone skipping over open water and one knocking a floating cube, the boat
+ * driving; the contact with the cube is found at a step's end */
+static const char *CONVERGE =
+    "seed: 4\n"
+    "time: {dt: 1/120, fps: 30, duration: 1}\n"
+    "water:\n"
+    "  depth: 6\n"
+    "  waves:\n"
+    "    model: gerstner\n"
+    "    list:\n"
+    "      - {direction: 20, wavelength: 8, amplitude: 0.2, steepness: 0.5}\n"
+    "      - {direction: -40, wavelength: 3, amplitude: 0.05, steepness: 0.4}\n"
+    "objects:\n"
+    "  boat: {position: [-6, 0.25, -4], heading: 0}\n"
+    "  cubes: [{position: [3, 0, -3], size: 1, density: 600}]\n"
+    "  stones: {}\n"
+    "camera: {path: [{t: 0, position: [0, 1.5, 6], look_at: [0, 0, -6]}]}\n"
+    "script:\n"
+    "  - {t: 0.1, throw: {speed: 12, angle: 8, from: [0, 0.6, 4], heading: 180}}\n"
+    "  - {t: 0.1, throw: {speed: 9, angle: 2, from: [0, 0.5, -3], heading: 0}}\n"
+    "  - {t: 0, boat: {throttle: 1, steer: 0.3, until: 1}}\n";
+
+/* an error at dt / 2 is at most the error at dt (plus rounding: the exact parabola's errors are
+ * 1e-15 m) ... */
+#define CONVERGE_ROUNDING 1e-9
+/* ... and two halvings at least halve it (first order quarters it; measured: 0.06 for the exact
+ * boat, 0.22 .. 0.36 for the other metrics and integrators) */
+#define CONVERGE_TWO_HALVINGS 0.5
+
+/* the value of "key": in a JSON line, or -1 when absent or null */
+static double json_number(const char *line, const char *key) {
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\":", key);
+    const char *p = strstr(line, k);
+    if (!p || strncmp(p + strlen(k), "null", 4) == 0) return -1;
+    return strtod(p + strlen(k), NULL);
+}
+
+TEST_PROC(bench_sim_errors_shrink_as_dt_halves) {
+    char dir[512], scene[600], out[600], args[1400];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("converge"));
+    snprintf(scene, sizeof scene, "%s/converge.yaml", dir);
+    snprintf(out, sizeof out, "%s/out.jsonl", dir);
+    ENSURE_EQ_INT(ww_test_write_text(scene, CONVERGE), 0);
+    snprintf(args, sizeof args, "bench sim --tiny --json %s -o %s", scene, dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    char *text = ww_test_read_file(out, NULL);
+    ENSURE(text != NULL);
+    if (!text) return;
+    static const char *const keys[3] = {"cube_heave_m", "boat_position_m", "stone_path_m"};
+    static const char *const integ[2] = {"exact", "euler"};
+    static const char *const dts[3] = {"\"dt\":0.0333333333", "\"dt\":0.0166666667",
+                                       "\"dt\":0.00833333333"};
+    for (int g = 0; g < 2; g++)
+        for (int m = 0; m < 3; m++) {
+            double e[3] = {-1, -1, -1};
+            for (int d = 0; d < 3; d++) {
+                char want[64];
+                snprintf(want, sizeof want, "\"integrator\":\"%s\",%s", integ[g], dts[d]);
+                const char *line = strstr(text, want);
+                ENSURE_MSG(line != NULL, "no line %s", want);
+                if (line) e[d] = json_number(line, keys[m]);
+            }
+            printf("  %s %s: %.3e %.3e %.3e\n", integ[g], keys[m], e[0], e[1], e[2]);
+            ENSURE(e[0] >= 0 && e[1] >= 0 && e[2] >= 0);
+            ENSURE_MSG(e[1] <= e[0] + CONVERGE_ROUNDING && e[2] <= e[1] + CONVERGE_ROUNDING,
+                       "%s %s grows as dt halves: %.3e %.3e %.3e", integ[g], keys[m], e[0], e[1],
+                       e[2]);
+            ENSURE_MSG(e[2] <= CONVERGE_TWO_HALVINGS * e[0] + CONVERGE_ROUNDING,
+                       "%s %s: %.3e at dt/4 against %.3e", integ[g], keys[m], e[2], e[0]);
+        }
+    free(text);
+}
+
+/* ---- plot legends keep off the data ----------------------------------------------------------- */
+
+/* pixels of the series' colours inside box, in a plot drawn without its legend */
+static long series_pixels_in(const ww_image *im, const ww_plot *p, const int box[4]) {
+    long n = 0;
+    for (int y = box[1]; y < box[3]; y++)
+        for (int x = box[0]; x < box[2]; x++) {
+            if (x < 0 || y < 0 || x >= im->width || y >= im->height) continue;
+            const unsigned char *px = im->u8 + ((size_t)y * (size_t)im->width + (size_t)x) * 3;
+            for (int k = 0; k < p->nseries; k++)
+                n += memcmp(px, p->series[k].color.c, 3) == 0;
+        }
+    return n;
+}
+
+TEST(plot_legend_never_covers_plotted_points) {
+    /* falling curves through the top left (the old place of the legend); then curves through
+     * all four corners, which leave no corner free */
+    static const double x[4] = {30, 60, 120, 240};
+    static const double fall[3][4] = {{1e-1, 5e-2, 2.5e-2, 1.2e-2}, {2e-1, 1e-2, 5e-4, 2e-5},
+                                      {8e-2, 4e-2, 2e-2, 1e-2}};
+    static const double corners[2][4] = {{1e-5, 1e-3, 1e-2, 1e-1}, {1e-1, 1e-2, 1e-3, 1e-5}};
+    for (int c = 0; c < 2; c++) {
+        ww_plot p = {.title = "error", .xlabel = "1 / dt", .ylabel = "m", .log_x = 1, .log_y = 1,
+                     .no_legend = 1};
+        if (c == 0)
+            for (int k = 0; k < 3; k++) ww_plot_add(&p, "a long series name, exact", x, fall[k], 4,
+                                                    k ? WW_PLOT_ORANGE : WW_PLOT_BLUE);
+        else
+            for (int k = 0; k < 2; k++) ww_plot_add(&p, "through the corners", x, corners[k], 4,
+                                                    k ? WW_PLOT_GREEN : WW_PLOT_RED);
+        ww_image im;
+        ENSURE(ww_image_alloc(&im, 600, 480, 3, WW_PIX_U8) == 0);
+        ww_plot_fill(&im, WW_PLOT_WHITE);
+        ENSURE(ww_plot_draw(&p, &im, 0, 0, 600, 480) > 0);
+        int box[4];
+        ww_plot_legend_box(&p, 0, 0, 600, 480, box);
+        ENSURE(box[2] > box[0] && box[3] > box[1]);
+        ENSURE_EQ_INT(series_pixels_in(&im, &p, box), 0);
+        /* drawn, the legend is inside the panel and shows each series' swatch */
+        p.no_legend = 0;
+        ww_plot_fill(&im, WW_PLOT_WHITE);
+        ww_plot_draw(&p, &im, 0, 0, 600, 480);
+        ENSURE(box[0] >= 0 && box[1] >= 0 && box[2] <= 600 && box[3] <= 480);
+        ENSURE(series_pixels_in(&im, &p, box) > 0);
+        ww_image_free(&im);
+    }
 }
