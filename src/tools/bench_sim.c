@@ -5,15 +5,15 @@
  *           reference of the same scene, next to the steps per second of each: cube heave (y of
  *           cube 0), boat position (x, z) and stone paths (each stone's position), compared at
  *           common times (every 1/30 s, a step of every dt), as a table and the figure
- *           DIR/sim.png (error and speed against 1 / dt, log-log). A contact that the simulation
- *           detects at the end of a step (a stone against a cube or the boat, the boat against a
- *           cube, a press) happens up to a step late, and what follows it depends on the step it
- *           lands on, not on the integrator's order: comparing events (the k-th landing) or the
- *           whole run mixed that in and gave errors of cm and m that did not shrink with dt. So
- *           a body is compared until its first such contact in either run (cube 0: a press of
- *           it, a stone thud on a cube, the boat within reach; a stone: its first thud), and
- *           only while it flies (stones); the table says how long that is. Crossings of the
- *           water (skips, sinks) are solved inside the step and stay in;
+ *           DIR/sim.png (error and speed against 1 / dt, log-log). A contact between two
+ *           moving bodies (a stone against a cube or the boat, the boat against a cube, a press)
+ *           is resolved against the other body as it stands at that step, so what follows
+ *           depends on the step it lands on, not on the integrator's order: comparing events
+ *           (the k-th landing) or the whole run mixed that in and gave errors of cm and m that
+ *           did not shrink with dt. So a body is compared until its first such contact in either
+ *           run (cube 0: a press of it, a stone thud on a cube, the boat within reach; a stone:
+ *           its first thud), and only while it flies (stones); the table says how long that is.
+ *           Crossings of the water (skips, sinks) are solved inside the step and stay in;
  *   share   the simulation's share of a frame of scenes/demo.yaml (sim ms / render ms, target
  *           under 1%), from one render job in a child process (bench.c).
  * Metrics read state fields by name (tools/sim_out.h), so they follow the X-macro tables; a
@@ -110,7 +110,7 @@ typedef struct run {
     double *boat;            /* boat (x, z) at each sample, m */
     double *stone;           /* each stone's position at each sample, m (sample x stone x 3) */
     unsigned char *flying;   /* each stone flies at each sample (sample x stone) */
-    double cube_contact;     /* time of cube 0's first step-detected contact, s (inf: none) */
+    double cube_contact;     /* time of cube 0's first contact with a moving body, s (inf: none) */
     double stone_contact[WW_MAX_STONES]; /* time of each stone's first thud, s */
 } run;
 
@@ -141,7 +141,7 @@ static void sample(const ww_scene *sc, const ww_state *st, run *u, int k) {
     }
 }
 
-/* the step-detected contacts of this step: cube 0 pressed, a stone's thud (on a cube: cube 0's
+/* the contacts between moving bodies of this step: cube 0 pressed, a stone's thud (on a cube: cube 0's
  * too, the event does not say which), the boat within reach of cube 0 */
 static void contacts(const ww_scene *sc, const ww_state *st, run *u) {
     int n = ww_events_count(sc, st);
@@ -208,7 +208,7 @@ done:
 }
 
 /* max over the common samples of the distance to the reference's, each body until its first
- * step-detected contact in either run (stones: while flying in both); -1 when skipped.
+ * contact with a moving body in either run (stones: while flying in both); -1 when skipped.
  * *unpaired counts stone samples flying in one run only (a flight ends a step apart) */
 static double metric_error(const run *u, const run *ref, int m, int *unpaired) {
     if (!u->has[m]) return -1;
@@ -328,8 +328,8 @@ static ww_result part_dt(const ww_bench_opts *o, const char *path, dt_table *tab
     run_free(&u);
     run_free(&ref);
     if (!r && !o->json)
-        fprintf(to, "at common times: cube heave: |y - y_ref| of cube 0 until its first contact found\n"
-                    "at a step's end in either run (a press of it, a stone on a cube, the boat within\n"
+        fprintf(to, "at common times: cube heave: |y - y_ref| of cube 0 until its first contact with\n"
+                    "a moving body in either run (a press of it, a stone on a cube, the boat within\n"
                     "reach: 'cube to' says when); boat position: XZ distance; stone path: distance of\n"
                     "each stone while it flies in both runs, until its first thud (n: samples flying\n"
                     "in one run only); '-': the scene has no such system; integ: time.integrator\n"
