@@ -24,10 +24,17 @@
 TEST(numfmt_shortest_text_reads_back_exactly) {
     char t[WW_NUM_TEXT];
     static const struct { double v; const char *text; } cases[] = {
-        {0.4, "0.4"},           {0.1 + 0.2, "0.30000000000000004"}, {0.39999999999999997, "0.39999999999999997"},
-        {30.0, "30"},           {-2.5, "-2.5"},                       {1e-7, "1e-07"},
-        {1e300, "1e+300"},      {0.0, "0"},                           {1.0 / 3.0, "0.3333333333333333"},
-        {123456789012.0, "123456789012"}, {5e-324, "5e-324"}};
+        {0.4, "0.4"},
+        {0.1 + 0.2, "0.30000000000000004"},
+        {0.39999999999999997, "0.39999999999999997"}, /* the double below 0.4 */
+        {30.0, "30"},
+        {-2.5, "-2.5"},
+        {1e-7, "1e-07"},
+        {1e300, "1e+300"},
+        {0.0, "0"},
+        {1.0 / 3.0, "0.3333333333333333"},
+        {123456789012.0, "123456789012"},
+        {5e-324, "5e-324"}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         ww_num_text(t, sizeof t, cases[i].v);
         ENSURE_MSG(strcmp(t, cases[i].text) == 0, "%.17g printed as %s, expected %s", cases[i].v, t,
@@ -103,8 +110,8 @@ TEST_PROC(numfmt_sweep_grid_values_are_written_as_meant) {
     /* the CSV's value column and a metric written by the same helper */
     char dir[512], cmd[1200];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("sweep"));
-    snprintf(cmd, sizeof cmd, "sweep scenes/minimal.yaml --vary water.waves.list[0].amplitude=0.1:0.4:4 -o %s",
-             dir);
+    snprintf(cmd, sizeof cmd,
+             "sweep scenes/minimal.yaml --vary water.waves.list[0].amplitude=0.1:0.4:4 -o %s", dir);
     ENSURE_EQ_INT(ww_test_ww(cmd, NULL, NULL), 0);
     snprintf(cmd, sizeof cmd, "%s/sweep.csv", dir);
     ENSURE(ww_test_file_contains(cmd, "\n1,0.2,"));
@@ -230,14 +237,15 @@ TEST(collide_camera_never_passes_through_a_crate) {
     ENSURE(f.min_dist >= 0.1 - 1e-9);
     /* once the path has gone around, the camera is on it again */
     ENSURE(f.rejoined >= 25);
-    printf("  collide on: far side %d frames, crossings %d, rejoined %d frames, min distance %.4f m\n",
+    printf("  collide on: far side %d frames, crossings %d, rejoined %d frames, min distance "
+           "%.4f m\n",
            f.far_side, f.crossings, f.rejoined, f.min_dist);
     fly_crate(0, &f);
     ENSURE(f.far_side > 0 && f.crossings > 0);
     printf("  collide off: far side %d frames, crossings %d\n", f.far_side, f.crossings);
 }
 
-/* ---- a parent's scale is its own --------------------------------------------------------------- */
+/* ---- a parent's scale is its own ------------------------------------------------------------ */
 
 #define MODEL_FRAME_TOL 1e-12 /* a few roundings of the matrix products, m */
 
@@ -260,7 +268,8 @@ TEST(models_child_of_a_stretched_parent_keeps_its_shape_and_metres) {
         "objects:\n"
         "  models:\n"
         "    - {name: plank, mesh: box, position: [2, 0, -3], rotation: 30, scale: [4, 1, 1]}\n"
-        "    - {name: post, mesh: box, parent: plank, position: [1.5, 0, 0], scale: [0.2, 2, 0.2]}\n"
+        "    - {name: post, mesh: box, parent: plank, position: [1.5, 0, 0],"
+        " scale: [0.2, 2, 0.2]}\n"
         "    - {name: lamp, mesh: sphere, parent: post, position: [0, 1, 0], rotation: [0, 0, 45],"
         " scale: 0.3}\n";
     ww_scene *sc = load(text);
@@ -305,7 +314,8 @@ static const char *SCHOOL =
     "objects:\n"
     "  fish: {count: 30, center: [0, -2, 0], radius: 5, spread: 0.6, avoid: %s}\n"
     "camera: {interpolation: linear, path: [{t: 0, position: [-10, -2, 0], yaw: 90},\n"
-    "  {t: 10, position: [10, -2, 0.5], yaw: 90}, {t: 20, position: [-10, -1.5, -0.5], yaw: -90}]}\n";
+    "  {t: 10, position: [10, -2, 0.5], yaw: 90},\n"
+    "  {t: 20, position: [-10, -1.5, -0.5], yaw: -90}]}\n";
 
 /* a floating cube and the boat in the middle of a school near the surface, both still: the
  * school's fish-frames within `near` of each */
@@ -359,7 +369,8 @@ static void count_near(const char *fmt, const char *avoid, double boat_near, dou
             double dv[3] = {v[0] - v0[3 * i], v[1] - v0[3 * i + 1], v[2] - v0[3 * i + 2]};
             double a = sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]) / sc->dt;
             out->worst_accel = fmax(out->worst_accel, a);
-            out->worst_speed = fmax(out->worst_speed, sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+            double speed = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            out->worst_speed = fmax(out->worst_speed, speed);
         }
         if (st->step % 4) continue;
         for (int i = 0; i < n; i++) {
@@ -476,7 +487,7 @@ TEST_PROC(bench_sim_errors_shrink_as_dt_halves) {
     free(text);
 }
 
-/* ---- plot legends keep off the data ----------------------------------------------------------- */
+/* ---- plot legends keep off the data --------------------------------------------------------- */
 
 /* pixels of the series' colours inside box, in a plot drawn without its legend */
 static long series_pixels_in(const ww_image *im, const ww_plot *p, const int box[4]) {

@@ -160,10 +160,10 @@ static void mat_mul(const double a[16], const double b[16], double out[16]) {
         }
 }
 
-/* T(p) Ry(yaw) Rx(pitch) Rz(roll) S(s) (S left out unless scaled), column-major. Yaw turns like the boat's heading and the
- * camera's yaw (positive: +x toward +z, -z toward +x, clockwise seen from above), i.e. the
- * right-handed rotation about +y by -yaw; pitch and roll are right-handed about +x and +z
- * (positive pitch lifts a -z nose, as the camera's). */
+/* T(p) Ry(yaw) Rx(pitch) Rz(roll) S(s) (S left out unless scaled), column-major. Yaw turns
+ * like the boat's heading and the camera's yaw (positive: +x toward +z, -z toward +x, clockwise
+ * seen from above), i.e. the right-handed rotation about +y by -yaw; pitch and roll are
+ * right-handed about +x and +z (positive pitch lifts a -z nose, as the camera's). */
 static void local_matrix(const ww_model_desc *m, int scaled, double out[16]) {
     double cy = cos(m->rotation[0]), sy = -sin(m->rotation[0]);
     double cp = cos(m->rotation[1]), sp = sin(m->rotation[1]);

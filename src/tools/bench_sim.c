@@ -141,8 +141,8 @@ static void sample(const ww_scene *sc, const ww_state *st, run *u, int k) {
     }
 }
 
-/* the contacts between moving bodies of this step: cube 0 pressed, a stone's thud (on a cube: cube 0's
- * too, the event does not say which), the boat within reach of cube 0 */
+/* the contacts between moving bodies of this step: cube 0 pressed, a stone's thud (on a cube:
+ * cube 0's too, the event does not say which), the boat within reach of cube 0 */
 static void contacts(const ww_scene *sc, const ww_state *st, run *u) {
     int n = ww_events_count(sc, st);
     for (int i = 0; i < n; i++) {
@@ -328,13 +328,14 @@ static ww_result part_dt(const ww_bench_opts *o, const char *path, dt_table *tab
     run_free(&u);
     run_free(&ref);
     if (!r && !o->json)
-        fprintf(to, "at common times: cube heave: |y - y_ref| of cube 0 until its first contact with\n"
-                    "a moving body in either run (a press of it, a stone on a cube, the boat within\n"
-                    "reach: 'cube to' says when); boat position: XZ distance; stone path: distance of\n"
-                    "each stone while it flies in both runs, until its first thud (n: samples flying\n"
-                    "in one run only); '-': the scene has no such system; integ: time.integrator\n"
-                    "(exact: closed forms and the energy-keeping midpoint rule; euler: the seeds'\n"
-                    "semi-implicit Euler); the reference is exact\n");
+        fputs("at common times: cube heave: |y - y_ref| of cube 0 until its first contact with\n"
+              "a moving body in either run (a press of it, a stone on a cube, the boat within\n"
+              "reach: 'cube to' says when); boat position: XZ distance; stone path: distance of\n"
+              "each stone while it flies in both runs, until its first thud (n: samples flying\n"
+              "in one run only); '-': the scene has no such system; integ: time.integrator\n"
+              "(exact: closed forms and the energy-keeping midpoint rule; euler: the seeds'\n"
+              "semi-implicit Euler); the reference is exact\n",
+              to);
     return r;
 }
 

@@ -241,7 +241,8 @@ static long covered(const ww_plot *p, const frame *f, const int box[4]) {
                 have = 0;
                 continue;
             }
-            int x = map_x(f, to_axis(se->x[i], f->log_x)), y = map_y(f, to_axis(se->y[i], f->log_y));
+            int x = map_x(f, to_axis(se->x[i], f->log_x));
+            int y = map_y(f, to_axis(se->y[i], f->log_y));
             int m = have ? (abs(x - lx) > abs(y - ly) ? abs(x - lx) : abs(y - ly)) : 0;
             for (int j = 0; j <= m; j++) {
                 double u = m ? (double)j / (double)m : 1.0;
@@ -278,8 +279,10 @@ static int layout(const ww_plot *p, int x0, int y0, int w, int h, frame *f, int 
     int lw, lhgt;
     if (legend_size(p, s, lh, &lw, &lhgt) == 0) return 1;
     int m = LEGEND_GAP;
-    const int corner[4][2] = {{f->px0 + m, f->py0 + m}, {f->px1 - m - lw, f->py0 + m},
-                              {f->px1 - m - lw, f->py1 - m - lhgt}, {f->px0 + m, f->py1 - m - lhgt}};
+    const int corner[4][2] = {{f->px0 + m, f->py0 + m},
+                              {f->px1 - m - lw, f->py0 + m},
+                              {f->px1 - m - lw, f->py1 - m - lhgt},
+                              {f->px0 + m, f->py1 - m - lhgt}};
     for (int c = 0; c < 4; c++) {
         int b[4] = {corner[c][0], corner[c][1], corner[c][0] + lw, corner[c][1] + lhgt};
         if (b[0] < f->px0 || b[1] < f->py0 || covered(p, f, b)) continue;

@@ -286,7 +286,8 @@ void ww_sweep_values(const ww_sweep *s, long long i, char vals[][WW_SWEEP_VALUE_
         } else {
             /* weighted, not A + k (B - A) / (N - 1), then the decimal it stands for */
             double w = (double)(n - 1);
-            fmt_grid(vals[a], WW_SWEEP_VALUE_MAX, x, (x->lo * (double)(n - 1 - k) + x->hi * (double)k) / w);
+            double v = (x->lo * (double)(n - 1 - k) + x->hi * (double)k) / w;
+            fmt_grid(vals[a], WW_SWEEP_VALUE_MAX, x, v);
         }
     }
 }
