@@ -217,19 +217,19 @@ TEST(assets_models_world_matrices) {
     ENSURE_EQ_INT(arm->parent, 1);
     ENSURE_EQ_INT(base->parent, -1);
     ENSURE_EQ_INT(arm->mesh, WW_MESH_SPHERE);
-    /* yaw 90 turns +x toward +z (the boat's heading): the arm's (1, 0, 0), scaled by 2, goes to
-     * (0, 0, 2) from the base at (10, 0, 0) */
+    /* yaw 90 turns +x toward +z (the boat's heading): the arm's (1, 0, 0) m goes to (0, 0, 1)
+     * from the base at (10, 0, 0); the base's scale 2 is its own, not its children's */
     ENSURE_NEAR(origin(arm)[0], 10.0, MODEL_MATRIX_TOL);
     ENSURE_NEAR(origin(arm)[1], 0.0, MODEL_MATRIX_TOL);
-    ENSURE_NEAR(origin(arm)[2], 2.0, MODEL_MATRIX_TOL);
-    /* the tip's (0, 0, -1) in the arm's frame: scaled 2, the -z nose turned by yaw 90 to +x */
-    ENSURE_NEAR(origin(tip)[0], 12.0, MODEL_MATRIX_TOL);
-    ENSURE_NEAR(origin(tip)[2], 2.0, MODEL_MATRIX_TOL);
+    ENSURE_NEAR(origin(arm)[2], 1.0, MODEL_MATRIX_TOL);
+    /* the tip's (0, 0, -1) in the arm's frame: the -z nose turned by yaw 90 to +x */
+    ENSURE_NEAR(origin(tip)[0], 11.0, MODEL_MATRIX_TOL);
+    ENSURE_NEAR(origin(tip)[2], 1.0, MODEL_MATRIX_TOL);
     /* its pitch 90 lifts its own -z axis to +y, which the parents' yaw leaves alone */
-    ENSURE_NEAR(tip->world[8 + 1], -2.0, MODEL_MATRIX_TOL); /* column z, row y: R (0,0,1) */
-    /* bounds of the arm: the unit box, scale 2 from the parent, around (10, 0, 2) */
-    ENSURE_NEAR(arm->min[0], 9.0, MODEL_MATRIX_TOL);
-    ENSURE_NEAR(arm->max[2], 3.0, MODEL_MATRIX_TOL);
+    ENSURE_NEAR(tip->world[8 + 1], -1.0, MODEL_MATRIX_TOL); /* column z, row y: R (0,0,1) */
+    /* bounds of the arm: its own unit box around (10, 0, 1) */
+    ENSURE_NEAR(arm->min[0], 9.5, MODEL_MATRIX_TOL);
+    ENSURE_NEAR(arm->max[2], 1.5, MODEL_MATRIX_TOL);
     /* the OBJ's own bounds (0..2, 0..1, -2..2) scaled by 0.5 and moved down 5 m */
     ENSURE_NEAR(wreck->min[0], 0.0, MODEL_MATRIX_TOL);
     ENSURE_NEAR(wreck->max[0], 1.0, MODEL_MATRIX_TOL);

@@ -476,7 +476,8 @@ static void school(const char *mode, int *min_reached, double *worst_turn) {
            "largest yaw rate %.1f deg/s, fewest targets %d\n",
            mode, far, fastest, f->max_speed, ww_m_deg(*worst_turn), *min_reached);
     ENSURE(far < 1.5 * f->radius);
-    ENSURE(*worst_turn <= f->turn_rate + FISH_TURN_RATE_TOL);
+    /* turn_rate, up to (1 + WW_FISH_FLEE_TURN) times it while fleeing the camera */
+    ENSURE(*worst_turn <= f->turn_rate * (1.0 + WW_FISH_FLEE_TURN) + FISH_TURN_RATE_TOL);
     ww_state_free(st);
     ww_scene_free(sc);
 }

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "core/numfmt.h"
 #include "scene/scene.h"
 #include "sim/events.h"
 #include "sim/state.h"
@@ -16,7 +17,7 @@
 #include "test.h"
 #include "tools/sim_out.h"
 
-/* the JSON lines print %.17g, which round-trips a double exactly */
+/* the JSON lines print the shortest text that reads back as the double (core/numfmt.h) */
 #define JSON_ROUND_TRIP_TOL 0.0
 
 TEST(simtools_json_validator) {
@@ -270,8 +271,10 @@ TEST(simtools_events_jsonl) {
         ENSURE_NEAR(aux, 2, JSON_ROUND_TRIP_TOL);
         const char *second = strchr(text, '\n') + 1;
         ENSURE(strstr(second, "\"kind\":\"chest_collect\"") != NULL);
-        char pos[128];
-        snprintf(pos, sizeof pos, "\"pos\":[%.17g,0,%.17g]", p1[0], p1[2]);
+        char pos[128], x1[WW_NUM_TEXT], z1[WW_NUM_TEXT];
+        ww_num_text(x1, sizeof x1, p1[0]);
+        ww_num_text(z1, sizeof z1, p1[2]);
+        snprintf(pos, sizeof pos, "\"pos\":[%s,0,%s]", x1, z1);
         ENSURE(strstr(second, pos) != NULL);
         /* JSON has no NaN: a non-finite magnitude is null */
         ENSURE(strstr(second, "\"kind\":\"boat_stop\",\"object\":0,\"pos\":[0,0,0],"

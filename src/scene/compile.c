@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "core/mathx.h"
+#include "core/numfmt.h"
 #include "core/rng.h"
 #include "scene/assets.h"
 #include "scene/compile_impl.h"
@@ -260,10 +261,9 @@ static int in_range(const rule *r, double v) {
     return (r->lo_open ? v > r->lo : v >= r->lo) && (r->hi_open ? v < r->hi : v <= r->hi);
 }
 
-/* the shortest of %.15g and %.17g that reads back as v */
+/* the shortest text that reads back as v (core/numfmt.h) */
 static const char *num_text(double v, char *buf, size_t size) {
-    snprintf(buf, size, "%.15g", v);
-    if (strtod(buf, NULL) != v) snprintf(buf, size, "%.17g", v);
+    ww_num_text(buf, size, v);
     return buf;
 }
 

@@ -128,10 +128,14 @@ static ww_result compile_bubbles(ctx *c, const section *objects) {
 }
 
 /* ---- objects.models: a scene graph of static models (seed 001's GameObject hierarchy) -------
- * Each model's local matrix is T(position) Ry(yaw) Rx(pitch) Rz(roll) S(scale); its world matrix
- * is its parent's world times its local (seed 001 passes the parent's transform down the tree
- * while drawing; here the static chains are folded once at load). A chain that ends at the boat
- * stays relative to the boat's frame: the renderer composes it with the boat's pose each frame. */
+ * Each model's local matrix is T(position) Ry(yaw) Rx(pitch) Rz(roll) S(scale); its frame is its
+ * parent's frame times T R (no scale), and its world matrix its parent's frame times its local.
+ * A child inherits its parent's position and rotation but not its scale: its position is in
+ * metres in the parent's turned frame, and a parent scaled [4, 1, 1] neither moves its children
+ * 4x further along x nor stretches (or, turned, shears) their shapes. Seed 001 passes the whole
+ * parent transform down the tree while drawing; here the static chains are folded once at load.
+ * A chain that ends at the boat stays relative to the boat's frame: the renderer composes it
+ * with the boat's pose each frame. */
 
 static const rule R_SCALE = OPEN_LO(0, 1e4, "");
 static const rule R_ANGLE = FINITE("deg");
@@ -156,11 +160,11 @@ static void mat_mul(const double a[16], const double b[16], double out[16]) {
         }
 }
 
-/* T(p) Ry(yaw) Rx(pitch) Rz(roll) S(s), column-major. Yaw turns like the boat's heading and the
- * camera's yaw (positive: +x toward +z, -z toward +x, clockwise seen from above), i.e. the
- * right-handed rotation about +y by -yaw; pitch and roll are right-handed about +x and +z
- * (positive pitch lifts a -z nose, as the camera's). */
-static void local_matrix(const ww_model_desc *m, double out[16]) {
+/* T(p) Ry(yaw) Rx(pitch) Rz(roll) S(s) (S left out unless scaled), column-major. Yaw turns
+ * like the boat's heading and the camera's yaw (positive: +x toward +z, -z toward +x, clockwise
+ * seen from above), i.e. the right-handed rotation about +y by -yaw; pitch and roll are
+ * right-handed about +x and +z (positive pitch lifts a -z nose, as the camera's). */
+static void local_matrix(const ww_model_desc *m, int scaled, double out[16]) {
     double cy = cos(m->rotation[0]), sy = -sin(m->rotation[0]);
     double cp = cos(m->rotation[1]), sp = sin(m->rotation[1]);
     double cr = cos(m->rotation[2]), sr = sin(m->rotation[2]);
@@ -169,7 +173,8 @@ static void local_matrix(const ww_model_desc *m, double out[16]) {
                       {cp * sr, cp * cr, -sp},
                       {-sy * cr + cy * sp * sr, sy * sr + cy * sp * cr, cy * cp}};
     for (int col = 0; col < 3; col++) {
-        for (int row = 0; row < 3; row++) out[4 * col + row] = r[row][col] * m->scale[col];
+        double k = scaled ? m->scale[col] : 1.0;
+        for (int row = 0; row < 3; row++) out[4 * col + row] = r[row][col] * k;
         out[4 * col + 3] = 0.0;
     }
     for (int row = 0; row < 3; row++) out[12 + row] = m->position[row];
@@ -262,7 +267,7 @@ static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc
     for (int a = 0; a < 3; a++) m->color[a] = grey;
     TRY(wwc_get_vec(c, &s, "color", 3, &R_ALBEDO, OPTIONAL, m->color));
     TRY(get_name(c, &s, "parent", sizeof m->name, parent));
-    local_matrix(m, m->local);
+    local_matrix(m, 1, m->local);
 
     /* bounds: given, or the transformed mesh's once the world matrix is known */
     *given = 0;
@@ -361,8 +366,15 @@ static ww_result resolve_graph(ctx *c, const ww_node *list, const ww_node *const
             ww_model_desc *m = &d->model[i];
             int p = m->parent;
             if (done[i] || (p >= 0 && !done[p])) continue;
-            if (p >= 0) mat_mul(d->model[p].world, m->local, m->world);
-            else memcpy(m->world, m->local, sizeof m->world);
+            double rigid[16];
+            local_matrix(m, 0, rigid);
+            if (p >= 0) {
+                mat_mul(d->model[p].frame, m->local, m->world);
+                mat_mul(d->model[p].frame, rigid, m->frame);
+            } else {
+                memcpy(m->world, m->local, sizeof m->world);
+                memcpy(m->frame, rigid, sizeof m->frame);
+            }
             if (!given[i]) transformed_bounds(c->sc, m);
             done[i] = 1;
             left--;

@@ -76,10 +76,14 @@ typedef struct ww_model_desc {
     double scale[3];
     double color[3];       /* linear RGB albedo (multiplies an OBJ's materials) */
     int parent;            /* index of the parent model, -1 world, WW_PARENT_BOAT the boat */
-    double local[16];      /* model -> parent, column-major */
-    double world[16];      /* model -> world for static chains (parent -1 up the chain),
-                            * column-major; relative to the boat's frame when the chain ends at
-                            * the boat (the renderer composes it with the boat's pose per frame) */
+    double local[16];      /* model -> parent's frame, column-major: T R S */
+    double frame[16];      /* the model's frame, where its children are placed: its parent's
+                            * frame times its own T R, without its scale (a child inherits
+                            * position and rotation, never scale: metres stay metres) */
+    double world[16];      /* model -> world for static chains (parent -1 up the chain):
+                            * the parent's frame times local, column-major; relative to the
+                            * boat's frame when the chain ends at the boat (the renderer composes
+                            * it with the boat's pose per frame) */
     int line, column;      /* where it was written */
 } ww_model_desc;
 

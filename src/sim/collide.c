@@ -194,49 +194,40 @@ void ww_camera_collide(const ww_scene *sc, ww_state *st) {
         index = s.index;
     }
 
-    /* 2. held back last step and the path is clear again: rejoin it */
-    int clear = 1;
-    for (int k = 0; k < n && clear; k++)
-        if (get_solid(sc, st, k, m, &s) && inside(&s, p1)) clear = 0;
-    if (from_prev && cs[0] != 0.0 && clear) {
-        for (int a = 0; a < 3; a++) p[a] = p1[a];
-        what = -1;
-    } else {
-        /* 3. sweep to the target; stop at the first entry and slide what is left */
-        double target[3] = {p1[0], p1[1], p1[2]};
-        for (int it = 0; it < COLLIDE_SLIDES; it++) {
-            double d[3], u = 2.0, best_n[3] = {0.0, 0.0, 0.0};
-            ww_m_sub3(target, p, d);
-            if (ww_m_dot3(d, d) == 0.0) break;
-            int hit = -1;
-            solid hs = {0};
-            for (int k = 0; k < n; k++) {
-                double uk, nk[3];
-                if (!get_solid(sc, st, k, m, &s) || !sweep(&s, p, d, &uk, nk) || uk >= u)
-                    continue;
-                u = uk;
-                hit = k;
-                hs = s;
-                for (int a = 0; a < 3; a++) best_n[a] = nk[a];
-            }
-            if (hit < 0) {
-                for (int a = 0; a < 3; a++) p[a] = target[a];
-                break;
-            }
-            for (int a = 0; a < 3; a++) p[a] += u * d[a] + COLLIDE_SKIN * best_n[a];
-            if (what < 0) {
-                what = hs.what;
-                index = hs.index;
-            }
-            /* slide: drop the part of the rest of the move that points into the surface */
-            double r[3];
-            ww_m_sub3(target, p, r);
-            double rn = ww_m_dot3(r, best_n);
-            if (rn < 0.0)
-                for (int a = 0; a < 3; a++) r[a] -= rn * best_n[a];
-            for (int a = 0; a < 3; a++) target[a] = p[a] + r[a];
-            if (it == COLLIDE_SLIDES - 1) break;
+    /* 2. sweep to the target; stop at the first entry and slide what is left. Never a jump to
+     * the path: a camera held at a wall whose path comes out on the far side would pass through
+     * the wall; it follows the path again once the sweep reaches it */
+    double target[3] = {p1[0], p1[1], p1[2]};
+    for (int it = 0; it < COLLIDE_SLIDES; it++) {
+        double d[3], u = 2.0, best_n[3] = {0.0, 0.0, 0.0};
+        ww_m_sub3(target, p, d);
+        if (ww_m_dot3(d, d) == 0.0) break;
+        int hit = -1;
+        solid hs = {0};
+        for (int k = 0; k < n; k++) {
+            double uk, nk[3];
+            if (!get_solid(sc, st, k, m, &s) || !sweep(&s, p, d, &uk, nk) || uk >= u) continue;
+            u = uk;
+            hit = k;
+            hs = s;
+            for (int a = 0; a < 3; a++) best_n[a] = nk[a];
         }
+        if (hit < 0) {
+            for (int a = 0; a < 3; a++) p[a] = target[a];
+            break;
+        }
+        for (int a = 0; a < 3; a++) p[a] += u * d[a] + COLLIDE_SKIN * best_n[a];
+        if (what < 0) {
+            what = hs.what;
+            index = hs.index;
+        }
+        /* slide: drop the part of the rest of the move that points into the surface */
+        double r[3];
+        ww_m_sub3(target, p, r);
+        double rn = ww_m_dot3(r, best_n);
+        if (rn < 0.0)
+            for (int a = 0; a < 3; a++) r[a] -= rn * best_n[a];
+        for (int a = 0; a < 3; a++) target[a] = p[a] + r[a];
     }
 
     /* log a contact once, when it starts */

@@ -13,15 +13,15 @@
  * Model. Let p0 be the camera's position after collision at the previous step (collide_prev)
  * and p1 the position the path (or seat) asks for now.
  *   1. p0 is pushed out of any solid that moved into it (to the nearest point of its surface).
- *   2. If the camera was held back at the previous step and p1 is free, it rejoins the path
- *      (the path has come out of the object; the jump is a cut, like the seed's camera that
- *      stops and moves on once its way is clear).
- *   3. Otherwise the segment p0 -> p1 is swept against every solid (slab test for boxes in the
- *      box's frame, ray-sphere for the boat: Ericson, "Real-Time Collision Detection", 5.3.2 and
+ *   2. The segment p0 -> p1 is swept against every solid (slab test for boxes in the box's
+ *      frame, ray-sphere for the boat: Ericson, "Real-Time Collision Detection", 5.3.2 and
  *      5.3.3); at the first entry the camera stops on the surface, and what is left of the move
  *      slides along it (the normal component removed), swept again, at most three times
  *      (Fauerby 2003, "Improved Collision detection and Response"). A fast camera cannot tunnel
- *      through a thin object between two steps.
+ *      through a thin object between two steps, and a held camera never jumps to its path: a
+ *      path straight through a solid leaves the camera on the near face (stopped head-on,
+ *      sliding when the path moves sideways), and it is on its path again only when the sweep
+ *      from where it is reaches it, i.e. once the path has gone around the solid.
  * At step 0 there is no previous position: p0 = p1, pushed out. The camera's distance to every
  * solid is at least m after each step (boxes are grown by m on every side, so a point outside
  * the grown box is at least m from the box).

@@ -26,6 +26,9 @@ enum { K_JITTER = 0, K_BIG, K_BIG_ANGLE, K_SPAWN_ANGLE, K_SPAWN_R, K_CRUISE, K_Y
 #define VERTICAL_GAIN 1.0        /* 1/s: vertical speed per metre off the wanted depth */
 #define VERTICAL_MAX 0.5         /* of the speed: the steepest climb or dive */
 #define SLOW_TURN_MIN 0.3        /* speed fraction while the goal is behind */
+#define FLEE_HALF 3.0            /* (R/d)^2 - 1 at d = R/2: a threat there gives fear 1 */
+#define FLEE_MIN_GAP 0.05        /* m: the closest a threat's surface counts (fear <= 2130 R^2) */
+#define FLEE_RESPONSE 8.0        /* 1/s: extra velocity response at full fear */
 
 static double draw(const ww_scene *sc, const ww_state *st, int i, uint64_t k) {
     return ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step, (uint64_t)i * 16u + k);
@@ -121,20 +124,40 @@ static int lure_free(const ww_scene *sc, const ww_state *st) {
     return sc->rod.on && (int)st->lure_state[0] == WW_LURE_FLOATING && st->rod_fish[0] < 0.0;
 }
 
-/* add the push away from q within radius R to rep (XZ); returns the weight (1 - d/R)^2 */
-static double push_away(const double p[3], const double q[3], double R, double rep[2]) {
+/* add the fear of a threat at q (its surface r from q) within R to fl: ((R/d)^2 - 1) / 3 for
+ * the gap d between fish and the threat's surface (inverse-square, zero at R, 1 at R/2,
+ * unbounded as d shrinks), along the unit vector away from it: horizontal as the XZ direction
+ * (the heading when the threat is straight above or below), vertical as the 3D one */
+static void add_fear(const double p[3], const double q[3], double r, double R, double yaw,
+                     double fl[3]) {
     double d[3];
     ww_m_sub3(p, q, d);
-    double dist = ww_m_len3(d), h = hypot(d[0], d[2]);
-    if (!(dist < R) || h <= 0.0) return 0.0;
-    double w = (1.0 - dist / R) * (1.0 - dist / R);
-    rep[0] += w * d[0] / h;
-    rep[1] += w * d[2] / h;
-    return w;
+    double dist = ww_m_len3(d), gap = fmax(dist - r, FLEE_MIN_GAP);
+    if (!(gap < R)) return;
+    double w = ((R / gap) * (R / gap) - 1.0) / FLEE_HALF, h = hypot(d[0], d[2]);
+    fl[0] += w * (h > 1e-9 ? d[0] / h : cos(yaw));
+    fl[1] += w * (dist > 1e-9 ? d[1] / dist : 0.0);
+    fl[2] += w * (h > 1e-9 ? d[2] / h : sin(yaw));
 }
 
-/* the unit XZ direction fish i wants, and how alarmed it is (0..1) */
-static double goal_direction(const ww_scene *sc, ww_state *st, int i, double g[2]) {
+/* the fear vector of fish i: the sum over the boat (its sphere), the cubes (their bounding
+ * spheres) and the camera (a point) of add_fear; its length is the fear */
+static void fear(const ww_scene *sc, const ww_state *st, int i, double fl[3]) {
+    const ww_fish_desc *f = &sc->fish;
+    const double *p = st->fish_pos + 3 * i;
+    double yaw = st->fish_yaw[i];
+    fl[0] = fl[1] = fl[2] = 0.0;
+    if (!(f->avoid > 0.0)) return;
+    if (sc->boat.on) add_fear(p, st->boat_pos, sc->boat.radius, f->avoid, yaw, fl);
+    for (int c = 0; c < WW_N_CUBES(sc); c++)
+        add_fear(p, st->cube_pos + 3 * c, 0.5 * sqrt(3.0) * sc->cubes.cube[c].size, f->avoid, yaw,
+                 fl);
+    add_fear(p, st->cam_pos, 0.0, f->avoid, yaw, fl);
+}
+
+/* the unit XZ direction fish i wants, given its fear vector fl */
+static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double fl[3],
+                           double g[2]) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i;
     if (f->mode == WW_FISH_WANDER) {
@@ -168,15 +191,8 @@ static double goal_direction(const ww_scene *sc, ww_state *st, int i, double g[2
     }
 
     /* away from the boat, the cubes and the camera */
-    double rep[2] = {0.0, 0.0}, alarm = 0.0;
-    if (f->avoid > 0.0) {
-        if (sc->boat.on) alarm = fmax(alarm, push_away(p, st->boat_pos, f->avoid, rep));
-        for (int c = 0; c < WW_N_CUBES(sc); c++)
-            alarm = fmax(alarm, push_away(p, st->cube_pos + 3 * c, f->avoid, rep));
-        alarm = fmax(alarm, push_away(p, st->cam_pos, f->avoid, rep));
-    }
-    g[0] += AVOID_WEIGHT * rep[0];
-    g[1] += AVOID_WEIGHT * rep[1];
+    g[0] += AVOID_WEIGHT * fl[0];
+    g[1] += AVOID_WEIGHT * fl[2];
 
     /* back into the region near its edge */
     double cx = f->center[0] - p[0], cz = f->center[2] - p[2], r = hypot(cx, cz);
@@ -193,7 +209,6 @@ static double goal_direction(const ww_scene *sc, ww_state *st, int i, double g[2
         g[0] = cos(st->fish_yaw[i]);
         g[1] = sin(st->fish_yaw[i]);
     }
-    return alarm;
 }
 
 /* the push of the other fish closer than the separation, m/s */
@@ -243,12 +258,15 @@ static void keep_in_water(const ww_scene *sc, const ww_state *st, double p[3], d
 static void swim(const ww_scene *sc, ww_state *st, int i) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i, dt = sc->dt;
-    double g[2];
-    double alarm = goal_direction(sc, st, i, g);
+    double g[2], fl[3];
+    fear(sc, st, i, fl);
+    double alarm = fmin(1.0, ww_m_len3(fl));
+    goal_direction(sc, st, i, fl, g);
 
-    /* bounded turn toward the goal */
+    /* bounded turn toward the goal, faster when frightened */
     double yaw0 = st->fish_yaw[i], want = atan2(g[1], g[0]);
-    double turn = ww_m_clamp(wrap_pi(want - yaw0), -f->turn_rate * dt, f->turn_rate * dt);
+    double rate = f->turn_rate * (1.0 + WW_FISH_FLEE_TURN * alarm);
+    double turn = ww_m_clamp(wrap_pi(want - yaw0), -rate * dt, rate * dt);
     double yaw = wrap_pi(yaw0 + turn);
     st->fish_yaw[i] = yaw;
     if (f->mode == WW_FISH_WANDER) {
@@ -256,9 +274,12 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
         st->fish_goal[i] = wrap_pi(yaw + off);
     }
 
-    /* desired velocity: along the heading, toward the wanted depth, apart from the others */
-    double speed = f->speed + (f->max_speed - f->speed) * ww_m_clamp(alarm, 0.0, 1.0);
-    speed *= SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cos(wrap_pi(want - yaw)));
+    /* desired velocity: along the heading (a burst toward max_speed when frightened, not
+     * slowed by a turn then), toward the wanted depth, apart from the others, away from the
+     * threats */
+    double speed = f->speed + (f->max_speed - f->speed) * alarm;
+    double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cos(wrap_pi(want - yaw)));
+    speed *= slow + (1.0 - slow) * alarm;
     double y_want;
     if (f->mode == WW_FISH_TARGETS) {
         y_want = st->fish_target[3 * i + 1];
@@ -272,15 +293,20 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
                         speed * sin(yaw)};
     double push[3];
     separation(sc, st, i, push);
-    for (int k = 0; k < 3; k++) want_v[k] += push[k];
+    for (int k = 0; k < 3; k++) want_v[k] += push[k] + f->max_speed * fl[k];
     double n = ww_m_len3(want_v);
     if (n > f->max_speed)
         for (int k = 0; k < 3; k++) want_v[k] *= f->max_speed / n;
 
-    /* seed 000's first-order filter, then move */
-    double a = -expm1(-f->response * dt);
+    /* seed 000's first-order filter (quicker when frightened), the change of velocity bounded
+     * by WW_FISH_MAX_ACCEL dt, then move */
+    double a = -expm1(-(f->response + FLEE_RESPONSE * alarm) * dt), dv[3];
+    for (int k = 0; k < 3; k++) dv[k] = (want_v[k] - v[k]) * a;
+    double dvn = ww_m_len3(dv);
+    if (dvn > WW_FISH_MAX_ACCEL * dt)
+        for (int k = 0; k < 3; k++) dv[k] *= WW_FISH_MAX_ACCEL * dt / dvn;
     for (int k = 0; k < 3; k++) {
-        v[k] += (want_v[k] - v[k]) * a;
+        v[k] += dv[k];
         p[k] += v[k] * dt;
     }
     keep_in_water(sc, st, p, v);

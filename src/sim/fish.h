@@ -12,10 +12,18 @@
  *   within 90 degrees of the heading. targets (seed 003): toward the target; within `reach` it is
  *   reached and a new one is drawn in the region. A floating lure within rod.attract (XZ) replaces
  *   the goal (the fish goes for it).
- * - steering away (seed 000's steerAway): each of boat, cubes and camera closer than `avoid` (3D
- *   distance d) adds (1 - d / avoid)^2 times the unit vector away from it (XZ), with weight 3, and
- *   the largest such weight w raises the speed toward max_speed; a fish outside 0.8 radius of the
- *   region's centre is turned back toward it.
+ * - fleeing (seed 000's steerAway, "strongest at close distances"): each of the boat (its
+ *   sphere, objects.boat.radius), the cubes (their bounding spheres) and the camera (a point)
+ *   whose surface is a gap d < `avoid` away frightens the fish by ((avoid / d)^2 - 1) / 3
+ *   (inverse-square: 0 at `avoid`, 1 at avoid / 2, growing without bound closer in; d counted
+ *   from 0.05 m) along the unit vector away from it (horizontal part along the XZ direction, the
+ *   heading when the threat is straight above or below). The sum F is the fear vector, its
+ *   length capped at 1 the fear w. The goal direction gets 3 F (XZ); the turn rate grows to
+ *   turn_rate (1 + 2 w) (a C-start); the speed bursts to speed + (max_speed - speed) w and is
+ *   not slowed by the turn; the desired velocity gets max_speed F; the filter's rate grows to
+ *   response + 8 w; and the change of velocity is capped at WW_FISH_MAX_ACCEL dt (15 m/s^2).
+ *   avoid: 0 switches fleeing off. A fish outside 0.8 radius of the region's centre is turned
+ *   back toward it.
  * - bounded turn: the heading turns toward the goal by at most turn_rate dt (seed 003's future
  *   work: smooth turns instead of snapping), and the fish slows while the goal is far off its
  *   heading (speed x (0.3 + 0.7 max(0, cos err))), so it cannot circle a target forever.
@@ -24,8 +32,8 @@
  *   vertical swim), or the target's height; plus separation: each other fish closer than
  *   `separation` pushes with max_speed (1 - d / separation) along the line between them (for two
  *   fish at one point, a direction drawn per pair, opposite for the two); capped at max_speed.
- * - seed 000's first-order filter v <- v + (v_des - v)(1 - e^(-a dt)), then p <- p + v dt. A
- *   convex blend, so |v| never exceeds max_speed.
+ * - seed 000's first-order filter v <- v + (v_des - v)(1 - e^(-a dt)) (the change capped at
+ *   WW_FISH_MAX_ACCEL dt), then p <- p + v dt. A convex blend, so |v| never exceeds max_speed.
  * - depth: y is clamped to [seabed + margin, surface(x, z) - margin] with the exact surface
  *   (seabed = water level - water depth); the vertical velocity into the bound is removed.
  * - banking: a coordinated turn's bank, tan(bank) = v omega / g (omega the yaw rate), clamped to
@@ -48,6 +56,10 @@
 #include "sim/state.h"
 
 enum { WW_FISH_SWIMMING = 0, WW_FISH_FIGHTING, WW_FISH_AWAY };
+
+#define WW_FISH_FLEE_TURN 2.0   /* extra turn rate at full fear, times turn_rate (a C-start) */
+#define WW_FISH_MAX_ACCEL 15.0  /* m/s^2: the largest change of a swimming fish's velocity per
+                                 * second from steering (the depth clamp may remove more) */
 
 void ww_fish_reset(const ww_scene *sc, ww_state *st);
 void ww_fish_step(const ww_scene *sc, ww_state *st);

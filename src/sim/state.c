@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "core/hash.h"
+#include "core/numfmt.h"
 #include "sim/step.h"
 
 /* bytes of one field, rounded to 16 so every array starts aligned */
@@ -71,12 +72,15 @@ uint64_t ww_state_hash(const ww_scene *sc, const ww_state *st) {
     return ww_hash_bytes(h, (const unsigned char *)st + header_bytes(), st->bytes - header_bytes());
 }
 
-/* %.17g round-trips a double; JSON has no NaN, so non-finite values are written as null */
+/* the shortest text that reads back as the same double (core/numfmt.h); JSON has no NaN */
 static void put_num(FILE *to, double v) {
-    if (isfinite(v))
-        fprintf(to, "%.17g", v);
-    else
+    char t[WW_NUM_TEXT];
+    if (!isfinite(v)) {
         fputs("null", to);
+        return;
+    }
+    ww_num_text(t, sizeof t, v);
+    fputs(t, to);
 }
 
 static void put_array(FILE *to, const char *name, const double *v, long long n) {

@@ -210,23 +210,31 @@ ww_result ww_golden_prepare(const ww_golden_opts *o, ww_error *err) {
 
 /* ---- one frame ----------------------------------------------------------------------------- */
 
-/* the first candidate golden that exists; 0 (and the paths tried in f->golden) when none */
+/* the first candidate golden that exists; 0 (and the paths tried in f->golden) when none.
+ * Folders in order: the renderer key, the scene's fallback keys, DIR itself; in each, the
+ * frame-numbered file (frame_00012.png, what `render -o DIR` writes), then for frame 0 the
+ * scene's own name (NAME.png for scenes/.../NAME.yaml: the project's single-frame goldens,
+ * golden/features/fog.png, as `make golden` files them) */
 static int find_golden(const ww_scene *sc, const ww_golden_opts *o, const char *key,
                        const char *name, frame_check *f) {
     const ww_golden_desc *g = &sc->golden;
-    char path[PATH_SIZE];
+    char path[PATH_SIZE], single[sizeof sc->name + 8];
+    snprintf(single, sizeof single, "%s.png", sc->name);
+    int names = f->frame == 0 && sc->name[0] ? 2 : 1;
     for (int i = -1; i <= g->nfallback; i++) {
         const char *sub = i < 0 ? key : i < g->nfallback ? g->fallback[i] : NULL;
-        if (path_join(path, sizeof path, o->golden_dir, sub, name, NULL)) continue;
-        if (is_file(path)) {
-            snprintf(f->golden, sizeof f->golden, "%s", path);
-            if (i < 0) snprintf(f->source, sizeof f->source, "%s", key);
-            else if (sub) snprintf(f->source, sizeof f->source, "fallback %s", sub);
-            else snprintf(f->source, sizeof f->source, "flat");
-            return 1;
+        for (int k = 0; k < names; k++) {
+            if (path_join(path, sizeof path, o->golden_dir, sub, k ? single : name, NULL)) continue;
+            if (is_file(path)) {
+                snprintf(f->golden, sizeof f->golden, "%s", path);
+                if (i < 0) snprintf(f->source, sizeof f->source, "%s", key);
+                else if (sub) snprintf(f->source, sizeof f->source, "fallback %s", sub);
+                else snprintf(f->source, sizeof f->source, "flat");
+                return 1;
+            }
+            size_t used = strlen(f->golden);
+            snprintf(f->golden + used, sizeof f->golden - used, "%s%s", used ? ", " : "", path);
         }
-        size_t used = strlen(f->golden);
-        snprintf(f->golden + used, sizeof f->golden - used, "%s%s", used ? ", " : "", path);
     }
     return 0;
 }

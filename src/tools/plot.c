@@ -21,12 +21,15 @@
 #define LINE_HALF 1         /* a data line is 2 LINE_HALF + 1 pixels thick */
 #define MARKER_HALF 3       /* markers are 2 MARKER_HALF + 1 pixels square */
 #define TARGET_TICKS 5      /* about this many ticks on a chosen linear axis */
+#define LEGEND_PAD 4        /* pixels between the legend's edge and its contents */
+#define LEGEND_GAP 6        /* pixels kept between the legend and plotted data or the frame */
 
 /* the panel's plotting rectangle and the data -> pixel map */
 typedef struct frame {
     int px0, py0, px1, py1;   /* plot area, pixels (inclusive) */
     double u0, u1, v0, v1;    /* axis range in axis units (log10 of the value on a log axis) */
     int log_x, log_y;
+    int any;                  /* some series has a usable point */
 } frame;
 
 void ww_plot_add(ww_plot *p, const char *label, const double *x, const double *y, int n,
@@ -212,12 +215,102 @@ static void line(ww_image *im, const frame *f, int xa, int ya, int xb, int yb, w
 
 static void tick_label(double v, char *buf, size_t cap) { snprintf(buf, cap, "%g", v); }
 
+/* the legend's size: rows of a swatch and a label, the widest label */
+static int legend_size(const ww_plot *p, int s, int lh, int *w, int *h) {
+    int tw = 0, n = 0;
+    for (int k = 0; k < p->nseries; k++) {
+        if (!p->series[k].label) continue;
+        int t = ww_plot_text_width(p->series[k].label, s);
+        tw = t > tw ? t : tw;
+        n++;
+    }
+    *w = LEGEND_PAD + 34 + tw + LEGEND_PAD;
+    *h = n * lh + LEGEND_PAD;
+    return n;
+}
+
+/* plotted pixels (markers and the lines between them, LEGEND_GAP around them) inside box */
+static long covered(const ww_plot *p, const frame *f, const int box[4]) {
+    long n = 0;
+    int g = MARKER_HALF + LEGEND_GAP;
+    for (int k = 0; k < p->nseries; k++) {
+        const ww_plot_series *se = &p->series[k];
+        int have = 0, lx = 0, ly = 0;
+        for (int i = 0; i < se->n; i++) {
+            if (!usable(se->x[i], f->log_x) || !usable(se->y[i], f->log_y)) {
+                have = 0;
+                continue;
+            }
+            int x = map_x(f, to_axis(se->x[i], f->log_x));
+            int y = map_y(f, to_axis(se->y[i], f->log_y));
+            int m = have ? (abs(x - lx) > abs(y - ly) ? abs(x - lx) : abs(y - ly)) : 0;
+            for (int j = 0; j <= m; j++) {
+                double u = m ? (double)j / (double)m : 1.0;
+                int xx = lx + (int)lround(u * (x - lx)), yy = ly + (int)lround(u * (y - ly));
+                if (!have) xx = x, yy = y;
+                n += xx >= box[0] - g && xx < box[2] + g && yy >= box[1] - g && yy < box[3] + g;
+            }
+            lx = x;
+            ly = y;
+            have = 1;
+        }
+    }
+    return n;
+}
+
+/* the frame of a panel and where its legend goes: the first corner of the plot area (top left,
+ * top right, bottom right, bottom left) that covers no plotted point or line; when each would,
+ * a band above the plot area, which shrinks to make room. box: x0, y0, x1, y1 (exclusive) */
+static int layout(const ww_plot *p, int x0, int y0, int w, int h, frame *f, int box[4]) {
+    const int s = TEXT_SCALE, lh = line_height(s);
+    *f = (frame){.px0 = x0 + 11 * 6 * s / 2 + 12, .px1 = x0 + w - 16, .py0 = y0 + 2 * lh + 8,
+                 .py1 = y0 + h - 2 * lh - 12, .log_x = p->log_x, .log_y = p->log_y};
+    box[0] = box[1] = box[2] = box[3] = 0;
+    if (f->px1 - f->px0 < 20 || f->py1 - f->py0 < 20) return 0;
+    int any = f->any = data_range(p, &f->u0, &f->u1, &f->v0, &f->v1);
+    if (!any) {
+        f->u0 = 0.0;
+        f->u1 = 1.0;
+        f->v0 = 0.0;
+        f->v1 = 1.0;
+    }
+    pad_range(&f->u0, &f->u1, f->log_x);
+    pad_range(&f->v0, &f->v1, f->log_y);
+    int lw, lhgt;
+    if (legend_size(p, s, lh, &lw, &lhgt) == 0) return 1;
+    int m = LEGEND_GAP;
+    const int corner[4][2] = {{f->px0 + m, f->py0 + m},
+                              {f->px1 - m - lw, f->py0 + m},
+                              {f->px1 - m - lw, f->py1 - m - lhgt},
+                              {f->px0 + m, f->py1 - m - lhgt}};
+    for (int c = 0; c < 4; c++) {
+        int b[4] = {corner[c][0], corner[c][1], corner[c][0] + lw, corner[c][1] + lhgt};
+        if (b[0] < f->px0 || b[1] < f->py0 || covered(p, f, b)) continue;
+        for (int k = 0; k < 4; k++) box[k] = b[k];
+        return 1;
+    }
+    /* every corner would hide data: the band above the plot area, right-aligned */
+    int top = f->py0;
+    f->py0 += lhgt + m;
+    if (f->py1 - f->py0 < 20) f->py0 = f->py1 - 20;
+    box[0] = f->px1 + 1 - lw;
+    box[1] = top - lh / 2;
+    box[2] = box[0] + lw;
+    box[3] = box[1] + lhgt;
+    return 1;
+}
+
+void ww_plot_legend_box(const ww_plot *p, int x0, int y0, int w, int h, int box[4]) {
+    frame f;
+    layout(p, x0, y0, w, h, &f, box);
+}
+
 int ww_plot_draw(const ww_plot *p, ww_image *im, int x0, int y0, int w, int h) {
     WW_ASSERT_RGB8(im);
     const int s = TEXT_SCALE, lh = line_height(s);
-    frame f = {.px0 = x0 + 11 * 6 * s / 2 + 12, .px1 = x0 + w - 16, .py0 = y0 + 2 * lh + 8,
-               .py1 = y0 + h - 2 * lh - 12, .log_x = p->log_x, .log_y = p->log_y};
-    if (f.px1 - f.px0 < 20 || f.py1 - f.py0 < 20) return 0;
+    frame f;
+    int box[4];
+    if (!layout(p, x0, y0, w, h, &f, box)) return 0;
 
     /* title and the y label above the plot area */
     if (p->title)
@@ -227,16 +320,7 @@ int ww_plot_draw(const ww_plot *p, ww_image *im, int x0, int y0, int w, int h) {
     if (p->xlabel)
         ww_plot_text(im, (f.px0 + f.px1 - ww_plot_text_width(p->xlabel, s)) / 2, f.py1 + lh + 8, s,
                      p->xlabel, WW_PLOT_BLACK);
-
-    int any = data_range(p, &f.u0, &f.u1, &f.v0, &f.v1);
-    if (!any) {
-        f.u0 = 0.0;
-        f.u1 = 1.0;
-        f.v0 = 0.0;
-        f.v1 = 1.0;
-    }
-    pad_range(&f.u0, &f.u1, f.log_x);
-    pad_range(&f.v0, &f.v1, f.log_y);
+    int any = f.any;
 
     /* grid lines and tick labels */
     double tv[WW_PLOT_MAX_TICKS];
@@ -286,15 +370,15 @@ int ww_plot_draw(const ww_plot *p, ww_image *im, int x0, int y0, int w, int h) {
         }
     }
 
-    /* the legend, top left inside the plot area, on white */
-    int ly = f.py0 + 8;
-    for (int k = 0; k < p->nseries; k++) {
+    /* the legend where layout put it, on white */
+    int ly = box[1] + LEGEND_PAD;
+    for (int k = 0; k < p->nseries && !p->no_legend; k++) {
         const ww_plot_series *se = &p->series[k];
         if (!se->label) continue;
-        int tw = ww_plot_text_width(se->label, s);
-        rect(im, f.px0 + 4, ly - 3, f.px0 + 44 + tw, ly + lh - 3, WW_PLOT_WHITE);
-        rect(im, f.px0 + 8, ly + lh / 3 - 1, f.px0 + 32, ly + lh / 3 + 2, se->color);
-        ww_plot_text(im, f.px0 + 38, ly, s, se->label, WW_PLOT_BLACK);
+        if (ly == box[1] + LEGEND_PAD) rect(im, box[0], box[1], box[2], box[3], WW_PLOT_WHITE);
+        rect(im, box[0] + LEGEND_PAD, ly + lh / 3 - 1, box[0] + LEGEND_PAD + 24, ly + lh / 3 + 2,
+             se->color);
+        ww_plot_text(im, box[0] + LEGEND_PAD + 30, ly, s, se->label, WW_PLOT_BLACK);
         ly += lh;
     }
 

@@ -46,6 +46,7 @@ typedef struct ww_plot {
     int nxticks;                 /* > 0: ticks at xticks[] instead of chosen ones */
     double xticks[WW_PLOT_MAX_TICKS];
     const char *note;            /* drawn in the middle of the panel (e.g. why it is empty) */
+    int no_legend;               /* 1: place the legend but leave it undrawn (what it would cover) */
     int nseries;
     ww_plot_series series[WW_PLOT_MAX_SERIES];
 } ww_plot;
@@ -58,6 +59,10 @@ void ww_plot_fill(ww_image *im, ww_plot_rgb color);
 /* draw p into the panel [x0, x0 + w) x [y0, y0 + h) of an RGB8 image; returns the number of
  * data points drawn */
 int ww_plot_draw(const ww_plot *p, ww_image *im, int x0, int y0, int w, int h);
+/* where ww_plot_draw puts the legend of p in that panel: x0, y0, x1, y1 (exclusive), all 0 when
+ * no series has a label. It covers no plotted point or line: the first free corner of the plot
+ * area, else a band above it (the plot area shrinks to make room) */
+void ww_plot_legend_box(const ww_plot *p, int x0, int y0, int w, int h, int box[4]);
 /* text with its top-left corner at (x, y), each font pixel drawn as scale x scale pixels;
  * returns the width drawn in pixels */
 int ww_plot_text(ww_image *im, int x, int y, int scale, const char *text, ww_plot_rgb color);

@@ -7,14 +7,18 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/numfmt.h"
 #include "sim/events.h"
 
-/* %.17g round-trips a double; JSON has no NaN */
+/* the shortest text that reads back as the same double (core/numfmt.h); JSON has no NaN */
 static void put_num(FILE *to, double v) {
-    if (isfinite(v))
-        fprintf(to, "%.17g", v);
-    else
+    char t[WW_NUM_TEXT];
+    if (!isfinite(v)) {
         fputs("null", to);
+        return;
+    }
+    ww_num_text(t, sizeof t, v);
+    fputs(t, to);
 }
 
 int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to) {

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/numfmt.h"
 #include "core/readfile.h"
 #include "core/rng.h"
 #include "io/image.h"
@@ -113,15 +114,16 @@ const char *ww_sweep_axis_key(const ww_sweep *s, int a) {
     return s->ax[a].key;
 }
 
-/* the shortest %g text that reads back as the same double; whole numbers below 1e17 without an
- * exponent ("30", not "3e+01": %g switches to one when the exponent reaches the precision, and
- * then the value is whole, so %.0f is exact) */
-static void fmt_num(char *buf, size_t cap, double v) {
-    for (int p = 1; p <= 17; p++) {
-        snprintf(buf, cap, "%.*g", p, v);
-        if (strtod(buf, NULL) == v) break;
-    }
-    if (strchr(buf, 'e') && fabs(v) >= 1.0 && fabs(v) < 1e17) snprintf(buf, cap, "%.0f", v);
+/* a value as text: the shortest that reads back as the same double (core/numfmt.h) */
+static void fmt_num(char *buf, size_t cap, double v) { ww_num_text(buf, cap, v); }
+
+/* a grid point computed from the range's ends: the shortest decimal within a millionth of a
+ * millionth of the grid's scale, so 0.1:0.4:4 gives 0.2, not 0.20000000000000004 (the run gets
+ * exactly the number its label shows) */
+#define GRID_ROUNDING 1e-12
+static void fmt_grid(char *buf, size_t cap, const axis *x, double v) {
+    double scale = fmax(fabs(x->lo), fabs(x->hi));
+    ww_num_text_near(buf, cap, v, GRID_ROUNDING * scale);
 }
 
 /* index of the first `sep` at or after i that is outside [], {} and quotes; len when none */
@@ -282,9 +284,10 @@ void ww_sweep_values(const ww_sweep *s, long long i, char vals[][WW_SWEEP_VALUE_
         } else if (k == n - 1) {
             fmt_num(vals[a], WW_SWEEP_VALUE_MAX, x->hi);
         } else {
-            /* weighted, not A + k (B - A) / (N - 1): 0.1:0.5:5 gives 0.3, not 0.30000000000000004 */
+            /* weighted, not A + k (B - A) / (N - 1), then the decimal it stands for */
             double w = (double)(n - 1);
-            fmt_num(vals[a], WW_SWEEP_VALUE_MAX, (x->lo * (double)(n - 1 - k) + x->hi * (double)k) / w);
+            double v = (x->lo * (double)(n - 1 - k) + x->hi * (double)k) / w;
+            fmt_grid(vals[a], WW_SWEEP_VALUE_MAX, x, v);
         }
     }
 }
