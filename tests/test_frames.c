@@ -1,4 +1,4 @@
-/* test_frames.c - frames out (issue 6): the writers read back by other tools (oiiotool, ffprobe,
+/* test_frames.c - frames out: the writers read back by other tools (oiiotool, ffprobe,
  * ffmpeg), --alpha, streams, make-video.sh, SIGKILL then --resume, SIGINT, thread counts,
  * --stats and the progress line; and the pieces underneath (queue, Y4M header, completeness
  * checks).

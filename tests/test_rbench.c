@@ -127,7 +127,7 @@ TEST_PROC(rbench_quality_reference_identical_lower_knob_finite) {
     free(res);
 }
 
-/* the six knobs of issue 5: each knob's default (the lake's value) is one of its values; the
+/* the six quality knobs: each knob's default (the lake's value) is one of its values; the
  * reflection knob alone (each knob's machinery is the same; six would take seconds per test):
  * its reference row is the same frame, a build without the reflection pass says so, and with the
  * pass its cheapest value changes the lake's frame (the water covers half of it) */
@@ -257,7 +257,7 @@ TEST_LONG(rbench_bench_render_table) {
     ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
     ENSURE(ww_test_file_contains(out, "passes: main "));
     ENSURE(ww_test_file_contains(out, " tonemap "));
-    ENSURE(ww_test_file_contains(out, "targets (issue 5"));
+    ENSURE(ww_test_file_contains(out, "targets (render / floor"));
     ENSURE(ww_test_file_contains(out, "water and sky"));
 
     /* options that belong to another bench */

@@ -28,7 +28,7 @@ ww_result ww_cmd_plan(int argc, char **argv, ww_error *err) {
     ww_plan p;
     ww_plan_build(sc, sc->width, sc->height, &p);
     ww_plan_print(sc, &p, stdout);
-    /* audio (issue 6): scripts/make-video.sh greps this line to decide whether to mux a track */
+    /* audio: scripts/make-video.sh greps this line to decide whether to mux a track */
     if (sc->audio.on)
         printf("audio: 44100 Hz stereo 16-bit, volume %g, music %s%s\n", sc->audio.volume,
                sc->audio.music_on ? "on" : "off",

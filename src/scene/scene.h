@@ -231,7 +231,7 @@ typedef struct ww_scene {
     int ncam;
     ww_camera_key cam[WW_MAX_KEYS];
 
-    /* the scripted world (issue 4): each system exists only when its `on` is set */
+    /* the scripted world: each system exists only when its `on` is set */
     ww_cubes_desc cubes;
     ww_boat_desc boat;
     ww_stones_desc stones;
@@ -242,7 +242,7 @@ typedef struct ww_scene {
     ww_models_desc models;
     int camera_collide;        /* camera.collide: the camera stops at solid objects */
 
-    /* what comes out besides the frames (issue 6) */
+    /* what comes out besides the frames */
     ww_audio_desc audio;       /* audio: the sound track of render --audio */
     ww_golden_desc golden;     /* golden: thresholds and accepted renderers of render --golden */
 

@@ -1,4 +1,4 @@
-/* cubes.c - floating cubes (seed 000 section 3.2, issue 4): Archimedes buoyancy of a box against
+/* cubes.c - floating cubes (seed 000 section 3.2): Archimedes buoyancy of a box against
  * the exact water surface, or seed 000's spring-damper; water drag; tilt; press and release.
  *
  * Archimedes. The box (edge s, density rho_c, mass m = rho_c s^3) is cut into columns x columns

@@ -1,4 +1,4 @@
-/* cubes.h - floating cubes: buoyancy, drag, tilt, press and release (seed 000, issue 4).
+/* cubes.h - floating cubes: buoyancy, drag, tilt, press and release (seed 000).
  *
  *   ww_cubes_reset(sc, st);          // step 0: the described poses, at rest (ww_state_reset)
  *   ww_cubes_event(sc, st, ev);      // WW_EV_PRESS (step.c's dispatch)

@@ -1,4 +1,4 @@
-/* stones.c - thrown stones (seed 000 section 3.3, and issue 4): flight under gravity and optional
+/* stones.c - thrown stones (seed 000 section 3.3): flight under gravity and optional
  * quadratic drag, a swept test of each step's path against the exact surface so no crossing is
  * missed at any speed, a skip-or-sink criterion from the physics of Clanet, Hersen & Bocquet
  * (2004), and thuds against cubes and the boat. The model and its formulas are in stones.h.

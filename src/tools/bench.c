@@ -2,7 +2,7 @@
  * so its peak RSS is its own and a crashing driver cannot take the table down; the child reports
  * its timings through a pipe. Next to the frame's split (simulate / render / read back / encode)
  * it gives ms per pass (GL timer queries, renderer.c) and the render time against the backend's
- * fill floor, with issue 5's targets: the full world within 15x the floor at 1280x720, water and
+ * fill floor, with the speed targets: the full world within 15x the floor at 1280x720, water and
  * sky within 3x. `bench sim` is in bench_sim.c, `bench quality` in bench_quality.c.
  */
 #include "tools/bench.h"
@@ -19,7 +19,7 @@
 #include "scene/scene.h"
 #include "tools/job.h"
 
-/* issue 5's targets for render / fill floor at 1280x720: a scene with solid objects (the lake's
+/* the speed targets for render / fill floor at 1280x720: a scene with solid objects (the lake's
  * full world) and one of water and sky only */
 #define TARGET_FULL_WORLD_X 15.0
 #define TARGET_WATER_SKY_X 3.0
@@ -266,7 +266,7 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
                     "x: render / floor; fps: 1000 / render (render only); rss: peak resident memory of\n"
                     "the whole render process; passes: ms per pass in plan order\n");
         if (ntargets > 0)
-            fprintf(to, "\ntargets (issue 5: render / floor at %dx%d)\n", TARGET_WIDTH, TARGET_HEIGHT);
+            fprintf(to, "\ntargets (render / floor at %dx%d)\n", TARGET_WIDTH, TARGET_HEIGHT);
         for (int i = 0; i < ntargets; i++) {
             const target_row *t = &targets[i];
             fprintf(to, "  %-7s %-15s %-14s x %6.1f  target <= %4.1f  %s\n", t->backend, t->scene,

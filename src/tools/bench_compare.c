@@ -18,7 +18,7 @@
 #define DEFAULT_W 1280
 #define DEFAULT_H 720
 #define SELF "/proc/self/exe"
-#define TARGET_RATIO 5.0 /* issue 6: at least 5x faster than ImageMagick */
+#define TARGET_RATIO 5.0 /* the target: at least 5x faster than ImageMagick */
 
 extern char **environ;
 

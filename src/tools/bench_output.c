@@ -1,5 +1,5 @@
 /* bench_output.c - `waterworld bench output`: frames per second of scenes/demo.yaml at 1280x720
- * written as none, PNG, EXR and Y4M, in one run, against issue 6's target (PNG at >= 0.85x the
+ * written as none, PNG, EXR and Y4M, in one run, against the target (PNG at >= 0.85x the
  * rate of `none`: encoding hidden behind rendering), and the peak resident memory of a short and
  * a long PNG run (the frame queue is bounded, so memory stays flat however many frames).
  * Each configuration runs in its own child process (fork): its peak RSS is its own, not the
@@ -15,7 +15,7 @@
 #include "scene/scene.h"
 #include "tools/job.h"
 
-/* issue 6: PNG frames at >= 0.85x the frames per second of rendering without writing */
+/* the target: PNG frames at >= 0.85x the frames per second of rendering without writing */
 #define TARGET_PNG_OVER_NONE 0.85
 #define BENCH_W 1280
 #define BENCH_H 720

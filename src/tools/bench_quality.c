@@ -1,4 +1,4 @@
-/* bench_quality.c - `waterworld bench quality`: each render quality knob of issue 5 (reflection
+/* bench_quality.c - `waterworld bench quality`: each render quality knob (reflection
  * resolution, shadow map size, bloom passes, shaft samples, MSAA, water grid density) against the
  * ms it costs and the error it leaves: the final RGB8 frame of one scene is rendered with every
  * knob at its best (the reference), then once per value of each knob with the others kept at

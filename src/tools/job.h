@@ -37,7 +37,7 @@ typedef struct ww_job_opts {
     int quiet;                /* no summary line and no progress on stderr */
     ww_timing time_passes;    /* bench: per-pass timing (WW_TIMING_OFF: none) */
 
-    /* frames out (issue 6) */
+    /* frames out */
     int alpha;                /* png: RGBA8, alpha from the HDR target (--alpha) */
     int exr_float;            /* exr: 32-bit float channels instead of half (--exr-float) */
     ww_exr_compression exr_compression; /* --exr-compression none|zip|piz */
