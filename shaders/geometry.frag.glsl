@@ -11,6 +11,8 @@
 //        the camera is in; here the segment camera -> point is split where it crosses the water
 //        plane and each part is fogged by its own medium, far part first.
 // Modes (u_mode): 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive).
+// Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
+// the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on.
 
 #ifndef WW_CAUSTICS
@@ -33,6 +35,8 @@ uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
 uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
 uniform vec3 u_light_color[WW_NLIGHTS_MAX]; // colour x intensity x flicker of this frame
 uniform vec4 u_light_param[WW_NLIGHTS_MAX]; // (range m, cos outer, cos inner, 1 spot / 0 point)
+uniform vec4 u_glow;           // the glow column: axis x, z (camera-relative), radius m, 1/m
+uniform vec2 u_glow_y;         // its bottom and top, camera-relative y, m
 
 in vec3 v_pos;
 in vec3 v_normal;
@@ -96,11 +100,38 @@ void main() {
     float depth = u_water_y - p.y; // below the water plane, m (negative above)
 
     if (u_mode == 2) {
-        // the glow column: brightest on the axis seen face-on, fading toward its top
+        // the glow column as a glowing medium of uniform density: along the view ray, the
+        // radiance of an emitting and absorbing slab is S (1 - e^(-tau)), tau the optical depth
+        // over the ray's chord through the cylinder; bounded by S however long the chord (the
+        // camera inside the column looking along it). One wall per ray counts its chord: the
+        // near wall seen from outside (it passes the depth test in front of the chest inside
+        // the column), the far wall from inside; the column fades toward its top.
         vec3 n = normalize(v_normal);
-        float face = abs(dot(n, v));
-        float glow = face * face * (1.0 - v_uv.y) * (1.0 - v_uv.y);
-        vec3 c = v_color.rgb * v_color.a * glow;
+        vec3 dir = -v;
+        vec2 o = u_eye.xz - u_glow.xy;
+        float a = dot(dir.xz, dir.xz), b = dot(o, dir.xz);
+        float cc = dot(o, o) - u_glow.z * u_glow.z;
+        if ((cc > 0.0) != (dot(n, v) > 0.0)) discard;
+        float t0 = -1e9, t1 = 1e9;
+        if (a > 1e-8) {
+            float disc = b * b - a * cc;
+            if (disc <= 0.0) discard;
+            float q = sqrt(disc);
+            t0 = (-b - q) / a;
+            t1 = (-b + q) / a;
+        } else if (cc > 0.0) {
+            discard;
+        }
+        if (abs(dir.y) > 1e-6) {
+            float ya = (u_glow_y.x - u_eye.y) / dir.y, yb = (u_glow_y.y - u_eye.y) / dir.y;
+            t0 = max(t0, min(ya, yb));
+            t1 = min(t1, max(ya, yb));
+        }
+        t0 = max(t0, 0.0);
+        float chord = max(t1 - t0, 0.0);
+        float ym = u_eye.y + dir.y * 0.5 * (t0 + t1);
+        float up = 1.0 - clamp((ym - u_glow_y.x) / (u_glow_y.y - u_glow_y.x), 0.0, 1.0);
+        vec3 c = v_color.rgb * v_color.a * (1.0 - exp(-u_glow.w * chord)) * up * up;
         // additive: the fog only takes light away
         vec3 fogged = ww_fog_segment(c, p) - ww_fog_segment(vec3(0.0), p);
         o_color = vec4(max(fogged, vec3(0.0)), 1.0);

@@ -139,6 +139,9 @@ typedef enum ww_geom_mode {
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err);
 void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
                       mat4 view_proj, const float *clip);
+/* the chest's glow column (additive), after the sky of the same pass: mode as the pass's
+ * ww_geometry_draw, whose uniforms it reuses */
+void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
 int ww_geometry_draw_count(const ww_geometry *g);

