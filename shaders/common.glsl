@@ -7,6 +7,14 @@ uniform vec3 u_sun_dir;      // unit vector toward the sun, world
 uniform vec3 u_sun_color;    // sun radiance at the ground, linear RGB
 
 const float WW_PI = 3.14159265358979;
+
+// ---- point and spot lights (lights[]): set by geometry.c for the geometry and the water ------
+#define WW_NLIGHTS_MAX 8
+uniform int u_nlights;
+uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
+uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
+uniform vec3 u_light_color[WW_NLIGHTS_MAX]; // colour x intensity x flicker of this frame
+uniform vec4 u_light_param[WW_NLIGHTS_MAX]; // (range m, cos outer, cos inner, 1 spot / 0 point)
 const float WW_SUN_RADIUS = 0.00925; // angular radius of the drawn disc, rad (0.53 deg)
 const float WW_SUN_RADIANCE = 20.0;  // disc radiance per unit of sun colour
 
@@ -100,4 +108,41 @@ vec4 ww_sky_dome(vec3 d, vec2 drift) {
     vec3 light = u_sun_color * (0.45 + 0.35 * phase) + 0.5 * (u_sky_zenith + u_sky_horizon);
     vec3 cloud = light * (1.0 - 0.4 * smoothstep(0.62, 0.85, n));
     return vec4(mix(c, cloud, cover), cover);
+}
+
+// ---- point and spot lights on a surface --------------------------------------------------------
+// Light i's irradiance factor at p (camera-relative) and the unit vector l toward it: the smooth
+// range window of Karis, "Real Shading in Unreal Engine 4" (SIGGRAPH 2013 course),
+// (1 - (d/r)^4)^2 / (d^2 + 1), spots fading over the outer `softness` of their cone.
+float ww_light_att(int i, vec3 p, out vec3 l) {
+    vec3 d = u_light_pos[i] - p;
+    float dist = length(d);
+    l = d / max(dist, 1e-4);
+    vec4 q = u_light_param[i];
+    float x = dist / q.x, x2 = x * x;
+    float win = clamp(1.0 - x2 * x2, 0.0, 1.0);
+    float att = win * win / (dist * dist + 1.0);
+    if (q.w > 0.5) att *= smoothstep(q.y, q.z, dot(-l, u_light_dir[i]));
+    return att;
+}
+
+// the water lit by the lights, toward v (unit, toward the eye) at p with normal n: the body's
+// diffuse light (albedo: the water colour) and the surface's normalised Blinn-Phong reflection
+// (s + 8) / (8 pi) (n.h)^s, with Schlick's Fresnel of water (F0 0.02) on h.v, so a lantern over
+// the water draws its glitter path as the sun does
+vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess) {
+    vec3 c = vec3(0.0);
+    float norm = (shininess + 8.0) / (8.0 * WW_PI);
+    for (int i = 0; i < u_nlights; i++) {
+        vec3 l;
+        float att = ww_light_att(i, p, l);
+        float nl = max(dot(n, l), 0.0);
+        if (att <= 0.0 || nl <= 0.0) continue;
+        vec3 h = normalize(l + v);
+        float m = 1.0 - clamp(dot(h, v), 0.0, 1.0), m2 = m * m;
+        float fr = 0.02 + 0.98 * m2 * m2 * m;
+        float spec = norm * pow(max(dot(n, h), 0.0), shininess) * fr;
+        c += u_light_color[i] * att * nl * (albedo / WW_PI + spec);
+    }
+    return c;
 }

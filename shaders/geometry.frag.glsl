@@ -18,7 +18,6 @@
 #ifndef WW_CAUSTICS
 #define WW_CAUSTICS 0
 #endif
-#define WW_NLIGHTS_MAX 8
 
 uniform int u_mode;
 uniform vec3 u_ambient;        // sky ambient, linear RGB
@@ -30,11 +29,7 @@ uniform vec3 u_fog_below_color;
 uniform float u_fog_below_density;
 uniform vec3 u_extinction;     // sunlight lost per metre of water it crosses, 1/m per channel
 uniform float u_caustics;      // strength (0 off)
-uniform int u_nlights;
-uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
-uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
-uniform vec3 u_light_color[WW_NLIGHTS_MAX]; // colour x intensity x flicker of this frame
-uniform vec4 u_light_param[WW_NLIGHTS_MAX]; // (range m, cos outer, cos inner, 1 spot / 0 point)
+// the lights' uniforms and their range window: common.glsl (the water shares them)
 uniform vec4 u_glow;           // the glow column: axis x, z (camera-relative), radius m, 1/m
 uniform vec2 u_glow_y;         // its bottom and top, camera-relative y, m
 
@@ -165,14 +160,8 @@ void main() {
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
 
     for (int i = 0; i < u_nlights; i++) {
-        vec3 d = u_light_pos[i] - p;
-        float dist = length(d);
-        vec3 l = d / max(dist, 1e-4);
-        vec4 q = u_light_param[i];
-        float x = dist / q.x, x2 = x * x;
-        float win = clamp(1.0 - x2 * x2, 0.0, 1.0);
-        float att = win * win / (dist * dist + 1.0);
-        if (q.w > 0.5) att *= smoothstep(q.y, q.z, dot(-l, u_light_dir[i]));
+        vec3 l;
+        float att = ww_light_att(i, p, l);
         float nl = max(dot(n, l), 0.0);
         vec3 hl = normalize(l + v);
         float sl = nl > 0.0 ? pow(max(dot(n, hl), 0.0), WW_SHININESS) * v_spec : 0.0;

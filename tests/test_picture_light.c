@@ -263,3 +263,79 @@ TEST_IMAGE(light_shafts_rays_past_occluder) {
     ww_image_free(&on.im);
     ww_image_free(&off.im);
 }
+
+/* ---- lights on the water, emissive models ---- */
+
+/* write a scene into the test's folder; its path in out */
+static void write_scene(const char *name, const char *text, char *out, size_t cap) {
+    snprintf(out, cap, "%s/%s.yaml", ww_test_tmpdir(name), name);
+    ENSURE(ww_test_write_text(out, text) == 0);
+}
+
+#define WATER_LIGHT_MIN 1.0     /* mean 8-bit luma a point light 1 m over the water adds to the
+                                 * lower half of the frame (open water only) */
+#define WATER_GLINT_MIN 40.0    /* and the brightest pixel of its glitter, levels over dark */
+
+TEST_IMAGE(light_point_lights_water) {
+    REQUIRE_GL();
+    static const char text[] =
+        "time: {dt: 1/120, fps: 30, duration: 1}\n"
+        "render: {shadows: false, refraction: false, reflection: false, bloom: false,\n"
+        "         god_rays: false, fxaa: false, msaa: 0, seabed: true}\n"
+        "sky: {time_of_day: 21, day_length: 0}\n"
+        "water:\n"
+        "  waves: {model: gerstner, list: [{direction: 20, wavelength: 6, amplitude: 0.05,\n"
+        "                                   steepness: 0.4}]}\n"
+        "lights: [{type: point, position: [0, 1, -6], color: [1, 0.7, 0.4], intensity: 6,\n"
+        "          range: 10}]\n"
+        "camera: {path: [{t: 0, position: [0, 2, 4], look_at: [0, 0, -6]}]}\n";
+    char scene[1024];
+    write_scene("lamp", text, scene, sizeof scene);
+    pic on, off;
+    if (!render_frame(scene, 0, "640x360", NULL, "lamp_on", &on)) return;
+    if (!render_frame(scene, 0, "640x360", "--set lights=[]", "lamp_off", &off)) return;
+    double d = mean_luma(&on, 0.0, 0.5, 1.0, 1.0) - mean_luma(&off, 0.0, 0.5, 1.0, 1.0);
+    double peak = 0.0;
+    for (int y = on.h / 2; y < on.h; y++)
+        for (int x = 0; x < on.w; x++) {
+            double e = luma(&on, x, y) - luma(&off, x, y);
+            peak = e > peak ? e : peak;
+        }
+    fprintf(stderr, "    the light adds %.1f levels to the water on average, %.0f at most\n", d,
+            peak);
+    ENSURE_MSG(d >= WATER_LIGHT_MIN, "mean lift %.1f < %g", d, WATER_LIGHT_MIN);
+    ENSURE_MSG(peak >= WATER_GLINT_MIN, "glint %.0f < %g", peak, WATER_GLINT_MIN);
+    ww_image_free(&on.im);
+    ww_image_free(&off.im);
+}
+
+#define EMISSIVE_MIN 30.0 /* levels an emissive 2 sphere's pixels rise over its lit albedo */
+#define BLOOM_HALO_MIN 3.0 /* levels its bloom adds around it (the sky just outside it) */
+
+TEST_IMAGE(light_emissive_model) {
+    REQUIRE_GL();
+    static const char text[] =
+        "time: {dt: 1/120, fps: 30, duration: 1}\n"
+        "render: {shadows: false, refraction: false, reflection: false, bloom: true,\n"
+        "         god_rays: false, fxaa: false, msaa: 0, seabed: false}\n"
+        "sky: {time_of_day: 19.5, day_length: 0}\n"
+        "objects:\n"
+        "  models: [{name: lantern, mesh: sphere, position: [0, 3, -5], scale: 1.2,\n"
+        "            color: [0.9, 0.6, 0.3]}]\n"
+        "camera: {path: [{t: 0, position: [0, 3, 2], look_at: [0, 3, -5]}]}\n";
+    char scene[1024];
+    write_scene("lantern", text, scene, sizeof scene);
+    pic lit, glow;
+    if (!render_frame(scene, 0, "320x180", NULL, "emis_off", &lit)) return;
+    if (!render_frame(scene, 0, "320x180", "--set objects.models[0].emissive=2", "emis_on", &glow))
+        return;
+    /* the sphere covers the centre; the bloom shows in a band just outside it */
+    double in = mean_luma(&glow, 0.45, 0.42, 0.55, 0.58) - mean_luma(&lit, 0.45, 0.42, 0.55, 0.58);
+    double halo = mean_luma(&glow, 0.56, 0.45, 0.6, 0.55) - mean_luma(&lit, 0.56, 0.45, 0.6, 0.55);
+    fprintf(stderr, "    emission adds %.1f levels on the model, its bloom %.1f beside it\n", in,
+            halo);
+    ENSURE_MSG(in >= EMISSIVE_MIN, "emission adds %.1f < %g", in, EMISSIVE_MIN);
+    ENSURE_MSG(halo >= BLOOM_HALO_MIN, "bloom adds %.1f < %g", halo, BLOOM_HALO_MIN);
+    ww_image_free(&lit.im);
+    ww_image_free(&glow.im);
+}

@@ -710,6 +710,24 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
     gl->Disable(GL_CLIP_DISTANCE0);
 }
 
+/* this frame's lights into another program that includes common.glsl (the water's), which must
+ * be in use: the same camera-relative positions, directions, colours and ranges the geometry
+ * is lit by */
+void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog) {
+    if (!g) return;
+    upload_instances(g, gl, f); /* once per frame: the lights follow their parents */
+    light_locs l = {ww_gfx_uniform(gl, prog, "u_nlights"), ww_gfx_uniform(gl, prog, "u_light_pos"),
+                    ww_gfx_uniform(gl, prog, "u_light_dir"),
+                    ww_gfx_uniform(gl, prog, "u_light_color"),
+                    ww_gfx_uniform(gl, prog, "u_light_param")};
+    gl->Uniform1i(l.n, g->nlights);
+    if (g->nlights <= 0) return;
+    gl->Uniform3fv(l.pos, g->nlights, &g->light_pos[0][0]);
+    gl->Uniform3fv(l.dir, g->nlights, &g->light_dir[0][0]);
+    gl->Uniform3fv(l.color, g->nlights, &g->light_color[0][0]);
+    gl->Uniform4fv(l.param, g->nlights, &g->light_param[0][0]);
+}
+
 /* the chest's glow column: additive light drawn after the sky, never into depth. Drawn before
  * the sky, the sky pass (depth still clear there) overwrote it wherever nothing opaque lay
  * behind: everything below the horizon without a seabed, and the one-pixel row at eye level

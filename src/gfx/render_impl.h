@@ -142,6 +142,8 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
 /* the chest's glow column (additive), after the sky of the same pass: mode as the pass's
  * ww_geometry_draw, whose uniforms it reuses */
 void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode);
+/* this frame's point and spot lights into prog (in use; it includes common.glsl) */
+void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
 int ww_geometry_draw_count(const ww_geometry *g);

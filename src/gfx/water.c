@@ -521,6 +521,7 @@ void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
     }
     gl->UseProgram(w->prog);
     ww_sky_locs_set(gl, &w->sky, st);
+    ww_geometry_lights_set(r->geometry, gl, f, w->prog); /* lights[] */
     gl->UniformMatrix4fv(w->view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
     gl->Uniform3f(w->origin, (float)(centre[0] - f->cam_pos[0]),
                   (float)(sc->water_level - f->cam_pos[1]), (float)(centre[1] - f->cam_pos[2]));
