@@ -26,14 +26,26 @@ vec3 ww_sun_glow(vec3 d) {
     return u_sun_color * 0.5 * c;
 }
 
+// Preetham's sky (sky.model preetham, and under the dome), set by gfx/sky.c per frame
+uniform vec3 u_perez[5];      // Perez coefficients A..E, each for (Y, x, y)
+uniform vec3 u_perez_zenith;  // zenith (Y kcd/m^2, x, y) over F(0, theta_sun)
+uniform vec3 u_perez_sun;     // the sun the fit is evaluated for (held at least 1 deg high)
+uniform vec2 u_sky_mode;      // (1: Preetham's sky, its share against the twilight palette)
+uniform vec4 u_sky_clouds;    // (cover 0..1, 0 none; drift x, z in noise units; -)
+
+vec3 ww_sky_physical(vec3 d); // below, after the noise it draws the clouds with
+float ww_sky_cloud(vec3 d);
+
 // the sky seen along unit direction d, without the sun disc: a gradient from the horizon to the
-// zenith, the horizon colour slightly darkened below the horizon, and the glow
+// zenith, the horizon colour slightly darkened below the horizon, and the glow; by day (the
+// preetham and dome models) Preetham's sky instead of the gradient
 vec3 ww_sky(vec3 d) {
     vec3 c;
     if (d.y >= 0.0)
         c = mix(u_sky_horizon, u_sky_zenith, sqrt(d.y));
     else
         c = u_sky_horizon * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
+    if (u_sky_mode.x > 0.5 && u_sky_mode.y > 0.0) c = mix(c, ww_sky_physical(d), u_sky_mode.y);
     return c + ww_sun_glow(d);
 }
 
@@ -143,6 +155,52 @@ vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess) {
         float fr = 0.02 + 0.98 * m2 * m2 * m;
         float spec = norm * pow(max(dot(n, h), 0.0), shininess) * fr;
         c += u_light_color[i] * att * nl * (albedo / WW_PI + spec);
+    }
+    return c;
+}
+
+// ---- Preetham's daylight sky and drifting clouds ---------------------------------------------
+// Preetham, Shirley and Smits, "A Practical Analytic Model for Daylight" (SIGGRAPH 1999): the
+// luminance Y and chromaticity x, y of the sky along d follow the Perez distribution
+// F(theta, gamma) = (1 + A e^(B / cos theta))(1 + C e^(D gamma) + E cos^2 gamma), theta the view's
+// zenith angle, gamma its angle to the sun, scaled to the zenith values (coefficients from the
+// turbidity on the CPU); then xyY -> XYZ -> linear sRGB (D65).
+
+const float WW_PREETHAM_SCALE = 0.022; // HDR radiance per kcd/m^2 of sky luminance
+const float WW_HAZE_BAND = 40.0;       // the last ~1.5 deg above the horizon fade into the haze
+                                       // colour the fog takes, so far water meets the sky
+
+vec3 ww_perez(float ct, float g, float cg) {
+    return (1.0 + u_perez[0] * exp(u_perez[1] / ct)) *
+           (1.0 + u_perez[2] * exp(u_perez[3] * g) + u_perez[4] * cg * cg);
+}
+
+// cloud cover along d in [0, 1]: fbm on a plane above the camera drifting with the simulated
+// time (the dome's clouds), thresholded by sky.clouds.cover
+float ww_sky_cloud(vec3 d) {
+    if (u_sky_clouds.x <= 0.0 || d.y <= 0.0) return 0.0;
+    vec2 p = d.xz / (d.y + WW_DOME_CLOUD_HEIGHT) * WW_DOME_CLOUD_SCALE + u_sky_clouds.yz;
+    float lo = 0.72 - 0.34 * u_sky_clouds.x;
+    return smoothstep(lo, lo + 0.16, ww_fbm(p)) * smoothstep(0.0, 0.12, d.y);
+}
+
+vec3 ww_sky_physical(vec3 d) {
+    vec3 e = normalize(vec3(d.x, max(d.y, 0.0), d.z)); // below the horizon: the horizon's
+    float cg = clamp(dot(e, u_perez_sun), -1.0, 1.0);
+    vec3 yxy = u_perez_zenith * ww_perez(max(e.y, 0.02), acos(cg), cg);
+    float Y = yxy.x * WW_PREETHAM_SCALE;
+    vec3 xyz = vec3(yxy.y / yxy.z * Y, Y, (1.0 - yxy.y - yxy.z) / yxy.z * Y);
+    vec3 c = max(mat3(3.2406, -0.9689, 0.0557, -1.5372, 1.8758, -0.2040, -0.4986, 0.0415, 1.0570) *
+                     xyz, vec3(0.0));
+    c = mix(c, u_sky_horizon, exp(-WW_HAZE_BAND * max(d.y, 0.0)));
+    if (d.y < 0.0) return c * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
+    float a = ww_sky_cloud(d);
+    if (a > 0.0) {
+        // lit by the sun (brighter toward it, the forward lobe) and by the sky; thick cores
+        // darker
+        float mu = dot(d, u_sun_dir);
+        vec3 light = u_sun_color * (0.35 + 0.25 * (1.0 + mu)) + 0.6 * (u_sky_zenith + u_sky_horizon);
+        c = mix(c, light * (1.0 - 0.3 * a * a), a);
     }
     return c;
 }

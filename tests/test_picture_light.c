@@ -189,6 +189,9 @@ TEST(light_keys_validated) {
     bad_key("objects:\n  chest: {glow: -1}\n", 2, 17);
     bad_key("objects:\n  chest: {glow: [1]}\n", 2, 17);
     bad_key("objects:\n  models:\n    - {mesh: sphere, emissive: -2}\n", 3, 32);
+    bad_key("sky: {turbidity: 0.5}\n", 1, 18);
+    bad_key("sky: {clouds: {cover: 2}}\n", 1, 23);
+    bad_key("sky: {clouds: {seed: 1.5}}\n", 1, 22);
 }
 
 /* ---- light shafts ---- */
@@ -338,4 +341,120 @@ TEST_IMAGE(light_emissive_model) {
     ENSURE_MSG(halo >= BLOOM_HALO_MIN, "bloom adds %.1f < %g", halo, BLOOM_HALO_MIN);
     ww_image_free(&lit.im);
     ww_image_free(&glow.im);
+}
+
+/* ---- the sky ---- */
+
+/* noon, looking away from the sun (north, +z... the sun culminates toward -z) with the camera
+ * pitched up 45 deg and a 90 deg fov: the frame's rows span the elevations 0..90 deg. No clouds,
+ * no post-processing but the tone curve. */
+static const char NOON_SKY[] =
+    "time: {dt: 1/120, fps: 30, duration: 1}\n"
+    "render: {shadows: false, refraction: false, reflection: false, bloom: false,\n"
+    "         god_rays: false, fxaa: false, msaa: 0, seabed: false}\n"
+    "sky: {model: preetham, time_of_day: 12, day_length: 0}\n"
+    "camera: {fov: 90, path: [{t: 0, position: [0, 2, 0], look_at: [0, 102, 100]}]}\n";
+#define SKY_LOW_ROW 0.8   /* image rows (from the top) at about 9 deg of elevation ... */
+#define SKY_HIGH_ROW 0.05 /* ... and at about 85 deg */
+#define SKY_BR_RISE 1.08  /* blue/red toward the zenith at least this times the low sky's */
+#define SKY_HORIZON_GAIN 1.03 /* the low sky at least this times as bright as the zenith */
+#define SKY_TURBID_DROP 0.9   /* turbidity 8 whitens the zenith: blue/red below this share */
+
+static void row_colour(const pic *p, double row, double out[3]) {
+    int y = (int)(row * p->h);
+    out[0] = out[1] = out[2] = 0.0;
+    for (int x = p->w / 4; x < 3 * p->w / 4; x++)
+        for (int c = 0; c < 3; c++) out[c] += px(p, x, y)[c];
+    for (int c = 0; c < 3; c++) out[c] /= (double)(p->w / 2);
+}
+
+TEST_IMAGE(light_sky_preetham_gradients) {
+    REQUIRE_GL();
+    char scene[1024];
+    write_scene("noon", NOON_SKY, scene, sizeof scene);
+    pic a, hazy;
+    if (!render_frame(scene, 0, "320x180", NULL, "noon_sky", &a)) return;
+    if (!render_frame(scene, 0, "320x180", "--set sky.turbidity=8", "noon_hazy", &hazy)) return;
+    double lo[3], hi[3], hz[3];
+    row_colour(&a, SKY_LOW_ROW, lo);
+    row_colour(&a, SKY_HIGH_ROW, hi);
+    row_colour(&hazy, SKY_HIGH_ROW, hz);
+    double br_lo = lo[2] / fmax(lo[0], 1.0), br_hi = hi[2] / fmax(hi[0], 1.0);
+    double br_hz = hz[2] / fmax(hz[0], 1.0);
+    double l_lo = 0.299 * lo[0] + 0.587 * lo[1] + 0.114 * lo[2];
+    double l_hi = 0.299 * hi[0] + 0.587 * hi[1] + 0.114 * hi[2];
+    fprintf(stderr, "    blue/red %.2f low, %.2f high (%.2f at turbidity 8); luma %.1f low, %.1f high\n",
+            br_lo, br_hi, br_hz, l_lo, l_hi);
+    ENSURE_MSG(br_hi >= SKY_BR_RISE * br_lo, "blue/red %.2f at the zenith, %.2f low", br_hi, br_lo);
+    ENSURE_MSG(l_lo >= SKY_HORIZON_GAIN * l_hi, "luma %.1f low, %.1f at the zenith", l_lo, l_hi);
+    ENSURE_MSG(br_hz <= SKY_TURBID_DROP * br_hi, "turbidity 8: blue/red %.2f, 2.5: %.2f", br_hz,
+               br_hi);
+    ww_image_free(&a.im);
+    ww_image_free(&hazy.im);
+}
+
+/* scenes/demo.yaml frame 0: a postcard, not a fog bank */
+#define DEMO_CONTRAST_MIN 45.0   /* standard deviation of 8-bit luma over the frame (the
+                                  * gradient sky through the exp curve gave 39.7, now 48.5) */
+#define DEMO_SATURATION_MIN 0.21 /* mean HSV saturation (max - min) / max (0.204 -> 0.222; the
+                                  * grey water is half the frame) */
+
+TEST_IMAGE(light_demo_contrast_saturation) {
+    REQUIRE_GL();
+    pic a;
+    if (!render_frame("scenes/demo.yaml", 0, "640x360", NULL, "demo0", &a)) return;
+    double s = 0.0, s2 = 0.0, sat = 0.0, n = (double)a.w * a.h;
+    for (int y = 0; y < a.h; y++)
+        for (int x = 0; x < a.w; x++) {
+            const uint8_t *c = px(&a, x, y);
+            double l = luma(&a, x, y);
+            int mx = c[0] > c[1] ? c[0] : c[1], mn = c[0] < c[1] ? c[0] : c[1];
+            mx = c[2] > mx ? c[2] : mx;
+            mn = c[2] < mn ? c[2] : mn;
+            s += l;
+            s2 += l * l;
+            sat += mx > 0 ? (double)(mx - mn) / mx : 0.0;
+        }
+    double sd = sqrt(fmax(s2 / n - (s / n) * (s / n), 0.0));
+    sat /= n;
+    fprintf(stderr, "    luma sd %.1f, mean saturation %.3f\n", sd, sat);
+    ENSURE_MSG(sd >= DEMO_CONTRAST_MIN, "contrast %.1f < %g", sd, DEMO_CONTRAST_MIN);
+    ENSURE_MSG(sat >= DEMO_SATURATION_MIN, "saturation %.3f < %g", sat, DEMO_SATURATION_MIN);
+    ww_image_free(&a.im);
+}
+
+/* clouds drift with the simulated time, the same way every run, from where the seed puts them */
+#define CLOUD_DRIFT_MIN 0.02 /* share of the sky's pixels that change over 2 s of drift */
+TEST_IMAGE(light_clouds_drift) {
+    REQUIRE_GL();
+    static const char text[] =
+        "time: {dt: 1/120, fps: 30, duration: 3}\n"
+        "render: {shadows: false, refraction: false, reflection: false, bloom: false,\n"
+        "         god_rays: false, fxaa: false, msaa: 0, seabed: false}\n"
+        "sky: {model: preetham, time_of_day: 11, day_length: 0,\n"
+        "      clouds: {cover: 0.5, speed: 4, seed: 3}}\n"
+        "camera: {fov: 70, path: [{t: 0, position: [0, 2, 0], yaw: 90, pitch: 20}]}\n";
+    char scene[1024];
+    write_scene("clouds", text, scene, sizeof scene);
+    pic f0, f60, again, seeded;
+    if (!render_frame(scene, 0, "320x180", NULL, "cl0", &f0)) return;
+    if (!render_frame(scene, 60, "320x180", NULL, "cl60", &f60)) return;
+    if (!render_frame(scene, 60, "320x180", NULL, "cl60b", &again)) return;
+    if (!render_frame(scene, 60, "320x180", "--set sky.clouds.seed=4", "cl60s", &seeded)) return;
+    long moved = 0, same = 0, reseeded = 0, n = 0;
+    for (int y = 0; y < f0.h / 2; y++)
+        for (int x = 0; x < f0.w; x++, n++) {
+            moved += fabs(luma(&f0, x, y) - luma(&f60, x, y)) > 2.0;
+            same += memcmp(px(&f60, x, y), px(&again, x, y), 3) != 0;
+            reseeded += fabs(luma(&seeded, x, y) - luma(&f60, x, y)) > 2.0;
+        }
+    fprintf(stderr, "    over 2 s %.3f of the sky moved; rerun differs in %ld px; seed 4 %.3f\n",
+            (double)moved / n, same, (double)reseeded / n);
+    ENSURE_MSG((double)moved / n >= CLOUD_DRIFT_MIN, "only %.4f of the sky moved", (double)moved / n);
+    ENSURE_EQ_INT(same, 0);
+    ENSURE_MSG((double)reseeded / n >= CLOUD_DRIFT_MIN, "the seed moved %.4f", (double)reseeded / n);
+    ww_image_free(&f0.im);
+    ww_image_free(&f60.im);
+    ww_image_free(&again.im);
+    ww_image_free(&seeded.im);
 }

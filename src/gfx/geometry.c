@@ -363,7 +363,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         return rc;
     }
     GLuint p = g->prog;
-    ww_sky_locs_init(gl, p, &g->sky);
+    ww_sky_locs_init(gl, p, sc, &g->sky);
     g->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
     g->clip = ww_gfx_uniform(gl, p, "u_clip");
     g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
@@ -657,7 +657,9 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
     /* reflections see the world from the camera mirrored about the water plane */
     gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
     gl->Uniform1f(g->water_y, water_y);
-    const double *fog = sc->fog_color[0] < 0.0 ? st->sky_horizon : sc->fog_color;
+    double hz[3];
+    ww_sky_horizon(sc, st, hz);
+    const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
     gl->Uniform3f(g->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
     gl->Uniform1f(g->fog_density, (float)sc->fog_density);
     const double *fb = sc->render.fog_below_color;

@@ -53,7 +53,7 @@ static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_
         reflection_destroy(p, gl);
         return rc;
     }
-    ww_sky_locs_init(gl, p->prog, &p->sky);
+    ww_sky_locs_init(gl, p->prog, sc, &p->sky);
     p->inv_view_proj = ww_gfx_uniform(gl, p->prog, "u_inv_view_proj");
     p->cube = ww_gfx_uniform(gl, p->prog, "u_cube");
     p->cube_tex = ww_gfx_uniform(gl, p->prog, "u_sky_cube");

@@ -177,9 +177,17 @@ GLint ww_gfx_uniform(const ww_gl *gl, GLuint prog, const char *name);
 /* sky.c: the uniforms of common.glsl (sky gradient and sun), for any program that includes it */
 typedef struct ww_sky_locs {
     GLint zenith, horizon, sun_dir, sun_color;
+    GLint perez, zen, psun, mode, clouds; /* Preetham's sky and the clouds (common.glsl) */
+    int physical;                         /* the sky is Preetham's (preetham, dome) */
+    double turbidity, cover, speed;       /* the scene's sky.turbidity, sky.clouds */
+    double origin[2];                     /* the clouds' start in the noise (sky.clouds.seed) */
 } ww_sky_locs;
-void ww_sky_locs_init(const ww_gl *gl, GLuint prog, ww_sky_locs *l);
+/* sc: the scene whose sky (model, turbidity, clouds) the program draws */
+void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l);
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);
+/* the sky's colour along the horizon this frame (the fog's colour when the scene gives none):
+ * the clock's palette, or by day Preetham's horizon averaged over the azimuths */
+void ww_sky_horizon(const ww_scene *sc, const ww_state *st, double out[3]);
 
 /* sky.c: the scene's sky (gradient, cubemap or dome) and the sun disc as a full-screen triangle
  * on the far plane. A cubemap sky uploads the scene's six faces once per renderer and sets
