@@ -40,6 +40,7 @@ float ww_sky_cloud(vec3 d);
 // zenith, the horizon colour slightly darkened below the horizon, and the glow; by day (the
 // preetham and dome models) Preetham's sky instead of the gradient
 vec3 ww_sky(vec3 d) {
+    if (u_sky_mode.x > 0.5 && u_sky_mode.y >= 1.0) return ww_sky_physical(d) + ww_sun_glow(d);
     vec3 c;
     if (d.y >= 0.0)
         c = mix(u_sky_horizon, u_sky_zenith, sqrt(d.y));
@@ -184,10 +185,18 @@ float ww_sky_cloud(vec3 d) {
     return smoothstep(lo, lo + 0.16, ww_fbm(p)) * smoothstep(0.0, 0.12, d.y);
 }
 
+// acos to 7e-5 rad (Abramowitz and Stegun 4.4.45): a square root and a cubic instead of the
+// library call, which costs several times as much in software rasterisers
+float ww_acos(float x) {
+    float a = abs(x);
+    float r = sqrt(1.0 - a) * (1.5707288 + a * (-0.2121144 + a * (0.0742610 - 0.0187293 * a)));
+    return x < 0.0 ? WW_PI - r : r;
+}
+
 vec3 ww_sky_physical(vec3 d) {
     vec3 e = normalize(vec3(d.x, max(d.y, 0.0), d.z)); // below the horizon: the horizon's
     float cg = clamp(dot(e, u_perez_sun), -1.0, 1.0);
-    vec3 yxy = u_perez_zenith * ww_perez(max(e.y, 0.02), acos(cg), cg);
+    vec3 yxy = u_perez_zenith * ww_perez(max(e.y, 0.02), ww_acos(cg), cg);
     float Y = yxy.x * WW_PREETHAM_SCALE;
     vec3 xyz = vec3(yxy.y / yxy.z * Y, Y, (1.0 - yxy.y - yxy.z) / yxy.z * Y);
     vec3 c = max(mat3(3.2406, -0.9689, 0.0557, -1.5372, 1.8758, -0.2040, -0.4986, 0.0415, 1.0570) *
