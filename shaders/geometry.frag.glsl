@@ -95,7 +95,7 @@ void main() {
     float depth = u_water_y - p.y; // below the water plane, m (negative above)
 
     if (u_mode == 2) {
-        // the glow column as a glowing medium of uniform density: along the view ray, the
+        // the glow column as a glowing medium: along the view ray, the
         // radiance of an emitting and absorbing slab is S (1 - e^(-tau)), tau the optical depth
         // over the ray's chord through the cylinder; bounded by S however long the chord (the
         // camera inside the column looking along it). One wall per ray counts its chord: the
@@ -123,7 +123,17 @@ void main() {
             t1 = min(t1, max(ya, yb));
         }
         t0 = max(t0, 0.0);
-        float chord = max(t1 - t0, 0.0);
+        // the density falls from the axis as 1 - r^2 / R^2, so the column thins out to its
+        // edge instead of ending in a hard wall: the optical depth is that profile integrated
+        // along the chord, r^2(t) = a t^2 + 2 b t + |o|^2 (exact; 1.5x so a diameter through
+        // the axis keeps the uniform column's 2R)
+        float chord = 0.0;
+        if (t1 > t0) {
+            float R2 = u_glow.z * u_glow.z, o2 = dot(o, o);
+            float i1 = t1 - (a * t1 * t1 * t1 / 3.0 + b * t1 * t1 + o2 * t1) / R2;
+            float i0 = t0 - (a * t0 * t0 * t0 / 3.0 + b * t0 * t0 + o2 * t0) / R2;
+            chord = max(1.5 * (i1 - i0), 0.0);
+        }
         float ym = u_eye.y + dir.y * 0.5 * (t0 + t1);
         float up = 1.0 - clamp((ym - u_glow_y.x) / (u_glow_y.y - u_glow_y.x), 0.0, 1.0);
         vec3 c = v_color.rgb * v_color.a * (1.0 - exp(-u_glow.w * chord)) * up * up;
