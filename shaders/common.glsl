@@ -7,6 +7,14 @@ uniform vec3 u_sun_dir;      // unit vector toward the sun, world
 uniform vec3 u_sun_color;    // sun radiance at the ground, linear RGB
 
 const float WW_PI = 3.14159265358979;
+
+// ---- point and spot lights (lights[]): set by geometry.c for the geometry and the water ------
+#define WW_NLIGHTS_MAX 8
+uniform int u_nlights;
+uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
+uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
+uniform vec3 u_light_color[WW_NLIGHTS_MAX]; // colour x intensity x flicker of this frame
+uniform vec4 u_light_param[WW_NLIGHTS_MAX]; // (range m, cos outer, cos inner, 1 spot / 0 point)
 const float WW_SUN_RADIUS = 0.00925; // angular radius of the drawn disc, rad (0.53 deg)
 const float WW_SUN_RADIANCE = 20.0;  // disc radiance per unit of sun colour
 
@@ -18,14 +26,27 @@ vec3 ww_sun_glow(vec3 d) {
     return u_sun_color * 0.5 * c;
 }
 
+// Preetham's sky (sky.model preetham, and under the dome), set by gfx/sky.c per frame
+uniform vec3 u_perez[5];      // Perez coefficients A..E, each for (Y, x, y)
+uniform vec3 u_perez_zenith;  // zenith (Y kcd/m^2, x, y) over F(0, theta_sun)
+uniform vec3 u_perez_sun;     // the sun the fit is evaluated for (held at least 1 deg high)
+uniform vec2 u_sky_mode;      // (1: Preetham's sky, its share against the twilight palette)
+uniform vec4 u_sky_clouds;    // (cover 0..1, 0 none; drift x, z in noise units; -)
+
+vec3 ww_sky_physical(vec3 d); // below, after the noise it draws the clouds with
+float ww_sky_cloud(vec3 d);
+
 // the sky seen along unit direction d, without the sun disc: a gradient from the horizon to the
-// zenith, the horizon colour slightly darkened below the horizon, and the glow
+// zenith, the horizon colour slightly darkened below the horizon, and the glow; by day (the
+// preetham and dome models) Preetham's sky instead of the gradient
 vec3 ww_sky(vec3 d) {
+    if (u_sky_mode.x > 0.5 && u_sky_mode.y >= 1.0) return ww_sky_physical(d) + ww_sun_glow(d);
     vec3 c;
     if (d.y >= 0.0)
         c = mix(u_sky_horizon, u_sky_zenith, sqrt(d.y));
     else
         c = u_sky_horizon * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
+    if (u_sky_mode.x > 0.5 && u_sky_mode.y > 0.0) c = mix(c, ww_sky_physical(d), u_sky_mode.y);
     return c + ww_sun_glow(d);
 }
 
@@ -100,4 +121,95 @@ vec4 ww_sky_dome(vec3 d, vec2 drift) {
     vec3 light = u_sun_color * (0.45 + 0.35 * phase) + 0.5 * (u_sky_zenith + u_sky_horizon);
     vec3 cloud = light * (1.0 - 0.4 * smoothstep(0.62, 0.85, n));
     return vec4(mix(c, cloud, cover), cover);
+}
+
+// ---- point and spot lights on a surface --------------------------------------------------------
+// Light i's irradiance factor at p (camera-relative) and the unit vector l toward it: the smooth
+// range window of Karis, "Real Shading in Unreal Engine 4" (SIGGRAPH 2013 course),
+// (1 - (d/r)^4)^2 / (d^2 + 1), spots fading over the outer `softness` of their cone.
+float ww_light_att(int i, vec3 p, out vec3 l) {
+    vec3 d = u_light_pos[i] - p;
+    float dist = length(d);
+    l = d / max(dist, 1e-4);
+    vec4 q = u_light_param[i];
+    float x = dist / q.x, x2 = x * x;
+    float win = clamp(1.0 - x2 * x2, 0.0, 1.0);
+    float att = win * win / (dist * dist + 1.0);
+    if (q.w > 0.5) att *= smoothstep(q.y, q.z, dot(-l, u_light_dir[i]));
+    return att;
+}
+
+// the water lit by the lights, toward v (unit, toward the eye) at p with normal n: the body's
+// diffuse light (albedo: the water colour) and the surface's normalised Blinn-Phong reflection
+// (s + 8) / (8 pi) (n.h)^s, with Schlick's Fresnel of water (F0 0.02) on h.v, so a lantern over
+// the water draws its glitter path as the sun does
+vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess) {
+    vec3 c = vec3(0.0);
+    float norm = (shininess + 8.0) / (8.0 * WW_PI);
+    for (int i = 0; i < u_nlights; i++) {
+        vec3 l;
+        float att = ww_light_att(i, p, l);
+        float nl = max(dot(n, l), 0.0);
+        if (att <= 0.0 || nl <= 0.0) continue;
+        vec3 h = normalize(l + v);
+        float m = 1.0 - clamp(dot(h, v), 0.0, 1.0), m2 = m * m;
+        float fr = 0.02 + 0.98 * m2 * m2 * m;
+        float spec = norm * pow(max(dot(n, h), 0.0), shininess) * fr;
+        c += u_light_color[i] * att * nl * (albedo / WW_PI + spec);
+    }
+    return c;
+}
+
+// ---- Preetham's daylight sky and drifting clouds ---------------------------------------------
+// Preetham, Shirley and Smits, "A Practical Analytic Model for Daylight" (SIGGRAPH 1999): the
+// luminance Y and chromaticity x, y of the sky along d follow the Perez distribution
+// F(theta, gamma) = (1 + A e^(B / cos theta))(1 + C e^(D gamma) + E cos^2 gamma), theta the view's
+// zenith angle, gamma its angle to the sun, scaled to the zenith values (coefficients from the
+// turbidity on the CPU); then xyY -> XYZ -> linear sRGB (D65).
+
+const float WW_PREETHAM_SCALE = 0.022; // HDR radiance per kcd/m^2 of sky luminance
+const float WW_HAZE_BAND = 40.0;       // the last ~1.5 deg above the horizon fade into the haze
+                                       // colour the fog takes, so far water meets the sky
+
+vec3 ww_perez(float ct, float g, float cg) {
+    return (1.0 + u_perez[0] * exp(u_perez[1] / ct)) *
+           (1.0 + u_perez[2] * exp(u_perez[3] * g) + u_perez[4] * cg * cg);
+}
+
+// cloud cover along d in [0, 1]: fbm on a plane above the camera drifting with the simulated
+// time (the dome's clouds), thresholded by sky.clouds.cover
+float ww_sky_cloud(vec3 d) {
+    if (u_sky_clouds.x <= 0.0 || d.y <= 0.0) return 0.0;
+    vec2 p = d.xz / (d.y + WW_DOME_CLOUD_HEIGHT) * WW_DOME_CLOUD_SCALE + u_sky_clouds.yz;
+    float lo = 0.72 - 0.34 * u_sky_clouds.x;
+    return smoothstep(lo, lo + 0.16, ww_fbm(p)) * smoothstep(0.0, 0.12, d.y);
+}
+
+// acos to 7e-5 rad (Abramowitz and Stegun 4.4.45): a square root and a cubic instead of the
+// library call, which costs several times as much in software rasterisers
+float ww_acos(float x) {
+    float a = abs(x);
+    float r = sqrt(1.0 - a) * (1.5707288 + a * (-0.2121144 + a * (0.0742610 - 0.0187293 * a)));
+    return x < 0.0 ? WW_PI - r : r;
+}
+
+vec3 ww_sky_physical(vec3 d) {
+    vec3 e = normalize(vec3(d.x, max(d.y, 0.0), d.z)); // below the horizon: the horizon's
+    float cg = clamp(dot(e, u_perez_sun), -1.0, 1.0);
+    vec3 yxy = u_perez_zenith * ww_perez(max(e.y, 0.02), ww_acos(cg), cg);
+    float Y = yxy.x * WW_PREETHAM_SCALE;
+    vec3 xyz = vec3(yxy.y / yxy.z * Y, Y, (1.0 - yxy.y - yxy.z) / yxy.z * Y);
+    vec3 c = max(mat3(3.2406, -0.9689, 0.0557, -1.5372, 1.8758, -0.2040, -0.4986, 0.0415, 1.0570) *
+                     xyz, vec3(0.0));
+    c = mix(c, u_sky_horizon, exp(-WW_HAZE_BAND * max(d.y, 0.0)));
+    if (d.y < 0.0) return c * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
+    float a = ww_sky_cloud(d);
+    if (a > 0.0) {
+        // lit by the sun (brighter toward it, the forward lobe) and by the sky; thick cores
+        // darker
+        float mu = dot(d, u_sun_dir);
+        vec3 light = u_sun_color * (0.35 + 0.25 * (1.0 + mu)) + 0.6 * (u_sky_zenith + u_sky_horizon);
+        c = mix(c, light * (1.0 - 0.3 * a * a), a);
+    }
+    return c;
 }

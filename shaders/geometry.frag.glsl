@@ -11,12 +11,13 @@
 //        the camera is in; here the segment camera -> point is split where it crosses the water
 //        plane and each part is fogged by its own medium, far part first.
 // Modes (u_mode): 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive).
+// Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
+// the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on.
 
 #ifndef WW_CAUSTICS
 #define WW_CAUSTICS 0
 #endif
-#define WW_NLIGHTS_MAX 8
 
 uniform int u_mode;
 uniform vec3 u_ambient;        // sky ambient, linear RGB
@@ -28,11 +29,9 @@ uniform vec3 u_fog_below_color;
 uniform float u_fog_below_density;
 uniform vec3 u_extinction;     // sunlight lost per metre of water it crosses, 1/m per channel
 uniform float u_caustics;      // strength (0 off)
-uniform int u_nlights;
-uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
-uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
-uniform vec3 u_light_color[WW_NLIGHTS_MAX]; // colour x intensity x flicker of this frame
-uniform vec4 u_light_param[WW_NLIGHTS_MAX]; // (range m, cos outer, cos inner, 1 spot / 0 point)
+// the lights' uniforms and their range window: common.glsl (the water shares them)
+uniform vec4 u_glow;           // the glow column: axis x, z (camera-relative), radius m, 1/m
+uniform vec2 u_glow_y;         // its bottom and top, camera-relative y, m
 
 in vec3 v_pos;
 in vec3 v_normal;
@@ -96,11 +95,48 @@ void main() {
     float depth = u_water_y - p.y; // below the water plane, m (negative above)
 
     if (u_mode == 2) {
-        // the glow column: brightest on the axis seen face-on, fading toward its top
+        // the glow column as a glowing medium: along the view ray, the
+        // radiance of an emitting and absorbing slab is S (1 - e^(-tau)), tau the optical depth
+        // over the ray's chord through the cylinder; bounded by S however long the chord (the
+        // camera inside the column looking along it). One wall per ray counts its chord: the
+        // near wall seen from outside (it passes the depth test in front of the chest inside
+        // the column), the far wall from inside; the column fades toward its top.
         vec3 n = normalize(v_normal);
-        float face = abs(dot(n, v));
-        float glow = face * face * (1.0 - v_uv.y) * (1.0 - v_uv.y);
-        vec3 c = v_color.rgb * v_color.a * glow;
+        vec3 dir = -v;
+        vec2 o = u_eye.xz - u_glow.xy;
+        float a = dot(dir.xz, dir.xz), b = dot(o, dir.xz);
+        float cc = dot(o, o) - u_glow.z * u_glow.z;
+        if ((cc > 0.0) != (dot(n, v) > 0.0)) discard;
+        float t0 = -1e9, t1 = 1e9;
+        if (a > 1e-8) {
+            float disc = b * b - a * cc;
+            if (disc <= 0.0) discard;
+            float q = sqrt(disc);
+            t0 = (-b - q) / a;
+            t1 = (-b + q) / a;
+        } else if (cc > 0.0) {
+            discard;
+        }
+        if (abs(dir.y) > 1e-6) {
+            float ya = (u_glow_y.x - u_eye.y) / dir.y, yb = (u_glow_y.y - u_eye.y) / dir.y;
+            t0 = max(t0, min(ya, yb));
+            t1 = min(t1, max(ya, yb));
+        }
+        t0 = max(t0, 0.0);
+        // the density falls from the axis as 1 - r^2 / R^2, so the column thins out to its
+        // edge instead of ending in a hard wall: the optical depth is that profile integrated
+        // along the chord, r^2(t) = a t^2 + 2 b t + |o|^2 (exact; 1.5x so a diameter through
+        // the axis keeps the uniform column's 2R)
+        float chord = 0.0;
+        if (t1 > t0) {
+            float R2 = u_glow.z * u_glow.z, o2 = dot(o, o);
+            float i1 = t1 - (a * t1 * t1 * t1 / 3.0 + b * t1 * t1 + o2 * t1) / R2;
+            float i0 = t0 - (a * t0 * t0 * t0 / 3.0 + b * t0 * t0 + o2 * t0) / R2;
+            chord = max(1.5 * (i1 - i0), 0.0);
+        }
+        float ym = u_eye.y + dir.y * 0.5 * (t0 + t1);
+        float up = 1.0 - clamp((ym - u_glow_y.x) / (u_glow_y.y - u_glow_y.x), 0.0, 1.0);
+        vec3 c = v_color.rgb * v_color.a * (1.0 - exp(-u_glow.w * chord)) * up * up;
         // additive: the fog only takes light away
         vec3 fogged = ww_fog_segment(c, p) - ww_fog_segment(vec3(0.0), p);
         o_color = vec4(max(fogged, vec3(0.0)), 1.0);
@@ -134,14 +170,8 @@ void main() {
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
 
     for (int i = 0; i < u_nlights; i++) {
-        vec3 d = u_light_pos[i] - p;
-        float dist = length(d);
-        vec3 l = d / max(dist, 1e-4);
-        vec4 q = u_light_param[i];
-        float x = dist / q.x, x2 = x * x;
-        float win = clamp(1.0 - x2 * x2, 0.0, 1.0);
-        float att = win * win / (dist * dist + 1.0);
-        if (q.w > 0.5) att *= smoothstep(q.y, q.z, dot(-l, u_light_dir[i]));
+        vec3 l;
+        float att = ww_light_att(i, p, l);
         float nl = max(dot(n, l), 0.0);
         vec3 hl = normalize(l + v);
         float sl = nl > 0.0 ? pow(max(dot(n, hl), 0.0), WW_SHININESS) * v_spec : 0.0;

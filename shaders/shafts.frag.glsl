@@ -79,16 +79,29 @@ vec3 masked(vec2 uv) {
     return texture(u_mask, uv).rgb;
 }
 
+// interleaved gradient noise (Jimenez, "Next Generation Post Processing in Call of Duty:
+// Advanced Warfare", SIGGRAPH 2014): a per-pixel value in [0, 1) whose neighbours differ, so
+// the jitter it drives looks like fine grain, not structure
+float ign(vec2 p) { return fract(52.9829189 * fract(dot(p, vec2(0.06711056, 0.00583715)))); }
+
 void main() {
     vec2 uv = gl_FragCoord.xy * u_inv_size;
     vec2 delta = uv - u_light_uv;
     float len = length(delta) * u_density;
     delta *= (len > MARCH_MAX ? MARCH_MAX / len : 1.0) * u_density / float(u_samples);
+    // the march starts a jittered fraction of a step out: with every pixel of a row sampling
+    // the mask at the same fractions of the step, the samples of neighbouring rows fall on the
+    // mask's features in step and out of step in turn, and the sum shows as horizontal bands
+    // where the march runs along the columns (light above the screen). The jitter trades the
+    // bands for grain a quarter as strong, which the bilinear upsampling then softens; the
+    // weights follow the jittered distance so the mean is unchanged.
+    float j = ign(gl_FragCoord.xy);
+    uv -= delta * j;
     vec3 sum = vec3(0.0);
-    float w = u_weight;
+    float w = u_weight * pow(u_decay, j);
     for (int i = 0; i < u_samples; i++) {
-        uv -= delta;
         sum += w * masked(uv);
+        uv -= delta;
         w *= u_decay;
     }
     o_color = vec4(u_exposure * sum, 1.0);

@@ -1,5 +1,6 @@
 #version 330 core
-// sky.frag.glsl - the sky behind everything, one view ray per pixel: the gradient (seed 000), a
+// sky.frag.glsl - the sky behind everything, one view ray per pixel: Preetham's sky with its
+// clouds or the gradient (seed 000; both common.glsl's ww_sky), a
 // cubemap skybox (seed 004; WW_SKY_CUBEMAP) or the procedural dome (seed 003; WW_SKY_DOME), with
 // the sun disc on top.
 //
@@ -35,6 +36,6 @@ void main() {
     vec4 dome = ww_sky_dome(d, u_drift);
     o_color = vec4(dome.rgb * u_intensity + ww_sun_disc(d) * (1.0 - dome.a), 1.0);
 #else
-    o_color = vec4(ww_sky(d) + ww_sun_disc(d), 1.0);
+    o_color = vec4(ww_sky(d) + ww_sun_disc(d) * (1.0 - ww_sky_cloud(d)), 1.0);
 #endif
 }

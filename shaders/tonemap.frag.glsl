@@ -10,11 +10,13 @@ uniform int u_bloom_on, u_shafts_on;
 uniform float u_bloom_strength;
 uniform float u_exposure; // E
 uniform float u_gamma;    // display gamma
-uniform int u_op;         // 0: exponential, 1: ACES (Narkowicz fit)
+uniform int u_op;         // 0: exponential, 1: ACES (Narkowicz fit), half hue-preserving
 
 out vec4 o_color;
 
 const float HDR_MAX = 65000.0; // a half float's overflow must not reach the curve as inf
+const vec3 LUMA = vec3(0.2126, 0.7152, 0.0722);
+const float HUE_KEEP = 0.5;    // aces: share of the luminance-only curve (hue-preserving)
 
 // Narkowicz 2015, "ACES Filmic Tone Mapping Curve"
 vec3 aces(vec3 x) {
@@ -28,6 +30,17 @@ void main() {
     if (u_bloom_on != 0) hdr += u_bloom_strength * max(texture(u_bloom, uv).rgb, vec3(0.0));
     if (u_shafts_on != 0) hdr += max(texture(u_shafts, uv).rgb, vec3(0.0));
     vec3 x = u_exposure * hdr;
-    vec3 c = u_op == 1 ? aces(x) : vec3(1.0) - exp(-x); // exp: 1 - e^(-E c), seed 000
+    vec3 c;
+    if (u_op == 1) {
+        // the curve per channel pushes bright colours toward white (a sunset sky turns grey);
+        // the curve on the luminance, scaling the colour, keeps their hue and saturation but
+        // lets a saturated highlight leave the gamut. Half of each keeps the colour and still
+        // lands in [0, 1] (both do)
+        float l = dot(x, LUMA);
+        vec3 hue = l > 1e-6 ? x * (aces(vec3(l)).r / l) : vec3(0.0);
+        c = mix(aces(x), clamp(hue, 0.0, 1.0), HUE_KEEP);
+    } else {
+        c = vec3(1.0) - exp(-x); // exp: 1 - e^(-E c), seed 000
+    }
     o_color = vec4(pow(c, vec3(1.0 / u_gamma)), 1.0);
 }

@@ -225,6 +225,7 @@ void main() {
     float pw = 2.0 / m2 - 2.0;
     float spec = (pw + 8.0) / (8.0 * WW_PI) * pow(max(dot(n, h), 0.0), pw);
     vec3 sun = u_sun_color * (u_specular * spec * ww_fresnel(dot(h, v)) * sun_up);
+    c += ww_lights_water(v_pos, n, v, u_water_color, pw); // lights[] (common.glsl)
 
     // foam: folding (J -> 0), steep, steeper-looking edge-on; broken up by noise
     float foam = 0.0;

@@ -79,6 +79,7 @@ static world *world_new(int width, int height) {
     sc->width = width;
     sc->height = height;
     sc->tonemap = WW_TONEMAP_ACES;
+    sc->render.sky = WW_SKY_GRADIENT; /* the sky from the palette set below */
     add_wave(sc, 20.0, 12.0, 0.25, 0.6);
     add_wave(sc, -35.0, 5.0, 0.08, 0.4);
     add_wave(sc, 75.0, 2.1, 0.025, 0.3);

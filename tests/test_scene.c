@@ -54,7 +54,7 @@ TEST(scene_defaults_fill_every_field) {
     ENSURE_EQ_INT(sc->frame_count, 300);
     ENSURE_EQ_INT(sc->width, 1280);
     ENSURE_EQ_INT(sc->height, 720);
-    ENSURE_EQ_INT(sc->tonemap, WW_TONEMAP_EXP);
+    ENSURE_EQ_INT(sc->tonemap, WW_TONEMAP_ACES);
     ENSURE_NEAR(sc->exposure, 1.0, SCENE_VALUE_TOL);
     ENSURE_NEAR(sc->gamma, 2.2, SCENE_VALUE_TOL);
     ENSURE_NEAR(sc->time_of_day, 16.5, SCENE_VALUE_TOL);

@@ -31,7 +31,8 @@
 #define GLOW_RADIUS 0.7           /* m, the chest's glow column */
 #define GLOW_ABOVE 1.5            /* m: the column rises this far above the water's rest level */
 #define GLOW_FADE_IN 1.0          /* s: the column grows brighter over this after a spawn */
-#define GLOW_INTENSITY 3.0        /* emission of the column */
+#define GLOW_RADIANCE 1.4         /* radiance of an optically thick column, x objects.chest.glow */
+#define GLOW_OPACITY 0.9          /* optical depth per metre of the column's chord, 1/m */
 #define WW_TEX_SHADOW 3            /* texture unit of the shadow map (shaders/shadow.glsl) */
 #define SPEC_DEFAULT 0.25         /* sun highlight on most things */
 #define SPEC_WET 0.6              /* on fish and bubbles */
@@ -82,7 +83,7 @@ struct ww_geometry {
     GLuint prog;
     ww_sky_locs sky;
     GLint view_proj, clip, ambient, eye, water_y, fog_color, fog_density, fog_below_color,
-        fog_below_density, extinction, caustics_loc, mode;
+        fog_below_density, extinction, caustics_loc, mode, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter;
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
@@ -93,6 +94,8 @@ struct ww_geometry {
     instance *scratch; /* the largest slot's instances, filled per frame */
     int scratch_cap;
     int draws;         /* instanced draws of the last ww_geometry_draw (tests) */
+    int glow_clip;     /* the last ww_geometry_draw had a clip plane (the glow draws with it) */
+    float glow_cyl[6]; /* the glow column, camera-relative: axis x, z, radius, bottom y, top y */
     ww_water_waves waves; /* caustics: the wave field's phases at the camera */
     ww_water_ubos ubos;
     int caustics;
@@ -360,7 +363,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         return rc;
     }
     GLuint p = g->prog;
-    ww_sky_locs_init(gl, p, &g->sky);
+    ww_sky_locs_init(gl, p, sc, &g->sky);
     g->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
     g->clip = ww_gfx_uniform(gl, p, "u_clip");
     g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
@@ -373,6 +376,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->extinction = ww_gfx_uniform(gl, p, "u_extinction");
     g->caustics_loc = ww_gfx_uniform(gl, p, "u_caustics");
     g->mode = ww_gfx_uniform(gl, p, "u_mode");
+    g->glow = ww_gfx_uniform(gl, p, "u_glow");
+    g->glow_y = ww_gfx_uniform(gl, p, "u_glow_y");
     g->shadow_map = ww_gfx_uniform(gl, p, "u_shadow_map");
     g->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
     g->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
@@ -417,7 +422,7 @@ static int add_models(const ww_scene *sc, const ww_state *st, ww_mesh_kind kind,
         if (d->mesh != kind) continue;
         double m[16];
         model_world(sc, st, i, m);
-        put(&in[n++], m, cam, d->color, 0.0, SPEC_DEFAULT);
+        put(&in[n++], m, cam, d->color, d->emissive, SPEC_DEFAULT);
     }
     return n;
 }
@@ -575,8 +580,16 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
             static const double warm[3] = {1.0, 0.8, 0.35};
             m4_trs(m, gc, I, gs);
             double age = st->t - st->chest_t0[0];
-            put(&glow, m, cam, warm, GLOW_INTENSITY * ww_m_smoothstep(0.0, GLOW_FADE_IN, age), 0.0);
-            nglow = 1;
+            double radiance = GLOW_RADIANCE * sc->chest.glow * ww_m_smoothstep(0.0, GLOW_FADE_IN, age);
+            put(&glow, m, cam, warm, radiance, 0.0);
+            g->glow_cyl[0] = (float)(b[0] - cam[0]);
+            g->glow_cyl[1] = (float)(b[2] - cam[2]);
+            g->glow_cyl[2] = (float)GLOW_RADIUS;
+            g->glow_cyl[3] = (float)(b[1] - cam[1]);
+            g->glow_cyl[4] = (float)(b[1] + h - cam[1]);
+            g->glow_cyl[5] = (float)GLOW_OPACITY;
+            /* glow 0: no column at all */
+            nglow = sc->chest.glow > 0.0;
         }
         slot_upload(gl, &g->slot[SLOT_CHEST], in, add_models(sc, st, WW_MESH_CHEST, cam, in, n));
         slot_upload(gl, &g->slot[SLOT_COLUMN], &glow, nglow);
@@ -599,7 +612,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         const ww_model_desc *d = &sc->models.model[g->obj_model[i]];
         double m[16];
         model_world(sc, st, g->obj_model[i], m);
-        put(&in[0], m, cam, d->color, 0.0, SPEC_DEFAULT);
+        put(&in[0], m, cam, d->color, d->emissive, SPEC_DEFAULT);
         slot_upload(gl, &g->obj[i], in, 1);
     }
     (void)one;
@@ -644,7 +657,9 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
     /* reflections see the world from the camera mirrored about the water plane */
     gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
     gl->Uniform1f(g->water_y, water_y);
-    const double *fog = sc->fog_color[0] < 0.0 ? st->sky_horizon : sc->fog_color;
+    double hz[3];
+    ww_sky_horizon(sc, st, hz);
+    const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
     gl->Uniform3f(g->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
     gl->Uniform1f(g->fog_density, (float)sc->fog_density);
     const double *fb = sc->render.fog_below_color;
@@ -691,17 +706,53 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
     }
     for (int i = 0; i < g->nobj; i++) draws += draw_mesh(gl, &g->obj[i]);
 
-    /* the glow column: additive light after the opaque geometry, never into depth */
-    if ((mode == WW_GEOM_MAIN || mode == WW_GEOM_REFLECTION) && g->slot[SLOT_COLUMN].ninst > 0) {
-        gl->Uniform1i(g->mode, 2);
-        gl->Enable(GL_BLEND);
-        gl->BlendFunc(GL_ONE, GL_ONE);
-        gl->DepthMask(GL_FALSE);
-        draws += draw_mesh(gl, &g->slot[SLOT_COLUMN]);
-        gl->DepthMask(GL_TRUE);
-        gl->Disable(GL_BLEND);
-    }
+    g->glow_clip = clip != NULL;
     g->draws = draws;
     gl->BindVertexArray(0);
     gl->Disable(GL_CLIP_DISTANCE0);
+}
+
+/* this frame's lights into another program that includes common.glsl (the water's), which must
+ * be in use: the same camera-relative positions, directions, colours and ranges the geometry
+ * is lit by */
+void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog) {
+    if (!g) return;
+    upload_instances(g, gl, f); /* once per frame: the lights follow their parents */
+    light_locs l = {ww_gfx_uniform(gl, prog, "u_nlights"), ww_gfx_uniform(gl, prog, "u_light_pos"),
+                    ww_gfx_uniform(gl, prog, "u_light_dir"),
+                    ww_gfx_uniform(gl, prog, "u_light_color"),
+                    ww_gfx_uniform(gl, prog, "u_light_param")};
+    gl->Uniform1i(l.n, g->nlights);
+    if (g->nlights <= 0) return;
+    gl->Uniform3fv(l.pos, g->nlights, &g->light_pos[0][0]);
+    gl->Uniform3fv(l.dir, g->nlights, &g->light_dir[0][0]);
+    gl->Uniform3fv(l.color, g->nlights, &g->light_color[0][0]);
+    gl->Uniform4fv(l.param, g->nlights, &g->light_param[0][0]);
+}
+
+/* the chest's glow column: additive light drawn after the sky, never into depth. Drawn before
+ * the sky, the sky pass (depth still clear there) overwrote it wherever nothing opaque lay
+ * behind: everything below the horizon without a seabed, and the one-pixel row at eye level
+ * where neither the water nor the seabed reaches. Uses the uniforms the last
+ * ww_geometry_draw set (a program keeps them). */
+void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode) {
+    const ww_gl *gl = r->gl;
+    if (!g || (mode != WW_GEOM_MAIN && mode != WW_GEOM_REFLECTION) ||
+        g->slot[SLOT_COLUMN].ninst <= 0)
+        return;
+    gl->UseProgram(g->prog);
+    gl->Uniform1i(g->mode, 2);
+    gl->Uniform4f(g->glow, g->glow_cyl[0], g->glow_cyl[1], g->glow_cyl[2], g->glow_cyl[5]);
+    gl->Uniform2f(g->glow_y, g->glow_cyl[3], g->glow_cyl[4]);
+    if (g->glow_clip) gl->Enable(GL_CLIP_DISTANCE0);
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LESS);
+    gl->Enable(GL_BLEND);
+    gl->BlendFunc(GL_ONE, GL_ONE);
+    gl->DepthMask(GL_FALSE);
+    g->draws += draw_mesh(gl, &g->slot[SLOT_COLUMN]);
+    gl->DepthMask(GL_TRUE);
+    gl->Disable(GL_BLEND);
+    gl->Disable(GL_CLIP_DISTANCE0);
+    gl->BindVertexArray(0);
 }

@@ -54,6 +54,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         if (r->geometry)
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         ww_water_draw(p->water, r, f);
     } else {
         /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
@@ -63,6 +64,8 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         if (r->geometry)
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        /* additive light last: the sky would overwrite it where nothing opaque lies behind */
+        if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
     }
     if (p->rt->fbo_ms) {
         /* post: resolve the samples: colour averaged, depth one sample per pixel (NEAREST, the

@@ -61,7 +61,8 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         plane[0] = 0.0f; plane[1] = -1.0f; plane[2] = 0.0f;
         plane[3] = (float)(level + p->crest);
     } else {
-        const double *h = f->st->sky_horizon;
+        double h[3];
+        ww_sky_horizon(f->sc, f->st, h);
         gl->ClearColor((float)h[0], (float)h[1], (float)h[2], 1.0f);
         /* keep y >= level - crest */
         plane[0] = 0.0f; plane[1] = 1.0f; plane[2] = 0.0f;

@@ -53,7 +53,7 @@ static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_
         reflection_destroy(p, gl);
         return rc;
     }
-    ww_sky_locs_init(gl, p->prog, &p->sky);
+    ww_sky_locs_init(gl, p->prog, sc, &p->sky);
     p->inv_view_proj = ww_gfx_uniform(gl, p->prog, "u_inv_view_proj");
     p->cube = ww_gfx_uniform(gl, p->prog, "u_cube");
     p->cube_tex = ww_gfx_uniform(gl, p->prog, "u_sky_cube");
@@ -128,6 +128,8 @@ static ww_result reflection_run(void *self, ww_renderer *r, const ww_frame *f, w
     gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
     gl->DepthMask(GL_TRUE);
     gl->DepthFunc(GL_LESS);
+    /* additive light last: the sky would overwrite it where nothing opaque lies behind */
+    if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_REFLECTION);
 
     gl->BindTexture(GL_TEXTURE_2D, p->color);
     gl->GenerateMipmap(GL_TEXTURE_2D);

@@ -139,6 +139,11 @@ typedef enum ww_geom_mode {
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err);
 void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
                       mat4 view_proj, const float *clip);
+/* the chest's glow column (additive), after the sky of the same pass: mode as the pass's
+ * ww_geometry_draw, whose uniforms it reuses */
+void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode);
+/* this frame's point and spot lights into prog (in use; it includes common.glsl) */
+void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
 int ww_geometry_draw_count(const ww_geometry *g);
@@ -172,9 +177,17 @@ GLint ww_gfx_uniform(const ww_gl *gl, GLuint prog, const char *name);
 /* sky.c: the uniforms of common.glsl (sky gradient and sun), for any program that includes it */
 typedef struct ww_sky_locs {
     GLint zenith, horizon, sun_dir, sun_color;
+    GLint perez, zen, psun, mode, clouds; /* Preetham's sky and the clouds (common.glsl) */
+    int physical;                         /* the sky is Preetham's (preetham, dome) */
+    double turbidity, cover, speed;       /* the scene's sky.turbidity, sky.clouds */
+    double origin[2];                     /* the clouds' start in the noise (sky.clouds.seed) */
 } ww_sky_locs;
-void ww_sky_locs_init(const ww_gl *gl, GLuint prog, ww_sky_locs *l);
+/* sc: the scene whose sky (model, turbidity, clouds) the program draws */
+void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l);
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);
+/* the sky's colour along the horizon this frame (the fog's colour when the scene gives none):
+ * the clock's palette, or by day Preetham's horizon averaged over the azimuths */
+void ww_sky_horizon(const ww_scene *sc, const ww_state *st, double out[3]);
 
 /* sky.c: the scene's sky (gradient, cubemap or dome) and the sun disc as a full-screen triangle
  * on the far plane. A cubemap sky uploads the scene's six faces once per renderer and sets

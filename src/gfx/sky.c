@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "core/mathx.h"
 #include "gfx/render_impl.h"
 #include "scene/assets.h"
 
@@ -15,6 +16,11 @@
  * the offset is wrapped to the noise's period in double, so a long run stays exact in float */
 static const double DOME_WIND[2] = {0.011, 0.004};
 static const double DOME_PERIOD = 256.0; /* WW_DOME_PERIOD in common.glsl */
+/* Preetham's sky: the sun's lowest elevation the fit is evaluated at (rad), and the sun heights
+ * (sin elevation) over which it fades into the twilight palette as the sun sets */
+static const double PEREZ_MIN_ELEV = 0.0175;
+static const double PEREZ_FADE0 = -0.06, PEREZ_FADE1 = 0.06;
+static const double PREETHAM_SCALE = 0.022; /* WW_PREETHAM_SCALE in common.glsl */
 
 struct ww_sky {
     GLuint prog;
@@ -25,21 +31,143 @@ struct ww_sky {
     GLuint cube_draw; /* the cube texture drawn (owned or the renderer's) */
 };
 
-void ww_sky_locs_init(const ww_gl *gl, GLuint prog, ww_sky_locs *l) {
+void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l) {
+    const ww_render_desc *d = &sc->render;
     l->zenith = ww_gfx_uniform(gl, prog, "u_sky_zenith");
     l->horizon = ww_gfx_uniform(gl, prog, "u_sky_horizon");
     l->sun_dir = ww_gfx_uniform(gl, prog, "u_sun_dir");
     l->sun_color = ww_gfx_uniform(gl, prog, "u_sun_color");
+    l->perez = ww_gfx_uniform(gl, prog, "u_perez");
+    l->zen = ww_gfx_uniform(gl, prog, "u_perez_zenith");
+    l->psun = ww_gfx_uniform(gl, prog, "u_perez_sun");
+    l->mode = ww_gfx_uniform(gl, prog, "u_sky_mode");
+    l->clouds = ww_gfx_uniform(gl, prog, "u_sky_clouds");
+    l->physical = d->sky == WW_SKY_PREETHAM || d->sky == WW_SKY_DOME;
+    l->turbidity = d->sky_turbidity;
+    /* the dome draws its own clouds over this sky */
+    l->cover = d->sky == WW_SKY_PREETHAM ? d->cloud_cover : 0.0;
+    l->speed = d->cloud_speed;
+    /* the seed picks a start in the noise's period: a golden-ratio walk, so neighbouring seeds
+     * start far apart */
+    l->origin[0] = fmod(d->cloud_seed * 0.6180339887498949 * DOME_PERIOD, DOME_PERIOD);
+    l->origin[1] = fmod(d->cloud_seed * 0.7548776662466927 * DOME_PERIOD, DOME_PERIOD);
+}
+
+/* Preetham, Shirley and Smits, "A Practical Analytic Model for Daylight" (SIGGRAPH 1999): the
+ * Perez distribution F(theta, gamma) = (1 + A e^(B / cos theta))(1 + C e^(D gamma) + E cos^2
+ * gamma) of luminance Y and chromaticities x, y, each scaled so the zenith takes the zenith
+ * value of the turbidity T and the sun's zenith angle (the paper's appendix A.2). Out: the
+ * coefficients A..E for (Y, x, y) and the zenith values divided by F(0, theta_s). The fit holds
+ * for the sun above the horizon: the sun is held at 1 degree at the lowest (the shader fades to
+ * the twilight palette below). */
+static void perez_coeffs(double T, double theta_s, float perez[15], float zen[3]) {
+    const double k[5][3][2] = {/* {Y, x, y} x (slope on T, constant) for A..E */
+                               {{0.1787, -1.4630}, {-0.0193, -0.2592}, {-0.0167, -0.2608}},
+                               {{-0.3554, 0.4275}, {-0.0665, 0.0008}, {-0.0950, 0.0092}},
+                               {{-0.0227, 5.3251}, {-0.0004, 0.2125}, {-0.0079, 0.2102}},
+                               {{0.1206, -2.5771}, {-0.0641, -0.8989}, {-0.0441, -1.6537}},
+                               {{-0.0670, 0.3703}, {-0.0033, 0.0452}, {-0.0109, 0.0529}}};
+    double c[5][3];
+    for (int i = 0; i < 5; i++)
+        for (int j = 0; j < 3; j++) {
+            c[i][j] = k[i][j][0] * T + k[i][j][1];
+            perez[i * 3 + j] = (float)c[i][j];
+        }
+    double t = theta_s, t2 = t * t, t3 = t2 * t, T2 = T * T;
+    double chi = (4.0 / 9.0 - T / 120.0) * (WW_PI - 2.0 * t);
+    double z[3];
+    z[0] = (4.0453 * T - 4.9710) * tan(chi) - 0.2155 * T + 2.4192; /* kcd/m^2 */
+    z[1] = T2 * (0.00166 * t3 - 0.00375 * t2 + 0.00209 * t) +
+           T * (-0.02903 * t3 + 0.06377 * t2 - 0.03202 * t + 0.00394) +
+           (0.11693 * t3 - 0.21196 * t2 + 0.06052 * t + 0.25886);
+    z[2] = T2 * (0.00275 * t3 - 0.00610 * t2 + 0.00317 * t) +
+           T * (-0.04214 * t3 + 0.08970 * t2 - 0.04153 * t + 0.00516) +
+           (0.15346 * t3 - 0.26756 * t2 + 0.06670 * t + 0.26688);
+    for (int j = 0; j < 3; j++) {
+        /* F(0, theta_s): the zenith, where gamma is the sun's zenith angle */
+        double f0 = (1.0 + c[0][j] * exp(c[1][j])) *
+                    (1.0 + c[2][j] * exp(c[3][j] * t) + c[4][j] * cos(t) * cos(t));
+        zen[j] = (float)(z[j] / f0);
+    }
+}
+
+/* the sun the fit is evaluated for: its azimuth, at least PEREZ_MIN_ELEV high; returns the
+ * elevation used */
+static double perez_sun(const double s[3], double ps[3]) {
+    double h = sqrt(s[0] * s[0] + s[2] * s[2]), e = asin(ww_m_clamp(s[1], -1.0, 1.0));
+    if (e < PEREZ_MIN_ELEV) e = PEREZ_MIN_ELEV;
+    ps[0] = h > 0.0 ? s[0] / h * cos(e) : 0.0;
+    ps[1] = sin(e);
+    ps[2] = h > 0.0 ? s[2] / h * cos(e) : 0.0;
+    return e;
+}
+
+/* the haze along the horizon: Preetham's sky 2 degrees up averaged over the azimuths (what
+ * common.glsl's ww_sky_physical gives there), blended with the clock's palette as the shader
+ * blends the skies. The fog takes it, so far water and objects fade into the sky above them. */
+static void horizon_colour(int physical, double turbidity, const ww_state *st, double out[3]) {
+    for (int c = 0; c < 3; c++) out[c] = st->sky_horizon[c];
+    double w = ww_m_smoothstep(PEREZ_FADE0, PEREZ_FADE1, st->sun_dir[1]);
+    if (!physical || w <= 0.0) return;
+    double ps[3];
+    float perez[15], zen[3];
+    double e = perez_sun(st->sun_dir, ps);
+    perez_coeffs(turbidity, 0.5 * WW_PI - e, perez, zen);
+    double rgb[3] = {0.0, 0.0, 0.0}, ct = sin(0.035), st_ = cos(0.035);
+    enum { NAZ = 16 };
+    for (int k = 0; k < NAZ; k++) {
+        double a = 2.0 * WW_PI * (k + 0.5) / NAZ;
+        double d[3] = {st_ * cos(a), ct, st_ * sin(a)};
+        double cg = ww_m_clamp(d[0] * ps[0] + d[1] * ps[1] + d[2] * ps[2], -1.0, 1.0), g = acos(cg);
+        double yxy[3];
+        for (int j = 0; j < 3; j++)
+            yxy[j] = zen[j] * (1.0 + perez[j] * exp(perez[3 + j] / ct)) *
+                     (1.0 + perez[6 + j] * exp(perez[9 + j] * g) + perez[12 + j] * cg * cg);
+        double Y = yxy[0] * PREETHAM_SCALE;
+        double X = yxy[1] / yxy[2] * Y, Z = (1.0 - yxy[1] - yxy[2]) / yxy[2] * Y;
+        rgb[0] += fmax(3.2406 * X - 1.5372 * Y - 0.4986 * Z, 0.0) / NAZ;
+        rgb[1] += fmax(-0.9689 * X + 1.8758 * Y + 0.0415 * Z, 0.0) / NAZ;
+        rgb[2] += fmax(0.0557 * X - 0.2040 * Y + 1.0570 * Z, 0.0) / NAZ;
+    }
+    for (int c = 0; c < 3; c++) out[c] += w * (rgb[c] - out[c]);
+}
+
+void ww_sky_horizon(const ww_scene *sc, const ww_state *st, double out[3]) {
+    const ww_render_desc *d = &sc->render;
+    horizon_colour(d->sky == WW_SKY_PREETHAM || d->sky == WW_SKY_DOME, d->sky_turbidity, st, out);
 }
 
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st) {
+    double hz[3];
+    horizon_colour(l->physical, l->turbidity, st, hz);
     gl->Uniform3f(l->zenith, (float)st->sky_zenith[0], (float)st->sky_zenith[1],
                   (float)st->sky_zenith[2]);
-    gl->Uniform3f(l->horizon, (float)st->sky_horizon[0], (float)st->sky_horizon[1],
-                  (float)st->sky_horizon[2]);
+    gl->Uniform3f(l->horizon, (float)hz[0], (float)hz[1], (float)hz[2]);
     gl->Uniform3f(l->sun_dir, (float)st->sun_dir[0], (float)st->sun_dir[1], (float)st->sun_dir[2]);
     gl->Uniform3f(l->sun_color, (float)st->sun_color[0], (float)st->sun_color[1],
                   (float)st->sun_color[2]);
+    if (!l->physical) {
+        gl->Uniform2f(l->mode, 0.0f, 0.0f);
+        gl->Uniform4f(l->clouds, 0.0f, 0.0f, 0.0f, 0.0f);
+        return;
+    }
+    const double *s = st->sun_dir;
+    double ps[3];
+    double e = perez_sun(s, ps);
+    float perez[15], zen[3];
+    perez_coeffs(l->turbidity, 0.5 * WW_PI - e, perez, zen);
+    gl->Uniform3fv(l->perez, 5, perez);
+    gl->Uniform3f(l->zen, zen[0], zen[1], zen[2]);
+    gl->Uniform3f(l->psun, (float)ps[0], (float)ps[1], (float)ps[2]);
+    /* the share of Preetham's sky: whole by day, none once the sun is a little below the
+     * horizon, where the twilight and night palette takes over */
+    gl->Uniform2f(l->mode, 1.0f, (float)ww_m_smoothstep(PEREZ_FADE0, PEREZ_FADE1, s[1]));
+    /* clouds: the drift of the dome's wind times sky.clouds.speed, from the seed's start,
+     * wrapped to the noise period in double */
+    double x = fmod(l->origin[0] + l->speed * DOME_WIND[0] * st->t, DOME_PERIOD);
+    double z = fmod(l->origin[1] + l->speed * DOME_WIND[1] * st->t, DOME_PERIOD);
+    gl->Uniform4f(l->clouds, (float)l->cover, (float)(x < 0.0 ? x + DOME_PERIOD : x),
+                  (float)(z < 0.0 ? z + DOME_PERIOD : z), 0.0f);
 }
 
 /* the six faces, +x -x +y -y +z -z in GL's order (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), each
@@ -86,7 +214,8 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     static const char *const includes[] = {"common.glsl", NULL};
     static const char *const defines[] = {[WW_SKY_GRADIENT] = NULL,
                                           [WW_SKY_CUBEMAP] = "#define WW_SKY_CUBEMAP 1\n",
-                                          [WW_SKY_DOME] = "#define WW_SKY_DOME 1\n"};
+                                          [WW_SKY_DOME] = "#define WW_SKY_DOME 1\n",
+                                          [WW_SKY_PREETHAM] = NULL};
     const ww_gl *gl = r->gl;
     ww_sky *s = calloc(1, sizeof *s);
     if (!s) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "sky: out of memory");
@@ -106,7 +235,7 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
         ww_sky_free(s, gl);
         return rc;
     }
-    ww_sky_locs_init(gl, s->prog, &s->sky);
+    ww_sky_locs_init(gl, s->prog, sc, &s->sky);
     s->inv_view_proj = ww_gfx_uniform(gl, s->prog, "u_inv_view_proj");
     s->intensity = ww_gfx_uniform(gl, s->prog, "u_intensity");
     s->below = ww_gfx_uniform(gl, s->prog, "u_below");

@@ -320,7 +320,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
         ww_water_free(w, gl);
         return rc;
     }
-    ww_sky_locs_init(gl, w->prog, &w->sky);
+    ww_sky_locs_init(gl, w->prog, sc, &w->sky);
     w->view_proj = ww_gfx_uniform(gl, w->prog, "u_view_proj");
     w->origin = ww_gfx_uniform(gl, w->prog, "u_origin");
     w->ugrid = ww_gfx_uniform(gl, w->prog, "u_grid");
@@ -508,7 +508,9 @@ void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
     ww_water_ubos_upload(gl, &w->ubos, &w->waves, sc->ripples_on ? &w->ripples : NULL, 0);
 
     /* fog colour: the scene's, or the sky at the horizon so the far water meets the sky */
-    const double *fog = sc->fog_color[0] < 0.0 ? st->sky_horizon : sc->fog_color;
+    double hz[3];
+    ww_sky_horizon(sc, st, hz); /* the sky's haze: gfx/sky.c */
+    const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
 
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
@@ -521,6 +523,7 @@ void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
     }
     gl->UseProgram(w->prog);
     ww_sky_locs_set(gl, &w->sky, st);
+    ww_geometry_lights_set(r->geometry, gl, f, w->prog); /* lights[] */
     gl->UniformMatrix4fv(w->view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
     gl->Uniform3f(w->origin, (float)(centre[0] - f->cam_pos[0]),
                   (float)(sc->water_level - f->cam_pos[1]), (float)(centre[1] - f->cam_pos[2]));

@@ -1082,7 +1082,7 @@ void ww_scene_defaults(ww_scene *sc) {
     sc->height = 720;
     sc->exposure = 1.0;
     sc->gamma = 2.2;
-    sc->tonemap = WW_TONEMAP_EXP;
+    sc->tonemap = WW_TONEMAP_ACES; /* keeps colour and contrast in the highlights */
     sc->time_of_day = 16.5;
     sc->day_length = 0.0;
     sc->sun_max_elevation = ww_m_rad(60.0);

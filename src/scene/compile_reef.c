@@ -18,6 +18,8 @@ static const rule R_CHEST_TTL = OPEN_LO(0, 1e9, "s");
 static const rule R_CHEST_RADIUS = CLOSED(0, 1e4, "m");
 static const rule R_CHEST_REACH = OPEN_LO(0, 1e3, "m");
 static const rule R_CHEST_SIZE = OPEN_LO(0, 100, "m");
+static const rule R_CHEST_GLOW = CLOSED(0, 100, "");
+static const rule R_EMISSIVE = CLOSED(0, 1e4, "");
 static const rule R_PLACE = FINITE("m");
 static const rule R_BUBBLE_RATE = OPEN_LO(0, 1000, "1/s");
 static const rule R_BUBBLE_SPEED = OPEN_LO(0, 100, "m/s");
@@ -38,12 +40,13 @@ void ww_chest_defaults(ww_chest_desc *d) {
                          .radius = 12.0,
                          .near = WW_CHEST_NEAR_AUTO,
                          .reach = 2.0,
-                         .size = {0.9, 0.6, 0.6}};
+                         .size = {0.9, 0.6, 0.6},
+                         .glow = 1.0};
 }
 
 static ww_result compile_chest(ctx *c, const section *objects) {
-    static const char *const keys[] = {"first", "every", "ttl", "radius", "near", "reach", "size",
-                                       NULL};
+    static const char *const keys[] = {"first", "every", "ttl",  "radius", "near",
+                                       "reach", "size",  "glow", NULL};
     ww_chest_desc *d = &c->sc->chest;
     int on = d->on; /* a chest event read earlier keeps it on */
     ww_chest_defaults(d);
@@ -61,6 +64,7 @@ static ww_result compile_chest(ctx *c, const section *objects) {
     d->near = (ww_chest_near)near;
     TRY(wwc_get_number(c, &s, "reach", &R_CHEST_REACH, OPTIONAL, &d->reach));
     TRY(wwc_get_vec(c, &s, "size", 3, &R_CHEST_SIZE, OPTIONAL, d->size));
+    TRY(wwc_get_number(c, &s, "glow", &R_CHEST_GLOW, OPTIONAL, &d->glow));
 
     /* objects.boat is read before this section (compile_objects) */
     if (d->near == WW_CHEST_NEAR_BOAT && !c->sc->boat.on)
@@ -227,7 +231,8 @@ static ww_assets *scene_assets(ctx *c) {
 static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc *m,
                                const ww_node **parent, int *given) {
     static const char *const keys[] = {"name",  "mesh",  "obj",    "position", "rotation",
-                                       "scale", "color", "parent", "min",      "max", NULL};
+                                       "scale", "color", "parent", "min",      "max",
+                                       "emissive", NULL};
     static const char *const axes[] = {"x", "y", "z"};
     section s;
     const ww_node *name, *obj;
@@ -266,6 +271,7 @@ static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc
     double grey = m->mesh == WW_MESH_OBJ ? 1.0 : MODEL_GREY;
     for (int a = 0; a < 3; a++) m->color[a] = grey;
     TRY(wwc_get_vec(c, &s, "color", 3, &R_ALBEDO, OPTIONAL, m->color));
+    TRY(wwc_get_number(c, &s, "emissive", &R_EMISSIVE, OPTIONAL, &m->emissive));
     TRY(get_name(c, &s, "parent", sizeof m->name, parent));
     local_matrix(m, 1, m->local);
 

@@ -35,6 +35,9 @@ static const rule R_SHAFT_EXPOSURE = CLOSED(0, 100, "");
 static const rule R_MSAA = WHOLE(0, 16, "samples");
 static const rule R_GRID = CLOSED(0.25, 4, "");
 static const rule R_INTENSITY = CLOSED(0, 1e6, "");
+static const rule R_TURBIDITY = CLOSED(1.7, 10, ""); /* where Preetham's fit holds */
+static const rule R_CLOUD_SPEED = CLOSED(0, 100, "cells/s");
+static const rule R_CLOUD_SEED = WHOLE(0, 1000000, "");
 static const rule R_FRESNEL = CLOSED(0, 16, "");
 static const rule R_DISTORTION = CLOSED(0, 0.5, "");
 static const rule R_PER_METRE = OPEN_LO(0, 1e3, "1/m");
@@ -49,7 +52,8 @@ static const rule R_RATE = CLOSED(0, 100, "Hz");
 static const char *const TONEMAP_WORDS[] = {[WW_TONEMAP_EXP] = "exp", [WW_TONEMAP_ACES] = "aces",
                                             NULL};
 static const char *const SKY_WORDS[] = {[WW_SKY_GRADIENT] = "gradient",
-                                        [WW_SKY_CUBEMAP] = "cubemap", [WW_SKY_DOME] = "dome", NULL};
+                                        [WW_SKY_CUBEMAP] = "cubemap", [WW_SKY_DOME] = "dome",
+                                        [WW_SKY_PREETHAM] = "preetham", NULL};
 static const char *const FRESNEL_WORDS[] = {[WW_FRESNEL_BIAS_SCALE] = "bias_scale",
                                             [WW_FRESNEL_SCHLICK] = "schlick", NULL};
 static const char *const LIGHT_WORDS[] = {[WW_LIGHT_POINT] = "point", [WW_LIGHT_SPOT] = "spot",
@@ -68,16 +72,23 @@ void ww_render_defaults(ww_render_desc *d) {
     d->reflection = (ww_reflection_desc){.on = 1, .scale = 0.5};
     d->bloom = (ww_bloom_desc){.on = 1, .threshold = 1.0, .strength = 0.6, .passes = 3,
                                .scale = 0.5};
-    d->shafts = (ww_shafts_desc){.on = 1, .samples = 48, .decay = 0.95, .density = 0.9,
-                                 .weight = 0.35, .exposure = 0.25, .underwater = 3.0,
+    /* decay 0.985: at 0.95 the 48th sample, the light's end of the march, weighed 0.95^48 = 9%
+     * of the first, so the sum was the mask around the pixel: a glow, in which an occluder in
+     * front of the sun cast no ray. 0.985^48 = 48% keeps the light's end in the sum (Mitchell's
+     * own examples use a decay near 1); the exposure halves to keep the mean. */
+    d->shafts = (ww_shafts_desc){.on = 1, .samples = 48, .decay = 0.985, .density = 0.9,
+                                 .weight = 0.35, .exposure = 0.13, .underwater = 3.0,
                                  .scale = 0.25}; /* the radial blur is smooth: a quarter of the
                                                   * frame looks the same at a quarter the cost */
     d->fxaa = 1;
     d->msaa = 0;
     d->grid = 1.0;
-    d->sky = WW_SKY_GRADIENT;
+    d->sky = WW_SKY_PREETHAM;
     for (int i = 0; i < 6; i++) d->cubemap_image[i] = -1;
     d->sky_intensity = 1.0;
+    d->sky_turbidity = 2.5;
+    d->cloud_cover = 0.0;
+    d->cloud_speed = 1.0;
     /* seed 003's green-blue water seen from inside */
     d->fog_below_color[0] = 0.02;
     d->fog_below_color[1] = 0.12;
@@ -275,10 +286,11 @@ static ww_result compile_cubemap(ctx *c, const section *s) {
 }
 
 ww_result wwc_sky(ctx *c, const section *top) {
-    static const char *const keys[] = {"model", "time_of_day", "day_length",
-                                       "sun_max_elevation", "cubemap", "intensity", NULL};
+    static const char *const keys[] = {"model",     "time_of_day", "day_length", "sun_max_elevation",
+                                       "cubemap",   "intensity",   "turbidity",  "clouds", NULL};
+    static const char *const cloud_keys[] = {"cover", "speed", "seed", NULL};
     ww_scene *sc = c->sc;
-    section s;
+    section s, cl;
     TRY(wwc_open_section(c, top, "sky", keys, &s));
     int model = (int)sc->render.sky;
     TRY(wwc_get_word(c, &s, "model", SKY_WORDS, &model));
@@ -287,6 +299,15 @@ ww_result wwc_sky(ctx *c, const section *top) {
     TRY(wwc_get_number(c, &s, "day_length", &R_DAY_LENGTH, OPTIONAL, &sc->day_length));
     TRY(wwc_get_angle(c, &s, "sun_max_elevation", &R_SUN_MAX, OPTIONAL, &sc->sun_max_elevation));
     TRY(wwc_get_number(c, &s, "intensity", &R_INTENSITY, OPTIONAL, &sc->render.sky_intensity));
+    TRY(wwc_get_number(c, &s, "turbidity", &R_TURBIDITY, OPTIONAL, &sc->render.sky_turbidity));
+    TRY(wwc_open_section(c, &s, "clouds", cloud_keys, &cl));
+    if (cl.map) {
+        double seed = sc->render.cloud_seed;
+        TRY(wwc_get_number(c, &cl, "cover", &R_UNIT, OPTIONAL, &sc->render.cloud_cover));
+        TRY(wwc_get_number(c, &cl, "speed", &R_CLOUD_SPEED, OPTIONAL, &sc->render.cloud_speed));
+        TRY(wwc_get_number(c, &cl, "seed", &R_CLOUD_SEED, OPTIONAL, &seed));
+        sc->render.cloud_seed = (int)seed;
+    }
     return compile_cubemap(c, &s);
 }
 

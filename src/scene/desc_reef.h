@@ -30,6 +30,7 @@ typedef struct ww_chest_desc {
     ww_chest_near near;
     double reach;    /* collected when the camera is this close to the chest's box, m */
     double size[3];  /* box width (x), height (y), depth (z), m */
+    double glow;     /* radiance of the glow column over its default, 0: no column */
 } ww_chest_desc;
 
 typedef struct ww_emitter_desc {
@@ -75,6 +76,7 @@ typedef struct ww_model_desc {
                             * first, then pitch, then yaw */
     double scale[3];
     double color[3];       /* linear RGB albedo (multiplies an OBJ's materials) */
+    double emissive;       /* emitted radiance as a multiple of color (0: none), unlit */
     int parent;            /* index of the parent model, -1 world, WW_PARENT_BOAT the boat */
     double local[16];      /* model -> parent's frame, column-major: T R S */
     double frame[16];      /* the model's frame, where its children are placed: its parent's

@@ -15,7 +15,12 @@
 #define WW_MAX_LIGHTS 8
 #define WW_PATH_MAX 256
 
-typedef enum ww_sky_model { WW_SKY_GRADIENT = 0, WW_SKY_CUBEMAP, WW_SKY_DOME } ww_sky_model;
+typedef enum ww_sky_model {
+    WW_SKY_GRADIENT = 0,
+    WW_SKY_CUBEMAP,
+    WW_SKY_DOME,
+    WW_SKY_PREETHAM /* Preetham, Shirley and Smits 1999: the default */
+} ww_sky_model;
 typedef enum ww_fresnel { WW_FRESNEL_BIAS_SCALE = 0, WW_FRESNEL_SCHLICK } ww_fresnel;
 typedef enum ww_light_kind { WW_LIGHT_POINT = 0, WW_LIGHT_SPOT } ww_light_kind;
 
@@ -108,6 +113,10 @@ typedef struct ww_render_desc {
     char cubemap[6][WW_PATH_MAX];/* +x, -x, +y, -y, +z, -z image files, resolved from the scene */
     int cubemap_image[6];        /* index in the scene's assets (scene/assets.h), -1 none */
     double sky_intensity;        /* cubemap and dome radiance scale */
+    double sky_turbidity;        /* Preetham's turbidity T (haze: 2 clear .. 10 hazy) */
+    double cloud_cover;          /* share of the sky the clouds cover, 0: none (preetham) */
+    double cloud_speed;          /* drift, cloud-noise cells per second */
+    int cloud_seed;              /* where in the noise the clouds start */
 
     /* fog under water (exp2); above-water fog is ww_scene.fog_* */
     double fog_below_color[3];   /* linear RGB */
