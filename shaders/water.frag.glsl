@@ -18,8 +18,9 @@
 //   foam        where the Gerstner surface folds: the Jacobian of the horizontal map
 //               J = (1 + dDx/dx)(1 + dDz/dz) - dDx/dz dDz/dx falls toward 0 (Tessendorf,
 //               "Simulating Ocean Water", 2001), a soft coverage from J with a wide ramp (no
-//               hard threshold), thinned by noise into streaks whose edges stay soft; it
-//               gathers as a crest steepens and fades as J recovers behind it
+//               hard threshold), broken by two octaves of noise into patches whose edges stay
+//               soft; it gathers as a crest steepens and fades as J recovers behind it (no
+//               memory between frames: a frame depends on the state alone)
 //   detail      with the DuDv, fine normal-only ripples (short fixed sines, as capillary
 //               waves) near the camera, each faded by the pixel footprint so nothing shimmers
 //               far away
