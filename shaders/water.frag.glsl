@@ -93,6 +93,7 @@ const float FOAM_CELLS = 2.0;     // foam noise cells per DuDv cell; this and FO
                                   // whole, so the offset wrapped at the lattice period
                                   // (water.c) wraps the foam's lattice too
 const float FOAM_ALBEDO = 0.85;
+const float FOAM_MIN = 0.01;      // coverage under which no foam is drawn (nor its noise paid)
 // pure water's absorption per metre, red first (Pope and Fry, "Absorption spectrum (380-700 nm)
 // of pure water", 1997, at about 600, 550 and 450 nm; geometry.c's WATER_EXTINCTION, which dims
 // the sunlight reaching what lies under water, uses the same)
@@ -200,11 +201,15 @@ void main() {
         vec2 g = vec2(0.0);
         for (int j = 0; j < NDETAIL; j++) {
             vec4 d = u_detail[j];
-            float k = length(d.xy);
-            if (k <= 0.0) continue;
-            float f = ww_wave_fade_along(2.0 * WW_PI / k, d.xy / k, fp);
+            float k = length(d.xy), L = 2.0 * WW_PI / k;
+            // longest first (water.c): faded out across the view, this one and the rest are
+            // gone in every direction; their slope variance goes to the highlight
+            if (ww_faded_out(L, fp.inv_pix)) {
+                for (int i = j; i < NDETAIL; i++) removed += 0.5 * u_detail[i].z * u_detail[i].z;
+                break;
+            }
+            float f = ww_wave_fade_along(L, d.xy / k, fp);
             removed += 0.5 * (1.0 - f * f) * d.z * d.z;
-            if (f == 0.0) continue;
             g += (f * d.z * cos(d.w + dot(d.xy, v_local)) / k) * d.xy;
         }
         n = normalize(n - vec3(g.x, 0.0, g.y));
@@ -305,7 +310,7 @@ void main() {
         // texture-free noise breaks it into patches that grow with the coverage; the patches'
         // edges ramp over FOAM_SOFT of the noise's range (a smooth noise: several pixels), and
         // the noise fades with the footprint toward its mean, so no shimmer far away
-        if (cover > 0.0) {
+        if (cover > FOAM_MIN) {
             float inv_fp = 1.0 / max(pix * stretch, 1e-6), cells = FOAM_CELLS * u_distort.y;
             vec2 q = cells * v_local + u_dudv_o[0] * FOAM_CELLS;
             float n1 = ww_wave_fade(1.0 / cells, inv_fp) * ww_noise(q).x;

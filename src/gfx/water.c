@@ -415,7 +415,8 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
 
 /* the normal-only detail of water.frag.glsl: short deep-water sines (wavelength m, direction deg,
  * slope amplitude A k) that only the shading sees, so the near water is not smooth plastic;
- * each fades with the pixel footprint like the waves, and travels at the deep-water speed */
+ * each fades with the pixel footprint like the waves, and travels at the deep-water speed.
+ * Longest first: the shader stops at the first one faded out. */
 #define WATER_NDETAIL 6
 static const double detail_wave[WATER_NDETAIL][3] = {
     {1.31, 23.0, 0.03},  {0.87, 131.0, 0.03},  {0.61, -52.0, 0.025},
