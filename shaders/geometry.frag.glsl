@@ -151,9 +151,14 @@ void main() {
     float sun_up = smoothstep(-0.02, 0.02, u_sun_dir.y);
     vec3 sun = u_sun_color * sun_up;
     vec3 amb = u_ambient * (0.65 + 0.35 * n.y);
+    vec3 l = u_sun_dir; // toward the sun: under water, back along the refracted ray
     if (depth > 0.0) {
         vec3 t = exp(-u_extinction * depth);
-        sun *= exp(-u_extinction * depth / max(u_sun_dir.y, 0.2));
+        // the sunlight's path down to p follows the refracted ray (Snell): depth over its
+        // cosine, never more than depth / 0.66 (the critical angle), not depth / sin(elevation)
+        vec3 ts = refract(-u_sun_dir, vec3(0.0, 1.0, 0.0), 1.0 / WW_ETA_WATER);
+        sun *= exp(-u_extinction * depth / max(-ts.y, 0.6));
+        if (ts.y < 0.0) l = -ts;
         amb *= t;
 #if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
         // the surface point the refracted sun ray through p left from (camera-relative xz)
@@ -164,8 +169,8 @@ void main() {
 #endif
     }
     float lit = ww_shadow(p, n);
-    float ndl = max(dot(n, u_sun_dir), 0.0);
-    vec3 h = normalize(u_sun_dir + v);
+    float ndl = max(dot(n, l), 0.0);
+    vec3 h = normalize(l + v);
     float spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), WW_SHININESS) * v_spec : 0.0;
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
 

@@ -6,16 +6,27 @@
 //               images the water plane where the main camera does, so no flip), else the sky
 //               function, or the sky cubemap (seed 004)
 //   refraction  the prepass's colour by the same mapping, depth-aware (seed 000): the water's
-//               thickness along the view ray from both depths linearised drives Beer-Lambert
-//               murk exp(-murk d) toward the lit water colour and shrinks the distortion at the
-//               shore; without a prepass the lit deep-water colour
+//               thickness along the view ray from both depths linearised, taken along the
+//               refracted ray, drives Beer-Lambert transmittance per channel
+//               exp(-(absorption + murk) d) toward the lit water colour (red is absorbed
+//               fastest, so what lies deeper is darker and bluer, never brighter) and shrinks
+//               the distortion at the shore; without a prepass the lit deep-water colour
 //   Fresnel     bias + scale (1 - v.n)^power (seed 000) or Schlick F0 + (1 - F0)(1 - v.n)^5
 //   DuDv        seed 002's distortion map generated here instead of read from a file: two
 //               layers of value noise drifting apart, seeded by world position only; the noise
 //               gradient is the DuDv vector and, as a normal-map perturbation, specular detail
-//   foam        steep surface, grazing view, and where the Gerstner surface folds: the
-//               Jacobian of the horizontal map J = (1 + dDx/dx)(1 + dDz/dz) - dDx/dz dDz/dx
-//               falls to 0 (Tessendorf, "Simulating Ocean Water", 2001), broken up by noise
+//   foam        where the Gerstner surface folds: the Jacobian of the horizontal map
+//               J = (1 + dDx/dx)(1 + dDz/dz) - dDx/dz dDz/dx falls toward 0 (Tessendorf,
+//               "Simulating Ocean Water", 2001), a soft coverage from J with a wide ramp (no
+//               hard threshold), broken by two octaves of noise into patches whose edges stay
+//               soft; it gathers as a crest steepens and fades as J recovers behind it (no
+//               memory between frames: a frame depends on the state alone)
+//   detail      with the DuDv, fine normal-only ripples (short fixed sines, as capillary
+//               waves) near the camera, each faded by the pixel footprint so nothing shimmers
+//               far away
+//   reflection  about a normal bent toward the viewer where the interpolated normal faces away
+//   direction   (wave backs seen edge-on), then clamped above the horizon: a reflected ray from
+//               above the water never sees the sky below it (seed 004's cubemap is dark there)
 //   under water the surface from below: Snell's window (transmitted sky within the critical
 //               angle asin(1 / 1.333) = 48.6 deg), total internal reflection of the water below
 //               outside it, then the below-water exp2 fog
@@ -53,6 +64,10 @@ uniform int u_underwater;   // the camera is below the surface
 uniform vec3 u_fog_below_color;
 uniform float u_fog_below_density; // 1/m
 uniform vec2 u_alpha;       // (1: alpha-blended, opacity at normal incidence)
+const int NDETAIL = 6; // water.c: WATER_NDETAIL
+// normal-only detail (water.c): short sines of a light breeze that only the shading sees (the
+// physics never feels them): (k Dx, k Dz 1/m, slope amplitude A k, phase at the mesh centre rad)
+uniform vec4 u_detail[NDETAIL];
 
 in vec2 v_local;
 in vec3 v_pos;
@@ -67,13 +82,26 @@ const float DETAIL_SLOPE = 0.06;  // normal-map slope per unit DuDv (seed 002's 
 const float WAVE_DISTORT = 1.0;   // lookup offset per unit of the wave normal's horizontal part
 const float SHORE_DEPTH = 1.0;    // m of water along the ray over which distortion grows in
 const float EDGE = 0.002;         // keep projective lookups off the texture border
-const float FOLD_J_FULL = 0.35;   // Jacobian at which the fold foam is whole ...
-const float FOLD_J_NONE = 0.75;   // ... and where it starts
-const float STEEP_LO = 0.25;      // 1 - n.y where slope foam starts ...
-const float STEEP_HI = 0.55;      // ... and is whole
-const float GRAZE_BOOST = 0.5;    // slope foam grows by this much seen edge-on
-const float FOAM_CELLS = 2.3;     // foam noise cells per DuDv cell
+const float FOLD_J_FULL = 0.2;    // Jacobian at which the fold foam is whole ...
+const float FOLD_J_NONE = 0.9;    // ... and where it starts: a wide ramp, soft edges
+const float STEEP_LO = 0.1;       // 1 - n.y where slope foam starts ...
+const float STEEP_HI = 0.6;       // ... and is whole (a wide ramp, soft edges)
+const float FOAM_OCTAVE = 3.0;    // the second noise octave's cells per first's
+const float FOAM_GROW = 0.7;      // noise level the coverage lifts the patches by
+const float FOAM_SOFT = 0.6;      // width of a patch's edge, in the noise's [0, 1] range
+const float FOAM_CELLS = 2.0;     // foam noise cells per DuDv cell; this and FOAM_OCTAVE
+                                  // whole, so the offset wrapped at the lattice period
+                                  // (water.c) wraps the foam's lattice too
 const float FOAM_ALBEDO = 0.85;
+const float FOAM_MIN = 0.01;      // coverage under which no foam is drawn (nor its noise paid)
+// pure water's absorption per metre, red first (Pope and Fry, "Absorption spectrum (380-700 nm)
+// of pure water", 1997, at about 600, 550 and 450 nm; geometry.c's WATER_EXTINCTION, which dims
+// the sunlight reaching what lies under water, uses the same)
+const vec3 ABSORB = vec3(0.45, 0.09, 0.07);
+const float NORMAL_FOOTPRINT = 1.5; // the shading's footprint in pixels (see main)
+const float BENT_MIN = 0.05;      // smallest n.v the reflection's normal may have
+const float HORIZON_MIN = 0.01;   // smallest elevation of a reflected ray (its sine) ...
+const float HORIZON_COS = 0.99995; // ... and that elevation's cosine
 
 // integer hash of a lattice point (PCG output permutation), in [0, 1]: positions only, no time
 float ww_hash(ivec2 c) {
@@ -128,7 +156,10 @@ void main() {
     vec2 along = hl > 1e-5 ? -v.xz / hl : vec2(1.0, 0.0);
     vec2 across = vec2(-along.y, along.x);
     float stretch = 1.0 / max(abs(v.y), 0.01);
-    float pix = dist * u_pixel_angle;
+    // the shading's footprint is NORMAL_FOOTPRINT pixels wide: a component is whole from 6
+    // samples per wavelength and gone at 3, so none is shaded near the Nyquist limit, where its
+    // alias beats with its neighbours into moire (the mesh keeps its own fade by its spacing)
+    float pix = NORMAL_FOOTPRINT * dist * u_pixel_angle;
 
     // surface partials dP/dx, dP/dz at the rest point (gerstner.glsl: ww_partials). The geometry
     // fades waves by the mesh spacing; the normals fade each wave by the footprint along its
@@ -159,6 +190,31 @@ void main() {
         // normal-map detail: the DuDv as the slope of a small height field (seed 002)
         n = normalize(n - DETAIL_SLOPE * vec3(dudv.x, 0.0, dudv.y));
     }
+    // fine detail: slopes of short sines, each faded by the footprint along its direction as
+    // the waves are; what the fade removes widens the sun highlight (LEAN mapping's variance,
+    // Olano and Baker, "LEAN Mapping", 2010) so the far water keeps its sheen, not its shimmer.
+    // Part of the normal-map detail, so only with the DuDv (seed 002), and never on flat water
+    // (a mirror)
+#if WW_WAVE_MODEL != WW_MODEL_FLAT
+    if (u_distort.z > 0.5) {
+        ww_footprint fp = ww_footprint_make(along, across, stretch, pix);
+        vec2 g = vec2(0.0);
+        for (int j = 0; j < NDETAIL; j++) {
+            vec4 d = u_detail[j];
+            float k = length(d.xy), L = 2.0 * WW_PI / k;
+            // longest first (water.c): faded out across the view, this one and the rest are
+            // gone in every direction; their slope variance goes to the highlight
+            if (ww_faded_out(L, fp.inv_pix)) {
+                for (int i = j; i < NDETAIL; i++) removed += 0.5 * u_detail[i].z * u_detail[i].z;
+                break;
+            }
+            float f = ww_wave_fade_along(L, d.xy / k, fp);
+            removed += 0.5 * (1.0 - f * f) * d.z * d.z;
+            g += (f * d.z * cos(d.w + dot(d.xy, v_local)) / k) * d.xy;
+        }
+        n = normalize(n - vec3(g.x, 0.0, g.y));
+    }
+#endif
     // the lookups' offset on screen: DuDv plus the waves' tilt, horizontal world directions
     // taken to screen x (camera right) and y (farther is higher)
     vec2 tilt = dudv + WAVE_DISTORT * nw.xz;
@@ -190,7 +246,16 @@ void main() {
     float ndv = max(dot(n, v), 0.0);
     float ndl = max(dot(n, l), 0.0);
     float fr = ww_fresnel(ndv);
-    vec3 rdir = reflect(-v, n);
+    // the reflected ray: about the normal bent toward the viewer where it faces away (a wave's
+    // back seen edge-on, which the pixel cannot see), then kept above the horizon
+    vec3 nb = n;
+    float nv = dot(n, v);
+    if (nv < BENT_MIN) nb = normalize(n + (BENT_MIN - nv) * v);
+    vec3 rdir = reflect(-v, nb);
+    if (rdir.y < HORIZON_MIN) {
+        vec2 hz = rdir.xz / max(length(rdir.xz), 1e-6);
+        rdir = vec3(hz.x * HORIZON_COS, HORIZON_MIN, hz.y * HORIZON_COS);
+    }
 
     // reflection: the mirrored scene, or the sky
     vec3 refl;
@@ -212,8 +277,14 @@ void main() {
         float zd = ww_linear_depth(texture(u_scene_depth, uv).r);
         if (zd < zw) uv = uv0; // the distorted lookup found something in front of the water
         else zs = zd;
+        // the path through the water to what is seen: its depth below the surface over the
+        // refracted ray's cosine (Snell), not the straight view ray, which grazes far longer
         float thick = max(zs - zw, 0.0) * ray;
-        refr = mix(deep, texture(u_scene_color, uv).rgb, exp(-u_murk * thick));
+        vec3 t = refract(-v, n, 1.0 / ETA_WATER);
+        float path = thick * abs(v.y) / max(-t.y, 0.2);
+        // Beer-Lambert per channel: absorbed red first, plus the murk's grey extinction
+        vec3 tr = exp(-(ABSORB + u_murk) * path);
+        refr = mix(deep, texture(u_scene_color, uv).rgb, tr);
     }
     vec3 c = mix(refr, refl, fr);
 
@@ -231,15 +302,25 @@ void main() {
     float foam = 0.0;
     vec3 foam_lit = vec3(0.0);
     if (u_foam > 0.0) {
+        // coverage: a smooth ramp of the fold (J falls from 1 as the crest steepens and
+        // folds), squared so it gathers toward the crest and thins out softly around it
         float jac = dpdx.x * dpdz.z - dpdx.z * dpdz.x;
-        float fold = 1.0 - smoothstep(FOLD_J_FULL, FOLD_J_NONE, jac);
-        float graze = 1.0 - ndv;
-        float steep = smoothstep(STEEP_LO, STEEP_HI, 1.0 - nw.y) * (1.0 + GRAZE_BOOST * graze);
-        float mask = clamp(max(fold, steep), 0.0, 1.0);
-        float inv_fp = 1.0 / max(pix * stretch, 1e-6), cells = FOAM_CELLS * u_distort.y;
-        float fade = ww_wave_fade(1.0 / cells, inv_fp);
-        float nz = 0.5 + 0.5 * fade * ww_noise(cells * v_local + u_dudv_o[0] * FOAM_CELLS).x;
-        foam = u_foam * mask * smoothstep(1.0 - mask, 1.3 - mask, nz);
+        float cover = 1.0 - smoothstep(FOLD_J_FULL, FOLD_J_NONE, jac);
+        // the families that move no water sideways never fold: their slope stands in
+        cover = max(cover, smoothstep(STEEP_LO, STEEP_HI, 1.0 - nw.y));
+        // texture-free noise breaks it into patches that grow with the coverage; the patches'
+        // edges ramp over FOAM_SOFT of the noise's range (a smooth noise: several pixels), and
+        // the noise fades with the footprint toward its mean, so no shimmer far away
+        if (cover > FOAM_MIN) {
+            float inv_fp = 1.0 / max(pix * stretch, 1e-6), cells = FOAM_CELLS * u_distort.y;
+            vec2 q = cells * v_local + u_dudv_o[0] * FOAM_CELLS;
+            float n1 = ww_wave_fade(1.0 / cells, inv_fp) * ww_noise(q).x;
+            float n2 = ww_wave_fade(1.0 / (FOAM_OCTAVE * cells), inv_fp) *
+                       ww_noise(FOAM_OCTAVE * q + vec2(37.0, 91.0)).x;
+            float nz = 0.5 + 0.5 * (0.65 * n1 + 0.35 * n2);
+            float patch = nz + FOAM_GROW * (cover - 0.5);
+            foam = u_foam * sqrt(cover) * smoothstep(0.5 - 0.5 * FOAM_SOFT, 0.5 + 0.5 * FOAM_SOFT, patch);
+        }
         foam_lit = FOAM_ALBEDO * (u_ambient + u_sun_color * max(dot(nw, l), 0.0) * sun_up);
         c = mix(c, foam_lit, foam);
         sun *= 1.0 - foam;

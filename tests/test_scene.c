@@ -61,12 +61,12 @@ TEST(scene_defaults_fill_every_field) {
     ENSURE_NEAR(sc->day_length, 0.0, SCENE_VALUE_TOL);
     ENSURE_NEAR(sc->sun_max_elevation, WW_PI / 3.0, SCENE_ANGLE_TOL);
     for (int i = 0; i < 3; i++) ENSURE(sc->fog_color[i] < 0.0);
-    ENSURE_NEAR(sc->fog_density, 0.0012, SCENE_VALUE_TOL);
+    ENSURE_NEAR(sc->fog_density, 0.0004, SCENE_VALUE_TOL);
     ENSURE_NEAR(sc->water_level, 0.0, SCENE_VALUE_TOL);
     ENSURE_NEAR(sc->water_depth, 8.0, SCENE_VALUE_TOL);
-    ENSURE_NEAR(sc->water_color[0], 0.02, SCENE_VALUE_TOL);
-    ENSURE_NEAR(sc->water_color[1], 0.09, SCENE_VALUE_TOL);
-    ENSURE_NEAR(sc->water_color[2], 0.12, SCENE_VALUE_TOL);
+    ENSURE_NEAR(sc->water_color[0], 0.01, SCENE_VALUE_TOL);
+    ENSURE_NEAR(sc->water_color[1], 0.07, SCENE_VALUE_TOL);
+    ENSURE_NEAR(sc->water_color[2], 0.15, SCENE_VALUE_TOL);
     ENSURE_EQ_INT(sc->wave_model, WW_WAVES_GERSTNER);
     ENSURE_EQ_INT(sc->nwaves, 0);
     ENSURE_NEAR(sc->fov, WW_PI / 3.0, SCENE_ANGLE_TOL);

@@ -15,6 +15,10 @@
 #include "gfx/render_impl.h"
 #include "sim/ripples.h"
 
+#define WATER_SKIRT_R 1e6       /* the skirt ring's radius, m: within 0.06 deg of the horizon
+                                 * seen from 1 km up */
+#define WATER_SKIRT_MIN_FAR 1e3 /* far clips nearer than this (m) are a deliberate cut: no skirt */
+
 struct ww_water {
     GLuint prog, vao, vbo, ibo;
     GLsizei ninner;     /* indices of the inner disc (drawn whole), first in the buffer */
@@ -29,6 +33,8 @@ struct ww_water {
     GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
     GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube;
     GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
+    GLint detail, skirt;
+    float skirt_r; /* rest radius from which vertices belong to the skirt, m (huge: none) */
     ww_water_ubos ubos;
     ww_water_waves waves;    /* the components in upload order; phases set per frame */
     ww_ripple_block ripples; /* filled per frame when the scene has ripples */
@@ -256,13 +262,20 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, doubl
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory for the mesh");
     }
 
-    /* vertices: ring j (1-based) at radius s0 (q^j - 1) / (q - 1), or j s0 when q = 1 */
+    /* vertices: ring j (1-based) at radius s0 (q^j - 1) / (q - 1), or j s0 when q = 1. With a far
+     * clip of a kilometre or more the last ring is a skirt pushed out to WATER_SKIRT_R, where the
+     * plane seen from any height a camera takes lies within a pixel of the horizon: the water
+     * then meets the sky at the horizon, fogged into it, instead of ending in a hard band at the
+     * far clip (the vertex shader keeps the skirt's depth inside the far plane) */
+    int skirt = far_clip >= WATER_SKIRT_MIN_FAR && nring > 2 && m.reach < WATER_SKIRT_R;
+    w->skirt_r = skirt ? (float)(0.5 * WATER_SKIRT_R) : 1e30f;
     v[0] = v[1] = 0.0f;
     double r = 0.0, step = s0;
     int ninner = 1; /* rings in the inner disc */
     for (int j = 0; j < nring; j++) {
         r += step;
         step *= q;
+        if (skirt && j == nring - 1) r = WATER_SKIRT_R;
         if (r <= WW_WATER_INNER_R || j == 0) {
             ninner = j + 1;
             w->inner_r = r;
@@ -351,6 +364,8 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->fog_below_color = ww_gfx_uniform(gl, w->prog, "u_fog_below_color");
     w->fog_below_density = ww_gfx_uniform(gl, w->prog, "u_fog_below_density");
     w->alpha = ww_gfx_uniform(gl, w->prog, "u_alpha");
+    w->detail = ww_gfx_uniform(gl, w->prog, "u_detail");
+    w->skirt = ww_gfx_uniform(gl, w->prog, "u_skirt_r");
     *out = w;
     return WW_OK;
 }
@@ -396,6 +411,27 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
     int s = (int)fmod(from, (double)w->nseg);
     *first = s < 0 ? s + w->nseg : s;
     *count = n;
+}
+
+/* the normal-only detail of water.frag.glsl: short deep-water sines (wavelength m, direction deg,
+ * slope amplitude A k) that only the shading sees, so the near water is not smooth plastic;
+ * each fades with the pixel footprint like the waves, and travels at the deep-water speed.
+ * Longest first: the shader stops at the first one faded out. */
+#define WATER_NDETAIL 6
+static const double detail_wave[WATER_NDETAIL][3] = {
+    {1.31, 23.0, 0.03},  {0.87, 131.0, 0.03},  {0.61, -52.0, 0.025},
+    {0.43, 77.0, 0.025}, {0.29, 188.0, 0.02},  {0.19, -11.0, 0.02}};
+
+static void detail_waves(const ww_state *st, const double centre[2], float d[WATER_NDETAIL][4]) {
+    for (int j = 0; j < WATER_NDETAIL; j++) {
+        double k = WW_TAU / detail_wave[j][0], a = detail_wave[j][1] * (WW_PI / 180.0);
+        double kx = k * cos(a), kz = k * sin(a), omega = sqrt(9.81 * k);
+        d[j][0] = (float)kx;
+        d[j][1] = (float)kz;
+        d[j][2] = (float)detail_wave[j][2];
+        /* as the wave phases: the wrap of omega t alone keeps it exact at large t */
+        d[j][3] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] - ww_m_wrap_tau(omega * st->t));
+    }
 }
 
 /* the DuDv pattern's two layers (water.frag.glsl): layer j maps a rest offset p (m) to lattice
@@ -483,6 +519,9 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     gl->Uniform3f(w->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
     gl->Uniform1f(w->fog_below_density, (float)sc->render.fog_below_density);
     gl->Uniform2f(w->alpha, lk->alpha_blend ? 1.0f : 0.0f, (float)lk->alpha);
+    float det[WATER_NDETAIL][4];
+    detail_waves(f->st, centre, det);
+    gl->Uniform4fv(w->detail, WATER_NDETAIL, &det[0][0]);
     bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);
@@ -529,6 +568,7 @@ void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
                   (float)(sc->water_level - f->cam_pos[1]), (float)(centre[1] - f->cam_pos[2]));
     ww_water_ubos_bind(gl, &w->ubos);
     gl->Uniform3fv(w->ugrid, 1, w->grid);
+    gl->Uniform1f(w->skirt, w->skirt_r);
     gl->Uniform3f(w->water_color, (float)sc->water_color[0], (float)sc->water_color[1],
                   (float)sc->water_color[2]);
     gl->Uniform3f(w->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);

@@ -1087,14 +1087,14 @@ void ww_scene_defaults(ww_scene *sc) {
     sc->day_length = 0.0;
     sc->sun_max_elevation = ww_m_rad(60.0);
     for (int i = 0; i < 3; i++) sc->fog_color[i] = -1.0;
-    sc->fog_density = 0.0012;
+    sc->fog_density = 0.0004;
     ww_render_defaults(&sc->render);
     ww_audio_defaults(&sc->audio);
     sc->water_level = 0.0;
     sc->water_depth = 8.0;
-    sc->water_color[0] = 0.02;
-    sc->water_color[1] = 0.09;
-    sc->water_color[2] = 0.12;
+    sc->water_color[0] = 0.01;
+    sc->water_color[1] = 0.07;
+    sc->water_color[2] = 0.15;
     sc->wave_model = WW_WAVES_GERSTNER;
     sc->wave_random = (ww_wave_random){.count = 0,
                                        .wavelength = {2.0, 30.0},

@@ -1,0 +1,414 @@
+/* test_picture_water.c - the water's optics measured on rendered frames, not against goldens: a
+ * statistic over a region of the picture (a mask from two renders, a count, a colour mean or
+ * spread) that the defect it guards against moves, with a threshold named for what it allows.
+ * Each test prints its figures, so a change in the look shows as numbers.
+ *   submerged      what lies under water seen through the surface is darker than its part
+ *                  above it, and bluer the deeper it lies (Beer-Lambert, red absorbed first)
+ *   underwater     a diver sees the seabed: texture (caustics, shading) survives the fog
+ *   cubemap        no dark streaks where wave backs reflect the cubemap's lower half
+ *   high view      from 300 m: no hard band where the water ends, little pixel-scale noise
+ *   foam           soft-edged coverage that grows with the waves' steepness
+ *   open sea       colour and contrast in the water, and no shimmer far away
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io/image.h"
+#include "io/writers.h"
+#include "test.h"
+
+#define W 640 /* frames are rendered at 640x360, but for the moire, which shows at 1280x720 */
+#define H 360
+
+#define MASK_THRESH 6            /* 8-bit levels a pixel must move to count as the object's */
+#define SUBMERGED_DARKER 0.9     /* the submerged face's luminance over the same face's above
+                                  * the water at most: Fresnel and absorption take >= 10% */
+#define DEEPER_BLUER 1.03        /* B/R of the lower half of the submerged face over the upper
+                                  * half's at least: 0.5 m deeper, red absorbed 0.45/m */
+#define SEABED_TEXTURE 0.45      /* RMS 8-bit luminance difference of pixels 12 apart on the
+                                  * seabed seen from 1.2 m above it, at least */
+#define STREAK_ROWS 3            /* a streak is a line at most this many rows thick ... */
+#define STREAK_DEPTH 0.75        /* ... darker than this times the water above and below it ... */
+#define DARK_STREAK_LEVEL 0.7    /* ... and than this times the water's median luminance */
+#define DARK_STREAK_FRACTION 0.003 /* the share of water pixels in streaks, at most */
+#define ROW_STEP_MAX 1.2         /* largest jump of the mean 8-bit luminance between neighbouring
+                                  * rows of the water seen from 300 m */
+#define HIGH_FREQ_MAX 0.85       /* mean |L - mean of its 4 neighbours| of that water, 8-bit */
+#define FOAM_LEVEL 4             /* 8-bit levels foam must add to a pixel to count as foam */
+#define FOAM_SOFT_MIN 0.35       /* foam pixels at under half the foam's 99th percentile, at least */
+#define WATER_SATURATION_MIN 0.13 /* mean (max - min) / max of the near water's pixels */
+#define WATER_CONTRAST_MIN 18.0  /* standard deviation of their 8-bit luminance: not a fog bank */
+#define WATER_DETAIL_MIN 0.5     /* mean |L - mean of its 4 neighbours| there: fine detail, not
+                                  * smooth plastic */
+#define SHIMMER_MAX 3.0          /* mean 8-bit luminance change of the far water between frames */
+
+typedef struct img {
+    ww_image im;
+    int ok;
+} img;
+
+/* frame `frame` of scene (a path) with extra arguments, rendered at w x h into a fresh folder
+ * and read */
+static img render_frame_at(const char *scene, int frame, const char *args, const char *tag, int w,
+                           int h) {
+    img r = {0};
+    char dir[512], c[4096], path[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(tag));
+    snprintf(c, sizeof c, "%s render %s --frames %d:%d --size %dx%d -o %s --quiet %s", ww_test_bin(),
+             scene, frame, frame + 1, w, h, dir, args ? args : "");
+    int rc = ww_test_run(c, NULL, NULL);
+    ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
+    if (rc != 0) return r;
+    snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
+    ww_error err = {0};
+    r.ok = ww_read_png(path, &r.im, &err) == WW_OK && r.im.u8 && r.im.width == w && r.im.height == h &&
+           r.im.channels >= 3;
+    ENSURE_MSG(r.ok, "%s: %s", path, err.msg);
+    return r;
+}
+
+static img render_frame(const char *scene, int frame, const char *args, const char *tag) {
+    return render_frame_at(scene, frame, args, tag, W, H);
+}
+
+static void img_free(img *a) { ww_image_free(&a->im); }
+
+static const unsigned char *px(const img *a, int x, int y) {
+    return a->im.u8 + ((size_t)y * (size_t)a->im.width + (size_t)x) * (size_t)a->im.channels;
+}
+
+/* Rec. 709 luma of the 8-bit values */
+static double luma(const img *a, int x, int y) {
+    const unsigned char *p = px(a, x, y);
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
+
+static int max_diff(const img *a, const img *b, int x, int y) {
+    const unsigned char *p = px(a, x, y), *q = px(b, x, y);
+    int m = 0;
+    for (int k = 0; k < 3; k++) {
+        int d = abs((int)p[k] - (int)q[k]);
+        if (d > m) m = d;
+    }
+    return m;
+}
+
+/* write a scene file into the test's folder; its path */
+static const char *scene_file(const char *tag, const char *text) {
+    static char path[600];
+    snprintf(path, sizeof path, "%s/scene.yaml", ww_test_tmpdir(tag));
+    ENSURE(ww_test_write_text(path, text) == 0);
+    return path;
+}
+
+/* ---- submerged: darker, and bluer with depth ------------------------------------------------ */
+
+/* a 2 m cube floating half under flat water at noon, at rest at frame 0, seen from 3 m up and
+ * 6 m away on the sun's side (the sun culminates toward -z; 60 deg vertical fov, looking at the
+ * cube's centre): its sunlit face spans rows 154..247 of 360, the waterline on it at row 204,
+ * columns 266..374. Reflection, shadows and post effects off, so the face's pixels are its own
+ * light through the surface plus the sky's Fresnel reflection. */
+static const char *const CUBE_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 1}\n"
+    "render: {size: [640, 360], shadows: false, reflection: false, bloom: false, god_rays: false,\n"
+    "         fxaa: false, seabed: false}\n"
+    "sky: {time_of_day: 12}\n"
+    "water: {waves: {model: flat}, look: {foam: false, caustics: false}}\n"
+    "objects:\n"
+    "  cubes: [{position: [0, 0, 0], size: 2, density: 500}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 3, -6], look_at: [0, 0, 0]}]\n";
+
+typedef struct band {
+    double luma, r, g, b;
+    long n;
+} band;
+
+static band band_mean(const img *a, const img *without, int x0, int x1, int y0, int y1) {
+    band s = {0};
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            if (max_diff(a, without, x, y) <= MASK_THRESH) continue;
+            const unsigned char *p = px(a, x, y);
+            s.luma += luma(a, x, y);
+            s.r += p[0];
+            s.g += p[1];
+            s.b += p[2];
+            s.n++;
+        }
+    if (s.n > 0) {
+        s.luma /= (double)s.n;
+        s.r /= (double)s.n;
+        s.g /= (double)s.n;
+        s.b /= (double)s.n;
+    }
+    return s;
+}
+
+TEST_IMAGE(picture_water_submerged_darker_and_bluer) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_cube", CUBE_SCENE);
+    img with = render_frame(scene, 0, NULL, "pw_cube_with");
+    img without = render_frame(scene, 0, "--set \"objects.cubes[0].position=[0,0,-4000]\"",
+                               "pw_cube_without");
+    if (with.ok && without.ok) {
+        /* the face's middle columns, 6 rows clear of its edges and of the waterline */
+        band above = band_mean(&with, &without, 290, 350, 162, 198);
+        band upper = band_mean(&with, &without, 290, 350, 210, 226);
+        band lower = band_mean(&with, &without, 290, 350, 226, 241);
+        band below = band_mean(&with, &without, 290, 350, 210, 241);
+        printf("  above water: luma %.1f (%ld px); submerged: luma %.1f (%ld px); B/R upper %.3f, "
+               "lower %.3f\n", above.luma, above.n, below.luma, below.n,
+               upper.b / fmax(upper.r, 1.0), lower.b / fmax(lower.r, 1.0));
+        ENSURE_MSG(above.n > 500 && upper.n > 300 && lower.n > 300,
+                   "the cube's face was not found: %ld, %ld, %ld pixels", above.n, upper.n, lower.n);
+        ENSURE_MSG(below.luma < SUBMERGED_DARKER * above.luma,
+                   "submerged luma %.1f not below %.2f x above-water %.1f", below.luma,
+                   SUBMERGED_DARKER, above.luma);
+        double ru = upper.b / fmax(upper.r, 1.0), rl = lower.b / fmax(lower.r, 1.0);
+        ENSURE_MSG(rl > DEEPER_BLUER * ru, "B/R deeper %.3f not above %.2f x shallower %.3f", rl,
+                   DEEPER_BLUER, ru);
+    }
+    img_free(&with);
+    img_free(&without);
+}
+
+/* ---- under water: the seabed is seen ----------------------------------------------------- */
+
+/* RMS difference of luminance between pixels d apart (horizontally and vertically) over rows
+ * y0..y1: texture, which a smooth fog gradient lacks */
+static double texture_rms(const img *a, int y0, int y1, int d) {
+    double s = 0.0;
+    long n = 0;
+    for (int y = y0; y + d < y1; y++)
+        for (int x = 0; x + d < a->im.width; x++) {
+            double l = luma(a, x, y), h = luma(a, x + d, y) - l, v = luma(a, x, y + d) - l;
+            s += h * h + v * v;
+            n += 2;
+        }
+    return n ? sqrt(s / (double)n) : 0.0;
+}
+
+/* scenes/lake.yaml at t = 12 s: the camera dives 1.2 m above the seabed, looking down at it */
+TEST_IMAGE(picture_water_underwater_seabed_visible) {
+    REQUIRE_GL();
+    img a = render_frame("scenes/lake.yaml", 360, NULL, "pw_dive");
+    if (a.ok) {
+        double t = texture_rms(&a, H * 4 / 10, H, 12);
+        printf("  seabed texture (RMS luma difference 12 px apart): %.2f\n", t);
+        ENSURE_MSG(t >= SEABED_TEXTURE, "seabed texture %.2f < %.2f: the fog hides it", t,
+                   SEABED_TEXTURE);
+    }
+    img_free(&a);
+}
+
+/* ---- cubemap: no dark streaks ------------------------------------------------------------ */
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* scenes/features/skybox.yaml frame 0: the camera 3 m up looking 2.8 deg up; the horizon lies
+ * at 53% of the height; the water below 58% */
+TEST_IMAGE(picture_water_cubemap_no_dark_streaks) {
+    REQUIRE_GL();
+    img a = render_frame("scenes/features/skybox.yaml", 0, NULL, "pw_skybox");
+    if (a.ok) {
+        int y0 = H * 58 / 100;
+        long n = (long)(H - y0) * W, dark = 0, k = 0;
+        double *l = malloc((size_t)n * sizeof *l);
+        ENSURE(l != NULL);
+        if (l) {
+            for (int y = y0; y < H; y++)
+                for (int x = 0; x < W; x++) l[k++] = luma(&a, x, y);
+            double *s = malloc((size_t)n * sizeof *s);
+            ENSURE(s != NULL);
+            if (s) {
+                memcpy(s, l, (size_t)n * sizeof *s);
+                qsort(s, (size_t)n, sizeof *s, cmp_double);
+                double median = s[n / 2];
+                /* a streak: a thin line darker than the water STREAK_ROWS above and below it,
+                 * and dark in itself (the gaps between sun glints are not) */
+                for (int y = y0 + STREAK_ROWS; y < H - STREAK_ROWS; y++)
+                    for (int x = 0; x < W; x++) {
+                        double c = l[(long)(y - y0) * W + x];
+                        double up = l[(long)(y - STREAK_ROWS - y0) * W + x];
+                        double dn = l[(long)(y + STREAK_ROWS - y0) * W + x];
+                        dark += c < STREAK_DEPTH * up && c < STREAK_DEPTH * dn &&
+                                c < DARK_STREAK_LEVEL * median;
+                    }
+                double frac = (double)dark / (double)n;
+                printf("  water median luma %.1f; %ld of %ld pixels in dark streaks (%.4f)\n",
+                       median, dark, n, frac);
+                ENSURE_MSG(frac <= DARK_STREAK_FRACTION, "dark streak fraction %.4f > %.4f", frac,
+                           DARK_STREAK_FRACTION);
+                free(s);
+            }
+            free(l);
+        }
+    }
+    img_free(&a);
+}
+
+/* ---- from high up: no band, no moire ------------------------------------------------------ */
+
+/* the largest jump of the mean luminance between neighbouring rows y0..y1, and the mean
+ * |L - mean of its 4 neighbours| there */
+static void row_steps(const img *a, int y0, int y1, double *step, double *hf) {
+    double prev = 0.0, s = 0.0;
+    long n = 0;
+    int w = a->im.width, h = a->im.height;
+    *step = 0.0;
+    for (int y = y0; y < y1; y++) {
+        double m = 0.0;
+        for (int x = 0; x < w; x++) {
+            double l = luma(a, x, y);
+            m += l;
+            if (x > 0 && x + 1 < w && y > 0 && y + 1 < h) {
+                double nb = 0.25 * (luma(a, x - 1, y) + luma(a, x + 1, y) + luma(a, x, y - 1) +
+                                    luma(a, x, y + 1));
+                s += fabs(l - nb);
+                n++;
+            }
+        }
+        m /= w;
+        if (y > y0 && fabs(m - prev) > *step) *step = fabs(m - prev);
+        prev = m;
+    }
+    *hf = n ? s / (double)n : 0.0;
+}
+
+/* scenes/demo.yaml's sea from 300 m up looking 1 deg down at the horizon (55 deg fov: the
+ * horizon 53% down), in clear air so that the fog hides nothing of the water's own edge; at
+ * 1280x720, where the moire of waves shaded near 2 pixels per wavelength shows */
+TEST_IMAGE(picture_water_high_view_no_band_no_moire) {
+    REQUIRE_GL();
+    const int w = 2 * W, h = 2 * H;
+    img a = render_frame_at("scenes/demo.yaml", 0,
+                            "--set \"camera.path[0].position=[0,300,0]\" "
+                            "--set \"camera.path[0].look_at=[0,295,-300]\" "
+                            "--set fog.above.density=0.0001",
+                            "pw_high", w, h);
+    if (a.ok) {
+        double step, hf;
+        row_steps(&a, h * 55 / 100, h - 1, &step, &hf);
+        printf("  largest row-to-row step of the mean luma %.2f; high-frequency energy %.3f\n", step,
+               hf);
+        ENSURE_MSG(step <= ROW_STEP_MAX, "a band edge: rows differ by %.2f > %.2f", step,
+                   ROW_STEP_MAX);
+        ENSURE_MSG(hf <= HIGH_FREQ_MAX, "moire: high-frequency energy %.3f > %.3f", hf,
+                   HIGH_FREQ_MAX);
+    }
+    img_free(&a);
+}
+
+/* ---- foam: soft, and more of it on steeper waves ------------------------------------------- */
+
+typedef struct foam_stats {
+    long foam;      /* pixels foam brightens by FOAM_LEVEL or more */
+    double soft;    /* the share of them under half the 99th percentile of the added light */
+} foam_stats;
+
+static foam_stats foam_measure(const char *steepness, const char *tag) {
+    foam_stats f = {0};
+    char on_args[128], off_args[200], tag_on[64], tag_off[64];
+    snprintf(on_args, sizeof on_args, "--set water.waves.spectrum.steepness=%s", steepness);
+    snprintf(off_args, sizeof off_args, "%s --set water.look.foam=false", on_args);
+    snprintf(tag_on, sizeof tag_on, "%s_on", tag);
+    snprintf(tag_off, sizeof tag_off, "%s_off", tag);
+    img on = render_frame("scenes/spectrum.yaml", 45, on_args, tag_on);
+    img off = render_frame("scenes/spectrum.yaml", 45, off_args, tag_off);
+    if (on.ok && off.ok) {
+        int hist[256] = {0};
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                int d = (int)lround(luma(&on, x, y) - luma(&off, x, y));
+                if (d >= FOAM_LEVEL) {
+                    hist[d > 255 ? 255 : d]++;
+                    f.foam++;
+                }
+            }
+        long c = 0;
+        int p99 = 255;
+        for (int d = 0; d < 256; d++) {
+            c += hist[d];
+            if (c >= f.foam * 99 / 100) {
+                p99 = d;
+                break;
+            }
+        }
+        long soft = 0;
+        for (int d = FOAM_LEVEL; d < p99 / 2 + 1 && d < 256; d++) soft += hist[d];
+        f.soft = f.foam ? (double)soft / (double)f.foam : 0.0;
+        printf("  steepness %s: %ld foam pixels, %.3f of them soft (99th percentile %d levels)\n",
+               steepness, f.foam, f.soft, p99);
+    }
+    img_free(&on);
+    img_free(&off);
+    return f;
+}
+
+/* scenes/spectrum.yaml frame 45 (a JONSWAP sea, 48 components) at two steepnesses */
+TEST_IMAGE(picture_water_foam_soft_and_follows_steepness) {
+    REQUIRE_GL();
+    foam_stats calm = foam_measure("0.3", "pw_foam_calm");
+    foam_stats steep = foam_measure("0.8", "pw_foam_steep");
+    ENSURE_MSG(steep.foam > W * H / 200, "too little foam on the steep sea: %ld pixels", steep.foam);
+    ENSURE_MSG(steep.foam > 2 * calm.foam, "foam coverage %ld at steepness 0.8 not above twice %ld "
+               "at 0.3", steep.foam, calm.foam);
+    ENSURE_MSG(steep.soft >= FOAM_SOFT_MIN, "foam edges hard: %.3f soft < %.3f", steep.soft,
+               FOAM_SOFT_MIN);
+}
+
+/* ---- the open sea: colour, contrast, no shimmer ------------------------------------------- */
+
+/* scenes/demo.yaml frames 0 and 1: the camera 4 m up looking level at the low sun; the horizon
+ * at mid-height. The near water (rows 80%..100%, within about 15 m) for colour, contrast and
+ * fine detail; the far water (rows 51%..56%, hundreds of metres away) for the shimmer between
+ * consecutive frames. */
+TEST_IMAGE(picture_water_open_sea_colour_no_shimmer) {
+    REQUIRE_GL();
+    img a = render_frame("scenes/demo.yaml", 0, NULL, "pw_sea0");
+    img b = render_frame("scenes/demo.yaml", 1, NULL, "pw_sea1");
+    if (a.ok && b.ok) {
+        double sat = 0.0, m = 0.0, m2 = 0.0, detail = 0.0;
+        long n = 0;
+        for (int y = H * 80 / 100; y < H - 1; y++)
+            for (int x = 1; x + 1 < W; x++) {
+                const unsigned char *p = px(&a, x, y);
+                int hi = p[0] > p[1] ? p[0] : p[1], lo = p[0] < p[1] ? p[0] : p[1];
+                hi = hi > p[2] ? hi : p[2];
+                lo = lo < p[2] ? lo : p[2];
+                sat += hi > 0 ? (double)(hi - lo) / hi : 0.0;
+                double l = luma(&a, x, y);
+                m += l;
+                m2 += l * l;
+                detail += fabs(l - 0.25 * (luma(&a, x - 1, y) + luma(&a, x + 1, y) +
+                                           luma(&a, x, y - 1) + luma(&a, x, y + 1)));
+                n++;
+            }
+        sat /= (double)n;
+        m /= (double)n;
+        detail /= (double)n;
+        double sd = sqrt(fmax(m2 / (double)n - m * m, 0.0));
+        double sh = 0.0;
+        long k = 0;
+        for (int y = H * 51 / 100; y < H * 56 / 100; y++)
+            for (int x = 0; x < W; x++, k++) sh += fabs(luma(&a, x, y) - luma(&b, x, y));
+        sh /= (double)k;
+        printf("  near water: saturation %.3f, luma mean %.1f sd %.1f, detail %.3f; far shimmer "
+               "%.2f\n", sat, m, sd, detail, sh);
+        ENSURE_MSG(sat >= WATER_SATURATION_MIN, "washed out: saturation %.3f < %.3f", sat,
+                   WATER_SATURATION_MIN);
+        ENSURE_MSG(sd >= WATER_CONTRAST_MIN, "flat: luma sd %.1f < %.1f", sd, WATER_CONTRAST_MIN);
+        ENSURE_MSG(detail >= WATER_DETAIL_MIN, "plastic: detail %.3f < %.3f", detail,
+                   WATER_DETAIL_MIN);
+        ENSURE_MSG(sh <= SHIMMER_MAX, "shimmer far away: %.2f > %.2f", sh, SHIMMER_MAX);
+    }
+    img_free(&a);
+    img_free(&b);
+}
