@@ -1,0 +1,212 @@
+/* test_picture_hull.c - picture defects around the boat and the water's optics, each measured on
+ * the meshes or on a rendered frame: every procedural mesh closed and wound outward, the hull's
+ * inside enclosed below its gunwale (no slit at the bow), no water drawn inside the hull in the
+ * seat view, no submerged faces in the planar reflection, and no torn slivers where the
+ * refraction samples what lies in front of the water.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gfx/meshgen.h"
+#include "io/writers.h"
+#include "test.h"
+
+#define WELD_QUANTUM 1e5 /* positions welded on a 1e-5 grid (mesh units) */
+#define AREA_MIN 1e-12   /* a triangle of less twice-area (mesh units^2) is degenerate */
+
+/* ---- meshes ---- */
+
+typedef struct uedge {
+    long long a[3], b[3]; /* welded end points, a < b */
+    int fwd;              /* the triangle runs a -> b */
+} uedge;
+
+static int cmp_pt(const long long *a, const long long *b) {
+    for (int k = 0; k < 3; k++)
+        if (a[k] != b[k]) return a[k] < b[k] ? -1 : 1;
+    return 0;
+}
+
+static int cmp_uedge(const void *x, const void *y) {
+    const uedge *a = x, *b = y;
+    int c = cmp_pt(a->a, b->a);
+    return c ? c : cmp_pt(a->b, b->b);
+}
+
+static void weld(const float *p, long long q[3]) {
+    for (int k = 0; k < 3; k++) q[k] = llround((double)p[k] * WELD_QUANTUM);
+}
+
+/* undirected edges by welded position: how many are used by exactly one triangle (the
+ * boundary), by more than two (non-manifold), and how many triangles are degenerate */
+typedef struct edge_census {
+    long boundary, nonmanifold, degenerate;
+    long same_way; /* edges whose two triangles run it the same way (inconsistent winding) */
+} edge_census;
+
+static edge_census census(const ww_mesh_data *m) {
+    edge_census c = {0, 0, 0, 0};
+    uedge *e = malloc((size_t)m->nindex * sizeof *e);
+    size_t n = 0;
+    for (uint32_t t = 0; e && t + 2 < m->nindex; t += 3) {
+        const float *v[3];
+        for (int s = 0; s < 3; s++) v[s] = m->vertex + 8 * m->index[t + (uint32_t)s];
+        double e1[3], e2[3];
+        for (int k = 0; k < 3; k++) {
+            e1[k] = (double)v[1][k] - v[0][k];
+            e2[k] = (double)v[2][k] - v[0][k];
+        }
+        double x = e1[1] * e2[2] - e1[2] * e2[1], y = e1[2] * e2[0] - e1[0] * e2[2],
+               z = e1[0] * e2[1] - e1[1] * e2[0];
+        if (sqrt(x * x + y * y + z * z) < AREA_MIN) c.degenerate++;
+        for (int s = 0; s < 3; s++) {
+            long long p[3], q[3];
+            weld(v[s], p);
+            weld(v[(s + 1) % 3], q);
+            int lt = cmp_pt(p, q) < 0;
+            memcpy(e[n].a, lt ? p : q, sizeof p);
+            memcpy(e[n].b, lt ? q : p, sizeof p);
+            e[n].fwd = lt;
+            n++;
+        }
+    }
+    qsort(e, n, sizeof *e, cmp_uedge);
+    for (size_t i = 0; i < n;) {
+        size_t j = i;
+        while (j < n && cmp_uedge(&e[i], &e[j]) == 0) j++;
+        if (j - i == 1) c.boundary++;
+        if (j - i > 2) c.nonmanifold++;
+        if (j - i == 2 && e[i].fwd == e[i + 1].fwd) c.same_way++;
+        i = j;
+    }
+    free(e);
+    return c;
+}
+
+/* vertex normals that disagree with the winding of a triangle using them */
+static long normals_against_winding(const ww_mesh_data *m) {
+    long wrong = 0;
+    for (uint32_t t = 0; t + 2 < m->nindex; t += 3) {
+        const float *v[3];
+        for (int s = 0; s < 3; s++) v[s] = m->vertex + 8 * m->index[t + (uint32_t)s];
+        double e1[3], e2[3];
+        for (int k = 0; k < 3; k++) {
+            e1[k] = (double)v[1][k] - v[0][k];
+            e2[k] = (double)v[2][k] - v[0][k];
+        }
+        double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                       e1[0] * e2[1] - e1[1] * e2[0]};
+        for (int s = 0; s < 3; s++)
+            if (n[0] * v[s][3] + n[1] * v[s][4] + n[2] * v[s][5] <= 0.0) wrong++;
+    }
+    return wrong;
+}
+
+/* every mesh kind meshgen makes; open: the surfaces that are not solids, with the number of
+ * boundary edges they must have */
+static const struct {
+    ww_mesh_kind kind;
+    const char *name;
+    long open_edges; /* 0: a closed solid */
+} KINDS[] = {
+    {WW_MESH_BOX, "box", 0},
+    {WW_MESH_SPHERE, "sphere", 0},
+    {WW_MESH_STONE, "stone", 0},
+    {WW_MESH_HULL, "hull", 0},
+    {WW_MESH_FISH, "fish", 0},
+    {WW_MESH_LURE, "lure", 0},
+    {WW_MESH_CHEST, "chest", 0},
+    /* a plane: its four sides */
+    {WW_MESH_GRID, "grid", 4 * WW_MESHGEN_GRID},
+    /* the glow column: a tube open at both ends (additive light, caps would double it) */
+    {WW_MESHGEN_COLUMN, "column", 2 * WW_MESHGEN_SLICES},
+    /* the hull's lid: only its rim, the inner gunwale loop */
+    {WW_MESHGEN_HULL_CAP, "hull_cap", -1},
+};
+
+/* closed: every edge (after welding coincident positions) shared by exactly two triangles that
+ * run it opposite ways, no degenerate triangle, positive signed volume, and vertex normals that agree with the winding */
+TEST(hull_meshgen_every_mesh_closed_and_outward) {
+    for (size_t i = 0; i < sizeof KINDS / sizeof KINDS[0]; i++) {
+        ww_mesh_data m;
+        ww_error err = {0};
+        ENSURE(ww_meshgen(KINDS[i].kind, &m, &err) == WW_OK);
+        if (!m.nindex) continue;
+        edge_census c = census(&m);
+        long open = KINDS[i].open_edges;
+        fprintf(stderr, "%s: %ld boundary, %ld non-manifold edges, %ld degenerate; volume %.6g\n",
+                KINDS[i].name, c.boundary, c.nonmanifold, c.degenerate, ww_meshgen_volume(&m));
+        if (open >= 0)
+            ENSURE_MSG(c.boundary == open, "%s: %ld edges used by one triangle only (want %ld)",
+                       KINDS[i].name, c.boundary, open);
+        else
+            ENSURE_MSG(c.boundary > 0, "%s: a lid with no rim", KINDS[i].name);
+        ENSURE_MSG(c.nonmanifold == 0, "%s: %ld edges used by more than two triangles",
+                   KINDS[i].name, c.nonmanifold);
+        ENSURE_MSG(c.same_way == 0, "%s: %ld edges run the same way by both their triangles",
+                   KINDS[i].name, c.same_way);
+        ENSURE_MSG(c.degenerate == 0, "%s: %ld degenerate triangles", KINDS[i].name,
+                   c.degenerate);
+        ENSURE_MSG(normals_against_winding(&m) == 0, "%s: %ld vertex normals against the winding",
+                   KINDS[i].name, normals_against_winding(&m));
+        if (open == 0)
+            ENSURE_MSG(ww_meshgen_volume(&m) > 0.0, "%s: signed volume %g is not positive",
+                       KINDS[i].name, ww_meshgen_volume(&m));
+        ww_meshgen_free(&m);
+    }
+}
+
+/* a ray from o along d hits a triangle of m (Moller-Trumbore, both faces) */
+static int ray_hits(const ww_mesh_data *m, const double o[3], const double d[3]) {
+    for (uint32_t t = 0; t + 2 < m->nindex; t += 3) {
+        const float *a = m->vertex + 8 * m->index[t], *b = m->vertex + 8 * m->index[t + 1],
+                    *c = m->vertex + 8 * m->index[t + 2];
+        double e1[3], e2[3], s[3];
+        for (int k = 0; k < 3; k++) {
+            e1[k] = (double)b[k] - a[k];
+            e2[k] = (double)c[k] - a[k];
+            s[k] = o[k] - a[k];
+        }
+        double p[3] = {d[1] * e2[2] - d[2] * e2[1], d[2] * e2[0] - d[0] * e2[2],
+                       d[0] * e2[1] - d[1] * e2[0]};
+        double det = e1[0] * p[0] + e1[1] * p[1] + e1[2] * p[2];
+        if (fabs(det) < 1e-15) continue;
+        double u = (s[0] * p[0] + s[1] * p[1] + s[2] * p[2]) / det;
+        if (u < 0.0 || u > 1.0) continue;
+        double q[3] = {s[1] * e1[2] - s[2] * e1[1], s[2] * e1[0] - s[0] * e1[2],
+                       s[0] * e1[1] - s[1] * e1[0]};
+        double v = (d[0] * q[0] + d[1] * q[1] + d[2] * q[2]) / det;
+        if (v < 0.0 || u + v > 1.0) continue;
+        if ((e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det > 0.0) return 1;
+    }
+    return 0;
+}
+
+#define ENCLOSED_RAYS 360 /* horizontal directions from each point inside the boat */
+
+/* the boat's inside is walled in below the gunwale: horizontal rays from points on the
+ * centreline, from stern to bow, a little above the inner keel and below the lowest gunwale
+ * (HULL_SHEER, 0.05, amidships), all hit the hull; a slit at the bow or an open transom lets
+ * some out */
+TEST(hull_meshgen_inside_walled_in) {
+    ww_mesh_data m;
+    ww_error err = {0};
+    ENSURE(ww_meshgen(WW_MESH_HULL, &m, &err) == WW_OK);
+    if (!m.nindex) return;
+    static const double xs[] = {-0.47, -0.3, 0.0, 0.3, 0.45, 0.475};
+    static const double ys[] = {0.0, 0.02, 0.04};
+    long escaped = 0, total = 0;
+    for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++)
+        for (size_t j = 0; j < sizeof ys / sizeof ys[0]; j++)
+            for (int r = 0; r < ENCLOSED_RAYS; r++) {
+                double th = 2.0 * 3.14159265358979323846 * r / ENCLOSED_RAYS;
+                double o[3] = {xs[i], ys[j], 0.0}, d[3] = {cos(th), 0.0, sin(th)};
+                if (!ray_hits(&m, o, d)) escaped++;
+                total++;
+            }
+    fprintf(stderr, "%ld of %ld rays leave the boat below its gunwale\n", escaped, total);
+    ENSURE_MSG(escaped == 0, "%ld of %ld horizontal rays from inside the boat leave it", escaped,
+               total);
+    ww_meshgen_free(&m);
+}
