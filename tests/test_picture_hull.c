@@ -210,3 +210,108 @@ TEST(hull_meshgen_inside_walled_in) {
                total);
     ww_meshgen_free(&m);
 }
+
+/* ---- rendered frames ---- */
+
+#define PIC_SIZE "640x360"
+#define WATER_TINT "'water.color=[1,0,1]'" /* a water colour no solid in the scenes has */
+#define WATER_TINT_THRESH 6  /* 8-bit levels a pixel moves by when it is water-shaded: the
+                              * water's own colour turned magenta shows in every water pixel */
+#define HULL_RED_RATIO 1.5   /* a hull pixel: red this many times green and blue (the paint is
+                              * (0.55, 0.16, 0.08); wood cubes are 1.5 / 2.6, the sea below 1) */
+#define HULL_RED_MIN 40      /* ... and red above this, so black is not hull */
+#define INSIDE_WATER_PX_MAX 2 /* water pixels allowed inside the hull's outline (a sea pixel
+                               * seen past a corner of the outline where two rims cross a row) */
+
+/* the post-processing that spreads a pixel's colour to its neighbours (FXAA, bloom, light
+ * shafts), off: a pixel then changes with the water's colour only when the water shaded it */
+#define POST_OFF "--set render.fxaa=false --set render.bloom=false --set render.god_rays=false"
+
+/* render frame `frame` of scene with extra arguments into a fresh folder; the PNG's path */
+static int render_at(const char *scene, int frame, const char *args, const char *tag, char *out,
+                     size_t cap) {
+    char dir[512], a[2048];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(tag));
+    snprintf(a, sizeof a, "render %s --frames %d:%d --size " PIC_SIZE " -o %s --quiet %s %s",
+             scene, frame, frame + 1, dir, POST_OFF, args ? args : "");
+    snprintf(out, cap, "%s/frame_%05d.png", dir, frame);
+    return ww_test_ww(a, NULL, NULL);
+}
+
+static const unsigned char *px(const ww_image *im, int x, int y) {
+    return im->u8 + ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels;
+}
+
+static int is_hull(const unsigned char *p) {
+    return p[0] > HULL_RED_MIN && p[0] > HULL_RED_RATIO * p[1] && p[0] > HULL_RED_RATIO * p[2];
+}
+
+/* water pixels inside the hull's outline in a view from the seat: the frame rendered twice, with
+ * the scene's water colour and with WATER_TINT; a pixel that moves by more than
+ * WATER_TINT_THRESH is water-shaded. In each row of the lower half (the boat; the horizon and the
+ * cubes on it lie higher), the hull's outline spans its leftmost to its rightmost hull pixel: the
+ * count is the water pixels inside those spans. -1 when a render fails. */
+static long water_inside_hull(const char *scene, int frame, const char *args, const char *tag) {
+    char a_png[700], b_png[700], tinted[2048], tag_b[128];
+    snprintf(tinted, sizeof tinted, "%s --set " WATER_TINT, args ? args : "");
+    snprintf(tag_b, sizeof tag_b, "%s_tint", tag);
+    if (render_at(scene, frame, args, tag, a_png, sizeof a_png) != 0 ||
+        render_at(scene, frame, tinted, tag_b, b_png, sizeof b_png) != 0)
+        return -1;
+    ww_image a = {0}, b = {0};
+    ww_error err = {0};
+    long n = -1, hull = 0;
+    if (ww_read_png(a_png, &a, &err) != WW_OK || ww_read_png(b_png, &b, &err) != WW_OK) goto done;
+    if (a.width != b.width || a.height != b.height || a.channels < 3) goto done;
+    n = 0;
+    for (int y = a.height / 2; y < a.height; y++) {
+        int x0 = -1, x1 = -1;
+        for (int x = 0; x < a.width; x++)
+            if (is_hull(px(&a, x, y))) {
+                if (x0 < 0) x0 = x;
+                x1 = x;
+                hull++;
+            }
+        for (int x = x0 + 1; x0 >= 0 && x < x1; x++) {
+            const unsigned char *p = px(&a, x, y), *q = px(&b, x, y);
+            int e = 0;
+            for (int c = 0; c < 3; c++) e = abs(p[c] - q[c]) > e ? abs(p[c] - q[c]) : e;
+            if (e > WATER_TINT_THRESH) n++;
+        }
+    }
+    fprintf(stderr, "%s frame %d: %ld hull pixels, %ld water pixels inside the hull's outline\n",
+            scene, frame, hull, n);
+    if (hull == 0) n = -2; /* no boat in view: the view is not the one the test means */
+done:
+    ww_image_free(&a);
+    ww_image_free(&b);
+    return n;
+}
+
+/* the seat view over a rough sea (lake frame 420: the boat pitched, the sea up its sides): no
+ * water drawn inside the hull, with the reflection and refraction passes on and off */
+TEST_IMAGE(hull_picture_no_water_inside_the_boat) {
+    REQUIRE_GL();
+    long n = water_inside_hull("scenes/lake.yaml", 420, NULL, "lake420");
+    ENSURE_MSG(n >= 0, "render or read failed (%ld)", n);
+    ENSURE_MSG(n <= INSIDE_WATER_PX_MAX, "%ld water pixels inside the hull (at most %d)", n,
+               INSIDE_WATER_PX_MAX);
+    n = water_inside_hull("scenes/lake.yaml", 420,
+                          "--set render.reflection=false --set render.refraction=false",
+                          "lake420_plain");
+    ENSURE_MSG(n >= 0, "render or read failed (%ld)", n);
+    ENSURE_MSG(n <= INSIDE_WATER_PX_MAX, "%ld water pixels inside the hull without reflection "
+               "and refraction (at most %d)", n, INSIDE_WATER_PX_MAX);
+}
+
+/* the bow seen from a seat behind it on a flat sea: the two sides meet, so no sea shows between
+ * them on the centreline */
+TEST_IMAGE(hull_picture_bow_closed) {
+    REQUIRE_GL();
+    long n = water_inside_hull("scenes/boat.yaml", 150,
+                               "--set water.waves.model=flat --set 'objects.boat.seat=[-0.5,1.3,0]'",
+                               "bow150");
+    ENSURE_MSG(n >= 0, "render or read failed (%ld)", n);
+    ENSURE_MSG(n <= INSIDE_WATER_PX_MAX, "%ld water pixels between the sides of the bow (at most "
+               "%d)", n, INSIDE_WATER_PX_MAX);
+}

@@ -87,6 +87,7 @@ struct ww_geometry {
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
     gmesh slot[SLOT_COUNT];
+    gmesh hull_cap;   /* the lid over each hull's inside, the hull slot's instances (main pass) */
     int nobj;         /* OBJ models: one mesh per model */
     gmesh obj[WW_MAX_MODELS];
     int obj_model[WW_MAX_MODELS];
@@ -296,6 +297,7 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     if (!g) return;
     if (g->prog) gl->DeleteProgram(g->prog);
     for (int s = 0; s < SLOT_COUNT; s++) mesh_free(gl, &g->slot[s]);
+    mesh_free(gl, &g->hull_cap);
     for (int i = 0; i < g->nobj; i++) mesh_free(gl, &g->obj[i]);
     ww_water_ubos_free(gl, &g->ubos);
     free(g->scratch);
@@ -339,6 +341,11 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         rc = ww_meshgen(SLOT_KIND[s], &m, err);
         if (rc != WW_OK) break;
         mesh_upload(gl, &g->slot[s], m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
+        ww_meshgen_free(&m);
+        if (s != SLOT_HULL) continue;
+        rc = ww_meshgen(WW_MESHGEN_HULL_CAP, &m, err);
+        if (rc != WW_OK) break;
+        mesh_upload(gl, &g->hull_cap, m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
         ww_meshgen_free(&m);
     }
     /* OBJ models: their own mesh each (the assets helper decodes them) */
@@ -513,7 +520,9 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
             m4_mul(m, s, m);
             put(&in[n++], m, cam, paint, 0.0, SPEC_DEFAULT);
         }
-        slot_upload(gl, &g->slot[SLOT_HULL], in, add_models(sc, st, WW_MESH_HULL, cam, in, n));
+        n = add_models(sc, st, WW_MESH_HULL, cam, in, n);
+        slot_upload(gl, &g->slot[SLOT_HULL], in, n);
+        slot_upload(gl, &g->hull_cap, in, n);
     }
     if (g->slot[SLOT_STONE].cap) {
         int n = 0;
@@ -622,8 +631,8 @@ static int draw_mesh(const ww_gl *gl, const gmesh *m) {
 
 int ww_geometry_draw_count(const ww_geometry *g) { return g ? g->draws : 0; }
 
-void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
-                      mat4 view_proj, const float *clip) {
+void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                            ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts) {
     const ww_gl *gl = r->gl;
     const ww_scene *sc = f->sc;
     const ww_state *st = f->st;
@@ -687,12 +696,15 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
         if (s == SLOT_COLUMN || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW)) continue;
+        if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
         draws += draw_mesh(gl, &g->slot[s]);
     }
-    for (int i = 0; i < g->nobj; i++) draws += draw_mesh(gl, &g->obj[i]);
+    for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
+        draws += draw_mesh(gl, &g->obj[i]);
 
     /* the glow column: additive light after the opaque geometry, never into depth */
-    if ((mode == WW_GEOM_MAIN || mode == WW_GEOM_REFLECTION) && g->slot[SLOT_COLUMN].ninst > 0) {
+    if ((mode == WW_GEOM_MAIN || mode == WW_GEOM_REFLECTION) && (parts & WW_GEOM_PART_GLOW) &&
+        g->slot[SLOT_COLUMN].ninst > 0) {
         gl->Uniform1i(g->mode, 2);
         gl->Enable(GL_BLEND);
         gl->BlendFunc(GL_ONE, GL_ONE);
@@ -701,7 +713,39 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
         gl->DepthMask(GL_TRUE);
         gl->Disable(GL_BLEND);
     }
-    g->draws = draws;
+    /* a pass that draws its parts in several calls counts them from the one with the solids */
+    g->draws = (parts & WW_GEOM_PART_SOLIDS) ? draws : g->draws + draws;
     gl->BindVertexArray(0);
     gl->Disable(GL_CLIP_DISTANCE0);
+}
+
+void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
+                      mat4 view_proj, const float *clip) {
+    ww_geometry_draw_parts(g, r, f, mode, view_proj, clip, WW_GEOM_PART_ALL);
+}
+
+/* the lid over each hull's inside into depth alone. Drawn after the hull and before the water,
+ * it hides the water under it (what fills a hull's inside in a wave or below the waterline)
+ * while the inside, drawn already, keeps its colour; its faces point up, so from below (under
+ * water, or an eye lower than the gunwale) it is culled and hides nothing */
+void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                                mat4 view_proj) {
+    const ww_gl *gl = r->gl;
+    upload_instances(g, gl, f);
+    if (g->hull_cap.ninst <= 0) return;
+    gl->UseProgram(g->prog);
+    gl->UniformMatrix4fv(g->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
+    gl->Disable(GL_CLIP_DISTANCE0);
+    gl->Uniform4f(g->clip, 0.0f, 0.0f, 0.0f, 1.0f);
+    gl->Uniform1i(g->mode, 0);
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LESS);
+    gl->DepthMask(GL_TRUE);
+    gl->ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl->Enable(GL_CULL_FACE);
+    gl->CullFace(GL_BACK);
+    draw_mesh(gl, &g->hull_cap);
+    gl->Disable(GL_CULL_FACE);
+    gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl->BindVertexArray(0);
 }

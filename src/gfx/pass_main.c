@@ -1,5 +1,6 @@
-/* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the water
- * surface and solid geometry, then the sky on the far plane behind it (sky.c, water.c,
+/* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the solid
+ * geometry, the lid over each boat's inside into depth (so no water is drawn inside a hull), the
+ * water surface, the seabed, then the sky on the far plane behind it (sky.c, water.c,
  * geometry.c). With MSAA (render.msaa) it draws into the multisampled framebuffer and resolves
  * colour and depth into its textures at the end (post).
  */
@@ -51,17 +52,26 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (f->sc->render.water.alpha_blend && !f->underwater) {
         /* seed 004: the water blends over whatever lies behind it, the sky included */
-        if (r->geometry)
+        if (r->geometry) {
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
+            ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
+        }
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         ww_water_draw(p->water, r, f);
     } else {
-        /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
-         * which the water shows through the prepass) then fails the depth test before it is
-         * shaded; the sky last shades only what is left uncovered */
+        /* the objects, then the lids over the boats' insides into depth (the insides keep their
+         * colour, the water under a lid fails the depth test), then the opaque water: the seabed
+         * beyond it, which the water shows through the prepass, then fails the depth test before
+         * it is shaded; the sky last shades only what is left uncovered */
+        if (r->geometry) {
+            ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
+                                   WW_GEOM_PART_SOLIDS);
+            ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
+        }
         ww_water_draw(p->water, r, f);
         if (r->geometry)
-            ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
+            ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
+                                   WW_GEOM_PART_SEABED | WW_GEOM_PART_GLOW);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
     }
     if (p->rt->fbo_ms) {

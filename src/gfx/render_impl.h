@@ -139,6 +139,20 @@ typedef enum ww_geom_mode {
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err);
 void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
                       mat4 view_proj, const float *clip);
+/* the same, only some parts (the main pass draws the solids before the water and the seabed,
+ * which the water mostly hides, after it) */
+enum {
+    WW_GEOM_PART_SOLIDS = 1, /* objects and models */
+    WW_GEOM_PART_SEABED = 2,
+    WW_GEOM_PART_GLOW = 4,   /* the chest's additive glow column */
+    WW_GEOM_PART_ALL = 7
+};
+void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                            ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts);
+/* the lid over every hull's inside into depth only, so water drawn after it stays out of the
+ * boats (main pass) */
+void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                                mat4 view_proj);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
 int ww_geometry_draw_count(const ww_geometry *g);
