@@ -126,7 +126,8 @@ static const struct {
 };
 
 /* closed: every edge (after welding coincident positions) shared by exactly two triangles that
- * run it opposite ways, no degenerate triangle, positive signed volume, and vertex normals that agree with the winding */
+ * run it opposite ways, no degenerate triangle, positive signed volume, and vertex normals that
+ * agree with the winding */
 TEST(hull_meshgen_every_mesh_closed_and_outward) {
     for (size_t i = 0; i < sizeof KINDS / sizeof KINDS[0]; i++) {
         ww_mesh_data m;
@@ -308,10 +309,53 @@ TEST_IMAGE(hull_picture_no_water_inside_the_boat) {
  * them on the centreline */
 TEST_IMAGE(hull_picture_bow_closed) {
     REQUIRE_GL();
-    long n = water_inside_hull("scenes/boat.yaml", 150,
-                               "--set water.waves.model=flat --set 'objects.boat.seat=[-0.5,1.3,0]'",
-                               "bow150");
+    long n = water_inside_hull("scenes/boat.yaml", 150, "--set water.waves.model=flat "
+                               "--set 'objects.boat.seat=[-0.5,1.3,0]'", "bow150");
     ENSURE_MSG(n >= 0, "render or read failed (%ld)", n);
     ENSURE_MSG(n <= INSIDE_WATER_PX_MAX, "%ld water pixels between the sides of the bow (at most "
                "%d)", n, INSIDE_WATER_PX_MAX);
+}
+
+#define TEAL_MARGIN 20  /* 8-bit levels green and blue must both exceed red by: the under-water
+                         * tint (fog.below, extinction); the dusk sky and the water reflecting it
+                         * are red over blue, the cubes and the boat too */
+#define TEAL_PX_MAX 4   /* teal pixels the reflection may add around the cubes */
+
+/* teal pixels in a rectangle (fractions x0, y0, x1, y1; y from the top) of a PNG, -1 unread */
+static long teal_pixels(const char *path, const double r[4]) {
+    ww_image im = {0};
+    ww_error err = {0};
+    if (ww_read_png(path, &im, &err) != WW_OK || im.channels < 3) {
+        ww_image_free(&im);
+        return -1;
+    }
+    long n = 0;
+    for (int y = (int)(r[1] * im.height); y < (int)(r[3] * im.height); y++)
+        for (int x = (int)(r[0] * im.width); x < (int)(r[2] * im.width); x++) {
+            const unsigned char *p = px(&im, x, y);
+            if (p[1] > p[0] + TEAL_MARGIN && p[2] > p[0] + TEAL_MARGIN) n++;
+        }
+    ww_image_free(&im);
+    return n;
+}
+
+/* the lake at dusk: the water around the floating cubes (right of the middle, from 28% to 60%
+ * down) shows their reflections in wood colour. Faces under the water, or the mirrored eye's
+ * path through the air fogged as if under water, showed as teal blobs beside each cube; the
+ * planar reflection may add no more than TEAL_PX_MAX teal pixels there over the render without
+ * it */
+TEST_IMAGE(hull_picture_reflection_keeps_submerged_faces_out) {
+    REQUIRE_GL();
+    char on[700], off[700];
+    ENSURE_EQ_INT(render_at("scenes/features/lake_dusk.yaml", 0, NULL, "dusk_on", on, sizeof on),
+                  0);
+    ENSURE_EQ_INT(render_at("scenes/features/lake_dusk.yaml", 0, "--set render.reflection=false",
+                            "dusk_off", off, sizeof off), 0);
+    static const double cubes[4] = {0.45, 0.28, 1.0, 0.6};
+    long n_on = teal_pixels(on, cubes), n_off = teal_pixels(off, cubes);
+    fprintf(stderr, "teal pixels around the cubes: %ld with the reflection, %ld without\n", n_on,
+            n_off);
+    ENSURE(n_on >= 0 && n_off >= 0);
+    ENSURE_MSG(n_on - n_off <= TEAL_PX_MAX, "the reflection adds %ld teal pixels around the cubes "
+               "(at most %d)", n_on - n_off, TEAL_PX_MAX);
 }

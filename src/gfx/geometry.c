@@ -81,8 +81,8 @@ typedef struct light_locs {
 struct ww_geometry {
     GLuint prog;
     ww_sky_locs sky;
-    GLint view_proj, clip, ambient, eye, water_y, fog_color, fog_density, fog_below_color,
-        fog_below_density, extinction, caustics_loc, mode;
+    GLint view_proj, clip, ambient, eye, mirrored, water_y, fog_color, fog_density,
+        fog_below_color, fog_below_density, extinction, caustics_loc, mode;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter;
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
@@ -372,6 +372,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->clip = ww_gfx_uniform(gl, p, "u_clip");
     g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
     g->eye = ww_gfx_uniform(gl, p, "u_eye");
+    g->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
     g->water_y = ww_gfx_uniform(gl, p, "u_water_y");
     g->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
     g->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
@@ -652,6 +653,8 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     gl->Uniform3f(g->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
     /* reflections see the world from the camera mirrored about the water plane */
     gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
+    /* ... whose path to a point is air all the way: no under-water fog on it */
+    gl->Uniform1i(g->mirrored, mode == WW_GEOM_REFLECTION);
     gl->Uniform1f(g->water_y, water_y);
     const double *fog = sc->fog_color[0] < 0.0 ? st->sky_horizon : sc->fog_color;
     gl->Uniform3f(g->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
