@@ -359,3 +359,97 @@ TEST_IMAGE(hull_picture_reflection_keeps_submerged_faces_out) {
     ENSURE_MSG(n_on - n_off <= TEAL_PX_MAX, "the reflection adds %ld teal pixels around the cubes "
                "(at most %d)", n_on - n_off, TEAL_PX_MAX);
 }
+
+#define FISH_DIFF_THRESH 6 /* 8-bit levels a pixel moves by when a fish shows in it */
+#define SLIVER_REACH 4     /* px: a fish pixel of the distorted refraction farther than this from
+                            * every fish pixel of the undistorted one is torn away from its fish
+                            * (the waves' own tilt moves a fish by 2 to 3 px at 640x360) */
+#define SLIVER_FRACTION_MAX 0.15 /* share of the fish's pixels allowed that far out */
+/* the school moved 200 m off, out of view in the fog (a scene needs one fish at least) */
+#define NO_FISH "--set objects.fish.count=1 --set 'objects.fish.center=[0,-2,-200]'"
+
+/* pixels where two renders of one frame differ by more than FISH_DIFF_THRESH: 1 in mask */
+static long diff_mask(const char *a_png, const char *b_png, unsigned char **mask, int *w, int *h) {
+    ww_image a = {0}, b = {0};
+    ww_error err = {0};
+    long n = -1;
+    *mask = NULL;
+    if (ww_read_png(a_png, &a, &err) != WW_OK || ww_read_png(b_png, &b, &err) != WW_OK) goto done;
+    if (a.width != b.width || a.height != b.height || a.channels < 3) goto done;
+    *w = a.width;
+    *h = a.height;
+    *mask = calloc((size_t)a.width * (size_t)a.height, 1);
+    if (!*mask) goto done;
+    n = 0;
+    for (int y = 0; y < a.height; y++)
+        for (int x = 0; x < a.width; x++) {
+            const unsigned char *p = px(&a, x, y), *q = px(&b, x, y);
+            int e = 0;
+            for (int c = 0; c < 3; c++) e = abs(p[c] - q[c]) > e ? abs(p[c] - q[c]) : e;
+            if (e > FISH_DIFF_THRESH) {
+                (*mask)[(size_t)y * (size_t)a.width + (size_t)x] = 1;
+                n++;
+            }
+        }
+done:
+    ww_image_free(&a);
+    ww_image_free(&b);
+    return n;
+}
+
+/* the school seen from above through the refraction at fishing frame `frame`: where the fish
+ * show (the render against one with the school away) with the scene's distortion and without it; the
+ * share of the distorted fish pixels farther than SLIVER_REACH from every undistorted one, or
+ * -1 when a render fails */
+static double fish_torn_share(int frame) {
+    static const char *scene = "scenes/fishing.yaml";
+    static const char *const args[4] = {
+        "", NO_FISH, "--set water.look.distortion=0",
+        "--set water.look.distortion=0 " NO_FISH};
+    char png[4][700], tag[64];
+    for (int i = 0; i < 4; i++) {
+        snprintf(tag, sizeof tag, "fish%d_%d", frame, i);
+        if (render_at(scene, frame, args[i], tag, png[i], sizeof png[i]) != 0) return -1.0;
+    }
+    unsigned char *torn = NULL, *calm = NULL;
+    int w = 0, h = 0, w2 = 0, h2 = 0;
+    long n = diff_mask(png[0], png[1], &torn, &w, &h);
+    long n2 = diff_mask(png[2], png[3], &calm, &w2, &h2);
+    double share = -1.0;
+    if (n > 0 && n2 > 0 && w == w2 && h == h2) {
+        long far = 0;
+        for (int y = 0; y < h; y++)
+            for (int x = 0; x < w; x++) {
+                if (!torn[(size_t)y * (size_t)w + (size_t)x]) continue;
+                int near = 0;
+                for (int dy = -SLIVER_REACH; dy <= SLIVER_REACH && !near; dy++)
+                    for (int dx = -SLIVER_REACH; dx <= SLIVER_REACH && !near; dx++) {
+                        int u = x + dx, v = y + dy;
+                        if (u >= 0 && u < w && v >= 0 && v < h)
+                            near = calm[(size_t)v * (size_t)w + (size_t)u];
+                    }
+                far += !near;
+            }
+        share = (double)far / (double)n;
+        fprintf(stderr, "fishing frame %d: %ld fish pixels distorted, %ld undistorted; %ld (%.1f%%) "
+                "more than %d px from the undistorted fish\n", frame, n, n2, far, 100.0 * share,
+                SLIVER_REACH);
+    }
+    free(torn);
+    free(calm);
+    return share;
+}
+
+/* fish under a rippled sea seen from the shore (fishing frames 130 and 148): the refraction's
+ * distortion moves them a little but does not tear them into slivers strewn around them */
+TEST_IMAGE(hull_picture_refracted_fish_not_torn) {
+    REQUIRE_GL();
+    static const int frames[2] = {130, 148};
+    for (int i = 0; i < 2; i++) {
+        double s = fish_torn_share(frames[i]);
+        ENSURE_MSG(s >= 0.0, "frame %d: a render failed, or no fish in view", frames[i]);
+        ENSURE_MSG(s <= SLIVER_FRACTION_MAX, "frame %d: %.1f%% of the fish pixels are torn more "
+                   "than %d px from their fish (at most %.0f%%)", frames[i], 100.0 * s,
+                   SLIVER_REACH, 100.0 * SLIVER_FRACTION_MAX);
+    }
+}
