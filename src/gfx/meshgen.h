@@ -1,6 +1,7 @@
 /* meshgen.h - the procedural meshes of the scene's objects (ww_mesh_kind, scene/desc_reef.h):
- * box, sphere, stone, boat hull, fish, lure, chest, grid, and the chest's glow column. Pure CPU
- * (no GL), so the tests check them without a context; gfx/geometry.c uploads them.
+ * box, sphere, stone, boat hull, fish, lure, chest, grid, the chest's glow column, and the lid
+ * over the hull's inside. Pure CPU (no GL), so the tests check them without a context;
+ * gfx/geometry.c uploads them.
  *
  *   ww_mesh_data m; ww_meshgen(WW_MESH_FISH, &m, &err);   // allocates vertex and index
  *   ... m.vertex (nvert x 8: position, normal, uv), m.index (CCW seen from outside) ...
