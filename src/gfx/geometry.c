@@ -87,7 +87,7 @@ struct ww_geometry {
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
     gmesh slot[SLOT_COUNT];
-    gmesh hull_cap;   /* the lid over each hull's inside, the hull slot's instances (main pass) */
+    gmesh hull_cap;   /* the lid over each hull's inside, drawing the hull slot's instances */
     int nobj;         /* OBJ models: one mesh per model */
     gmesh obj[WW_MAX_MODELS];
     int obj_model[WW_MAX_MODELS];
@@ -191,8 +191,19 @@ static void model_world(const ww_scene *sc, const ww_state *st, int i, double m[
 
 /* ---- GL meshes ---- */
 
-/* vertex layout: position, normal, uv; instances: model matrix in locations 3..6, colour in 7,
- * extras in 8, one per instance */
+/* the per-instance attributes from the bound GL_ARRAY_BUFFER into the bound vertex array:
+ * model matrix in locations 3..6, colour in 7, extras in 8, one per instance */
+static void instance_attribs(const ww_gl *gl) {
+    for (int c = 0; c < 6; c++) {
+        GLuint loc = 3 + (GLuint)c;
+        gl->EnableVertexAttribArray(loc);
+        gl->VertexAttribPointer(loc, 4, GL_FLOAT, GL_FALSE, sizeof(instance),
+                                (void *)(c * 4 * sizeof(float)));
+        gl->VertexAttribDivisor(loc, 1);
+    }
+}
+
+/* vertex layout: position, normal, uv; instances as instance_attribs */
 static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert,
                         const GLuint *idx, int nindex, int cap) {
     gl->GenVertexArrays(1, &m->vao);
@@ -217,14 +228,20 @@ static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)cap * (GLsizeiptr)sizeof(instance), NULL,
                    GL_DYNAMIC_DRAW);
-    for (int c = 0; c < 6; c++) {
-        GLuint loc = 3 + (GLuint)c;
-        gl->EnableVertexAttribArray(loc);
-        gl->VertexAttribPointer(loc, 4, GL_FLOAT, GL_FALSE, sizeof(instance),
-                                (void *)(c * 4 * sizeof(float)));
-        gl->VertexAttribDivisor(loc, 1);
-    }
+    instance_attribs(gl);
     m->cap = cap;
+    gl->BindVertexArray(0);
+}
+
+/* m draws the instances of src (its own instance buffer dropped): the hull's lid is drawn
+ * wherever a hull is, with no upload of its own */
+static void mesh_share_instances(const ww_gl *gl, gmesh *m, const gmesh *src) {
+    gl->DeleteBuffers(1, &m->inst);
+    m->inst = 0;
+    gl->BindVertexArray(m->vao);
+    gl->BindBuffer(GL_ARRAY_BUFFER, src->inst);
+    instance_attribs(gl);
+    m->cap = src->cap;
     gl->BindVertexArray(0);
 }
 
@@ -345,7 +362,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         if (s != SLOT_HULL) continue;
         rc = ww_meshgen(WW_MESHGEN_HULL_CAP, &m, err);
         if (rc != WW_OK) break;
-        mesh_upload(gl, &g->hull_cap, m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
+        mesh_upload(gl, &g->hull_cap, m.vertex, m.nvert, m.index, (int)m.nindex, 1);
+        mesh_share_instances(gl, &g->hull_cap, &g->slot[SLOT_HULL]);
         ww_meshgen_free(&m);
     }
     /* OBJ models: their own mesh each (the assets helper decodes them) */
@@ -523,7 +541,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         }
         n = add_models(sc, st, WW_MESH_HULL, cam, in, n);
         slot_upload(gl, &g->slot[SLOT_HULL], in, n);
-        slot_upload(gl, &g->hull_cap, in, n);
+        g->hull_cap.ninst = n; /* the hull slot's buffer */
     }
     if (g->slot[SLOT_STONE].cap) {
         int n = 0;
