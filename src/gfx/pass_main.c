@@ -1,8 +1,9 @@
-/* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the solid
- * geometry, the lid over each boat's inside into depth (so no water is drawn inside a hull), the
- * water surface, the seabed, then the sky on the far plane behind it (sky.c, water.c,
- * geometry.c). With MSAA (render.msaa) it draws into the multisampled framebuffer and resolves
- * colour and depth into its textures at the end (post).
+/* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the water
+ * surface and the solid geometry (in a scene with boats the solids first, then the lid over each
+ * boat's inside into depth so no water is drawn inside a hull, then the water and the seabed),
+ * then the sky on the far plane behind it (sky.c, water.c, geometry.c). With MSAA (render.msaa)
+ * it draws into the multisampled framebuffer and resolves colour and depth into its textures at
+ * the end (post).
  */
 #include <stdlib.h>
 
@@ -58,20 +59,26 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         }
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         ww_water_draw(p->water, r, f);
-    } else {
-        /* the objects, then the lids over the boats' insides into depth (the insides keep their
-         * colour, the water under a lid fails the depth test), then the opaque water: the seabed
-         * beyond it, which the water shows through the prepass, then fails the depth test before
-         * it is shaded; the sky last shades only what is left uncovered */
-        if (r->geometry) {
-            ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
-                                   WW_GEOM_PART_SOLIDS);
-            ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
-        }
+    } else if (!ww_geometry_has_hulls(r->geometry)) {
+        /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
+         * which the water shows through the prepass) then fails the depth test before it is
+         * shaded; the sky last shades only what is left uncovered */
         ww_water_draw(p->water, r, f);
         if (r->geometry)
-            ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
-                                   WW_GEOM_PART_SEABED | WW_GEOM_PART_GLOW);
+            ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
+        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+    } else {
+        /* with boats: the objects, then the lids over the boats' insides into depth (the insides
+         * keep their colour, the water under a lid fails the depth test), then the opaque water,
+         * then the seabed beyond it (which the water shows through the prepass: it fails the
+         * depth test before it is shaded) and the sky. What lies under the water is shaded
+         * before the water hides it: about a tenth of lake.yaml's frame on llvmpipe */
+        ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
+                               WW_GEOM_PART_SOLIDS);
+        ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
+        ww_water_draw(p->water, r, f);
+        ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
+                               WW_GEOM_PART_SEABED | WW_GEOM_PART_GLOW);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
     }
     if (p->rt->fbo_ms) {
