@@ -23,6 +23,8 @@ uniform int u_mode;
 uniform vec3 u_ambient;        // sky ambient, linear RGB
 uniform vec3 u_eye;            // the eye, camera-relative (the mirrored camera in reflections)
 uniform float u_water_y;       // the water plane (surface over the camera), camera-relative y
+uniform bool u_mirrored;       // reflection pass: u_eye is the camera mirrored below the water,
+                               // and the path it stands for (camera -> surface -> p) is all air
 uniform vec3 u_fog_color;      // above water, linear RGB
 uniform float u_fog_density;   // above water, 1/m
 uniform vec3 u_fog_below_color;
@@ -78,7 +80,7 @@ vec3 ww_fog(vec3 c, float l, bool below) {
 vec3 ww_fog_segment(vec3 c, vec3 p) {
     vec3 e = u_eye;
     float he = e.y - u_water_y, hp = p.y - u_water_y, len = length(p - e);
-    bool eye_below = he < 0.0, p_below = hp < 0.0;
+    bool eye_below = he < 0.0 && !u_mirrored, p_below = hp < 0.0;
     if (eye_below == p_below) return ww_fog(c, len, eye_below);
     float near = len * he / (he - hp); // where the segment crosses the plane
     c = ww_fog(c, len - near, p_below);

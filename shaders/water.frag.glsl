@@ -81,6 +81,7 @@ const float LAYER_WEIGHT1 = 0.4;
 const float DETAIL_SLOPE = 0.06;  // normal-map slope per unit DuDv (seed 002's specular detail)
 const float WAVE_DISTORT = 1.0;   // lookup offset per unit of the wave normal's horizontal part
 const float SHORE_DEPTH = 1.0;    // m of water along the ray over which distortion grows in
+const float NO_FOLD = 0.1;        // the DuDv offset's most, in DuDv cells on screen along the view
 const float EDGE = 0.002;         // keep projective lookups off the texture border
 const float FOLD_J_FULL = 0.2;    // Jacobian at which the fold foam is whole ...
 const float FOLD_J_NONE = 0.9;    // ... and where it starts: a wide ramp, soft edges
@@ -175,6 +176,7 @@ void main() {
     // DuDv: the gradient of two drifting noise layers, per metre then per cell; each layer
     // fades out where a cell spans fewer than 4 footprints along the view (as the waves)
     vec2 dudv = vec2(0.0);
+    float dudv_most = 1e9; // the DuDv's largest share of the lookup offset, DuDv units
     if (u_distort.z > 0.5) {
         float cell = 1.0 / u_distort.y, inv_fp = 1.0 / max(pix * stretch, 1e-6);
         vec2 g = vec2(0.0);
@@ -187,6 +189,9 @@ void main() {
             g += (j == 0 ? LAYER_WEIGHT0 : LAYER_WEIGHT1) * fade * (transpose(m) * nz.yz);
         }
         dudv = g * cell;
+        // far off a cell spans few pixels: an offset larger than NO_FOLD of it turns faster
+        // than the pixels under it and folds the refracted picture into torn slivers
+        dudv_most = NO_FOLD * cell * inv_fp * u_inv_size.y / max(u_distort.x, 1e-6);
         // normal-map detail: the DuDv as the slope of a small height field (seed 002)
         n = normalize(n - DETAIL_SLOPE * vec3(dudv.x, 0.0, dudv.y));
     }
@@ -217,7 +222,7 @@ void main() {
 #endif
     // the lookups' offset on screen: DuDv plus the waves' tilt, horizontal world directions
     // taken to screen x (camera right) and y (farther is higher)
-    vec2 tilt = dudv + WAVE_DISTORT * nw.xz;
+    vec2 tilt = dudv * min(1.0, dudv_most / max(length(dudv), 1e-6)) + WAVE_DISTORT * nw.xz;
     vec2 off = u_distort.x * vec2(dot(tilt, u_cam_axes.xy), dot(tilt, u_cam_axes.zw));
     vec2 uv0 = gl_FragCoord.xy * u_inv_size;
 

@@ -82,12 +82,13 @@ typedef struct light_locs {
 struct ww_geometry {
     GLuint prog;
     ww_sky_locs sky;
-    GLint view_proj, clip, ambient, eye, water_y, fog_color, fog_density, fog_below_color,
-        fog_below_density, extinction, caustics_loc, mode, glow, glow_y;
+    GLint view_proj, clip, ambient, eye, mirrored, water_y, fog_color, fog_density,
+        fog_below_color, fog_below_density, extinction, caustics_loc, mode, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter;
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
     gmesh slot[SLOT_COUNT];
+    gmesh hull_cap;   /* the lid over each hull's inside, drawing the hull slot's instances */
     int nobj;         /* OBJ models: one mesh per model */
     gmesh obj[WW_MAX_MODELS];
     int obj_model[WW_MAX_MODELS];
@@ -193,8 +194,19 @@ static void model_world(const ww_scene *sc, const ww_state *st, int i, double m[
 
 /* ---- GL meshes ---- */
 
-/* vertex layout: position, normal, uv; instances: model matrix in locations 3..6, colour in 7,
- * extras in 8, one per instance */
+/* the per-instance attributes from the bound GL_ARRAY_BUFFER into the bound vertex array:
+ * model matrix in locations 3..6, colour in 7, extras in 8, one per instance */
+static void instance_attribs(const ww_gl *gl) {
+    for (int c = 0; c < 6; c++) {
+        GLuint loc = 3 + (GLuint)c;
+        gl->EnableVertexAttribArray(loc);
+        gl->VertexAttribPointer(loc, 4, GL_FLOAT, GL_FALSE, sizeof(instance),
+                                (void *)(c * 4 * sizeof(float)));
+        gl->VertexAttribDivisor(loc, 1);
+    }
+}
+
+/* vertex layout: position, normal, uv; instances as instance_attribs */
 static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert,
                         const GLuint *idx, int nindex, int cap) {
     gl->GenVertexArrays(1, &m->vao);
@@ -219,14 +231,20 @@ static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)cap * (GLsizeiptr)sizeof(instance), NULL,
                    GL_DYNAMIC_DRAW);
-    for (int c = 0; c < 6; c++) {
-        GLuint loc = 3 + (GLuint)c;
-        gl->EnableVertexAttribArray(loc);
-        gl->VertexAttribPointer(loc, 4, GL_FLOAT, GL_FALSE, sizeof(instance),
-                                (void *)(c * 4 * sizeof(float)));
-        gl->VertexAttribDivisor(loc, 1);
-    }
+    instance_attribs(gl);
     m->cap = cap;
+    gl->BindVertexArray(0);
+}
+
+/* m draws the instances of src (its own instance buffer dropped): the hull's lid is drawn
+ * wherever a hull is, with no upload of its own */
+static void mesh_share_instances(const ww_gl *gl, gmesh *m, const gmesh *src) {
+    gl->DeleteBuffers(1, &m->inst);
+    m->inst = 0;
+    gl->BindVertexArray(m->vao);
+    gl->BindBuffer(GL_ARRAY_BUFFER, src->inst);
+    instance_attribs(gl);
+    m->cap = src->cap;
     gl->BindVertexArray(0);
 }
 
@@ -299,6 +317,7 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     if (!g) return;
     if (g->prog) gl->DeleteProgram(g->prog);
     for (int s = 0; s < SLOT_COUNT; s++) mesh_free(gl, &g->slot[s]);
+    mesh_free(gl, &g->hull_cap);
     for (int i = 0; i < g->nobj; i++) mesh_free(gl, &g->obj[i]);
     ww_water_ubos_free(gl, &g->ubos);
     free(g->scratch);
@@ -343,6 +362,12 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         if (rc != WW_OK) break;
         mesh_upload(gl, &g->slot[s], m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
         ww_meshgen_free(&m);
+        if (s != SLOT_HULL) continue;
+        rc = ww_meshgen(WW_MESHGEN_HULL_CAP, &m, err);
+        if (rc != WW_OK) break;
+        mesh_upload(gl, &g->hull_cap, m.vertex, m.nvert, m.index, (int)m.nindex, 1);
+        mesh_share_instances(gl, &g->hull_cap, &g->slot[SLOT_HULL]);
+        ww_meshgen_free(&m);
     }
     /* OBJ models: their own mesh each (the assets helper decodes them) */
     for (int i = 0; i < sc->models.count && rc == WW_OK; i++) {
@@ -368,6 +393,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->clip = ww_gfx_uniform(gl, p, "u_clip");
     g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
     g->eye = ww_gfx_uniform(gl, p, "u_eye");
+    g->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
     g->water_y = ww_gfx_uniform(gl, p, "u_water_y");
     g->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
     g->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
@@ -518,7 +544,9 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
             m4_mul(m, s, m);
             put(&in[n++], m, cam, paint, 0.0, SPEC_DEFAULT);
         }
-        slot_upload(gl, &g->slot[SLOT_HULL], in, add_models(sc, st, WW_MESH_HULL, cam, in, n));
+        n = add_models(sc, st, WW_MESH_HULL, cam, in, n);
+        slot_upload(gl, &g->slot[SLOT_HULL], in, n);
+        g->hull_cap.ninst = n; /* the hull slot's buffer */
     }
     if (g->slot[SLOT_STONE].cap) {
         int n = 0;
@@ -635,8 +663,10 @@ static int draw_mesh(const ww_gl *gl, const gmesh *m) {
 
 int ww_geometry_draw_count(const ww_geometry *g) { return g ? g->draws : 0; }
 
-void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
-                      mat4 view_proj, const float *clip) {
+int ww_geometry_has_hulls(const ww_geometry *g) { return g && g->hull_cap.cap > 0; }
+
+void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                            ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts) {
     const ww_gl *gl = r->gl;
     const ww_scene *sc = f->sc;
     const ww_state *st = f->st;
@@ -656,6 +686,8 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
     gl->Uniform3f(g->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
     /* reflections see the world from the camera mirrored about the water plane */
     gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
+    /* ... whose path to a point is air all the way: no under-water fog on it */
+    gl->Uniform1i(g->mirrored, mode == WW_GEOM_REFLECTION);
     gl->Uniform1f(g->water_y, water_y);
     double hz[3];
     ww_sky_horizon(sc, st, hz);
@@ -702,12 +734,15 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
         if (s == SLOT_COLUMN || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW)) continue;
+        if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
         draws += draw_mesh(gl, &g->slot[s]);
     }
-    for (int i = 0; i < g->nobj; i++) draws += draw_mesh(gl, &g->obj[i]);
+    for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
+        draws += draw_mesh(gl, &g->obj[i]);
 
     g->glow_clip = clip != NULL;
-    g->draws = draws;
+    /* a pass that draws its parts in several calls counts them from the one with the solids */
+    g->draws = (parts & WW_GEOM_PART_SOLIDS) ? draws : g->draws + draws;
     gl->BindVertexArray(0);
     gl->Disable(GL_CLIP_DISTANCE0);
 }
@@ -754,5 +789,36 @@ void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode) {
     gl->DepthMask(GL_TRUE);
     gl->Disable(GL_BLEND);
     gl->Disable(GL_CLIP_DISTANCE0);
+    gl->BindVertexArray(0);
+}
+
+void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,
+                      mat4 view_proj, const float *clip) {
+    ww_geometry_draw_parts(g, r, f, mode, view_proj, clip, WW_GEOM_PART_ALL);
+}
+
+/* the lid over each hull's inside into depth alone. Drawn after the hull and before the water,
+ * it hides the water under it (what fills a hull's inside in a wave or below the waterline)
+ * while the inside, drawn already, keeps its colour; its faces point up, so from below (under
+ * water, or an eye lower than the gunwale) it is culled and hides nothing */
+void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                                mat4 view_proj) {
+    const ww_gl *gl = r->gl;
+    upload_instances(g, gl, f);
+    if (g->hull_cap.ninst <= 0) return;
+    gl->UseProgram(g->prog);
+    gl->UniformMatrix4fv(g->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
+    gl->Disable(GL_CLIP_DISTANCE0);
+    gl->Uniform4f(g->clip, 0.0f, 0.0f, 0.0f, 1.0f);
+    gl->Uniform1i(g->mode, 0);
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LESS);
+    gl->DepthMask(GL_TRUE);
+    gl->ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    gl->Enable(GL_CULL_FACE);
+    gl->CullFace(GL_BACK);
+    draw_mesh(gl, &g->hull_cap);
+    gl->Disable(GL_CULL_FACE);
+    gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl->BindVertexArray(0);
 }

@@ -1,7 +1,8 @@
 /* meshgen.c - procedural meshes for the scene's objects (gfx/meshgen.h): boxes, lofted bodies
  * (sphere, pebble, fish, bobber, stem) made of rings around an axis with poles at the ends, the
- * rowing boat's hull as a shell of thickness (outer and inner skin, gunwale rim, transom), and
- * flat plates (tail fin). Pure CPU; no GL.
+ * rowing boat's hull as a shell of thickness (outer and inner skin, each closed at both ends,
+ * joined by the gunwale rim) and the lid over its inside, and flat plates (tail fin). Pure CPU;
+ * no GL.
  *
  * Every piece is closed, so the whole mesh is watertight by position and its signed volume is
  * the divergence-theorem sum (Zhang & Chen, "Efficient feature extraction for 2D/3D objects in
@@ -26,7 +27,8 @@
 #define HULL_SHEER 0.05      /* gunwale above the waterline amidships */
 #define HULL_SHEER_RISE 0.09 /* the gunwale rises this much more at bow and stern */
 #define HULL_SKIN 0.018      /* planking thickness */
-#define HULL_BOW_TIP 0.012   /* half-beam at the stem (kept > skin so the inner skin exists) */
+#define HULL_BOW_TIP 0.012   /* half-beam of the stem's flat face at the bow */
+#define HULL_INNER_END 0.985 /* where the inner skin ends against the solid stem (0 .. 1) */
 #define HULL_FULLNESS 0.7    /* |cos|^this across a section: < 1 fills out the bilge */
 
 /* fish (head toward +x): a laterally compressed body and a forked vertical tail */
@@ -379,32 +381,42 @@ static void hull_section(double u, double *beam, double *keel, double *gunwale) 
     *gunwale = HULL_SHEER + HULL_SHEER_RISE * e * e;
 }
 
-/* point k of the section at station i, outer skin (inset 0) or inner (inset HULL_SKIN) */
-static void hull_point(int i, int k, double inset, double p[3]) {
-    double u = (double)i / (HULL_STATIONS - 1), beam, keel, gun;
+/* where station i of a skin lies along the hull: the outer skin spans stern to stem (0 .. 1);
+ * the inner skin starts HULL_SKIN ahead of the stern (the transom's thickness) and ends at
+ * HULL_INNER_END against the solid stem */
+static double hull_station(int i, int inner) {
+    double f = (double)i / (HULL_STATIONS - 1);
+    return inner ? HULL_SKIN + (HULL_INNER_END - HULL_SKIN) * f : f;
+}
+
+/* point k of the section at station i of the outer skin (inner 0) or the inner (inner 1) */
+static void hull_point(int i, int k, int inner, double p[3]) {
+    double u = hull_station(i, inner), beam, keel, gun;
     hull_section(u, &beam, &keel, &gun);
+    double inset = inner ? HULL_SKIN : 0.0;
     double phi = PI * k / (HULL_SECTION - 1);
     double c = cos(phi), s = sin(phi);
-    double bw = fmax(beam - inset, 0.35 * HULL_BOW_TIP), kd = keel + inset;
+    double bw = beam - inset, kd = keel + inset;
     p[0] = -0.5 + u;
     p[2] = bw * (c < 0.0 ? -1.0 : 1.0) * pow(fabs(c), HULL_FULLNESS);
     p[1] = gun + (kd - gun) * s;
 }
 
-/* one grid of the hull's skins: HULL_STATIONS x HULL_SECTION vertices; outward flips winding */
-static void hull_skin(mb *b, double inset, int outer) {
+/* one grid of the hull's skins: HULL_STATIONS x HULL_SECTION vertices, smooth normals; the
+ * outer skin faces out of the hull, the inner one into the boat */
+static void hull_skin(mb *b, int inner) {
     int v0 = b->nv;
     uint32_t i0 = b->ni;
     for (int i = 0; i < HULL_STATIONS; i++)
         for (int k = 0; k < HULL_SECTION; k++) {
             double p[3];
-            hull_point(i, k, inset, p);
+            hull_point(i, k, inner, p);
             mb_vert(b, p, NULL, (double)i / (HULL_STATIONS - 1), (double)k / (HULL_SECTION - 1));
         }
     for (int i = 0; i + 1 < HULL_STATIONS; i++)
         for (int k = 0; k + 1 < HULL_SECTION; k++) {
             int a = v0 + i * HULL_SECTION + k, bb = a + HULL_SECTION, c = bb + 1, d = a + 1;
-            if (outer) {
+            if (!inner) {
                 mb_tri(b, a, c, bb);
                 mb_tri(b, a, d, c);
             } else {
@@ -415,45 +427,73 @@ static void hull_skin(mb *b, double inset, int outer) {
     mb_smooth(b, v0, i0);
 }
 
-/* a strip joining outer and inner skin along a list of (station, point) pairs, flat normals
- * from each quad; flip chooses the side */
-static void hull_band(mb *b, const int (*ik)[2], int n, int flip) {
-    for (int m = 0; m + 1 < n; m++) {
+/* a flat end of a skin at station i: the section from gunwale to gunwale, closed across the top,
+ * fanned from a point on the centreline; toward -x at the stern (i = 0), +x at the bow, turned
+ * the other way on the inner skin (its ends face into the boat) */
+static void hull_end(mb *b, int i, int inner) {
+    int v0 = b->nv;
+    uint32_t i0 = b->ni;
+    double p[3], top[3], bot[3];
+    hull_point(i, 0, inner, top);
+    hull_point(i, (HULL_SECTION - 1) / 2, inner, bot);
+    p[0] = top[0];
+    p[1] = 0.5 * (top[1] + bot[1]);
+    p[2] = 0.0;
+    int ctr = mb_vert(b, p, NULL, 0.5, 0.5);
+    for (int k = 0; k < HULL_SECTION; k++) {
+        hull_point(i, k, inner, p);
+        mb_vert(b, p, NULL, (double)k / (HULL_SECTION - 1), 0.0);
+    }
+    /* the section runs from k = 0 (+z) down and up to k = last (-z): (ctr, k, k + 1) faces +x */
+    int out_x = (i != 0) != (inner != 0);
+    for (int k = 0; k < HULL_SECTION; k++) {
+        int a = ctr + 1 + k, c = ctr + 1 + (k + 1) % HULL_SECTION;
+        if (out_x) mb_tri(b, ctr, a, c);
+        else mb_tri(b, ctr, c, a);
+    }
+    mb_smooth(b, v0, i0);
+}
+
+/* the gunwale loop of a skin, point j of 2 HULL_STATIONS: starboard (k = 0) from stern to bow,
+ * then port (k = last) from bow back to stern */
+static void hull_loop(int j, int inner, double p[3]) {
+    if (j < HULL_STATIONS) hull_point(j, 0, inner, p);
+    else hull_point(2 * HULL_STATIONS - 1 - j, HULL_SECTION - 1, inner, p);
+}
+
+/* the rim: a flat band around the top from the outer gunwale loop to the inner one, over the
+ * gunwales, the breasthook at the bow and the transom's top */
+static void hull_rim(mb *b) {
+    for (int j = 0; j < 2 * HULL_STATIONS; j++) {
+        int j1 = (j + 1) % (2 * HULL_STATIONS);
         double o0[3], o1[3], n0[3], n1[3];
-        hull_point(ik[m][0], ik[m][1], 0.0, o0);
-        hull_point(ik[m + 1][0], ik[m + 1][1], 0.0, o1);
-        hull_point(ik[m][0], ik[m][1], HULL_SKIN, n0);
-        hull_point(ik[m + 1][0], ik[m + 1][1], HULL_SKIN, n1);
+        hull_loop(j, 0, o0);
+        hull_loop(j1, 0, o1);
+        hull_loop(j, 1, n0);
+        hull_loop(j1, 1, n1);
         int v0 = b->nv;
         uint32_t i0 = b->ni;
         int a = mb_vert(b, o0, NULL, 0, 0), c = mb_vert(b, o1, NULL, 1, 0);
         int d = mb_vert(b, n1, NULL, 1, 1), e = mb_vert(b, n0, NULL, 0, 1);
-        if (flip) {
-            mb_tri(b, a, e, d);
-            mb_tri(b, a, d, c);
-        } else {
-            mb_tri(b, a, c, d);
-            mb_tri(b, a, d, e);
-        }
+        /* the loop runs clockwise seen from above (+z side toward +x first, y up), so the quad
+         * o0, o1, n1, n0 faces up */
+        mb_tri(b, a, c, d);
+        mb_tri(b, a, d, e);
         mb_smooth(b, v0, i0);
     }
 }
 
-/* a rowing boat: planked shell with sheer, transom stern, two thwarts */
+/* a rowing boat: a planked shell with sheer, transom stern and a solid stem, two thwarts. The
+ * shell is one closed surface: the outer skin and its two flat ends, the rim, and the inner skin
+ * and its two ends facing into the boat, so no view sees through it at the bow or the stern */
 static void gen_hull(mb *b) {
-    hull_skin(b, 0.0, 1);
-    hull_skin(b, HULL_SKIN, 0);
-    int ik[HULL_STATIONS > HULL_SECTION ? HULL_STATIONS : HULL_SECTION][2];
-    /* gunwale rims: starboard (k = 0, +z) and port (k = last) */
-    for (int i = 0; i < HULL_STATIONS; i++) ik[i][0] = i, ik[i][1] = 0;
-    hull_band(b, (const int (*)[2])ik, HULL_STATIONS, 0);
-    for (int i = 0; i < HULL_STATIONS; i++) ik[i][0] = i, ik[i][1] = HULL_SECTION - 1;
-    hull_band(b, (const int (*)[2])ik, HULL_STATIONS, 1);
-    /* transom (stern, -x) and stem (bow, +x) */
-    for (int k = 0; k < HULL_SECTION; k++) ik[k][0] = 0, ik[k][1] = k;
-    hull_band(b, (const int (*)[2])ik, HULL_SECTION, 1);
-    for (int k = 0; k < HULL_SECTION; k++) ik[k][0] = HULL_STATIONS - 1, ik[k][1] = k;
-    hull_band(b, (const int (*)[2])ik, HULL_SECTION, 0);
+    hull_skin(b, 0);
+    hull_skin(b, 1);
+    hull_end(b, 0, 0);
+    hull_end(b, HULL_STATIONS - 1, 0);
+    hull_end(b, 0, 1);
+    hull_end(b, HULL_STATIONS - 1, 1);
+    hull_rim(b);
     /* thwarts: boards across the inside, clear of the inner skin */
     static const double at[2] = {0.35, 0.62};
     for (int s = 0; s < 2; s++) {
@@ -462,6 +502,26 @@ static void gen_hull(mb *b) {
         double c[3] = {-0.5 + at[s], gun - 0.045, 0.0};
         double h[3] = {0.05, 0.008, 0.72 * (beam - HULL_SKIN)};
         mb_box(b, c, h);
+    }
+}
+
+/* the lid over the hull's inside: the inner gunwale loop, triangulated across the beam station
+ * by station, facing up. Not a solid: the main pass draws it into depth before the water so no
+ * water is drawn inside the boat (gfx/geometry.c) */
+static void gen_hull_cap(mb *b) {
+    int v0 = b->nv;
+    double up[3] = {0.0, 1.0, 0.0};
+    for (int i = 0; i < HULL_STATIONS; i++)
+        for (int k = 0; k < 2; k++) {
+            double p[3];
+            hull_point(i, k ? HULL_SECTION - 1 : 0, 1, p);
+            mb_vert(b, p, up, (double)i / (HULL_STATIONS - 1), (double)k);
+        }
+    for (int i = 0; i + 1 < HULL_STATIONS; i++) {
+        int s0 = v0 + 2 * i, p0 = s0 + 1, s1 = s0 + 2, p1 = s0 + 3;
+        /* starboard is +z, the bow +x: (s0, s1, p1) turns counter-clockwise seen from above */
+        mb_tri(b, s0, s1, p1);
+        mb_tri(b, s0, p1, p0);
     }
 }
 
@@ -482,6 +542,10 @@ ww_result ww_meshgen(ww_mesh_kind kind, ww_mesh_data *out, ww_error *err) {
     default:
         if (kind == WW_MESHGEN_COLUMN) {
             gen_column(&b);
+            break;
+        }
+        if (kind == WW_MESHGEN_HULL_CAP) {
+            gen_hull_cap(&b);
             break;
         }
         WW_ASSERT(!"ww_meshgen: not a procedural mesh kind");

@@ -1,14 +1,16 @@
 /* meshgen.h - the procedural meshes of the scene's objects (ww_mesh_kind, scene/desc_reef.h):
- * box, sphere, stone, boat hull, fish, lure, chest, grid, and the chest's glow column. Pure CPU
- * (no GL), so the tests check them without a context; gfx/geometry.c uploads them.
+ * box, sphere, stone, boat hull, fish, lure, chest, grid, the chest's glow column, and the lid
+ * over the hull's inside. Pure CPU (no GL), so the tests check them without a context;
+ * gfx/geometry.c uploads them.
  *
  *   ww_mesh_data m; ww_meshgen(WW_MESH_FISH, &m, &err);   // allocates vertex and index
  *   ... m.vertex (nvert x 8: position, normal, uv), m.index (CCW seen from outside) ...
  *   ww_meshgen_free(&m);
  *
  * Every mesh fits the unit box [-0.5, 0.5]^3 with its front (bow, head) toward +x and up +y.
- * Closed meshes (box, sphere, stone, fish, lure, chest, hull: a shell with thickness) are
- * watertight by position. The grid is an open plane at y = 0, normals up.
+ * Closed meshes (box, sphere, stone, fish, lure, chest, hull: a shell with thickness closed at
+ * bow and stern, so its inside is walled in below the gunwale) are watertight by position. The
+ * grid is an open plane at y = 0, normals up.
  * The fish's uv.x is the tail weight: 0 ahead of the body's middle, rising to 1 at the tail tip
  * (the vertex shader swings a vertex sideways by it). Other meshes carry texture-like uvs.
  */
@@ -35,6 +37,10 @@
 /* the chest's glow column (not a ww_mesh_kind): an open cylinder of radius 0.5 from y = -0.5 to
  * y = 0.5, normals outward, uv = (angle / 2 pi, height 0..1) */
 #define WW_MESHGEN_COLUMN ((ww_mesh_kind)100)
+/* the lid over the hull's inside (not a ww_mesh_kind): an open surface spanning the inner
+ * gunwale of WW_MESH_HULL, normals up; the main pass draws it into depth before the water so
+ * that no water shows inside a boat */
+#define WW_MESHGEN_HULL_CAP ((ww_mesh_kind)101)
 
 ww_result ww_meshgen(ww_mesh_kind kind, ww_mesh_data *out, ww_error *err);
 void ww_meshgen_free(ww_mesh_data *m);

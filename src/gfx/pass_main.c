@@ -1,7 +1,9 @@
 /* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the water
- * surface and solid geometry, then the sky on the far plane behind it (sky.c, water.c,
- * geometry.c). With MSAA (render.msaa) it draws into the multisampled framebuffer and resolves
- * colour and depth into its textures at the end (post).
+ * surface and the solid geometry (in a scene with boats the solids first, then the lid over each
+ * boat's inside into depth so no water is drawn inside a hull, then the water and the seabed),
+ * then the sky on the far plane behind it (sky.c, water.c, geometry.c). With MSAA (render.msaa)
+ * it draws into the multisampled framebuffer and resolves colour and depth into its textures at
+ * the end (post).
  */
 #include <stdlib.h>
 
@@ -51,18 +53,35 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (f->sc->render.water.alpha_blend && !f->underwater) {
         /* seed 004: the water blends over whatever lies behind it, the sky included */
-        if (r->geometry)
+        if (r->geometry) {
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
+            ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
+        }
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         ww_water_draw(p->water, r, f);
-    } else {
+    } else if (!ww_geometry_has_hulls(r->geometry)) {
         /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
          * which the water shows through the prepass) then fails the depth test before it is
          * shaded; the sky last shades only what is left uncovered */
         ww_water_draw(p->water, r, f);
         if (r->geometry)
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
+        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        /* additive light last: the sky would overwrite it where nothing opaque lies behind */
+        if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
+    } else {
+        /* with boats: the objects, then the lids over the boats' insides into depth (the insides
+         * keep their colour, the water under a lid fails the depth test), then the opaque water,
+         * then the seabed beyond it (which the water shows through the prepass: it fails the
+         * depth test before it is shaded) and the sky. What lies under the water is shaded
+         * before the water hides it: about a tenth of lake.yaml's frame on llvmpipe */
+        ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
+                               WW_GEOM_PART_SOLIDS);
+        ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
+        ww_water_draw(p->water, r, f);
+        ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
+                               WW_GEOM_PART_SEABED);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);

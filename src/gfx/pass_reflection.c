@@ -7,17 +7,19 @@
  * M (x, y, z) = (x, 2 h - y, z) with h = level - camera y, and the mirror camera's view-projection
  * is proj * view * M. A point on the plane is its own image, so the mirror camera images the
  * water where the main camera does and the water reads the texture at its own window position,
- * without seed 002's flip of the texture coordinates. Geometry keeps y > level - margin by a user
+ * without seed 002's flip of the texture coordinates. Geometry keeps y > water + bias by a user
  * clip plane (gl_ClipDistance) rather than an oblique near plane (Lengyel, "Oblique View Frustum
- * Depth Projection and Clipping", 2005), which would change the sky's far-plane depth; the
- * margin lets what stands in a wave trough still reflect.
+ * Depth Projection and Clipping", 2005), which would change the sky's far-plane depth. The plane
+ * is the one the geometry shader shades by (the surface over the camera, u_water_y): below it a
+ * face is lit and fogged as under water, teal, and a submerged face in the reflection showed as
+ * teal blobs around everything that floats.
  */
-#include <math.h>
 #include <stdlib.h>
 
 #include "gfx/render_impl.h"
 
-#define CLIP_MARGIN_MAX 0.25 /* most the clip plane sinks below the rest level, m */
+#define CLIP_BIAS 0.01 /* m the clip plane lies above the water plane, so no fragment the
+                        * shader would shade as under water survives the clipped edge's rounding */
 
 typedef struct reflection_pass {
     const ww_rt *rt;
@@ -25,7 +27,6 @@ typedef struct reflection_pass {
     GLuint prog;     /* the mirrored sky */
     ww_sky_locs sky;
     GLint inv_view_proj, cube, cube_tex, sky_intensity;
-    double margin;   /* m the clip plane lies below the rest level */
 } reflection_pass;
 
 static void reflection_destroy(void *self, const ww_gl *gl) {
@@ -58,11 +59,7 @@ static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_
     p->cube = ww_gfx_uniform(gl, p->prog, "u_cube");
     p->cube_tex = ww_gfx_uniform(gl, p->prog, "u_sky_cube");
     p->sky_intensity = ww_gfx_uniform(gl, p->prog, "u_sky_intensity");
-
-    /* the clip plane sinks by the waves' amplitudes, at most CLIP_MARGIN_MAX */
-    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
-        p->margin += fabs(sc->waves[i].amplitude);
-    if (p->margin > CLIP_MARGIN_MAX) p->margin = CLIP_MARGIN_MAX;
+    (void)sc;
 
     /* trilinear: grazing views squeeze the distorted lookups, and the mip chain keeps them from
      * shimmering (seed 000); the levels are allocated here and filled each frame */
@@ -100,7 +97,9 @@ static ww_result reflection_run(void *self, ww_renderer *r, const ww_frame *f, w
     gl->DepthMask(GL_TRUE);
     gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (r->geometry) {
-        float clip[4] = {0.0f, 1.0f, 0.0f, (float)(p->margin - (double)h)};
+        /* keep y >= water_y + CLIP_BIAS, camera-relative, water_y as geometry.c sets it */
+        double water_y = f->surface_y - f->cam_pos[1];
+        float clip[4] = {0.0f, 1.0f, 0.0f, (float)(-(water_y + CLIP_BIAS))};
         ww_geometry_draw(r->geometry, r, f, WW_GEOM_REFLECTION, vp, clip);
     }
 

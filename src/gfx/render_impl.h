@@ -144,6 +144,23 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
 void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode);
 /* this frame's point and spot lights into prog (in use; it includes common.glsl) */
 void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog);
+/* the same, only some parts (the main pass draws the solids before the water and the seabed,
+ * which the water mostly hides, after it; the glow is
+ * ww_geometry_draw_glow's, after the sky) */
+enum {
+    WW_GEOM_PART_SOLIDS = 1, /* objects and models */
+    WW_GEOM_PART_SEABED = 2,
+    WW_GEOM_PART_ALL = 3
+};
+void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                            ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts);
+/* the lid over every hull's inside into depth only, so water drawn after it stays out of the
+ * boats (main pass) */
+void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                                mat4 view_proj);
+/* 1 when the scene has a boat or hull models (a lid to draw), so the main pass pays for the
+ * mask's order only then */
+int ww_geometry_has_hulls(const ww_geometry *g);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
 int ww_geometry_draw_count(const ww_geometry *g);
