@@ -99,7 +99,7 @@ const float FOAM_MIN = 0.01;      // coverage under which no foam is drawn (nor 
 // of pure water", 1997, at about 600, 550 and 450 nm; geometry.c's WATER_EXTINCTION, which dims
 // the sunlight reaching what lies under water, uses the same)
 const vec3 ABSORB = vec3(0.45, 0.09, 0.07);
-const float NORMAL_FOOTPRINT = 1.5; // the shading's footprint in pixels (see main)
+const float NORMAL_FOOTPRINT = 2.0; // the shading's footprint in pixels (see main)
 const float BENT_MIN = 0.05;      // smallest n.v the reflection's normal may have
 const float HORIZON_MIN = 0.01;   // smallest elevation of a reflected ray (its sine) ...
 const float HORIZON_COS = 0.99995; // ... and that elevation's cosine
@@ -157,9 +157,10 @@ void main() {
     vec2 along = hl > 1e-5 ? -v.xz / hl : vec2(1.0, 0.0);
     vec2 across = vec2(-along.y, along.x);
     float stretch = 1.0 / max(abs(v.y), 0.01);
-    // the shading's footprint is NORMAL_FOOTPRINT pixels wide: a component is whole from 6
-    // samples per wavelength and gone at 3, so none is shaded near the Nyquist limit, where its
-    // alias beats with its neighbours into moire (the mesh keeps its own fade by its spacing)
+    // the shading's footprint is NORMAL_FOOTPRINT pixels wide: a component is whole from 8
+    // pixels per wavelength and gone at 4, so none is shaded near the Nyquist limit, where its
+    // alias beats with its neighbours into moire, nor as a regular grating of 4-5 pixel stripes
+    // (a few sines seen from 300 m up; the mesh keeps its own fade by its spacing)
     float pix = NORMAL_FOOTPRINT * dist * u_pixel_angle;
 
     // surface partials dP/dx, dP/dz at the rest point (gerstner.glsl: ww_partials). The geometry

