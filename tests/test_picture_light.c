@@ -312,6 +312,45 @@ TEST_IMAGE(light_point_lights_water) {
     ww_image_free(&off.im);
 }
 
+#define PARENTED_LIGHT_DIFF_MAX 0.5 /* mean 8-bit luma between a light placed in a scaled
+                                     * model's frame and the same light placed in the world */
+
+/* a light parented to a model sits in the model's frame without its scale, as a child model
+ * does: 3 m along the x axis of a model scaled [8, 1, 1] at x = -3 is x = 0, not x = 21 */
+TEST_IMAGE(light_parented_to_a_scaled_model_in_metres) {
+    REQUIRE_GL();
+    static const char text[] =
+        "time: {dt: 1/120, fps: 30, duration: 1}\n"
+        "render: {shadows: false, refraction: false, reflection: false, bloom: false,\n"
+        "         god_rays: false, fxaa: false, msaa: 0, seabed: true}\n"
+        "sky: {time_of_day: 21, day_length: 0}\n"
+        "objects:\n"
+        "  models: [{name: beam, position: [-3, 1, -6], scale: [8, 1, 1],\n"
+        "            min: [100, 100, 100], max: [101, 101, 101]}]\n"
+        "lights: [{type: point, position: [3, 0, 0], color: [1, 0.7, 0.4], intensity: 6,\n"
+        "          range: 10, parent: beam}]\n"
+        "camera: {path: [{t: 0, position: [0, 2, 4], look_at: [0, 0, -6]}]}\n";
+    char scene[1024];
+    write_scene("beam", text, scene, sizeof scene);
+    pic child, world, off;
+    if (!render_frame(scene, 0, "320x180", NULL, "beam_child", &child)) return;
+    if (!render_frame(scene, 0, "320x180",
+                      "--set \"lights=[{type: point, position: [0, 1, -6], color: [1, 0.7, 0.4], "
+                      "intensity: 6, range: 10}]\"",
+                      "beam_world", &world))
+        return;
+    if (!render_frame(scene, 0, "320x180", "--set lights=[]", "beam_off", &off)) return;
+    double same = fabs(mean_luma(&child, 0.0, 0.5, 1.0, 1.0) - mean_luma(&world, 0.0, 0.5, 1.0, 1.0));
+    double lit = mean_luma(&world, 0.0, 0.5, 1.0, 1.0) - mean_luma(&off, 0.0, 0.5, 1.0, 1.0);
+    fprintf(stderr, "    parented and world light differ by %.2f levels; the light adds %.1f\n", same,
+            lit);
+    ENSURE_MSG(same <= PARENTED_LIGHT_DIFF_MAX, "the parented light is elsewhere: %.2f levels", same);
+    ENSURE_MSG(lit >= WATER_LIGHT_MIN, "the light adds only %.1f levels", lit);
+    ww_image_free(&child.im);
+    ww_image_free(&world.im);
+    ww_image_free(&off.im);
+}
+
 #define EMISSIVE_MIN 30.0 /* levels an emissive 2 sphere's pixels rise over its lit albedo */
 #define BLOOM_HALO_MIN 3.0 /* levels its bloom adds around it (the sky just outside it) */
 

@@ -178,18 +178,23 @@ static void boat_pose(const ww_state *st, double m[16]) {
     m4_trs(m, st->boat_pos, R, one);
 }
 
-/* a model's world matrix this frame (composed with the boat's pose when its chain ends there) */
-static void model_world(const ww_scene *sc, const ww_state *st, int i, double m[16]) {
-    const ww_model_desc *d = &sc->models.model[i];
-    int p = d->parent;
+/* a model's matrix `own` (its world matrix, or its frame: where its children and lights sit,
+ * without its scale) this frame, composed with the boat's pose when its chain ends there */
+static void model_to_world(const ww_scene *sc, const ww_state *st, int i, const double own[16],
+                           double m[16]) {
+    int p = sc->models.model[i].parent;
     while (p >= 0) p = sc->models.model[p].parent; /* the root of the chain */
     if (p == WW_PARENT_BOAT && sc->boat.on) {
         double b[16];
         boat_pose(st, b);
-        m4_mul(b, d->world, m);
+        m4_mul(b, own, m);
     } else {
-        memcpy(m, d->world, 16 * sizeof *m);
+        memcpy(m, own, 16 * sizeof *m);
     }
+}
+
+static void model_world(const ww_scene *sc, const ww_state *st, int i, double m[16]) {
+    model_to_world(sc, st, i, sc->models.model[i].world, m);
 }
 
 /* ---- GL meshes ---- */
@@ -476,7 +481,9 @@ static void frame_lights(ww_geometry *g, const ww_scene *sc, const ww_state *st,
             boat_pose(st, m);
         } else if (l->parent[0]) {
             for (int k = 0; k < sc->models.count; k++)
-                if (strcmp(sc->models.model[k].name, l->parent) == 0) model_world(sc, st, k, m);
+                /* in the model's frame, as a child model: metres, never its scale */
+                if (strcmp(sc->models.model[k].name, l->parent) == 0)
+                    model_to_world(sc, st, k, sc->models.model[k].frame, m);
         }
         double d[3];
         for (int r = 0; r < 3; r++) {
