@@ -33,6 +33,12 @@
 #define GLOW_FADE_IN 1.0          /* s: the column grows brighter over this after a spawn */
 #define GLOW_RADIANCE 1.4         /* radiance of an optically thick column, x objects.chest.glow */
 #define GLOW_OPACITY 0.9          /* optical depth per metre of the column's chord, 1/m */
+/* the column is a marker seen from afar: a camera beside it (diving for the chest) looks
+ * through it, so it dims to GLOW_NEAR_MIN of itself as the camera's distance from its axis
+ * falls from GLOW_NEAR_FAR to GLOW_NEAR_CLOSE metres */
+#define GLOW_NEAR_CLOSE 1.5
+#define GLOW_NEAR_FAR 10.0
+#define GLOW_NEAR_MIN 0.2
 #define WW_TEX_SHADOW 3            /* texture unit of the shadow map (shaders/shadow.glsl) */
 #define SPEC_DEFAULT 0.25         /* sun highlight on most things */
 #define SPEC_WET 0.6              /* on fish and bubbles */
@@ -615,7 +621,11 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
             static const double warm[3] = {1.0, 0.8, 0.35};
             m4_trs(m, gc, I, gs);
             double age = st->t - st->chest_t0[0];
-            double radiance = GLOW_RADIANCE * sc->chest.glow * ww_m_smoothstep(0.0, GLOW_FADE_IN, age);
+            double axis = hypot(b[0] - cam[0], b[2] - cam[2]);
+            double near = GLOW_NEAR_MIN + (1.0 - GLOW_NEAR_MIN) *
+                                              ww_m_smoothstep(GLOW_NEAR_CLOSE, GLOW_NEAR_FAR, axis);
+            double radiance = GLOW_RADIANCE * sc->chest.glow * near *
+                              ww_m_smoothstep(0.0, GLOW_FADE_IN, age);
             put(&glow, m, cam, warm, radiance, 0.0);
             g->glow_cyl[0] = (float)(b[0] - cam[0]);
             g->glow_cyl[1] = (float)(b[2] - cam[2]);
