@@ -160,7 +160,16 @@ void main() {
         // cosine, never more than depth / 0.66 (the critical angle), not depth / sin(elevation)
         vec3 ts = refract(-u_sun_dir, vec3(0.0, 1.0, 0.0), 1.0 / WW_ETA_WATER);
         sun *= exp(-u_extinction * depth / max(-ts.y, 0.6));
-        if (ts.y < 0.0) l = -ts;
+        if (ts.y < 0.0) {
+            l = -ts;
+            // what crosses the surface (Schlick's transmittance, F0 0.02) spreads over a beam
+            // cos(theta_i) / cos(theta_t) as wide as it was: a horizontal face below gets the
+            // irradiance the surface let through, never more than a face above the water.
+            // Without it a low sun, bent steeply down, lit what lies under water up to twice
+            // as brightly as what lies above it.
+            float ci = max(u_sun_dir.y, 0.0), m = 1.0 - ci, m2 = m * m;
+            sun *= (1.0 - (0.02 + 0.98 * m2 * m2 * m)) * ci / max(-ts.y, 1e-3);
+        }
         amb *= t;
 #if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
         // the surface point the refracted sun ray through p left from (camera-relative xz)
