@@ -136,6 +136,10 @@ int ww_test_render(const char *scene, const char *args, const char *dir) {
     return ww_test_run(c, NULL, NULL);
 }
 
+const unsigned char *ww_test_pixel(const ww_image *im, int x, int y) {
+    return im->u8 + ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels;
+}
+
 int ww_test_region_diff(const char *a_path, const char *b_path, const double rect[4], int thresh,
                         ww_test_region *d) {
     ww_image a = {0}, b = {0};

@@ -169,6 +169,9 @@ const char *ww_test_build_dir(void);
 int ww_test_have_tool(const char *cmd);
 
 /* tests/golden.c: images */
+struct ww_image;
+/* the 8-bit pixel at (x, y) of an image read with ww_read_png (y from the top row) */
+const unsigned char *ww_test_pixel(const struct ww_image *im, int x, int y);
 /* this machine's GL renderer is the one that blessed golden/ (golden/RENDERER) */
 int ww_test_renderer_is_blessed(void);
 /* actual (PNG) against golden (PNG), e.g. golden/features/fog.png: exact on the blessing renderer

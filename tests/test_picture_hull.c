@@ -239,9 +239,7 @@ static int render_at(const char *scene, int frame, const char *args, const char 
     return ww_test_ww(a, NULL, NULL);
 }
 
-static const unsigned char *px(const ww_image *im, int x, int y) {
-    return im->u8 + ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels;
-}
+static const unsigned char *px(const ww_image *im, int x, int y) { return ww_test_pixel(im, x, y); }
 
 static int is_hull(const unsigned char *p) {
     return p[0] > HULL_RED_MIN && p[0] > HULL_RED_RATIO * p[1] && p[0] > HULL_RED_RATIO * p[2];

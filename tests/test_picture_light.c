@@ -41,9 +41,7 @@ static int load(const char *path, pic *p) {
     return p->im.u8 != NULL;
 }
 
-static const uint8_t *px(const pic *p, int x, int y) {
-    return p->im.u8 + ((size_t)y * (size_t)p->w + (size_t)x) * (size_t)p->im.channels;
-}
+static const uint8_t *px(const pic *p, int x, int y) { return ww_test_pixel(&p->im, x, y); }
 
 static double luma(const pic *p, int x, int y) {
     const uint8_t *c = px(p, x, y);

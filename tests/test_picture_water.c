@@ -80,9 +80,7 @@ static img render_frame(const char *scene, int frame, const char *args, const ch
 
 static void img_free(img *a) { ww_image_free(&a->im); }
 
-static const unsigned char *px(const img *a, int x, int y) {
-    return a->im.u8 + ((size_t)y * (size_t)a->im.width + (size_t)x) * (size_t)a->im.channels;
-}
+static const unsigned char *px(const img *a, int x, int y) { return ww_test_pixel(&a->im, x, y); }
 
 /* Rec. 709 luma of the 8-bit values */
 static double luma(const img *a, int x, int y) {

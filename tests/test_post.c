@@ -80,7 +80,7 @@ static int load(const char *path, pic *p) {
 static double luma(const pic *p, int x, int y) {
     x = x < 0 ? 0 : x >= p->w ? p->w - 1 : x;
     y = y < 0 ? 0 : y >= p->h ? p->h - 1 : y;
-    const uint8_t *c = p->im.u8 + ((size_t)y * (size_t)p->w + (size_t)x) * (size_t)p->im.channels;
+    const uint8_t *c = ww_test_pixel(&p->im, x, y);
     return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
 }
 

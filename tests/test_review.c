@@ -145,9 +145,7 @@ static int write_solid_png(const char *path, int w, int h, uint8_t r, uint8_t g,
     return rc;
 }
 
-static const uint8_t *px(const ww_image *im, int x, int y) {
-    return im->u8 + ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels;
-}
+static const uint8_t *px(const ww_image *im, int x, int y) { return ww_test_pixel(im, x, y); }
 
 /* the sheet: size from the layout formula, each shot scaled into its cell, a missing shot marked,
  * labels drawn below each cell */
