@@ -19,8 +19,12 @@
 //               J = (1 + dDx/dx)(1 + dDz/dz) - dDx/dz dDz/dx falls toward 0 (Tessendorf,
 //               "Simulating Ocean Water", 2001), a soft coverage from J with a wide ramp (no
 //               hard threshold), broken by two octaves of noise into patches whose edges stay
-//               soft; it gathers as a crest steepens and fades as J recovers behind it (no
-//               memory between frames: a frame depends on the state alone)
+//               soft. Foam outlives the fold that made it: the coverage a point had at a few
+//               past instants, each faded by exp(-age / life), is combined with today's as
+//               independent chances, 1 - prod(1 - c_j e^(-age_j / life)), so foam gathers
+//               where folding lasts and trails behind a passing crest, fading as it ages. The
+//               waves are a function of time, so the past is evaluated, not stored: a frame
+//               still depends on the state alone (--frames A:B stays exact)
 //   detail      with the DuDv, fine normal-only ripples (short fixed sines, as capillary
 //               waves) near the camera, each faded by the pixel footprint so nothing shimmers
 //               far away
@@ -68,6 +72,13 @@ const int NDETAIL = 6; // water.c: WATER_NDETAIL
 // normal-only detail (water.c): short sines of a light breeze that only the shading sees (the
 // physics never feels them): (k Dx, k Dz 1/m, slope amplitude A k, phase at the mesh centre rad)
 uniform vec4 u_detail[NDETAIL];
+// foam's memory (water.c): the components that fold or steepen the surface most, re-evaluated
+// at FOAM_TAPS past instants
+const int FOAM_WAVES = 4;  // water.c: WATER_FOAM_WAVES
+const int FOAM_TAPS = 4;
+uniform vec4 u_foam_wave[FOAM_WAVES];  // (k Dx, k Dz 1/m, fold strength Q A k, slope A k)
+uniform vec4 u_foam_phase[FOAM_WAVES]; // (phase at the centre now rad, omega rad/s, exponent e, 0)
+uniform vec3 u_foam_memory; // (components in use, 0: no memory; life s; spacing of the taps s)
 
 in vec2 v_local;
 in vec3 v_pos;
@@ -93,6 +104,9 @@ const float FOAM_SOFT = 0.6;      // width of a patch's edge, in the noise's [0,
 const float FOAM_CELLS = 2.0;     // foam noise cells per DuDv cell; this and FOAM_OCTAVE
                                   // whole, so the offset wrapped at the lattice period
                                   // (water.c) wraps the foam's lattice too
+const float LACE_WIDTH = 0.35;    // the aged foam's lines: the noise's range near its ridges
+const float LACE_MEAN = 0.2;      // the lace's share of the surface, seen from afar
+const float FOAM_AGE_CELLS = 0.5; // cells per DuDv cell of the noise dithering the taps' ages
 const float FOAM_ALBEDO = 0.85;
 const float FOAM_MIN = 0.01;      // coverage under which no foam is drawn (nor its noise paid)
 // pure water's absorption per metre, red first (Pope and Fry, "Absorption spectrum (380-700 nm)
@@ -126,6 +140,39 @@ vec3 ww_noise(vec2 x) {
     float n = a + (b - a) * u.x + (d - a) * u.y + k * u.x * u.y;
     vec2 g = du * vec2(b - a + k * u.y, d - a + k * u.x);
     return 2.0 * vec3(n - 0.5, g);
+}
+
+// foam coverage of a surface with partials dpdx, dpdz: a smooth ramp of the fold (J falls from 1
+// as the crest steepens and folds), or, for the families that move no water sideways and never
+// fold, of the slope
+float ww_foam_cover(vec3 dpdx, vec3 dpdz) {
+    float jac = dpdx.x * dpdz.z - dpdx.z * dpdz.x;
+    float fold = 1.0 - smoothstep(FOLD_J_FULL, FOLD_J_NONE, jac);
+    float ny = normalize(cross(dpdz, dpdx)).y;
+    return max(fold, smoothstep(STEEP_LO, STEEP_HI, 1.0 - ny));
+}
+
+// the coverage u_foam_wave's components gave rest offset p `age` seconds ago: the phases then
+// are phi + omega age. Each is faded by the pixel's longest footprint (1 / inv_long), in every
+// direction: a component resolved only across the view (its crests running away from the camera)
+// would sweep its past foam over a whole wedge of the far water.
+float ww_foam_cover_past(vec2 p, float age, float inv_long) {
+    vec3 dx = vec3(1.0, 0.0, 0.0), dz = vec3(0.0, 0.0, 1.0);
+    int n = int(u_foam_memory.x);
+    for (int i = 0; i < n; i++) {
+        vec4 w = u_foam_wave[i], ph = u_foam_phase[i];
+        float k = length(w.xy);
+        vec2 dir = w.xy / k;
+        float f = ww_wave_fade(2.0 * WW_PI / k, inv_long);
+        float phi = ph.x + ph.y * age + dot(w.xy, p);
+        float s = sin(phi), c = cos(phi);
+        float qs = f * w.z * s;
+        // steep sines: d/dphi of 2 A (u^e - mean), u = (sin + 1) / 2, is A e u^(e - 1) cos
+        float ac = f * w.w * c * (ph.z > 1.0 ? ph.z * pow(0.5 * (s + 1.0), ph.z - 1.0) : 1.0);
+        dx += vec3(-qs * dir.x * dir.x, ac * dir.x, -qs * dir.x * dir.y);
+        dz += vec3(-qs * dir.x * dir.y, ac * dir.y, -qs * dir.y * dir.y);
+    }
+    return ww_foam_cover(dx, dz);
 }
 
 float ww_fresnel(float c) {
@@ -308,24 +355,40 @@ void main() {
     float foam = 0.0;
     vec3 foam_lit = vec3(0.0);
     if (u_foam > 0.0) {
-        // coverage: a smooth ramp of the fold (J falls from 1 as the crest steepens and
-        // folds), squared so it gathers toward the crest and thins out softly around it
-        float jac = dpdx.x * dpdz.z - dpdx.z * dpdz.x;
-        float cover = 1.0 - smoothstep(FOLD_J_FULL, FOLD_J_NONE, jac);
-        // the families that move no water sideways never fold: their slope stands in
-        cover = max(cover, smoothstep(STEEP_LO, STEEP_HI, 1.0 - nw.y));
-        // texture-free noise breaks it into patches that grow with the coverage; the patches'
-        // edges ramp over FOAM_SOFT of the noise's range (a smooth noise: several pixels), and
-        // the noise fades with the footprint toward its mean, so no shimmer far away
-        if (cover > FOAM_MIN) {
+        // coverage now (fresh foam), then what the recent past left (aged foam): each tap's age
+        // is dithered by a smooth noise (a fraction of the taps' spacing), so the crest's past
+        // positions blend into a trail rather than stand as copies
+        float fresh = ww_foam_cover(dpdx, dpdz), aged = 0.0;
+        if (u_foam_memory.x > 0.5) {
+            float life = u_foam_memory.y, dt = u_foam_memory.z;
+            float inv_long = 1.0 / max(pix * stretch, 1e-6);
+            float xi = 0.5 + 0.5 * ww_noise(FOAM_AGE_CELLS * u_distort.y * v_local + u_dudv_o[1]).x;
+            float clear = 1.0;
+            for (int j = 0; j < FOAM_TAPS; j++) {
+                float age = (float(j) + xi) * dt;
+                clear *= 1.0 - exp(-age / life) * ww_foam_cover_past(v_local, age, inv_long);
+            }
+            aged = 1.0 - clear;
+        }
+        // texture-free noise breaks fresh foam into patches that grow with the coverage; the
+        // patches' edges ramp over FOAM_SOFT of the noise's range (a smooth noise: several
+        // pixels). Aged foam has broken up into a lace: the noise's ridges (its zero crossings),
+        // thinner as it fades. Both fade with the footprint toward their means, so no shimmer
+        // far away.
+        if (max(fresh, aged) > FOAM_MIN) {
             float inv_fp = 1.0 / max(pix * stretch, 1e-6), cells = FOAM_CELLS * u_distort.y;
             vec2 q = cells * v_local + u_dudv_o[0] * FOAM_CELLS;
-            float n1 = ww_wave_fade(1.0 / cells, inv_fp) * ww_noise(q).x;
+            float f1 = ww_wave_fade(1.0 / cells, inv_fp);
+            float n1 = f1 * ww_noise(q).x;
             float n2 = ww_wave_fade(1.0 / (FOAM_OCTAVE * cells), inv_fp) *
                        ww_noise(FOAM_OCTAVE * q + vec2(37.0, 91.0)).x;
             float nz = 0.5 + 0.5 * (0.65 * n1 + 0.35 * n2);
-            float patch = nz + FOAM_GROW * (cover - 0.5);
-            foam = u_foam * sqrt(cover) * smoothstep(0.5 - 0.5 * FOAM_SOFT, 0.5 + 0.5 * FOAM_SOFT, patch);
+            float patch = nz + FOAM_GROW * (fresh - 0.5);
+            float f_fresh = sqrt(fresh) * smoothstep(0.5 - 0.5 * FOAM_SOFT, 0.5 + 0.5 * FOAM_SOFT, patch);
+            float ridge = 1.0 - abs(0.65 * n1 + 0.35 * n2);
+            float lace = aged * smoothstep(1.0 - LACE_WIDTH * aged, 1.0, ridge);
+            lace = mix(LACE_MEAN * aged * aged, lace, f1);
+            foam = u_foam * max(f_fresh, lace);
         }
         foam_lit = FOAM_ALBEDO * (u_ambient + u_sun_color * max(dot(nw, l), 0.0) * sun_up);
         c = mix(c, foam_lit, foam);

@@ -381,6 +381,161 @@ TEST_IMAGE(picture_water_foam_soft_and_follows_steepness) {
                FOAM_SOFT_MIN);
 }
 
+/* ---- foam's memory: it gathers, trails behind a crest and fades ---------------------------- */
+
+/* one steep Gerstner wave (8 m, period 2.26 s, Q A k = 0.71: it folds at every crest) travelling
+ * toward +x, seen from 14 m straight above, so an image column is a line of one phase of the
+ * wave (x to the right) and a crest crosses the frame in about 2 s; 30 frames at 10 fps */
+#define FOAM_FRAMES 30
+#define FOAM_W 320
+#define FOAM_H 180
+#define FOAM_FRESH_COLUMN 0.2  /* a column is under a crest when this share of it has fresh foam */
+#define FOAM_TRAIL_SHARE 0.25  /* foamed pixel-frames off the fresh foam, with memory, at least */
+#define FOAM_BEHIND_AHEAD 3.0  /* added light 1-3 frames behind a crest over 1-3 frames ahead of
+                                * the next, at least: foam trails behind, never leads */
+#define FOAM_FADES 2.0         /* added light 1-3 frames behind over 8-12 behind (life 5 frames:
+                                * e^-0.4 against e^-2 of the coverage), at least */
+#define FOAM_GATHERS 1.15      /* under a crest, the last frame's added light over the first's,
+                                * with memory over without, at least */
+static const char *const FOAM_MEMORY_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 10, duration: 3}\n"
+    "render: {size: [320, 180], shadows: false, refraction: false, reflection: false, bloom: false,\n"
+    "         god_rays: false, fxaa: false, msaa: 0, seabed: false}\n"
+    "sky: {model: gradient, time_of_day: 12}\n"
+    "water:\n"
+    "  waves: {model: gerstner, list: [{direction: 0, wavelength: 8, amplitude: 0.9, steepness: 1}]}\n"
+    "  look: {foam: {on: true, amount: 1, life: 0.5}, caustics: false}\n"
+    "camera: {fov: 60, path: [{t: 0, position: [0, 14, 0.01], look_at: [0, 0, 0]}]}\n";
+
+/* the luma foam adds to each pixel of each frame: the run with `args` less the run without foam */
+static float *foam_added(const char *scene, const char *args, const char *tag) {
+    char dir_on[512], dir_off[512], c[4096], path[700], tag2[64];
+    snprintf(tag2, sizeof tag2, "%s_off", tag);
+    snprintf(dir_on, sizeof dir_on, "%s", ww_test_tmpdir(tag));
+    snprintf(dir_off, sizeof dir_off, "%s", ww_test_tmpdir(tag2));
+    snprintf(c, sizeof c, "%s render %s --frames 0:%d -o %s --quiet %s", ww_test_bin(), scene,
+             FOAM_FRAMES, dir_on, args);
+    ENSURE_MSG(ww_test_run(c, NULL, NULL) == 0, "%s", c);
+    snprintf(c, sizeof c, "%s render %s --frames 0:%d -o %s --quiet --set water.look.foam=false",
+             ww_test_bin(), scene, FOAM_FRAMES, dir_off);
+    ENSURE_MSG(ww_test_run(c, NULL, NULL) == 0, "%s", c);
+    float *a = calloc((size_t)FOAM_FRAMES * FOAM_W * FOAM_H, sizeof *a);
+    ENSURE(a != NULL);
+    for (int t = 0; a && t < FOAM_FRAMES; t++) {
+        img on = {0}, off = {0};
+        ww_error err = {0};
+        snprintf(path, sizeof path, "%s/frame_%05d.png", dir_on, t);
+        on.ok = ww_read_png(path, &on.im, &err) == WW_OK && on.im.u8 && on.im.width == FOAM_W &&
+                on.im.height == FOAM_H && on.im.channels >= 3;
+        snprintf(path, sizeof path, "%s/frame_%05d.png", dir_off, t);
+        off.ok = ww_read_png(path, &off.im, &err) == WW_OK && off.im.u8 &&
+                 off.im.width == FOAM_W && off.im.height == FOAM_H && off.im.channels >= 3;
+        ENSURE_MSG(on.ok && off.ok, "frame %d: %s", t, err.msg);
+        if (on.ok && off.ok)
+            for (int y = 0; y < FOAM_H; y++)
+                for (int x = 0; x < FOAM_W; x++)
+                    a[((size_t)t * FOAM_H + y) * FOAM_W + x] =
+                        (float)(luma(&on, x, y) - luma(&off, x, y));
+        img_free(&on);
+        img_free(&off);
+    }
+    return a;
+}
+
+typedef struct foam_memory_stats {
+    double trail;         /* share of the foamed pixel-frames that are not fresh foam */
+    double behind, ahead; /* mean added light 1-3 frames behind a crest / ahead of the next */
+    double old;           /* the same 8-12 frames behind */
+    double gather;        /* under a crest: mean added light of its last frame over its first */
+} foam_memory_stats;
+
+/* `a` with memory, `f` without: a pixel of `f` adding FOAM_LEVEL or more is fresh foam; a column
+ * is under a crest in a frame when FOAM_FRESH_COLUMN of it is */
+static foam_memory_stats foam_memory_measure(const float *a, const float *f) {
+    foam_memory_stats s = {0};
+    static signed char under[FOAM_FRAMES][FOAM_W];
+    for (int t = 0; t < FOAM_FRAMES; t++)
+        for (int x = 0; x < FOAM_W; x++) {
+            int n = 0;
+            for (int y = 0; y < FOAM_H; y++) n += f[((size_t)t * FOAM_H + y) * FOAM_W + x] >= FOAM_LEVEL;
+            under[t][x] = n >= FOAM_FRESH_COLUMN * FOAM_H;
+        }
+    long foamed = 0, trail = 0, nb = 0, na = 0, no = 0, ng = 0;
+    double gfirst = 0.0, glast = 0.0;
+    for (int x = 0; x < FOAM_W; x++)
+        for (int t = 0; t < FOAM_FRAMES; t++) {
+            int since = -1, until = -1; /* frames since the column was last under a crest, to next */
+            for (int u = t; u >= 0; u--)
+                if (under[u][x]) { since = t - u; break; }
+            for (int u = t; u < FOAM_FRAMES; u++)
+                if (under[u][x]) { until = u - t; break; }
+            double col = 0.0;
+            for (int y = 0; y < FOAM_H; y++) {
+                size_t i = ((size_t)t * FOAM_H + y) * FOAM_W + x;
+                col += a[i];
+                if (a[i] >= FOAM_LEVEL) {
+                    foamed++;
+                    trail += f[i] < FOAM_LEVEL;
+                }
+            }
+            col /= FOAM_H;
+            if (since >= 1 && since <= 3 && (until < 0 || until > 3)) { s.behind += col; nb++; }
+            if (until >= 1 && until <= 3 && (since < 0 || since > 8)) { s.ahead += col; na++; }
+            if (since >= 8 && since <= 12 && (until < 0 || until > 3)) { s.old += col; no++; }
+            /* a whole run under a crest: its first and last frames */
+            if (under[t][x] && t > 0 && !under[t - 1][x]) {
+                int e = t;
+                while (e + 1 < FOAM_FRAMES && under[e + 1][x]) e++;
+                if (e + 1 < FOAM_FRAMES && e > t) {
+                    double c0 = 0.0, c1 = 0.0;
+                    for (int y = 0; y < FOAM_H; y++) {
+                        c0 += a[((size_t)t * FOAM_H + y) * FOAM_W + x];
+                        c1 += a[((size_t)e * FOAM_H + y) * FOAM_W + x];
+                    }
+                    gfirst += c0;
+                    glast += c1;
+                    ng++;
+                }
+            }
+        }
+    s.trail = foamed ? (double)trail / (double)foamed : 0.0;
+    s.behind = nb ? s.behind / (double)nb : 0.0;
+    s.ahead = na ? s.ahead / (double)na : 0.0;
+    s.old = no ? s.old / (double)no : 0.0;
+    s.gather = ng && gfirst > 0.0 ? glast / gfirst : 0.0;
+    ENSURE_MSG(nb > 0 && na > 0 && no > 0 && ng > 0, "the crests did not cross the frame: %ld %ld "
+               "%ld %ld column-frames", nb, na, no, ng);
+    return s;
+}
+
+TEST_IMAGE(picture_water_foam_gathers_trails_and_fades) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_foam_memory", FOAM_MEMORY_SCENE);
+    char path[600];
+    snprintf(path, sizeof path, "%s", scene);
+    float *mem = foam_added(path, "", "pw_foam_mem");
+    float *now = foam_added(path, "--set water.look.foam.life=0", "pw_foam_now");
+    if (mem && now) {
+        foam_memory_stats m = foam_memory_measure(mem, now);
+        foam_memory_stats z = foam_memory_measure(now, now);
+        printf("  life 0.5 s: trail %.3f, added light behind %.2f ahead %.2f old %.2f, gathers "
+               "%.2f\n  life 0:     trail %.3f, added light behind %.2f ahead %.2f old %.2f, "
+               "gathers %.2f\n", m.trail, m.behind, m.ahead, m.old, m.gather, z.trail, z.behind,
+               z.ahead, z.old, z.gather);
+        ENSURE_MSG(m.trail >= FOAM_TRAIL_SHARE, "foam has no memory: %.3f of it off the fresh "
+                   "foam < %.3f", m.trail, FOAM_TRAIL_SHARE);
+        ENSURE_MSG(m.behind >= FOAM_BEHIND_AHEAD * m.ahead, "foam does not trail behind the crest: "
+                   "%.2f behind, %.2f ahead", m.behind, m.ahead);
+        ENSURE_MSG(m.behind >= FOAM_FADES * m.old, "foam does not fade: %.2f at 1-3 frames, %.2f "
+                   "at 8-12", m.behind, m.old);
+        ENSURE_MSG(m.gather >= FOAM_GATHERS * z.gather, "foam does not gather under the crest: "
+                   "last/first %.2f with memory, %.2f without", m.gather, z.gather);
+    }
+    free(mem);
+    free(now);
+}
+
 /* ---- the open sea: colour, contrast, no shimmer ------------------------------------------- */
 
 /* scenes/demo.yaml frames 0 and 1: the camera 4 m up looking level at the low sun; the horizon

@@ -19,6 +19,10 @@
                                  * seen from 1 km up */
 #define WATER_SKIRT_MIN_FAR 1e3 /* far clips nearer than this (m) are a deliberate cut: no skirt */
 
+#define WATER_FOAM_WAVES 4  /* water.frag.glsl: FOAM_WAVES */
+#define WATER_FOAM_TAPS 4   /* water.frag.glsl: FOAM_TAPS */
+#define WATER_FOAM_SPAN 2.0 /* lives the taps reach back over: exp(-2) = 13.5% left at the last */
+
 struct ww_water {
     GLuint prog, vao, vbo, ibo;
     GLsizei ninner;     /* indices of the inner disc (drawn whole), first in the buffer */
@@ -33,7 +37,9 @@ struct ww_water {
     GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
     GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube;
     GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
-    GLint detail, skirt;
+    GLint detail, skirt, foam_wave, foam_phase, foam_memory;
+    int foam_n;                      /* components foam's memory re-evaluates, 0: none */
+    int foam_slot[WATER_FOAM_WAVES]; /* their upload slots */
     float skirt_r; /* rest radius from which vertices belong to the skirt, m (huge: none) */
     ww_water_ubos ubos;
     ww_water_waves waves;    /* the components in upload order; phases set per frame */
@@ -319,6 +325,63 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, doubl
     return WW_OK;
 }
 
+/* the components foam's memory re-evaluates at past instants (water.frag.glsl): the
+ * WATER_FOAM_WAVES that fold or steepen the surface most, and none when the whole field can
+ * never foam (so a calm scene pays nothing). Bounds: with S = sum Q A k the Jacobian stays above
+ * (1 - S)^2, which must fall below the fold ramp's start (0.9); the slope stays below
+ * sum A k e / (1 - S), which must reach the slope ramp's start, 1 - n.y = 0.1 (tan 25.8 deg) */
+#define FOAM_J_NONE 0.9      /* water.frag.glsl: FOLD_J_NONE */
+#define FOAM_SLOPE_LO 0.4843 /* tan(acos(1 - STEEP_LO)) */
+static void foam_components(const ww_scene *sc, ww_water *w) {
+    w->foam_n = 0;
+    const ww_water_look *lk = &sc->render.water;
+    if (!lk->foam || lk->foam_amount <= 0.0 || lk->foam_life <= 0.0) return;
+    const ww_wave_block *b = &w->waves.block;
+    double fold = 0.0, slope = 0.0, strength[WW_MAX_WAVES];
+    for (int i = 0; i < b->n; i++) {
+        const ww_wave *wv = &sc->waves[w->waves.order[i]];
+        double ak = wv->amplitude * wv->k, e = wv->exponent > 1.0 ? wv->exponent : 1.0;
+        fold += b->wave[i][3] * ak;
+        slope += ak * e;
+        strength[i] = ak * (e + b->wave[i][3]);
+    }
+    double jmin = fold < 1.0 ? (1.0 - fold) * (1.0 - fold) : 0.0;
+    if (jmin >= FOAM_J_NONE && slope / fmax(1.0 - fold, 1e-3) < FOAM_SLOPE_LO) return;
+    for (int n = 0; n < WATER_FOAM_WAVES && n < b->n; n++) {
+        int best = -1;
+        for (int i = 0; i < b->n; i++) {
+            int taken = 0;
+            for (int j = 0; j < n; j++) taken |= w->foam_slot[j] == i;
+            if (!taken && (best < 0 || strength[i] > strength[best])) best = i;
+        }
+        w->foam_slot[n] = best;
+        w->foam_n = n + 1;
+    }
+}
+
+/* foam's memory per frame: the chosen components' phases at the centre (already wrapped in
+ * the wave block) and their frequencies, and the taps' spacing */
+static void set_foam_memory(const ww_water *w, const ww_gl *gl, const ww_scene *sc) {
+    float wave[WATER_FOAM_WAVES][4] = {{0}}, phase[WATER_FOAM_WAVES][4] = {{0}};
+    const ww_wave_block *b = &w->waves.block;
+    for (int j = 0; j < w->foam_n; j++) {
+        int i = w->foam_slot[j];
+        const ww_wave *wv = &sc->waves[w->waves.order[i]];
+        wave[j][0] = b->wave[i][0];
+        wave[j][1] = b->wave[i][1];
+        wave[j][2] = (float)(b->wave[i][3] * wv->amplitude * wv->k);
+        wave[j][3] = (float)(wv->amplitude * wv->k);
+        phase[j][0] = b->wave2[i][0];
+        phase[j][1] = (float)wv->omega;
+        phase[j][2] = (float)(wv->exponent > 1.0 ? wv->exponent : 1.0);
+    }
+    double life = sc->render.water.foam_life;
+    gl->Uniform4fv(w->foam_wave, WATER_FOAM_WAVES, &wave[0][0]);
+    gl->Uniform4fv(w->foam_phase, WATER_FOAM_WAVES, &phase[0][0]);
+    gl->Uniform3f(w->foam_memory, (float)w->foam_n, (float)life,
+                  (float)(WATER_FOAM_SPAN * life / WATER_FOAM_TAPS));
+}
+
 ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err) {
     ww_water *w = calloc(1, sizeof *w);
     if (!w) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory");
@@ -366,6 +429,10 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->alpha = ww_gfx_uniform(gl, w->prog, "u_alpha");
     w->detail = ww_gfx_uniform(gl, w->prog, "u_detail");
     w->skirt = ww_gfx_uniform(gl, w->prog, "u_skirt_r");
+    w->foam_wave = ww_gfx_uniform(gl, w->prog, "u_foam_wave");
+    w->foam_phase = ww_gfx_uniform(gl, w->prog, "u_foam_phase");
+    w->foam_memory = ww_gfx_uniform(gl, w->prog, "u_foam_memory");
+    foam_components(sc, w);
     *out = w;
     return WW_OK;
 }
@@ -522,6 +589,7 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     float det[WATER_NDETAIL][4];
     detail_waves(f->st, centre, det);
     gl->Uniform4fv(w->detail, WATER_NDETAIL, &det[0][0]);
+    set_foam_memory(w, gl, sc);
     bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);

@@ -48,6 +48,7 @@ static const rule R_DIRECTION = FINITE("");
 static const rule R_RANGE = OPEN_LO(0, 1e5, "m");
 static const rule R_CONE = OPEN_LO(0, 89, "deg");
 static const rule R_RATE = CLOSED(0, 100, "Hz");
+static const rule R_FOAM_LIFE = CLOSED(0, 30, "s");
 
 static const char *const TONEMAP_WORDS[] = {[WW_TONEMAP_EXP] = "exp", [WW_TONEMAP_ACES] = "aces",
                                             NULL};
@@ -109,6 +110,7 @@ void ww_render_defaults(ww_render_desc *d) {
                                .specular = 1.0,
                                .foam = 1,
                                .foam_amount = 0.5,
+                               .foam_life = 2.0,
                                .murk = 0.15,
                                .caustics = 1,
                                .caustics_strength = 0.6,
@@ -332,7 +334,7 @@ ww_result wwc_water_look(ctx *c, const section *water) {
                                        "fresnel_power", "distortion", "distortion_scale",
                                        "distortion_speed", "specular", "foam", "murk",
                                        "caustics", "alpha_blend", NULL};
-    static const char *const foam_keys[] = {"on", "amount", NULL};
+    static const char *const foam_keys[] = {"on", "amount", "life", NULL};
     static const char *const caustic_keys[] = {"on", "strength", NULL};
     static const char *const alpha_keys[] = {"on", "alpha", NULL};
     ww_water_look *w = &c->sc->render.water;
@@ -351,6 +353,7 @@ ww_result wwc_water_look(ctx *c, const section *water) {
     TRY(wwc_get_number(c, &s, "murk", &R_MURK, OPTIONAL, &w->murk));
     TRY(get_feature(c, &s, "foam", foam_keys, &w->foam, &f));
     TRY(wwc_get_number(c, &f, "amount", &R_UNIT, OPTIONAL, &w->foam_amount));
+    TRY(wwc_get_number(c, &f, "life", &R_FOAM_LIFE, OPTIONAL, &w->foam_life));
     TRY(get_feature(c, &s, "caustics", caustic_keys, &w->caustics, &f));
     TRY(wwc_get_number(c, &f, "strength", &R_STRENGTH, OPTIONAL, &w->caustics_strength));
     TRY(get_feature(c, &s, "alpha_blend", alpha_keys, &w->alpha_blend, &f));

@@ -67,6 +67,7 @@ typedef struct ww_water_look {
     double specular;             /* sun highlight strength */
     int foam;                    /* foam on steep, grazing and folding surface */
     double foam_amount;          /* 0..1 */
+    double foam_life;            /* s: foam a fold left fades as exp(-age / life); 0: no memory */
     double murk;                 /* extinction under water for refraction, 1/m */
     int caustics;                /* animated caustics on surfaces under water */
     double caustics_strength;
