@@ -73,12 +73,19 @@ const int NDETAIL = 6; // water.c: WATER_NDETAIL
 // physics never feels them): (k Dx, k Dz 1/m, slope amplitude A k, phase at the mesh centre rad)
 uniform vec4 u_detail[NDETAIL];
 // foam's memory (water.c): the components that fold or steepen the surface most, re-evaluated
-// at FOAM_TAPS past instants
+// at FOAM_TAPS past instants. WW_FOAM_MEMORY 1 (water.c, per scene) builds it in: only where
+// the waves can fold enough for aged foam to show, since its code slows the whole shader on
+// software rasterisers even where it is not run
+#ifndef WW_FOAM_MEMORY
+#define WW_FOAM_MEMORY 0
+#endif
 const int FOAM_WAVES = 4;  // water.c: WATER_FOAM_WAVES
 const int FOAM_TAPS = 4;
 uniform vec4 u_foam_wave[FOAM_WAVES];  // (k Dx, k Dz 1/m, fold strength Q A k, slope A k)
 uniform vec4 u_foam_phase[FOAM_WAVES]; // (phase at the centre now rad, omega rad/s, exponent e, 0)
-uniform vec3 u_foam_memory; // (components in use, 0: no memory; life s; spacing of the taps s)
+uniform vec2 u_foam_step[FOAM_WAVES];  // (cos, sin) of omega times the taps' spacing
+// (components in use, 0: no memory; life s; spacing of the taps s; longest of their wavelengths m)
+uniform vec4 u_foam_memory;
 
 in vec2 v_local;
 in vec3 v_pos;
@@ -152,28 +159,50 @@ float ww_foam_cover(vec3 dpdx, vec3 dpdz) {
     return max(fold, smoothstep(STEEP_LO, STEEP_HI, 1.0 - ny));
 }
 
-// the coverage u_foam_wave's components gave rest offset p `age` seconds ago: the phases then
-// are phi + omega age. Each is faded by the pixel's longest footprint (1 / inv_long), in every
-// direction: a component resolved only across the view (its crests running away from the camera)
-// would sweep its past foam over a whole wedge of the far water.
-float ww_foam_cover_past(vec2 p, float age, float inv_long) {
-    vec3 dx = vec3(1.0, 0.0, 0.0), dz = vec3(0.0, 0.0, 1.0);
+#if WW_FOAM_MEMORY
+// what the recent past left at rest offset p: the coverage u_foam_wave's components gave it at
+// the FOAM_TAPS ages (j + xi) dt, each faded by exp(-age / life), combined as independent chances
+// 1 - prod(1 - c_j e^(-age_j / life)). The phases at age a are phi + omega a: one sine and cosine
+// per component, then a rotation by omega dt per tap (u_foam_step). Each component is faded by
+// the pixel's longest footprint (1 / inv_long) in every direction: one resolved only across the
+// view (its crests running away from the camera) would sweep its past foam over a whole wedge of
+// the far water.
+float ww_foam_aged(vec2 p, float xi, float inv_long) {
+    vec3 dx[FOAM_TAPS], dz[FOAM_TAPS];
+    for (int j = 0; j < FOAM_TAPS; j++) {
+        dx[j] = vec3(1.0, 0.0, 0.0);
+        dz[j] = vec3(0.0, 0.0, 1.0);
+    }
+    float dt = u_foam_memory.z;
     int n = int(u_foam_memory.x);
     for (int i = 0; i < n; i++) {
         vec4 w = u_foam_wave[i], ph = u_foam_phase[i];
         float k = length(w.xy);
         vec2 dir = w.xy / k;
         float f = ww_wave_fade(2.0 * WW_PI / k, inv_long);
-        float phi = ph.x + ph.y * age + dot(w.xy, p);
+        float phi = ph.x + dot(w.xy, p) + ph.y * xi * dt;
         float s = sin(phi), c = cos(phi);
-        float qs = f * w.z * s;
-        // steep sines: d/dphi of 2 A (u^e - mean), u = (sin + 1) / 2, is A e u^(e - 1) cos
-        float ac = f * w.w * c * (ph.z > 1.0 ? ph.z * pow(0.5 * (s + 1.0), ph.z - 1.0) : 1.0);
-        dx += vec3(-qs * dir.x * dir.x, ac * dir.x, -qs * dir.x * dir.y);
-        dz += vec3(-qs * dir.x * dir.y, ac * dir.y, -qs * dir.y * dir.y);
+        for (int j = 0; j < FOAM_TAPS; j++) {
+            float qs = f * w.z * s;
+            // steep sines: d/dphi of 2 A (u^e - mean), u = (sin + 1) / 2, is A e u^(e - 1) cos
+            float ac = f * w.w * c * (ph.z > 1.0 ? ph.z * pow(0.5 * (s + 1.0), ph.z - 1.0) : 1.0);
+            dx[j] += vec3(-qs * dir.x * dir.x, ac * dir.x, -qs * dir.x * dir.y);
+            dz[j] += vec3(-qs * dir.x * dir.y, ac * dir.y, -qs * dir.y * dir.y);
+            vec2 r = u_foam_step[i];
+            float s1 = s * r.x + c * r.y;
+            c = c * r.x - s * r.y;
+            s = s1;
+        }
     }
-    return ww_foam_cover(dx, dz);
+    float life = u_foam_memory.y, fade = exp(-xi * dt / life), step = exp(-dt / life);
+    float clear = 1.0;
+    for (int j = 0; j < FOAM_TAPS; j++) {
+        clear *= 1.0 - fade * ww_foam_cover(dx[j], dz[j]);
+        fade *= step;
+    }
+    return 1.0 - clear;
 }
+#endif
 
 float ww_fresnel(float c) {
     float m = 1.0 - clamp(c, 0.0, 1.0);
@@ -359,17 +388,16 @@ void main() {
         // is dithered by a smooth noise (a fraction of the taps' spacing), so the crest's past
         // positions blend into a trail rather than stand as copies
         float fresh = ww_foam_cover(dpdx, dpdz), aged = 0.0;
-        if (u_foam_memory.x > 0.5) {
-            float life = u_foam_memory.y, dt = u_foam_memory.z;
+#if WW_FOAM_MEMORY
+        {
             float inv_long = 1.0 / max(pix * stretch, 1e-6);
-            float xi = 0.5 + 0.5 * ww_noise(FOAM_AGE_CELLS * u_distort.y * v_local + u_dudv_o[1]).x;
-            float clear = 1.0;
-            for (int j = 0; j < FOAM_TAPS; j++) {
-                float age = (float(j) + xi) * dt;
-                clear *= 1.0 - exp(-age / life) * ww_foam_cover_past(v_local, age, inv_long);
+            // far off, where every component foam remembers is faded out, there is none
+            if (!ww_faded_out(u_foam_memory.w, inv_long)) {
+                float xi = 0.5 + 0.5 * ww_noise(FOAM_AGE_CELLS * u_distort.y * v_local + u_dudv_o[1]).x;
+                aged = ww_foam_aged(v_local, xi, inv_long);
             }
-            aged = 1.0 - clear;
         }
+#endif
         // texture-free noise breaks fresh foam into patches that grow with the coverage; the
         // patches' edges ramp over FOAM_SOFT of the noise's range (a smooth noise: several
         // pixels). Aged foam has broken up into a lace: the noise's ridges (its zero crossings),

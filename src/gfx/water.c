@@ -37,7 +37,7 @@ struct ww_water {
     GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
     GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube;
     GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
-    GLint detail, skirt, foam_wave, foam_phase, foam_memory;
+    GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory;
     int foam_n;                      /* components foam's memory re-evaluates, 0: none */
     int foam_slot[WATER_FOAM_WAVES]; /* their upload slots */
     float skirt_r; /* rest radius from which vertices belong to the skirt, m (huge: none) */
@@ -162,12 +162,70 @@ static ww_result bind_block(const ww_gl *gl, GLuint prog, const char *name, GLui
     return WW_OK;
 }
 
+/* the components foam's memory re-evaluates at past instants (water.frag.glsl): the
+ * WATER_FOAM_WAVES that fold or steepen the surface most, and none (the code is not even built
+ * into the shader) when the whole field can never cover half of a point with foam: then only
+ * the rare meeting of every crest foams, and the lace of what it leaves would hardly show, for
+ * about a tenth more per frame (scenes/demo.yaml, bound 0.37, differed in one pixel). Bounds,
+ * reached only where every crest meets: with S = sum Q A k the Jacobian stays above (1 - S)^2,
+ * and the slope m below sum A k e / (1 - S); the shader's ramps (FOLD_J_*, STEEP_*) turn them
+ * into coverages */
+#define FOAM_J_FULL 0.2  /* water.frag.glsl: FOLD_J_FULL, FOLD_J_NONE, STEEP_LO, STEEP_HI */
+#define FOAM_J_NONE 0.9
+#define FOAM_STEEP_LO 0.1
+#define FOAM_STEEP_HI 0.6
+#define FOAM_VISIBLE 0.5 /* the least coverage the field must be able to reach */
+/* whether the scene's waves can foam enough for aged foam to show (the bounds above) */
+static int foam_remembers(const ww_scene *sc) {
+    const ww_water_look *lk = &sc->render.water;
+    if (!lk->foam || lk->foam_amount <= 0.0 || lk->foam_life <= 0.0) return 0;
+    if (sc->wave_model == WW_WAVES_FLAT) return 0;
+    int gerstner = sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM;
+    double fold = 0.0, slope = 0.0;
+    for (int i = 0; i < sc->nwaves && i < WW_MAX_WAVES; i++) {
+        const ww_wave *wv = &sc->waves[i];
+        double ak = wv->amplitude * wv->k;
+        fold += (gerstner ? wv->steepness : 0.0) * ak;
+        slope += ak * (wv->exponent > 1.0 ? wv->exponent : 1.0);
+    }
+    double jmin = fold < 1.0 ? (1.0 - fold) * (1.0 - fold) : 0.0;
+    double m = slope / fmax(1.0 - fold, 1e-3);
+    double cover = fmax(1.0 - ww_m_smoothstep(FOAM_J_FULL, FOAM_J_NONE, jmin),
+                        ww_m_smoothstep(FOAM_STEEP_LO, FOAM_STEEP_HI, 1.0 - 1.0 / sqrt(1.0 + m * m)));
+    return cover >= FOAM_VISIBLE;
+}
+
+static void foam_components(const ww_scene *sc, ww_water *w) {
+    w->foam_n = 0;
+    if (!foam_remembers(sc)) return;
+    const ww_wave_block *b = &w->waves.block;
+    double strength[WW_MAX_WAVES];
+    for (int i = 0; i < b->n; i++) {
+        const ww_wave *wv = &sc->waves[w->waves.order[i]];
+        double e = wv->exponent > 1.0 ? wv->exponent : 1.0;
+        strength[i] = wv->amplitude * wv->k * (e + b->wave[i][3]);
+    }
+    for (int n = 0; n < WATER_FOAM_WAVES && n < b->n; n++) {
+        int best = -1;
+        for (int i = 0; i < b->n; i++) {
+            int taken = 0;
+            for (int j = 0; j < n; j++) taken |= w->foam_slot[j] == i;
+            if (!taken && (best < 0 || strength[i] > strength[best])) best = i;
+        }
+        w->foam_slot[n] = best;
+        w->foam_n = n + 1;
+    }
+}
+
 ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, const char *fs,
                            int fade, GLuint *prog, ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", NULL};
-    char defines[160];
-    snprintf(defines, sizeof defines, "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES %d\n#define WW_FADE %d\n",
-             ww_water_shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0);
+    char defines[200];
+    snprintf(defines, sizeof defines,
+             "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES %d\n#define WW_FADE %d\n"
+             "#define WW_FOAM_MEMORY %d\n",
+             ww_water_shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0,
+             foam_remembers(sc));
     ww_result rc = ww_gfx_program_defs(gl, vs, fs, includes, defines, prog, err);
     if (rc == WW_OK)
         rc = bind_block(gl, *prog, "WwWaves", WW_UBO_WAVES, sizeof(ww_wave_block), err);
@@ -325,45 +383,14 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, doubl
     return WW_OK;
 }
 
-/* the components foam's memory re-evaluates at past instants (water.frag.glsl): the
- * WATER_FOAM_WAVES that fold or steepen the surface most, and none when the whole field can
- * never foam (so a calm scene pays nothing). Bounds: with S = sum Q A k the Jacobian stays above
- * (1 - S)^2, which must fall below the fold ramp's start (0.9); the slope stays below
- * sum A k e / (1 - S), which must reach the slope ramp's start, 1 - n.y = 0.1 (tan 25.8 deg) */
-#define FOAM_J_NONE 0.9      /* water.frag.glsl: FOLD_J_NONE */
-#define FOAM_SLOPE_LO 0.4843 /* tan(acos(1 - STEEP_LO)) */
-static void foam_components(const ww_scene *sc, ww_water *w) {
-    w->foam_n = 0;
-    const ww_water_look *lk = &sc->render.water;
-    if (!lk->foam || lk->foam_amount <= 0.0 || lk->foam_life <= 0.0) return;
-    const ww_wave_block *b = &w->waves.block;
-    double fold = 0.0, slope = 0.0, strength[WW_MAX_WAVES];
-    for (int i = 0; i < b->n; i++) {
-        const ww_wave *wv = &sc->waves[w->waves.order[i]];
-        double ak = wv->amplitude * wv->k, e = wv->exponent > 1.0 ? wv->exponent : 1.0;
-        fold += b->wave[i][3] * ak;
-        slope += ak * e;
-        strength[i] = ak * (e + b->wave[i][3]);
-    }
-    double jmin = fold < 1.0 ? (1.0 - fold) * (1.0 - fold) : 0.0;
-    if (jmin >= FOAM_J_NONE && slope / fmax(1.0 - fold, 1e-3) < FOAM_SLOPE_LO) return;
-    for (int n = 0; n < WATER_FOAM_WAVES && n < b->n; n++) {
-        int best = -1;
-        for (int i = 0; i < b->n; i++) {
-            int taken = 0;
-            for (int j = 0; j < n; j++) taken |= w->foam_slot[j] == i;
-            if (!taken && (best < 0 || strength[i] > strength[best])) best = i;
-        }
-        w->foam_slot[n] = best;
-        w->foam_n = n + 1;
-    }
-}
-
 /* foam's memory per frame: the chosen components' phases at the centre (already wrapped in
  * the wave block) and their frequencies, and the taps' spacing */
 static void set_foam_memory(const ww_water *w, const ww_gl *gl, const ww_scene *sc) {
     float wave[WATER_FOAM_WAVES][4] = {{0}}, phase[WATER_FOAM_WAVES][4] = {{0}};
+    float step[WATER_FOAM_WAVES][2] = {{0}};
     const ww_wave_block *b = &w->waves.block;
+    double life = sc->render.water.foam_life, dt = WATER_FOAM_SPAN * life / WATER_FOAM_TAPS;
+    double longest = 0.0;
     for (int j = 0; j < w->foam_n; j++) {
         int i = w->foam_slot[j];
         const ww_wave *wv = &sc->waves[w->waves.order[i]];
@@ -374,12 +401,14 @@ static void set_foam_memory(const ww_water *w, const ww_gl *gl, const ww_scene *
         phase[j][0] = b->wave2[i][0];
         phase[j][1] = (float)wv->omega;
         phase[j][2] = (float)(wv->exponent > 1.0 ? wv->exponent : 1.0);
+        step[j][0] = (float)cos(wv->omega * dt);
+        step[j][1] = (float)sin(wv->omega * dt);
+        longest = fmax(longest, WW_TAU / wv->k);
     }
-    double life = sc->render.water.foam_life;
     gl->Uniform4fv(w->foam_wave, WATER_FOAM_WAVES, &wave[0][0]);
     gl->Uniform4fv(w->foam_phase, WATER_FOAM_WAVES, &phase[0][0]);
-    gl->Uniform3f(w->foam_memory, (float)w->foam_n, (float)life,
-                  (float)(WATER_FOAM_SPAN * life / WATER_FOAM_TAPS));
+    gl->Uniform2fv(w->foam_step, WATER_FOAM_WAVES, &step[0][0]);
+    gl->Uniform4f(w->foam_memory, (float)w->foam_n, (float)life, (float)dt, (float)longest);
 }
 
 ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err) {
@@ -431,6 +460,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->skirt = ww_gfx_uniform(gl, w->prog, "u_skirt_r");
     w->foam_wave = ww_gfx_uniform(gl, w->prog, "u_foam_wave");
     w->foam_phase = ww_gfx_uniform(gl, w->prog, "u_foam_phase");
+    w->foam_step = ww_gfx_uniform(gl, w->prog, "u_foam_step");
     w->foam_memory = ww_gfx_uniform(gl, w->prog, "u_foam_memory");
     foam_components(sc, w);
     *out = w;
