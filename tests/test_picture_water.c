@@ -224,6 +224,31 @@ TEST_IMAGE(picture_water_underwater_seabed_visible) {
     img_free(&a);
 }
 
+/* scenes/lake.yaml at t = 11 s, 2 m under water (17.4 h: the sun 7 deg up), and the same at
+ * night: the open water beside the chest's glow (the frame's left 15%) is the below-water fog
+ * alone. Lit by the night sky it must be dark; it kept its daylight teal (0.80 of the day's
+ * luma) while the seabed under it went dark, now 0.10. */
+#define NIGHT_WATER_MAX 0.2 /* the open water's mean luma at night over by day, at most */
+TEST_IMAGE(picture_water_underwater_dark_at_night) {
+    REQUIRE_GL();
+    img day = render_frame("scenes/lake.yaml", 330, NULL, "pw_under_day");
+    img night = render_frame("scenes/lake.yaml", 330, "--set sky.time_of_day=23", "pw_under_night");
+    if (day.ok && night.ok) {
+        double d = 0.0, n = 0.0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W * 15 / 100; x++) {
+                d += luma(&day, x, y);
+                n += luma(&night, x, y);
+            }
+        printf("  open water under the surface: mean luma %.1f by day, %.1f at night\n",
+               d / (H * (W * 15 / 100)), n / (H * (W * 15 / 100)));
+        ENSURE_MSG(d > 0.0 && n <= NIGHT_WATER_MAX * d, "the water glows at night: %.2f of the "
+                   "day's light > %.2f", d > 0.0 ? n / d : 0.0, NIGHT_WATER_MAX);
+    }
+    img_free(&day);
+    img_free(&night);
+}
+
 /* ---- cubemap: no dark streaks ------------------------------------------------------------ */
 
 static int cmp_double(const void *a, const void *b) {

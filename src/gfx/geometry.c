@@ -711,7 +711,8 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
     gl->Uniform3f(g->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
     gl->Uniform1f(g->fog_density, (float)sc->fog_density);
-    const double *fb = sc->render.fog_below_color;
+    double fb[3];
+    ww_fog_below_color(sc, st, fb);
     gl->Uniform3f(g->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
     gl->Uniform1f(g->fog_below_density, (float)sc->render.fog_below_density);
     gl->Uniform3f(g->extinction, (float)WATER_EXTINCTION_R, (float)WATER_EXTINCTION_G,

@@ -55,7 +55,8 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
     float plane[4];
     double level = sc->water_level - f->cam_pos[1];
     if (!f->underwater) {
-        const double *fb = sc->render.fog_below_color;
+        double fb[3];
+        ww_fog_below_color(sc, f->st, fb);
         gl->ClearColor((float)fb[0], (float)fb[1], (float)fb[2], 1.0f);
         /* keep y <= level + crest: -y + (level + crest) >= 0 */
         plane[0] = 0.0f; plane[1] = -1.0f; plane[2] = 0.0f;

@@ -205,6 +205,9 @@ void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);
 /* the sky's colour along the horizon this frame (the fog's colour when the scene gives none):
  * the clock's palette, or by day Preetham's horizon averaged over the azimuths */
 void ww_sky_horizon(const ww_scene *sc, const ww_state *st, double out[3]);
+/* fog.below.color lit by the light entering the water now: the scene's by day, dimmer at dusk
+ * and night (gfx/sky.c) */
+void ww_fog_below_color(const ww_scene *sc, const ww_state *st, double out[3]);
 
 /* sky.c: the scene's sky (gradient, cubemap or dome) and the sun disc as a full-screen triangle
  * on the far plane. A cubemap sky uploads the scene's six faces once per renderer and sets

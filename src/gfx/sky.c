@@ -11,6 +11,7 @@
 #include "core/mathx.h"
 #include "gfx/render_impl.h"
 #include "scene/assets.h"
+#include "sim/sky.h"
 
 /* the dome's clouds drift with the simulated time along a fixed wind (noise units per second);
  * the offset is wrapped to the noise's period in double, so a long run stays exact in float */
@@ -137,6 +138,27 @@ void ww_sky_horizon(const ww_scene *sc, const ww_state *st, double out[3]) {
     horizon_colour(d->sky == WW_SKY_PREETHAM || d->sky == WW_SKY_DOME, d->sky_turbidity, st, out);
 }
 
+/* the below-water fog's colour: fog.below.color is what in-scattered daylight gives the water;
+ * the light that scatters there falls with the light entering the water, the sky's ambient plus
+ * the sun's vertical part (by luma). Against the same for the sun FOG_BELOW_REF_ELEV high, at
+ * most 1: the scene's colour by day, dimming through dusk to the night sky's level, so a lake at
+ * night is dark under water too instead of glowing teal around a seabed the night has darkened */
+#define FOG_BELOW_REF_ELEV 5.0 /* deg: from sunset on it dims, to a fortieth an hour later */
+static double light_into_water(const double sun[3], const double sun_dir[3], const double amb[3]) {
+    double l_sun = 0.2126 * sun[0] + 0.7152 * sun[1] + 0.0722 * sun[2];
+    double l_amb = 0.2126 * amb[0] + 0.7152 * amb[1] + 0.0722 * amb[2];
+    return l_amb + l_sun * fmax(sun_dir[1], 0.0);
+}
+
+void ww_fog_below_color(const ww_scene *sc, const ww_state *st, double out[3]) {
+    double e = ww_m_rad(FOG_BELOW_REF_ELEV), dir[3] = {0.0, sin(e), -cos(e)};
+    double sun[3], zenith[3], horizon[3], amb[3];
+    ww_sky_colors(dir, sun, zenith, horizon, amb);
+    double ref = light_into_water(sun, dir, amb);
+    double k = fmin(1.0, light_into_water(st->sun_color, st->sun_dir, st->ambient) / ref);
+    for (int c = 0; c < 3; c++) out[c] = sc->render.fog_below_color[c] * k;
+}
+
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st) {
     double hz[3];
     horizon_colour(l->physical, l->turbidity, st, hz);
@@ -254,7 +276,8 @@ void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_fr
     ww_sky_locs_set(gl, &s->sky, f->st);
     gl->UniformMatrix4fv(s->inv_view_proj, 1, GL_FALSE, (const GLfloat *)f->inv_view_proj);
     gl->Uniform1f(s->intensity, (float)f->sc->render.sky_intensity);
-    const double *fb = f->sc->render.fog_below_color;
+    double fb[3];
+    ww_fog_below_color(f->sc, f->st, fb);
     gl->Uniform4f(s->below, (float)fb[0], (float)fb[1], (float)fb[2], f->underwater ? 1.0f : 0.0f);
     if (s->model == WW_SKY_CUBEMAP) {
         gl->ActiveTexture(GL_TEXTURE0);

@@ -612,7 +612,8 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     gl->Uniform1f(w->murk, (float)lk->murk);
     gl->Uniform1f(w->foam, lk->foam ? (float)lk->foam_amount : 0.0f);
     gl->Uniform1i(w->underwater, f->underwater);
-    const double *fb = sc->render.fog_below_color;
+    double fb[3];
+    ww_fog_below_color(sc, f->st, fb);
     gl->Uniform3f(w->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
     gl->Uniform1f(w->fog_below_density, (float)sc->render.fog_below_density);
     gl->Uniform2f(w->alpha, lk->alpha_blend ? 1.0f : 0.0f, (float)lk->alpha);
