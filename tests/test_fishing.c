@@ -323,6 +323,7 @@ typedef struct fishing_log {
     int casts, lands, bites, catches, reels, escapes;
     double t_land[2], t_bite[2], t_catch[2];
     int most_fighting;
+    double max_fight_step; /* the longest step of a fighting fish over WW_FISH_DASH dt */
 } fishing_log;
 
 static void run_pond(int count, double radius, double until, fishing_log *log) {
@@ -332,12 +333,16 @@ static void run_pond(int count, double radius, double until, fishing_log *log) {
     ww_scene *sc = load(text);
     if (!sc) return;
     ww_state *st = ww_state_new(sc);
-    while (st->t < until && step_ok(sc, st)) {
+    double prev[3 * 64];
+    ENSURE(count <= 64);
+    while (st->t < until && count <= 64) {
+        memcpy(prev, st->fish_pos, sizeof(double) * 3 * (size_t)count);
+        if (!step_ok(sc, st)) break;
         const double *e = NULL;
         log->casts += events_of(sc, st, WW_SE_ROD_CAST, NULL);
         if (events_of(sc, st, WW_SE_LURE_LAND, NULL) && log->lands < 2)
             log->t_land[log->lands++] = st->t;
-        int b = events_of(sc, st, WW_SE_BITE, &e);
+        int b = events_of(sc, st, WW_SE_BITE, &e), bitten = b ? (int)e[6] : -1;
         if (b) {
             ENSURE_EQ_INT(b, 1);
             ENSURE_EQ_INT((int)st->rod_fish[0], (int)e[6]);
@@ -356,8 +361,15 @@ static void run_pond(int count, double radius, double until, fishing_log *log) {
         for (int i = 0; i < count; i++) {
             if (st->fish_mode[i] != WW_FISH_FIGHTING) continue;
             fighting++;
-            /* the mouth, half a length ahead of the centre, at the lure (XZ) */
-            const double *p = st->fish_pos + 3 * i;
+            if (i == bitten) continue; /* it swam, then bit: two moves in this step */
+            /* it dashes to the hook at WW_FISH_DASH, never faster; once there, the mouth, half a
+             * length ahead of the centre, is at the lure (XZ) */
+            const double *p = st->fish_pos + 3 * i, *q = prev + 3 * i;
+            double step = sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                               (p[2] - q[2]) * (p[2] - q[2]));
+            step /= WW_FISH_DASH * sc->dt;
+            if (step > log->max_fight_step) log->max_fight_step = step;
+            if (step >= 1.0 - 1e-9) continue; /* still on its way */
             double half = 0.5 * sc->fish.length, yaw = st->fish_yaw[i];
             ENSURE_NEAR(p[0] + half * cos(yaw), st->lure_pos[0], FISH_MOUTH_TOL);
             ENSURE_NEAR(p[2] + half * sin(yaw), st->lure_pos[2], FISH_MOUTH_TOL);
@@ -384,9 +396,13 @@ TEST(fishing_cast_near_fish_bites_then_catches_within_the_window) {
         ENSURE(log.t_catch[c] - log.t_bite[c] >= 1.0 - 1e-9);
         ENSURE(log.t_catch[c] - log.t_bite[c] <= 3.0 + 1.0 / 60.0);
     }
-    printf("  bites %.3f s and %.3f s after landing, fights %.3f s and %.3f s\n",
-           log.t_bite[0] - log.t_land[0], log.t_bite[1] - log.t_land[1],
-           log.t_catch[0] - log.t_bite[0], log.t_catch[1] - log.t_bite[1]);
+    /* a fish that bites from below reaches the hook by its dash, not by a jump (it was placed
+     * there in one step) */
+    ENSURE_MSG(log.max_fight_step <= 1.0 + 1e-9, "a hooked fish jumped %.3f times its dash in "
+               "one step", log.max_fight_step);
+    printf("  bites %.3f s and %.3f s after landing, fights %.3f s and %.3f s; longest step on the "
+           "line %.3f of the dash's\n", log.t_bite[0] - log.t_land[0], log.t_bite[1] - log.t_land[1],
+           log.t_catch[0] - log.t_bite[0], log.t_catch[1] - log.t_bite[1], log.max_fight_step);
 }
 
 TEST(fishing_at_most_one_fish_per_cast) {

@@ -317,17 +317,23 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
     st->fish_bank[i] = ww_m_clamp(bank, -f->max_bank, f->max_bank);
 }
 
-/* the mouth at the hook, the heading wiggling about the bite's direction, tau into the fight */
+/* the mouth toward the hook, the heading wiggling about the bite's direction, tau into the
+ * fight: the fish dashes there at WW_FISH_DASH from where it bit (a fish 2.5 m under the lure
+ * used to be there in one frame), then holds it */
 static void anchor(const ww_scene *sc, ww_state *st, int i, double tau) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i;
     double yaw0 = st->fish_yaw[i];
     double yaw = wrap_pi(st->fish_goal[i] + f->wiggle[0] * sin(WW_TAU * f->wiggle[1] * tau));
     double half = 0.5 * f->length;
-    p[0] = st->lure_pos[0] - half * cos(yaw);
-    p[1] = st->lure_pos[1] - sc->rod.hook_depth;
-    p[2] = st->lure_pos[2] - half * sin(yaw);
-    v[0] = v[1] = v[2] = 0.0;
+    double q[3] = {st->lure_pos[0] - half * cos(yaw), st->lure_pos[1] - sc->rod.hook_depth,
+                   st->lure_pos[2] - half * sin(yaw)};
+    double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, dn = ww_m_len3(d);
+    double reach = WW_FISH_DASH * sc->dt, u = dn > reach ? reach / dn : 1.0;
+    for (int k = 0; k < 3; k++) {
+        v[k] = u * d[k] / sc->dt;
+        p[k] += u * d[k];
+    }
     keep_in_water(sc, st, p, v);
     st->fish_yaw[i] = yaw;
     st->fish_yaw_rate[i] = wrap_pi(yaw - yaw0) / sc->dt;

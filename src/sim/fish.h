@@ -41,8 +41,9 @@
  *
  * Fishing: a swimming fish whose centre is within rod.bite_radius (XZ) of a floating lure that no
  * fish has bitten this cast bites (lowest index first): `bite`, the lure is hooked. Fighting (seed
- * 000): the mouth (length / 2 ahead of the centre) stays at the hook, rod.hook_depth under the
- * lure; the heading is the bite's direction plus wiggle[0] sin(2 pi wiggle[1] tau); velocity zero.
+ * 000): the mouth (length / 2 ahead of the centre) goes to the hook, rod.hook_depth under the
+ * lure, at WW_FISH_DASH from where the fish bit (it may bite from metres below), and stays there;
+ * the heading is the bite's direction plus wiggle[0] sin(2 pi wiggle[1] tau).
  * After a duration drawn in fight[lo, hi] the fish is caught: fish_caught + 1, `catch`, the rod
  * reels in, and the fish is away for `respawn` seconds, then reappears at a random place. If the
  * line is reeled in first (a new cast) the fish escapes (`fish_escape`).
@@ -60,6 +61,7 @@ enum { WW_FISH_SWIMMING = 0, WW_FISH_FIGHTING, WW_FISH_AWAY };
 #define WW_FISH_FLEE_TURN 2.0   /* extra turn rate at full fear, times turn_rate (a C-start) */
 #define WW_FISH_MAX_ACCEL 15.0  /* m/s^2: the largest change of a swimming fish's velocity per
                                  * second from steering (the depth clamp may remove more) */
+#define WW_FISH_DASH 3.0        /* m/s: a hooked fish's dash to the hook (a trout's burst) */
 
 void ww_fish_reset(const ww_scene *sc, ww_state *st);
 void ww_fish_step(const ww_scene *sc, ww_state *st);
