@@ -195,6 +195,73 @@ TEST_IMAGE(picture_water_submerged_darker_and_bluer) {
     }
 }
 
+/* ---- submerged outlines: straight, not stairs ------------------------------------------- */
+
+/* a 2 m cube turned 30 deg, floating 0.4 m out of flat water, seen from 3 m up and 5 m away:
+ * the lower right edge of its submerged side, seen through the surface, is a straight line from
+ * about (300, 258) to (385, 228) on the 640x360 frame. The refraction prepass is half the
+ * frame's size; its depth read nearest, the water's thickness (and the absorption with it)
+ * stepped along the outline in 2-pixel stairs; read bilinear, as the colour is, it does not. Per column the edge is where the luma crosses
+ * halfway from the cube's to the water's, to a fraction of a pixel; a straight line is fitted
+ * and what is left over is the stairs. */
+#define OUTLINE_RMS_MAX 0.45 /* px: rms distance of the edge from its fitted line, at most: the
+                             * stepped depth gave 0.53, read bilinear 0.40; a full-size prepass
+                             * gives 0.29, the pixels' own aliasing */
+static const char *const OUTLINE_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 1}\n"
+    "render: {size: [640, 360], shadows: false, reflection: false, bloom: false, god_rays: false,\n"
+    "         fxaa: false, seabed: false}\n"
+    "sky: {time_of_day: 12}\n"
+    "water: {waves: {model: flat}, look: {foam: false, caustics: false, distortion: 0}}\n"
+    "objects:\n"
+    "  cubes: [{position: [0, -0.6, 0], size: 2, density: 700, rotation: [0, 30, 0]}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 3, -5], look_at: [0, -0.8, 0]}]\n";
+
+TEST_IMAGE(picture_water_submerged_outline_not_stepped) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_outline", OUTLINE_SCENE);
+    char path[600];
+    snprintf(path, sizeof path, "%s", scene);
+    img a = render_frame(path, 0, NULL, "pw_outline_r");
+    if (a.ok) {
+        double water = 0.0;
+        for (int y = 300; y < 340; y++)
+            for (int x = 300; x < 380; x++) water += luma(&a, x, y);
+        water /= 40.0 * 80.0;
+        double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0, ex[80], ey[80];
+        int n = 0;
+        for (int x = 305; x < 380; x++) {
+            double hi = 0.0;
+            for (int y = 180; y < 300; y++) hi = fmax(hi, luma(&a, x, y));
+            double mid = 0.5 * (hi + water);
+            int last = -1;
+            for (int y = 180; y < 299; y++)
+                if (luma(&a, x, y) > mid) last = y;
+            if (last < 0) continue;
+            double l0 = luma(&a, x, last), l1 = luma(&a, x, last + 1);
+            double y = last + (l0 - mid) / fmax(l0 - l1, 1e-6);
+            ex[n] = x;
+            ey[n] = y;
+            sx += x;
+            sy += y;
+            sxx += (double)x * x;
+            sxy += x * y;
+            n++;
+        }
+        ENSURE_MSG(n >= 60, "the edge was found in %d columns of 75", n);
+        double k = (n * sxy - sx * sy) / (n * sxx - sx * sx), c = (sy - k * sx) / n, rms = 0.0;
+        for (int i = 0; i < n; i++) rms += (ey[i] - k * ex[i] - c) * (ey[i] - k * ex[i] - c);
+        rms = sqrt(rms / (n > 0 ? n : 1));
+        printf("  submerged edge over %d columns: slope %.3f, rms off its line %.3f px\n", n, k, rms);
+        ENSURE_MSG(k < -0.2 && k > -0.6, "the edge was not found where it lies: slope %.3f", k);
+        ENSURE_MSG(rms <= OUTLINE_RMS_MAX, "stepped outline: %.3f px rms > %.3f", rms,
+                   OUTLINE_RMS_MAX);
+    }
+    img_free(&a);
+}
+
 /* ---- under water: the seabed is seen ----------------------------------------------------- */
 
 /* RMS difference of luminance between pixels d apart (horizontally and vertically) over rows
