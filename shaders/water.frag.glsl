@@ -401,8 +401,9 @@ void main() {
         // texture-free noise breaks fresh foam into patches that grow with the coverage; the
         // patches' edges ramp over FOAM_SOFT of the noise's range (a smooth noise: several
         // pixels). Aged foam has broken up into a lace: the noise's ridges (its zero crossings),
-        // thinner as it fades. Both fade with the footprint toward their means, so no shimmer
-        // far away.
+        // thinner and fainter (its coverage squared) as it fades, so what little an old or a
+        // slight fold left does not stand out as bright scribbles. Both fade with the footprint
+        // toward their means, so no shimmer far away.
         if (max(fresh, aged) > FOAM_MIN) {
             float inv_fp = 1.0 / max(pix * stretch, 1e-6), cells = FOAM_CELLS * u_distort.y;
             vec2 q = cells * v_local + u_dudv_o[0] * FOAM_CELLS;
@@ -414,8 +415,8 @@ void main() {
             float patch = nz + FOAM_GROW * (fresh - 0.5);
             float f_fresh = sqrt(fresh) * smoothstep(0.5 - 0.5 * FOAM_SOFT, 0.5 + 0.5 * FOAM_SOFT, patch);
             float ridge = 1.0 - abs(0.65 * n1 + 0.35 * n2);
-            float lace = aged * smoothstep(1.0 - LACE_WIDTH * aged, 1.0, ridge);
-            lace = mix(LACE_MEAN * aged * aged, lace, f1);
+            float lace = aged * aged * smoothstep(1.0 - LACE_WIDTH * aged, 1.0, ridge);
+            lace = mix(LACE_MEAN * aged * aged * aged, lace, f1);
             foam = u_foam * max(f_fresh, lace);
         }
         foam_lit = FOAM_ALBEDO * (u_ambient + u_sun_color * max(dot(nw, l), 0.0) * sun_up);
