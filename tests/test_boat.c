@@ -47,6 +47,7 @@ static ww_scene *boat_scene(void) {
     sc->camera_collide = 0; /* the seat is inside the boat's sphere: collision is another test's */
     ww_boat_defaults(&sc->boat);
     sc->boat.on = 1;
+    ww_scene_plan_systems(sc);
     return sc;
 }
 
@@ -189,6 +190,7 @@ TEST(boat_full_throttle_into_50_cubes) {
     sc->boat.acceleration = 12.0; /* a / k = 10 m/s: the 8 m/s cap binds */
     sc->boat.position[0] = -10.0;
     sc->cubes.on = 1;
+    ww_scene_plan_systems(sc);
     sc->cubes.count = 50;
     for (int i = 0; i < 50; i++) {
         ww_cube_desc *c = &sc->cubes.cube[i];
@@ -326,6 +328,7 @@ static ww_scene *busy_scene(void) {
         ww_wave_derive(w, 0.0);
     }
     sc->cubes.on = 1;
+    ww_scene_plan_systems(sc);
     sc->cubes.count = 6;
     for (int i = 0; i < 6; i++)
         sc->cubes.cube[i] = (ww_cube_desc){.position = {3.0 + 2.0 * i, 0.0, 0.5 * (i % 3)},

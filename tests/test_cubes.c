@@ -44,6 +44,7 @@ static ww_scene *cube_scene(double dt) {
     sc->water_depth = 50.0;
     sc->camera_collide = 0;
     sc->cubes.on = 1;
+    ww_scene_plan_systems(sc);
     return sc;
 }
 

@@ -342,10 +342,12 @@ static void fly_through(int solid, int collide, double y, double z, fly *out) {
     /* the cube and the boat are other systems' sections: set their descriptions by hand */
     if (solid == FLY_CUBE) {
         sc->cubes.on = 1;
+        ww_scene_plan_systems(sc);
         sc->cubes.count = 1;
         sc->cubes.cube[0] = (ww_cube_desc){.position = {0, 0, 0}, .size = 1.0, .density = 500};
     } else if (solid == FLY_BOAT) {
         sc->boat.on = 1;
+        ww_scene_plan_systems(sc);
         sc->boat.radius = 1.5;
     }
     ww_state *st = ww_state_new(sc);

@@ -10,7 +10,9 @@
 #include "sim/camera.h"
 #include "sim/sky.h"
 #include "sim/state.h"
+#include "sim/events.h"
 #include "sim/step.h"
+#include "sim/systems.h"
 #include "sim/waves.h"
 #include "test.h"
 
@@ -284,4 +286,34 @@ TEST(sim_camera_spinning_path_keeps_turning_one_way) {
     ww_camera_dir(ww_m_rad(60), 0, want);
     for (int c = 0; c < 3; c++) ENSURE_NEAR(f[c], want[c], CAMERA_TOL);
     free(sc);
+}
+
+/* the table of systems: every system has one row; every script event kind is taken by one row
+ * and every simulation event kind emitted by one, so nothing a script or a system does goes
+ * unowned */
+TEST(sim_systems_table_owns_every_system_and_event_once) {
+    int n;
+    const ww_system_row *rows = ww_systems(&n);
+    int seen[WW_SYS_COUNT] = {0};
+    uint32_t takes = 0, emits = 0;
+    for (int i = 0; i < n; i++) {
+        ENSURE(rows[i].id >= 0 && rows[i].id < WW_SYS_COUNT);
+        seen[rows[i].id]++;
+        ENSURE_MSG((takes & rows[i].takes) == 0, "%s takes a kind another row takes",
+                   ww_system_name(rows[i].id));
+        ENSURE_MSG((emits & rows[i].emits) == 0, "%s emits a kind another row emits",
+                   ww_system_name(rows[i].id));
+        ENSURE_MSG(!rows[i].takes == !rows[i].event, "%s: event kinds without a handler, or back",
+                   ww_system_name(rows[i].id));
+        takes |= rows[i].takes;
+        emits |= rows[i].emits;
+    }
+    /* the script is the driver's own (the events stage), not a row */
+    for (int s = 0; s < WW_SYS_COUNT; s++)
+        ENSURE_MSG(seen[s] == (s == WW_SYS_SCRIPT ? 0 : 1), "%s has %d rows", ww_system_name(s),
+                   seen[s]);
+    for (int k = WW_EV_TIME_OF_DAY; k <= WW_EV_CHEST; k++)
+        ENSURE_MSG(ww_system_taking((ww_event_kind)k) != NULL, "script event kind %d unowned", k);
+    for (int k = 1; k < WW_SE_COUNT; k++)
+        ENSURE_MSG(emits & (1u << k), "simulation event %s emitted by no row", ww_sim_event_name((ww_sim_event_kind)k));
 }

@@ -229,6 +229,7 @@ TEST(simtools_events_jsonl) {
     if (!sc) return;
     ww_scene_defaults(sc);
     sc->cubes.on = 1;
+    ww_scene_plan_systems(sc);
     ww_state *st = ww_state_new(sc);
     ENSURE(st != NULL);
     if (!st) {

@@ -347,6 +347,7 @@ TEST(stones_thud_on_a_turned_cube_by_momentum) {
     ww_scene *sc = load("objects: {stones: {}}\n");
     if (!sc) return;
     sc->cubes.on = 1;
+    ww_scene_plan_systems(sc);
     sc->cubes.count = 1;
     sc->cubes.cube[0] = (ww_cube_desc){.position = {5, 0, 0}, .size = 1, .density = 500};
     ww_state *st = ww_state_new(sc);
@@ -384,6 +385,7 @@ TEST(stones_thud_on_the_boat) {
     ww_scene *sc = load("objects: {stones: {}}\n");
     if (!sc) return;
     sc->boat.on = 1;
+    ww_scene_plan_systems(sc);
     sc->boat.radius = 1.5;
     ww_state *st = ww_state_new(sc);
     at_step(sc, st, 1);
@@ -419,6 +421,7 @@ TEST(stones_do_not_depend_on_fish) {
     ww_scene *a = load(text), *b = load(text);
     if (!a || !b) return;
     b->fish.on = 1;
+    ww_scene_plan_systems(b);
     b->fish.count = 6;
     ww_state *sa = ww_state_new(a), *sb = ww_state_new(b);
     ww_error err = {0};

@@ -1136,6 +1136,7 @@ void ww_scene_defaults(ww_scene *sc) {
     /* derived as compile_time derives them: 1 / (30 * 1/120) = 4 steps, 10 s * 30 fps */
     sc->steps_per_frame = 4;
     sc->frame_count = 300;
+    ww_scene_plan_systems(sc);
 }
 
 /* path as given; name is the file name without folder and extension */
@@ -1171,7 +1172,9 @@ static ww_result compile_scene(ctx *c, const ww_node *root, const ww_node *scrip
     TRY(wwc_audio(c, &top));
     TRY(wwc_golden(c, &top));
     TRY(wwc_check_lights(c, root));
-    return wwc_check_world(c);
+    TRY(wwc_check_world(c));
+    ww_scene_plan_systems(c->sc);
+    return WW_OK;
 }
 
 /* apply the sets, compile, free the trees (script: the --script file's, may be NULL); *out only

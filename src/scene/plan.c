@@ -25,6 +25,24 @@ static const char *const system_names[WW_SYS_COUNT] = {
 
 const char *ww_system_name(ww_system s) { return system_names[s]; }
 
+void ww_scene_plan_systems(ww_scene *sc) {
+    int *on = sc->system_on;
+    on[WW_SYS_CLOCK] = 1;
+    on[WW_SYS_CAMERA] = 1;
+    on[WW_SYS_WAVES] = sc->nwaves > 0;
+    on[WW_SYS_SCRIPT] = sc->nevents > 0;
+    on[WW_SYS_RIPPLES] = sc->ripples_on;
+    on[WW_SYS_CUBES] = sc->cubes.on;
+    on[WW_SYS_STONES] = sc->stones.on;
+    on[WW_SYS_ROD] = sc->rod.on;
+    on[WW_SYS_FISH] = sc->fish.on;
+    on[WW_SYS_CHEST] = sc->chest.on;
+    on[WW_SYS_BUBBLES] = sc->bubbles.on;
+    on[WW_SYS_BOAT] = sc->boat.on;
+    /* without a solid to meet the camera has nothing to collide with */
+    on[WW_SYS_COLLIDE] = sc->camera_collide && ww_scene_has_solids(sc);
+}
+
 size_t ww_format_bytes_per_pixel(ww_format f) {
     switch (f) {
     case WW_FMT_RGBA16F: return 8;
@@ -184,19 +202,7 @@ static void plan_water(const ww_scene *sc, int height, ww_plan_water *w) {
 
 void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     *p = (ww_plan){0};
-    p->system_on[WW_SYS_CLOCK] = 1;
-    p->system_on[WW_SYS_CAMERA] = 1;
-    p->system_on[WW_SYS_WAVES] = sc->nwaves > 0;
-    p->system_on[WW_SYS_SCRIPT] = sc->nevents > 0;
-    p->system_on[WW_SYS_RIPPLES] = sc->ripples_on;
-    p->system_on[WW_SYS_CUBES] = sc->cubes.on;
-    p->system_on[WW_SYS_STONES] = sc->stones.on;
-    p->system_on[WW_SYS_ROD] = sc->rod.on;
-    p->system_on[WW_SYS_FISH] = sc->fish.on;
-    p->system_on[WW_SYS_CHEST] = sc->chest.on;
-    p->system_on[WW_SYS_BUBBLES] = sc->bubbles.on;
-    p->system_on[WW_SYS_BOAT] = sc->boat.on;
-    p->system_on[WW_SYS_COLLIDE] = sc->camera_collide && ww_scene_has_objects(sc);
+    for (int s = 0; s < WW_SYS_COUNT; s++) p->system_on[s] = sc->system_on[s];
 
     /* solid geometry: what casts shadows and what refraction and shafts see under the water */
     const ww_render_desc *rd = &sc->render;

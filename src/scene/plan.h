@@ -11,23 +11,6 @@
 
 #include "scene/scene.h"
 
-typedef enum ww_system {
-    WW_SYS_CLOCK = 0,   /* sky clock: time of day, sun, sky colours */
-    WW_SYS_CAMERA,      /* camera path */
-    WW_SYS_WAVES,       /* Gerstner wave phases */
-    WW_SYS_SCRIPT,      /* script events */
-    WW_SYS_RIPPLES,     /* the ripple pool */
-    WW_SYS_CUBES,       /* floating cubes */
-    WW_SYS_STONES,      /* thrown stones */
-    WW_SYS_ROD,         /* rod and lure */
-    WW_SYS_FISH,        /* fish */
-    WW_SYS_CHEST,       /* treasure chest */
-    WW_SYS_BUBBLES,     /* air bubbles */
-    WW_SYS_BOAT,        /* the boat */
-    WW_SYS_COLLIDE,     /* camera collision */
-    WW_SYS_COUNT
-} ww_system;
-
 /* in the order they run; each exists only when the scene needs it (ww_plan_build) */
 typedef enum ww_pass_id {
     WW_PASS_SHADOW = 0, /* sun depth map (render.shadows, with geometry to cast) */
@@ -133,7 +116,6 @@ typedef struct ww_plan {
 void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p);
 /* the planned pass id, or NULL */
 const ww_pass_desc *ww_plan_pass(const ww_plan *p, ww_pass_id id);
-const char *ww_system_name(ww_system s);
 size_t ww_format_bytes_per_pixel(ww_format f);
 const char *ww_format_name(ww_format f);
 void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to);

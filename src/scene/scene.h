@@ -169,6 +169,25 @@ typedef struct ww_event {
 
 typedef enum ww_tonemap_op { WW_TONEMAP_EXP = 0, WW_TONEMAP_ACES } ww_tonemap_op;
 
+/* the simulation's systems, in no particular order (sim/systems.c runs them in its own); which
+ * of them a scene has is decided once, when it is compiled (ww_scene_plan_systems) */
+typedef enum ww_system {
+    WW_SYS_CLOCK = 0,   /* sky clock: time of day, sun, sky colours */
+    WW_SYS_CAMERA,      /* camera path */
+    WW_SYS_WAVES,       /* Gerstner wave phases */
+    WW_SYS_SCRIPT,      /* script events */
+    WW_SYS_RIPPLES,     /* the ripple pool */
+    WW_SYS_CUBES,       /* floating cubes */
+    WW_SYS_STONES,      /* thrown stones */
+    WW_SYS_ROD,         /* rod and lure */
+    WW_SYS_FISH,        /* fish */
+    WW_SYS_CHEST,       /* treasure chest */
+    WW_SYS_BUBBLES,     /* air bubbles */
+    WW_SYS_BOAT,        /* the boat */
+    WW_SYS_COLLIDE,     /* camera collision */
+    WW_SYS_COUNT
+} ww_system;
+
 typedef struct ww_scene {
     char path[256];            /* file it came from */
     char name[64];             /* file name without folder and extension */
@@ -249,6 +268,9 @@ typedef struct ww_scene {
     /* script timeline, sorted by t (stable for equal times) */
     int nevents;
     ww_event events[WW_MAX_EVENTS];
+
+    /* the systems this scene has: what the simulation steps and `plan` prints */
+    int system_on[WW_SYS_COUNT];
 } ww_scene;
 
 /* one --set KEY=VALUE as given on the command line */
@@ -283,6 +305,16 @@ static inline int ww_scene_has_objects(const ww_scene *sc) {
     return sc->cubes.on || sc->boat.on || sc->stones.on || sc->rod.on || sc->fish.on ||
            sc->chest.on || sc->bubbles.on || sc->models.count > 0;
 }
+
+/* something the camera cannot pass through: the boat, cubes, the chest, models */
+static inline int ww_scene_has_solids(const ww_scene *sc) {
+    return sc->boat.on || sc->cubes.on || sc->chest.on || sc->models.count > 0;
+}
+
+/* decide which systems the scene has (sc->system_on) from its sections: done once at the end
+ * of compiling; code that edits a compiled scene's sections (tests, tools) calls it again */
+void ww_scene_plan_systems(ww_scene *sc);
+const char *ww_system_name(ww_system s);
 
 /* the model's word in the scene format: "gerstner", "sines", ... */
 const char *ww_wave_model_name(ww_wave_model m);

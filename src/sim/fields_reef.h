@@ -8,8 +8,7 @@
 #define WW_N_CHEST(sc) ((sc)->chest.on ? 1 : 0)
 #define WW_N_EMITTERS(sc) ((sc)->bubbles.on ? (sc)->bubbles.count : 0)
 #define WW_N_BUBBLES(sc) ((sc)->bubbles.on ? (sc)->bubbles.total : 0)
-#define WW_N_SOLIDS(sc)                                                                           \
-    ((sc)->boat.on || (sc)->cubes.on || (sc)->chest.on || (sc)->models.count > 0 ? 1 : 0)
+#define WW_N_SOLIDS(sc) (ww_scene_has_solids(sc) ? 1 : 0)
 
 #define WW_FIELDS_REEF(X)                                                                         \
     X(double, chest_pos, 3 * WW_N_CHEST(sc), "chest position: centre of its base on the seabed, m (3)") \
