@@ -8,39 +8,17 @@
 #include <stdlib.h>
 
 static const char *const system_names[WW_SYS_COUNT] = {
-    [WW_SYS_CLOCK] = "clock",
-    [WW_SYS_CAMERA] = "camera",
-    [WW_SYS_WAVES] = "waves",
-    [WW_SYS_SCRIPT] = "script",
-    [WW_SYS_RIPPLES] = "ripples",
-    [WW_SYS_CUBES] = "cubes",
-    [WW_SYS_STONES] = "stones",
-    [WW_SYS_ROD] = "rod",
-    [WW_SYS_FISH] = "fish",
-    [WW_SYS_CHEST] = "chest",
-    [WW_SYS_BUBBLES] = "bubbles",
-    [WW_SYS_BOAT] = "boat",
-    [WW_SYS_COLLIDE] = "collide",
+#define WW_SYS_NAME(id, name, present) [WW_SYS_##id] = name,
+    WW_SYSTEM_LIST(WW_SYS_NAME)
+#undef WW_SYS_NAME
 };
 
 const char *ww_system_name(ww_system s) { return system_names[s]; }
 
 void ww_scene_plan_systems(ww_scene *sc) {
-    int *on = sc->system_on;
-    on[WW_SYS_CLOCK] = 1;
-    on[WW_SYS_CAMERA] = 1;
-    on[WW_SYS_WAVES] = sc->nwaves > 0;
-    on[WW_SYS_SCRIPT] = sc->nevents > 0;
-    on[WW_SYS_RIPPLES] = sc->ripples_on;
-    on[WW_SYS_CUBES] = sc->cubes.on;
-    on[WW_SYS_STONES] = sc->stones.on;
-    on[WW_SYS_ROD] = sc->rod.on;
-    on[WW_SYS_FISH] = sc->fish.on;
-    on[WW_SYS_CHEST] = sc->chest.on;
-    on[WW_SYS_BUBBLES] = sc->bubbles.on;
-    on[WW_SYS_BOAT] = sc->boat.on;
-    /* without a solid to meet the camera has nothing to collide with */
-    on[WW_SYS_COLLIDE] = sc->camera_collide && ww_scene_has_solids(sc);
+#define WW_SYS_PRESENT(id, name, present) sc->system_on[WW_SYS_##id] = (present) ? 1 : 0;
+    WW_SYSTEM_LIST(WW_SYS_PRESENT)
+#undef WW_SYS_PRESENT
 }
 
 size_t ww_format_bytes_per_pixel(ww_format f) {

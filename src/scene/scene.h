@@ -169,22 +169,29 @@ typedef struct ww_event {
 
 typedef enum ww_tonemap_op { WW_TONEMAP_EXP = 0, WW_TONEMAP_ACES } ww_tonemap_op;
 
-/* the simulation's systems, in no particular order (sim/systems.c runs them in its own); which
- * of them a scene has is decided once, when it is compiled (ww_scene_plan_systems) */
+/* the simulation's systems: X(ID, name, present) with `present` an expression of the compiled
+ * scene `sc`. This list makes the ww_system enum, the names `plan` prints, and sc->system_on
+ * (ww_scene_plan_systems: decided once, when the scene is compiled); sim/systems.c runs them in
+ * its own order. The collision needs something solid for the camera to meet. */
+#define WW_SYSTEM_LIST(X)                                                                         \
+    X(CLOCK, "clock", 1)                         /* sky clock: time of day, sun, sky colours */  \
+    X(CAMERA, "camera", 1)                       /* camera path */                               \
+    X(WAVES, "waves", sc->nwaves > 0)            /* wave phases */                               \
+    X(SCRIPT, "script", sc->nevents > 0)         /* script events */                             \
+    X(RIPPLES, "ripples", sc->ripples_on)        /* the ripple pool */                           \
+    X(CUBES, "cubes", sc->cubes.on)              /* floating cubes */                            \
+    X(STONES, "stones", sc->stones.on)           /* thrown stones */                             \
+    X(ROD, "rod", sc->rod.on)                    /* rod and lure */                              \
+    X(FISH, "fish", sc->fish.on)                 /* fish */                                      \
+    X(CHEST, "chest", sc->chest.on)              /* treasure chest */                            \
+    X(BUBBLES, "bubbles", sc->bubbles.on)        /* air bubbles */                               \
+    X(BOAT, "boat", sc->boat.on)                 /* the boat */                                  \
+    X(COLLIDE, "collide", sc->camera_collide && ww_scene_has_solids(sc)) /* camera collision */
+
 typedef enum ww_system {
-    WW_SYS_CLOCK = 0,   /* sky clock: time of day, sun, sky colours */
-    WW_SYS_CAMERA,      /* camera path */
-    WW_SYS_WAVES,       /* Gerstner wave phases */
-    WW_SYS_SCRIPT,      /* script events */
-    WW_SYS_RIPPLES,     /* the ripple pool */
-    WW_SYS_CUBES,       /* floating cubes */
-    WW_SYS_STONES,      /* thrown stones */
-    WW_SYS_ROD,         /* rod and lure */
-    WW_SYS_FISH,        /* fish */
-    WW_SYS_CHEST,       /* treasure chest */
-    WW_SYS_BUBBLES,     /* air bubbles */
-    WW_SYS_BOAT,        /* the boat */
-    WW_SYS_COLLIDE,     /* camera collision */
+#define WW_SYS_ENUM(id, name, present) WW_SYS_##id,
+    WW_SYSTEM_LIST(WW_SYS_ENUM)
+#undef WW_SYS_ENUM
     WW_SYS_COUNT
 } ww_system;
 

@@ -17,9 +17,9 @@
  * starts from it. Rows marked `always` run in every scene: their work is empty when the scene
  * has nothing for them (no wave components, no ripples).
  *
- * Adding a system: its sim file, its scene section (desc + compile, and its line in
- * ww_scene_plan_systems), its state fields (a fields header and one line in state.h's table),
- * and one row here.
+ * Adding a system: its sim file, its scene section (desc + compile), its line in scene.h's
+ * WW_SYSTEM_LIST (name and when a scene has it), its state fields (a fields header and one line
+ * in state.h's table), and one row here.
  */
 #ifndef WW_SYSTEMS_H
 #define WW_SYSTEMS_H
