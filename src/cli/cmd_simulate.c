@@ -152,10 +152,8 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
     if (!r && want_hash) printf("%016" PRIx64 "\n", ww_state_hash(sc, st));
     if (!r && want_stats) {
         double simulated = (double)st->step * sc->dt;
-        long long dropped = 0;
-        long long n = 0;
-        const double *d = ww_state_field(sc, st, "events_dropped", &n);
-        if (d && n > 0) dropped = (long long)d[0];
+        /* the outbox exists only in scenes with objects */
+        long long dropped = ww_scene_has_objects(sc) ? (long long)st->events_dropped[0] : 0;
         fprintf(stderr,
                 "simulated %.3f s (%lld steps of %.6g s) in %.3f s wall: %.1f simulated s per "
                 "wall s, %.3f us per step",

@@ -171,7 +171,8 @@ static int sweep(const solid *s, const double p[3], const double d[3], double *u
 
 void ww_camera_collide(const ww_scene *sc, ww_state *st) {
     if (!WW_N_SOLIDS(sc)) return;
-    double *prev = st->collide_prev, *cs = st->collide_state, m = sc->near_clip;
+    double *prev = st->collide_prev, m = sc->near_clip;
+    int32_t *cs = st->collide_state;
     double p1[3] = {st->cam_pos[0], st->cam_pos[1], st->cam_pos[2]};
     int n = solid_count(sc), what = -1, index = 0;
     solid s;
@@ -179,12 +180,12 @@ void ww_camera_collide(const ww_scene *sc, ww_state *st) {
     /* in the boat's seat the camera rides inside the hull's sphere by design (sim/boat.h) */
     if (sc->boat.on && st->boat_camera[0] == 1.0) {
         for (int a = 0; a < 3; a++) prev[a] = p1[a];
-        cs[0] = cs[1] = 0.0;
+        cs[0] = cs[1] = 0;
         return;
     }
 
     /* 1. start where the camera was, out of anything that moved into it */
-    int from_prev = cs[1] != 0.0 && st->step > 0;
+    int from_prev = cs[1] != 0 && st->step > 0;
     double p[3];
     for (int a = 0; a < 3; a++) p[a] = from_prev ? prev[a] : p1[a];
     for (int k = 0; k < n; k++) {
@@ -235,9 +236,9 @@ void ww_camera_collide(const ww_scene *sc, ww_state *st) {
     ww_m_sub3(p1, p, cut);
     double cut_len = ww_m_len3(cut);
     int held = cut_len > 0.0 && what >= 0;
-    if (held && cs[0] == 0.0)
+    if (held && cs[0] == 0)
         ww_emit(sc, st, WW_SE_CAMERA_BLOCKED, index, p, cut_len, (double)what);
-    cs[0] = held ? (double)(what + 1) : 0.0;
-    cs[1] = 1.0;
+    cs[0] = held ? what + 1 : 0;
+    cs[1] = 1;
     for (int a = 0; a < 3; a++) prev[a] = st->cam_pos[a] = p[a];
 }

@@ -17,6 +17,6 @@
     X(double, boat_input, 3 * WW_N_BOAT(sc), "inputs in force: throttle, steer, until s (-1: none) (3)") \
     X(double, boat_command, 4 * WW_N_BOAT(sc), "inputs from this step's action: throttle, steer, until, 1 = pending (4)") \
     X(double, boat_look_yaw, WW_N_BOAT(sc), "seat view heading, rad (1)")                         \
-    X(double, boat_camera, WW_N_BOAT(sc), "camera mode: 0 free (the path), 1 the boat's seat (1)")
+    X(int32_t, boat_camera, WW_N_BOAT(sc), "camera mode: 0 free (the path), 1 the boat's seat (1)")
 
 #endif

@@ -12,18 +12,18 @@
 
 #define WW_FIELDS_REEF(X)                                                                         \
     X(double, chest_pos, 3 * WW_N_CHEST(sc), "chest position: centre of its base on the seabed, m (3)") \
-    X(double, chest_state, WW_N_CHEST(sc), "0 none, 1 present (1)")                              \
-    X(double, prizes, WW_N_CHEST(sc), "chests collected so far (1)")                             \
+    X(int32_t, chest_state, WW_N_CHEST(sc), "0 none, 1 present (1)")                              \
+    X(int32_t, prizes, WW_N_CHEST(sc), "chests collected so far (1)")                             \
     X(double, chest_t0, WW_N_CHEST(sc), "simulated time the present chest spawned, s (1)")      \
     X(double, chest_next, WW_N_CHEST(sc), "simulated time of the next scheduled spawn, s (1)")  \
     X(double, bubble_pos, 3 * WW_N_BUBBLES(sc), "bubble centres, m (3 per bubble)")             \
-    X(double, bubble_on, WW_N_BUBBLES(sc), "0 free slot, 1 rising (1 per bubble)")              \
+    X(int32_t, bubble_on, WW_N_BUBBLES(sc), "0 free slot, 1 rising (1 per bubble)")              \
     X(double, bubble_t0, WW_N_BUBBLES(sc), "release time, s (1 per bubble)")                    \
     X(double, bubble_wobble, 2 * WW_N_BUBBLES(sc), "zigzag phase, rad, and plane heading, rad (2 per bubble)") \
     X(double, bubble_speed, WW_N_BUBBLES(sc), "rise speed, m/s (1 per bubble)")                 \
     X(double, bubble_radius, WW_N_BUBBLES(sc), "radius, m (1 per bubble)")                      \
     X(double, bubble_next, WW_N_EMITTERS(sc), "next release time, s (1 per emitter)")           \
     X(double, collide_prev, 3 * WW_N_SOLIDS(sc), "camera position after collision, previous step, m (3)") \
-    X(double, collide_state, 2 * WW_N_SOLIDS(sc), "[0] what holds the camera back + 1 (0 free; what as in collide.h), [1] 1 when collide_prev may start a sweep (2)")
+    X(int32_t, collide_state, 2 * WW_N_SOLIDS(sc), "[0] what holds the camera back + 1 (0 free; what as in collide.h), [1] 1 when collide_prev may start a sweep (2)")
 
 #endif

@@ -97,10 +97,30 @@ static void put_array(FILE *to, const char *name, const double *v, long long n) 
     fputc(']', to);
 }
 
+/* an integer column (modes, flags, counters) as the same text a whole double would give */
+static void put_int_array(FILE *to, const char *name, const int32_t *v, long long n) {
+    fprintf(to, ",\"%s\":", name);
+    if (n == 1) {
+        fprintf(to, "%d", (int)v[0]);
+        return;
+    }
+    fputc('[', to);
+    for (long long i = 0; i < n; i++) fprintf(to, i ? ",%d" : "%d", (int)v[i]);
+    fputc(']', to);
+}
+
+#define PUT_FIELD(to, name, v, n)                                                                 \
+    _Generic((v), double *: put_array, int32_t *: put_int_array)(to, name, v, n)
+
+/* an integer is always finite */
+static int finite_double(double v) { return isfinite(v); }
+static int finite_int(int32_t v) { return (void)v, 1; }
+#define FINITE(v) _Generic((v), double: finite_double, int32_t: finite_int)(v)
+
 void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
     fprintf(to, "{\"step\":%lld,\"t\":", (long long)st->step);
     put_num(to, st->t);
-#define WW_STATE_JSON(type, name, count, comment) put_array(to, #name, st->name, (long long)(count));
+#define WW_STATE_JSON(type, name, count, comment) PUT_FIELD(to, #name, st->name, (long long)(count));
     WW_STATE_FIELDS(WW_STATE_JSON)
 #undef WW_STATE_JSON
     fputc('}', to);
@@ -109,11 +129,11 @@ void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
 ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err) {
 #define WW_STATE_CHECK(type, name, count, comment)                                                \
     for (long long i = 0; i < (long long)(count); i++)                                           \
-        if (!isfinite(st->name[i]))                                                               \
+        if (!FINITE(st->name[i]))                                                                 \
             return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                   \
                                 "non-finite value in the simulation: %s[%lld] = %g at step %lld " \
                                 "(t = %.6f s)",                                                   \
-                                #name, i, st->name[i], (long long)st->step, st->t);
+                                #name, i, (double)st->name[i], (long long)st->step, st->t);
     WW_STATE_FIELDS(WW_STATE_CHECK)
 #undef WW_STATE_CHECK
     return WW_OK;

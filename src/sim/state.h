@@ -8,6 +8,8 @@
  *
  * Each array is declared once in WW_STATE_FIELDS (MuJoCo's mjxmacro.h): the table drives sizing,
  * reset, hashing and trace output. X(type, name, count, comment). `count` may use `sc->...`.
+ * `type` is double for physics and int32_t for modes, flags, indices and counters (the trace
+ * prints both as the same numbers; the NaN guard skips the integers).
  * The arrays live in the same block as the header; the field pointers point into it, so
  * ww_state_copy() (not memcpy) makes a snapshot. The hash covers step and array bytes only.
  */
@@ -41,8 +43,8 @@
     X(double, cam_fov, 1, "camera vertical field of view, rad (1)")                              \
     X(double, wave_phase, sc->nwaves, "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)") \
     X(double, ripple, sc->ripples_on ? 4 * sc->ripples.max : 0, "ripple pool: x, z, t0, A0 per entry; A0 = 0 is free (4 max)") \
-    X(double, event_count, ww_scene_has_objects(sc) ? 1 : 0, "events in the step's outbox (1)") \
-    X(double, events_dropped, ww_scene_has_objects(sc) ? 1 : 0, "events a full outbox could not hold, since step 0 (1)") \
+    X(int32_t, event_count, ww_scene_has_objects(sc) ? 1 : 0, "events in the step's outbox (1)") \
+    X(int32_t, events_dropped, ww_scene_has_objects(sc) ? 1 : 0, "events a full outbox could not hold, since step 0 (1)") \
     X(double, events, ww_scene_has_objects(sc) ? WW_MAX_STEP_EVENTS * WW_SIM_EVENT_STRIDE : 0, "the step's outbox, sim/events.h")  \
     WW_FIELDS_CUBES(X)                                                                           \
     WW_FIELDS_STONES(X)                                                                          \

@@ -47,8 +47,10 @@ const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char 
                              long long *count) {
 #define WW_FIELD_BY_NAME(type, fname, n, comment)                                                 \
     if (strcmp(name, #fname) == 0) {                                                              \
-        *count = (long long)(n);                                                                  \
-        return st->fname;                                                                         \
+        const double *p_ = _Generic(st->fname, double *: (const double *)(const void *)st->fname, \
+                                    default: NULL);                                               \
+        *count = p_ ? (long long)(n) : 0;                                                         \
+        return p_;                                                                                \
     }
     WW_STATE_FIELDS(WW_FIELD_BY_NAME)
 #undef WW_FIELD_BY_NAME
@@ -81,11 +83,11 @@ const char *ww_state_field_system(const char *name) {
 ww_result ww_sim_nan_report(const ww_scene *sc, const ww_state *st, ww_error *err) {
 #define WW_FIELD_NAN(type, fname, n, comment)                                                     \
     for (long long i = 0; i < (long long)(n); i++)                                                \
-        if (!isfinite(st->fname[i]))                                                              \
+        if (!isfinite((double)st->fname[i]))                                                      \
             return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                    \
                                 "non-finite value in the %s system: %s[%lld] = %g at step %lld "  \
                                 "(t = %.6f s)",                                                   \
-                                ww_state_field_system(#fname), #fname, i, st->fname[i],           \
+                                ww_state_field_system(#fname), #fname, i, (double)st->fname[i],   \
                                 (long long)st->step, st->t);
     WW_STATE_FIELDS(WW_FIELD_NAN)
 #undef WW_FIELD_NAN

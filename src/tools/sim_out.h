@@ -22,7 +22,8 @@
 int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to);
 
 /* the array of the state field `name` (WW_STATE_FIELDS) and its length in *count; NULL when no
- * field has that name. A field of a system the scene lacks has *count 0. */
+ * field has that name or it is an integer column (a mode, flag or counter: read it from the
+ * state). A field of a system the scene lacks has *count 0. */
 const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char *name,
                              long long *count);
 
