@@ -3,7 +3,7 @@
  * ww_wave_stats_compute, rows written as CSV and JSON lines in point order from this process or
  * from forked workers, thumbnails rendered in a child process per point, and the contact sheet.
  */
-#include "tools/sweep.h"
+#include "sweep/sweep.h"
 
 #include <errno.h>
 #include <math.h>
@@ -21,11 +21,11 @@
 #include "io/json.h"
 #include "io/stream.h"
 #include "io/writers.h"
+#include "render/audio.h"
+#include "render/contact.h"
+#include "render/job.h"
 #include "sim/floater_stats.h"
 #include "sim/wave_stats.h"
-#include "tools/audio.h"
-#include "tools/contact.h"
-#include "tools/job.h"
 
 #define THUMB_W_DEFAULT 160
 #define THUMB_H_DEFAULT 90

@@ -21,7 +21,7 @@
 #include <stdio.h>
 
 #include "core/error.h"
-#include "tools/job.h"
+#include "render/job.h"
 
 /* run fn(ctx, report) in a forked child (its own GL context and its own peak RSS) and copy the
  * report of `size` bytes back through a pipe; returns the child's peak RSS in KiB, or -1 when no

@@ -6,14 +6,14 @@
  * high-water mark of the configurations before it, and every format starts with the same cold
  * caches and a fresh GL context.
  */
-#include "tools/bench.h"
+#include "bench/bench.h"
 
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "render/job.h"
 #include "scene/scene.h"
-#include "tools/job.h"
 
 /* the target: PNG frames at >= 0.85x the frames per second of rendering without writing */
 #define TARGET_PNG_OVER_NONE 0.85

@@ -5,7 +5,7 @@
  * fill floor, with the speed targets: the full world within 15x the floor at 1280x720, water and
  * sky within 3x. `bench sim` is in bench_sim.c, `bench quality` in bench_quality.c.
  */
-#include "tools/bench.h"
+#include "bench/bench.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -16,8 +16,8 @@
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
 #include "io/json.h"
+#include "render/job.h"
 #include "scene/scene.h"
-#include "tools/job.h"
 
 /* the speed targets for render / fill floor at 1280x720: a scene with solid objects (the lake's
  * full world) and one of water and sky only */

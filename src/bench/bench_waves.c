@@ -3,7 +3,7 @@
  * and the figure. Every time is the median of repeats after a warm-up, on a monotonic clock.
  */
 #define _GNU_SOURCE /* sincos(3), the baseline the evaluation is set against */
-#include "tools/bench_waves.h"
+#include "bench/bench_waves.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -11,12 +11,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "bench/plot.h"
 #include "core/mathx.h"
 #include "core/rng.h"
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
 #include "io/json.h"
 #include "io/writers.h"
+#include "render/job.h"
 #include "scene/plan.h"
 #include "scene/scene.h"
 #include "sim/state.h"
@@ -24,8 +26,6 @@
 #include "sim/water.h"
 #include "sim/wave_stats.h"
 #include "sim/waves.h"
-#include "tools/job.h"
-#include "tools/plot.h"
 
 #define SEA_SEED 20240601u     /* every sea of the report is drawn from this seed */
 #define SEA_TIME 12.25         /* s: the time the CPU parts evaluate at */

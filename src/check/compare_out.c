@@ -2,7 +2,7 @@
  * JSON and text lines of a result, and the threshold options shared by `compare` and
  * `render --golden`.
  */
-#include "tools/compare_impl.h"
+#include "check/compare_impl.h"
 
 #include <math.h>
 #include <stddef.h>
