@@ -83,12 +83,6 @@ void ww_cmp_result_json_fields(const ww_cmp_result *r, const ww_cmp_opts *o, FIL
     ww_json_string(f, r->why);
 }
 
-void ww_cmp_result_json(const ww_cmp_result *r, const ww_cmp_opts *o, FILE *f) {
-    fputc('{', f);
-    ww_cmp_result_json_fields(r, o, f);
-    fputc('}', f);
-}
-
 void ww_cmp_result_line(const ww_cmp_result *r, FILE *f) {
     if (r->identical) {
         fprintf(f, "identical  PASS");
