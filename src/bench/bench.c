@@ -95,7 +95,8 @@ static const char *base_name(const char *path) {
     return s ? s + 1 : path;
 }
 
-/* the target a configuration is held to, or 0 when it is not one the issue names */
+/* the speed target a configuration is held to (render time over the fill floor), or 0 at sizes
+ * other than the targets' 1280x720 */
 static double target_x(const child_report *rep, int w, int h) {
     if (w != TARGET_WIDTH || h != TARGET_HEIGHT) return 0.0;
     return rep->full_world ? TARGET_FULL_WORLD_X : TARGET_WATER_SKY_X;
