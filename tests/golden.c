@@ -7,9 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check/golden.h"
 #include "gfx/backend.h"
 #include "io/writers.h"
-#include "tools/golden.h"
 #include "test.h"
 
 /* On a renderer other than the one in golden/RENDERER, without goldens of its own (DIR/KEY/):

@@ -1,4 +1,4 @@
-/* test_audio.c - the sound track (tools/audio.h) and WAV I/O (io/wav.h): header fields and
+/* test_audio.c - the sound track (render/audio.h) and WAV I/O (io/wav.h): header fields and
  * length of a scene's and a slice's track, silence where nothing sounds, a splash where the event
  * log has one, left/right balance, the engine's level against the boat's speed, the music ducked
  * under water, WAV files named in the scene used sample for sample, same bytes twice, slices that
@@ -14,7 +14,7 @@
 #include "sim/state.h"
 #include "sim/step.h"
 #include "test.h"
-#include "tools/audio.h"
+#include "render/audio.h"
 
 #define RATE 44100
 /* a sample of digital silence: exactly 0 (dither is off where the mix is exactly 0) */

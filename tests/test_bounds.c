@@ -19,8 +19,8 @@
 #include "scene/obj.h"
 #include "scene/scene.h"
 #include "test.h"
-#include "tools/audio.h"
-#include "tools/compare.h"
+#include "check/compare.h"
+#include "render/audio.h"
 
 /* allocations the streaming resampler makes for a file, whatever its length: the clip and one
  * block of raw bytes */
@@ -406,7 +406,7 @@ TEST(bounds_wav_resampler_streams) {
         ENSURE_EQ_INT(out.frames, n);
         ENSURE_EQ_INT(out.rate, 44100);
         ENSURE_EQ_INT(out.channels, cases[c].channels);
-        /* the reference: tools/audio.c's interpolation over the decoded file */
+        /* the reference: render/audio.c's interpolation over the decoded file */
         double step = (double)cases[c].rate / 44100;
         long bad = 0;
         for (int64_t i = 0; i < n && out.data; i++) {

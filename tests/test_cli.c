@@ -348,15 +348,53 @@ static int grep_includes(const char *dir, const char *const *bad, int nbad, char
 }
 
 TEST(cli_layering_sim_includes_no_gl_or_yaml) {
-    const char *bad[] = {"gfx/", "GL/", "EGL/", "yaml.h", "scene/tree.h", "io/", "tools/", "cli/"};
+    const char *bad[] = {"gfx/", "GL/", "EGL/", "yaml.h", "scene/tree.h", "io/", "cli/"};
     char hit[800] = "";
-    ENSURE_MSG(grep_includes("src/sim", bad, 8, hit, sizeof hit) == 0, "%s", hit);
-    const char *up[] = {"gfx/", "io/", "tools/", "cli/", "sim/"};
-    ENSURE_MSG(grep_includes("src/scene", up, 5, hit, sizeof hit) == 0, "%s", hit);
-    ENSURE_MSG(grep_includes("src/core", up, 5, hit, sizeof hit) == 0, "%s", hit);
+    ENSURE_MSG(grep_includes("src/sim", bad, 7, hit, sizeof hit) == 0, "%s", hit);
+    const char *up[] = {"gfx/", "io/", "cli/", "sim/"};
+    ENSURE_MSG(grep_includes("src/scene", up, 4, hit, sizeof hit) == 0, "%s", hit);
+    ENSURE_MSG(grep_includes("src/core", up, 4, hit, sizeof hit) == 0, "%s", hit);
     const char *yaml[] = {"<yaml.h>"};
-    const char *dirs[] = {"src/core", "src/scene", "src/sim", "src/gfx", "src/io", "src/tools", "src/cli"};
+    const char *dirs[] = {"src/core", "src/scene", "src/sim",  "src/gfx",   "src/io",
+                          "src/render", "src/check", "src/bench", "src/sweep", "src/cli"};
     int total = 0;
-    for (int i = 0; i < 7; i++) total += grep_includes(dirs[i], yaml, 1, hit, sizeof hit);
+    for (int i = 0; i < 10; i++) {
+        int n = grep_includes(dirs[i], yaml, 1, hit, sizeof hit);
+        ENSURE_MSG(n >= 0, "cannot read %s", dirs[i]);
+        total += n;
+    }
     ENSURE_EQ_INT(total, 1);
+}
+
+/* every folder of src/ includes only itself and the folders below it (DESIGN.md's layers): core
+ * and io at the bottom, then scene, sim and gfx, then render (the render job, the sound track),
+ * check (compare, golden, review) on render, bench and sweep on both, and cli on top. Siblings
+ * bench and sweep never include each other. */
+TEST(cli_layering_each_folder_includes_only_lower_ones) {
+    static const struct {
+        const char *dir;
+        const char *above[10]; /* NULL-terminated */
+    } rule[] = {
+        {"src/core", {"\"io/", "\"scene/", "\"sim/", "\"gfx/", "\"render/", "\"check/",
+                      "\"bench/", "\"sweep/", "\"cli/"}},
+        {"src/io", {"\"scene/", "\"sim/", "\"gfx/", "\"render/", "\"check/", "\"bench/",
+                    "\"sweep/", "\"cli/"}},
+        {"src/scene", {"\"io/", "\"sim/", "\"gfx/", "\"render/", "\"check/", "\"bench/",
+                       "\"sweep/", "\"cli/"}},
+        {"src/sim", {"\"io/", "\"gfx/", "\"render/", "\"check/", "\"bench/", "\"sweep/",
+                     "\"cli/"}},
+        {"src/gfx", {"\"render/", "\"check/", "\"bench/", "\"sweep/", "\"cli/"}},
+        {"src/render", {"\"check/", "\"bench/", "\"sweep/", "\"cli/"}},
+        {"src/check", {"\"bench/", "\"sweep/", "\"cli/"}},
+        {"src/bench", {"\"sweep/", "\"cli/"}},
+        {"src/sweep", {"\"bench/", "\"cli/"}},
+    };
+    for (size_t i = 0; i < sizeof rule / sizeof rule[0]; i++) {
+        int n = 0;
+        while (rule[i].above[n]) n++;
+        char hit[800] = "";
+        int found = grep_includes(rule[i].dir, rule[i].above, n, hit, sizeof hit);
+        ENSURE_MSG(found >= 0, "cannot read %s", rule[i].dir);
+        ENSURE_MSG(found <= 0, "%s", hit);
+    }
 }

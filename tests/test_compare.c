@@ -1,4 +1,4 @@
-/* test_compare.c - `waterworld compare` and tools/compare.h: every metric against hand-computed
+/* test_compare.c - `waterworld compare` and check/compare.h: every metric against hand-computed
  * values on tiny synthetic images, the 8/16-bit and grey/RGB twins, ImageMagick's RMSE/PSNR and
  * OpenImageIO idiff's max/mean on rendered frames, the rules and exit codes, JSON, the diff image,
  * folders, and the EXR NaN/Inf rules.
@@ -11,7 +11,7 @@
 
 #include "io/writers.h"
 #include "test.h"
-#include "tools/compare_impl.h"
+#include "check/compare_impl.h"
 
 /* the metrics are sums in double of floats of v / 255: what is left is rounding */
 #define METRIC_TOL 1e-9

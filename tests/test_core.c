@@ -1,7 +1,11 @@
-/* test_core.c - core utilities: rng streams, hash, arena. */
+/* test_core.c - core utilities: rng streams, hash, arena, the child process helper. */
+#include <signal.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/arena.h"
+#include "core/child.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "core/rng.h"
@@ -64,4 +68,56 @@ TEST(core_exit_codes_follow_the_contract) {
     ENSURE_EQ_INT(ww_result_exit_code(WW_E_INCONSISTENT), 2);
     ENSURE_EQ_INT(ww_result_exit_code(WW_E_IO), 3);
     ENSURE_EQ_INT(ww_result_exit_code(WW_E_NAN), 3);
+}
+
+/* ---- core/child.h ---------------------------------------------------------------------------- */
+
+/* a report larger than a pipe's buffer (64 KiB on Linux), so it crosses in parts */
+typedef struct big_report {
+    int seen;               /* ctx's value, as the child saw it */
+    unsigned char fill[200000];
+} big_report;
+
+static void child_fills(const void *ctx, void *report) {
+    big_report *r = report;
+    r->seen = *(const int *)ctx;
+    for (size_t i = 0; i < sizeof r->fill; i++) r->fill[i] = (unsigned char)(i * 7u + 1u);
+}
+
+static void child_exits_3(const void *ctx, void *report) {
+    (void)ctx;
+    ((big_report *)report)->seen = 1;
+    _exit(3);
+}
+
+static void child_is_killed(const void *ctx, void *report) {
+    (void)ctx;
+    (void)report;
+    raise(SIGKILL);
+}
+
+TEST_PROC(core_child_brings_the_report_back_or_says_how_it_died) {
+    big_report *r = malloc(sizeof *r);
+    ENSURE(r != NULL);
+    if (!r) return;
+    int ctx = 42;
+    ww_child_end end;
+    ENSURE_EQ_INT(ww_child_run(child_fills, &ctx, r, sizeof *r, &end), WW_CHILD_REPORTED);
+    ENSURE_EQ_INT(end.outcome, WW_CHILD_REPORTED);
+    ENSURE_EQ_INT(end.status, 0);
+    ENSURE(end.max_rss_kib > 0);
+    ENSURE_EQ_INT(r->seen, 42);
+    int same = 1;
+    for (size_t i = 0; i < sizeof r->fill; i++) same &= r->fill[i] == (unsigned char)(i * 7u + 1u);
+    ENSURE(same);
+
+    /* a child that ends before reporting: the report is zeroed, the status says how */
+    char how[64];
+    ENSURE_EQ_INT(ww_child_run(child_exits_3, &ctx, r, sizeof *r, &end), WW_CHILD_DIED);
+    ENSURE_EQ_INT(r->seen, 0);
+    ENSURE(strcmp(ww_child_how_ended(end.status, how, sizeof how), "exit status 3") == 0);
+    ENSURE_EQ_INT(ww_child_run(child_is_killed, &ctx, r, sizeof *r, NULL), WW_CHILD_DIED);
+    ENSURE_EQ_INT(ww_child_run(child_is_killed, &ctx, r, sizeof *r, &end), WW_CHILD_DIED);
+    ENSURE(strcmp(ww_child_how_ended(end.status, how, sizeof how), "killed by signal 9") == 0);
+    free(r);
 }

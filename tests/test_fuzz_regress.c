@@ -16,7 +16,7 @@
 #include "io/writers.h"
 #include "scene/assets.h"
 #include "test.h"
-#include "tools/compare.h"
+#include "check/compare.h"
 
 /* ---- building inputs ------------------------------------------------------------------------ */
 
@@ -370,9 +370,10 @@ TEST(stb_guard_png_shapes) {
 TEST(stb_guard_is_the_only_caller) {
     static const char *const decoders[] = {"stbi_load", "stbi_info", "stbi_is_16_bit", "stbi_is_hdr",
                                            "stbi_loadf"};
-    const char *dirs[] = {"src/core", "src/scene", "src/sim", "src/gfx", "src/io", "src/tools", "src/cli"};
+    const char *dirs[] = {"src/core", "src/scene", "src/sim",  "src/gfx",   "src/io",
+                          "src/render", "src/check", "src/bench", "src/sweep", "src/cli"};
     int scanned = 0;
-    for (int d = 0; d < 7; d++) {
+    for (int d = 0; d < 10; d++) {
         DIR *dir = opendir(dirs[d]);
         ENSURE_MSG(dir != NULL, "%s", dirs[d]);
         if (!dir) continue;

@@ -13,7 +13,7 @@
 #include "io/writers.h"
 #include "scene/scene.h"
 #include "test.h"
-#include "tools/golden.h"
+#include "check/golden.h"
 
 #define SCENE "scenes/minimal.yaml"
 #define SIZE "--size 256x144"

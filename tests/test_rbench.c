@@ -16,8 +16,8 @@
 #include "scene/plan.h"
 #include "sim/state.h"
 #include "test.h"
-#include "tools/bench.h"
-#include "tools/job.h"
+#include "bench/bench.h"
+#include "render/job.h"
 
 #define TIMED_FRAMES 4
 

@@ -1,4 +1,4 @@
-/* test_review.c - the review set (tools/review.h, `waterworld review`): the list's syntax and its
+/* test_review.c - the review set (check/review.h, `waterworld review`): the list's syntax and its
  * file:line:column errors, the contact sheet's layout and labels, the HTML page's structure, and
  * the command end to end on the null backend (black frames, no GL). Then the first impression:
  * scenes/tour.yaml (`make demo`) does what it shows, checked on the simulation alone, and
@@ -15,8 +15,8 @@
 #include "sim/state.h"
 #include "sim/step.h"
 #include "test.h"
-#include "tools/contact.h"
-#include "tools/review.h"
+#include "check/review.h"
+#include "render/contact.h"
 
 static const char TINY[] =
     "# a tiny review list\n"

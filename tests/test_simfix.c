@@ -7,15 +7,15 @@
 #include "core/mathx.h"
 #include "core/numfmt.h"
 #include "core/rng.h"
+#include "io/image.h"
 #include "scene/scene.h"
 #include "sim/camera.h"
 #include "sim/fish.h"
 #include "sim/state.h"
 #include "sim/step.h"
-#include "io/image.h"
 #include "test.h"
-#include "tools/plot.h"
-#include "tools/sweep.h"
+#include "bench/plot.h"
+#include "sweep/sweep.h"
 
 /* ---- numbers as people write them ----------------------------------------------------------- */
 

@@ -15,7 +15,7 @@
 #include "sim/state.h"
 #include "sim/step.h"
 #include "test.h"
-#include "tools/sim_out.h"
+#include "render/sim_out.h"
 
 /* the JSON lines print the shortest text that reads back as the double (core/numfmt.h) */
 #define JSON_ROUND_TRIP_TOL 0.0

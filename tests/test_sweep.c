@@ -11,8 +11,8 @@
 #include "scene/scene.h"
 #include "sim/wave_stats.h"
 #include "test.h"
-#include "tools/contact.h"
-#include "tools/sweep.h"
+#include "render/contact.h"
+#include "sweep/sweep.h"
 
 /* a grid value is one weighted sum ((N-1-k) A + k B) / (N-1): a few ulps of the ends */
 #define GRID_VALUE_TOL 1e-15

@@ -13,7 +13,7 @@
 #include "sim/water.h"
 #include "sim/waves.h"
 #include "test.h"
-#include "tools/plot.h"
+#include "bench/plot.h"
 
 /* probe prints %.9g (heights, normals; |values| <= 1 here) and %.12g (times): what the CSV's
  * rounding allows */

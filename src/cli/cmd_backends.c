@@ -2,9 +2,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "check/golden.h"
 #include "cli/cli.h"
 #include "gfx/backend.h"
-#include "tools/golden.h"
 
 static const char usage[] =
     "usage: waterworld backends [--renderer | --key]\n"

@@ -3,10 +3,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench/bench.h"
+#include "bench/bench_waves.h"
 #include "cli/cli.h"
 #include "io/outpath.h"
-#include "tools/bench.h"
-#include "tools/bench_waves.h"
 
 static const char usage[] =
     "usage: waterworld bench [render] [--frames N] [--size WxH] [--json] [SCENE.yaml...]\n"

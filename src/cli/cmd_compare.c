@@ -1,5 +1,5 @@
 /* cmd_compare.c - `waterworld compare EXPECTED ACTUAL`: two images, or two folders of frames
- * matched by name, under the thresholds of tools/compare.h; a line (or a JSON object) per pair.
+ * matched by name, under the thresholds of check/compare.h; a line (or a JSON object) per pair.
  */
 #include <dirent.h>
 #include <stdio.h>
@@ -8,11 +8,11 @@
 #include <strings.h>
 #include <sys/stat.h>
 
+#include "check/compare.h"
 #include "cli/cli.h"
 #include "io/json.h"
 #include "io/outpath.h"
 #include "io/writers.h"
-#include "tools/compare.h"
 
 static const char usage[] =
     "usage: waterworld compare EXPECTED ACTUAL [--diff FILE|DIR] [thresholds] [--json]\n"

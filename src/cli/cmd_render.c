@@ -5,10 +5,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check/golden.h"
 #include "cli/cli.h"
 #include "gfx/backend.h"
-#include "tools/golden.h"
-#include "tools/job.h"
+#include "render/job.h"
 
 static const char usage[] =
     "usage: waterworld render SCENE.yaml [options]\n"

@@ -1,6 +1,6 @@
 /* cmd_review.c - `waterworld review LIST`: render one frame per shot of a review list with
  * `waterworld render` (this binary, run as a child per shot, a few at once), then build the
- * labelled contact sheet and the HTML page from the frames (tools/review.h).
+ * labelled contact sheet and the HTML page from the frames (check/review.h).
  */
 #include <errno.h>
 #include <signal.h>
@@ -13,9 +13,9 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "check/review.h"
 #include "cli/cli.h"
 #include "io/outpath.h"
-#include "tools/review.h"
 
 extern char **environ;
 

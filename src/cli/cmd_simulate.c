@@ -9,10 +9,10 @@
 #include "cli/cli.h"
 #include "io/outpath.h"
 #include "io/stream.h"
+#include "render/job.h"
+#include "render/sim_out.h"
 #include "sim/state.h"
 #include "sim/step.h"
-#include "tools/job.h"
-#include "tools/sim_out.h"
 
 static const char usage[] =
     "usage: waterworld simulate SCENE.yaml [options]\n"

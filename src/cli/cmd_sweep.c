@@ -9,7 +9,7 @@
 
 #include "cli/cli.h"
 #include "io/outpath.h"
-#include "tools/sweep.h"
+#include "sweep/sweep.h"
 
 static const char usage[] =
     "usage: waterworld sweep SCENE.yaml --vary KEY=A:B:N [--vary KEY=v1,v2,...]... [options]\n"

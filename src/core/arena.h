@@ -1,5 +1,6 @@
 /* arena.h - one block, bump allocation, mark/release (Box2D's stack arena, MuJoCo's per-step
- * stack). Used for load-time trees and per-step scratch; never grows while stepping.
+ * stack). Used for the YAML parser's load-time tree (scene/yaml_tree.c); never grows. No system
+ * needs per-step scratch yet, so mark/release is called only by the tests (test_core.c).
  *
  *   ww_arena a; ww_arena_init(&a, bytes);    // one malloc
  *   void *p = ww_arena_alloc(&a, n);         // NULL when full (caller reports WW_E_NOMEM)

@@ -1,6 +1,6 @@
 /* stb_guard.h - the one door to stb_image's decoders: every image file the program hands to
  * stb_image (textures and cubemap faces in scene/assets.c, io/png.c's reader, the PNG fallback
- * of tools/compare_load.c) goes through these calls, which vet the file's structure first and
+ * of check/compare_load.c) goes through these calls, which vet the file's structure first and
  * refuse, with stb's own failure mechanism, what stb_image 2.27 (Debian 12's libstb-dev) would
  * decode unsafely.
  *

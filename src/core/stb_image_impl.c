@@ -1,6 +1,6 @@
 /* stb_image_impl.c - the one copy of stb_image's decoder in the program (PNG, TGA, JPEG, from
  * memory only), shared by io/png.c (frames and goldens), scene/assets.c (textures, cubemap
- * faces) and tools/compare_load.c, which include the header for its settings and frees and
+ * faces) and check/compare_load.c, which include the header for its settings and frees and
  * decode through the guarded calls at the end of this file (core/stb_guard.h: a structural vet
  * first, core/stb_guard.c). Its compile-time settings are pinned here; callers pin the run-time
  * ones (flip, unpremultiply) before each decode. It compiles clean under our warning flags, so

@@ -1,8 +1,8 @@
 /* compile_audio.c - the scene's `audio:` section (scene/desc_audio.h): master volume, the music
  * bed, spatialisation and engine knobs, and a WAV file per sound. Files are resolved against the
  * folder of the file that names them and checked to be readable regular files here; their
- * headers are checked against io/wav.h's caps when a command loads the scene (tools/audio.h's
- * ww_audio_check, from cli/args.c) and they are decoded when a track is made (tools/audio.c),
+ * headers are checked against io/wav.h's caps when a command loads the scene (render/audio.h's
+ * ww_audio_check, from cli/args.c) and they are decoded when a track is made (render/audio.c),
  * with their place kept for messages.
  */
 #include <string.h>

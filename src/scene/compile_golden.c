@@ -27,7 +27,7 @@ static ww_result get_threshold(ctx *c, const section *s, const char *key, const 
     return WW_OK;
 }
 
-/* a renderer key as tools/golden.c makes them: lowercase letters, digits, '.', '_' and '-',
+/* a renderer key as check/golden.c makes them: lowercase letters, digits, '.', '_' and '-',
  * starting with a letter or digit (it names a folder: no '/', no "..") */
 static int valid_key(const char *k) {
     if (!((k[0] >= 'a' && k[0] <= 'z') || (k[0] >= '0' && k[0] <= '9'))) return 0;

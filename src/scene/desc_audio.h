@@ -1,7 +1,7 @@
 /* desc_audio.h - the scene's `audio:` section: the sound track `render --audio` synthesises from
  * the simulation's events (seed 000's sounds, rendered offline). Plain data filled by
- * scene/compile_audio.c; tools/audio.c mixes it. Every sound is procedural unless the section
- * names a WAV file for it (read by tools/audio.c when a track is made; the file's place in the
+ * scene/compile_audio.c; render/audio.c mixes it. Every sound is procedural unless the section
+ * names a WAV file for it (read by render/audio.c when a track is made; the file's place in the
  * scene is kept here so that its errors name file:line:column).
  */
 #ifndef WW_DESC_AUDIO_H

@@ -1,6 +1,6 @@
 /* desc_golden.h - the scene's `golden:` section: the thresholds `render --golden` compares its
  * frames with, and the renderers whose goldens are accepted. Plain data filled by
- * scene/compile_golden.c; tools/golden.c turns it into compare options (ww_golden_scene_opts),
+ * scene/compile_golden.c; check/golden.c turns it into compare options (ww_golden_scene_opts),
  * and the command line's thresholds win over these.
  *
  *   golden:

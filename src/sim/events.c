@@ -10,19 +10,8 @@ static const char *const names[WW_SE_COUNT] = {
 #undef WW_SE_NAME
 };
 
-static const char *const magnitudes[WW_SE_COUNT] = {
-    [WW_SE_NONE] = "",
-#define WW_SE_MAG(id, name, magnitude) [WW_SE_##id] = magnitude,
-    WW_SIM_EVENTS(WW_SE_MAG)
-#undef WW_SE_MAG
-};
-
 const char *ww_sim_event_name(ww_sim_event_kind k) {
     return k >= 0 && k < WW_SE_COUNT ? names[k] : "unknown";
-}
-
-const char *ww_sim_event_magnitude(ww_sim_event_kind k) {
-    return k >= 0 && k < WW_SE_COUNT ? magnitudes[k] : "";
 }
 
 void ww_emit(const ww_scene *sc, ww_state *st, ww_sim_event_kind kind, int object,

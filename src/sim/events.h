@@ -44,8 +44,6 @@ typedef enum ww_sim_event_kind {
 
 /* "stone_skip", ...; "none" for 0 */
 const char *ww_sim_event_name(ww_sim_event_kind k);
-/* what the magnitude column means for kind k */
-const char *ww_sim_event_magnitude(ww_sim_event_kind k);
 
 /* append an event to the step's outbox (pos may be NULL); a full outbox counts it in
  * st->events_dropped[0] instead */

@@ -42,11 +42,6 @@ double ww_stone_min_speed(const ww_stones_desc *d, double beta) {
     return sqrt(4.0 * d->radius * WW_G / (s * q));
 }
 
-double ww_stone_max_incidence(const ww_stones_desc *d) {
-    double l2 = 2.0 * lambda_of(d);
-    return l2 > 1.0 ? acos(cbrt(1.0 / l2)) : 0.0;
-}
-
 /* ---- flight ---------------------------------------------------------------------------------- */
 
 /* the drag's k in a = -k |v| v, 1/m */

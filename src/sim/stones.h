@@ -59,8 +59,7 @@ void ww_stones_step(const ww_scene *sc, ww_state *st);
 void ww_stones_event(const ww_scene *sc, ww_state *st, const ww_event *ev);
 
 /* the criterion alone (pure): the lowest speed that skips at incidence beta (rad), INFINITY
- * where none does; and beta_max, above which none does */
+ * where none does (at and above beta_max, too) */
 double ww_stone_min_speed(const ww_stones_desc *d, double beta);
-double ww_stone_max_incidence(const ww_stones_desc *d);
 
 #endif

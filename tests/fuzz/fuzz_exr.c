@@ -1,5 +1,5 @@
 /* fuzz_exr.c - libFuzzer entry for the EXR reader (io/exr.c on OpenEXRCore) and the compare
- * loader's EXR path (tools/compare_load.c, which also reads the channel list itself): any bytes
+ * loader's EXR path (check/compare_load.c, which also reads the channel list itself): any bytes
  * in, an image, the attributes or an error out, no crash. The readers take a path, so the input
  * is handed over as a file in memory. The corpus starts from small EXRs our writer makes
  * (half and float, RGB and RGBA, ZIP, PIZ and none, with and without attributes).
@@ -10,8 +10,8 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "check/compare.h"
 #include "io/writers.h"
-#include "tools/compare.h"
 
 /* files whose data window is larger are not read: a size cap is the reader's business, and
  * ASan freeing a 4-megapixel float image took 1.7 s on a loaded machine and tripped libFuzzer's

@@ -1,16 +1,16 @@
 /* fuzz_image.c - libFuzzer entry for the image files a scene and the tools name, through the
  * three places that decode them: textures and cubemap faces (scene/assets.c: stb_image to
  * RGBA8), io/png.c's reader (stb_image to RGB8 or RGBA8) and the compare loader
- * (tools/compare_load.c: our PNG reader, stb_image for the rest, 8 or 16 bits). All of them reach
+ * (check/compare_load.c: our PNG reader, stb_image for the rest, 8 or 16 bits). All of them reach
  * stb_image through core/stb_guard.h; any bytes in, an image or an error out, no crash. */
 #include "fuzz_file.h"
 
 #include <stdint.h>
 
+#include "check/compare.h"
 #include "core/stb_guard.h"
 #include "io/writers.h"
 #include "scene/assets.h"
-#include "tools/compare.h"
 
 /* images that say they are larger are not decoded: a size cap is the readers' business (their
  * own caps are tested apart), and ASan's shadow of a 32768x32768 image only slows the search */

@@ -1,5 +1,5 @@
 /* fuzz_wav.c - libFuzzer entry for the WAV reader (io/wav.c) and the resampler behind it (a
- * scene's WAV files are resampled to 44.1 kHz when a sound track is made, tools/audio.c): any
+ * scene's WAV files are resampled to 44.1 kHz when a sound track is made, render/audio.c): any
  * bytes in, samples or an error out, no crash. The input is parsed from memory, then handed to
  * ww_audio_new as every sound of a scene loaded once (all of them name one file in memory, so
  * nothing is synthesised). The corpus starts from small WAVs of each sample format. */
@@ -9,8 +9,8 @@
 #include <stdint.h>
 
 #include "io/wav.h"
+#include "render/audio.h"
 #include "scene/scene.h"
-#include "tools/audio.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -2,7 +2,7 @@
  * then the scene's fallback keys, then DIR itself), the diff and a copy of the golden for every
  * failure, and a self-contained HTML report (inline CSS, relative links, no script).
  */
-#include "tools/golden.h"
+#include "check/golden.h"
 
 #include <ctype.h>
 #include <errno.h>

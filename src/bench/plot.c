@@ -3,7 +3,7 @@
  * thick lines by stepping along the longer axis (a DDA), text as stb_easy_font's quads filled
  * as rectangles.
  */
-#include "tools/plot.h"
+#include "bench/plot.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -8,7 +8,7 @@
  *   ww_cmp_result res;
  *   ww_cmp_images(&a, &b, &o, &res, &err);          // WW_E_INCONSISTENT: sizes or kinds differ
  *   if (!res.pass) ww_cmp_write_diff("diff.png", &a, &b, &o, &err);
- *   ww_cmp_result_json(&res, &o, stdout);
+ *   ww_cmp_result_line(&res, stdout);               // or ww_cmp_result_json_fields
  *   ww_cmp_image_free(&a); ww_cmp_image_free(&b);   // the caller frees what it loaded, also
  *                                                   // after a failed load (it is then empty)
  *
@@ -140,10 +140,9 @@ ww_result ww_cmp_pair(const char *path_a, const char *path_b, const ww_cmp_opts 
 ww_result ww_cmp_write_diff(const char *path, const ww_cmp_image *a, const ww_cmp_image *b,
                             const ww_cmp_opts *o, ww_error *err);
 
-/* one JSON object (no newline) with every metric, the rules that were on, pass and why; PSNR of
- * equal images is written as null (JSON has no infinity) */
-void ww_cmp_result_json(const ww_cmp_result *res, const ww_cmp_opts *o, FILE *f);
-/* the same members without the braces, to be embedded in a caller's object */
+/* the members of a JSON object, without the braces (the caller's object holds them): every
+ * metric, the rules that were on, pass and why; PSNR of equal images is written as null (JSON
+ * has no infinity) */
 void ww_cmp_result_json_fields(const ww_cmp_result *res, const ww_cmp_opts *o, FILE *f);
 /* one line of text: the metrics, then PASS or FAIL and why */
 void ww_cmp_result_line(const ww_cmp_result *res, FILE *f);

@@ -32,7 +32,7 @@
  * i mod jobs) and the rows gathered through pipes in point order: the same bytes as jobs = 1.
  * With o.thumbs, each point's frame o.thumb_frame is rendered at thumb_w x thumb_h in a child
  * process of its own (own GL context, like bench) into OUT/thumbs/point_NNNNN.png, and a full
- * sweep composes OUT/contact_sheet.png (tools/contact.h).
+ * sweep composes OUT/contact_sheet.png (render/contact.h).
  */
 #ifndef WW_SWEEP_H
 #define WW_SWEEP_H

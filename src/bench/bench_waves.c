@@ -3,20 +3,21 @@
  * and the figure. Every time is the median of repeats after a warm-up, on a monotonic clock.
  */
 #define _GNU_SOURCE /* sincos(3), the baseline the evaluation is set against */
-#include "tools/bench_waves.h"
+#include "bench/bench_waves.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
+#include "bench/plot.h"
+#include "core/child.h"
 #include "core/mathx.h"
 #include "core/rng.h"
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
 #include "io/json.h"
 #include "io/writers.h"
+#include "render/job.h"
 #include "scene/plan.h"
 #include "scene/scene.h"
 #include "sim/state.h"
@@ -24,8 +25,6 @@
 #include "sim/water.h"
 #include "sim/wave_stats.h"
 #include "sim/waves.h"
-#include "tools/job.h"
-#include "tools/plot.h"
 
 #define SEA_SEED 20240601u     /* every sea of the report is drawn from this seed */
 #define SEA_TIME 12.25         /* s: the time the CPU parts evaluate at */
@@ -450,32 +449,26 @@ done:
     free(sc);
 }
 
-/* one configuration in a child process, so a driver crash or leak stays there (bench.c) */
+/* what a GPU child runs: one configuration, one component count, fade on or off */
+typedef struct gpu_job {
+    const config *cf;
+    int n, fade;
+} gpu_job;
+
+static void gpu_job_run(const void *ctx, void *report) {
+    const gpu_job *j = ctx;
+    gpu_child(j->cf, j->n, j->fade, report);
+}
+
+/* one configuration in a child process (core/child.h), so a driver crash or leak stays there */
 static void gpu_run(const config *cf, int n, int fade, gpu_report *rep) {
-    int fd[2];
-    memset(rep, 0, sizeof *rep);
-    if (pipe(fd) != 0) {
+    gpu_job j = {cf, n, fade};
+    ww_child_end end;
+    ww_child_outcome o = ww_child_run(gpu_job_run, &j, rep, sizeof *rep, &end);
+    if (o == WW_CHILD_NO_PIPE)
         snprintf(rep->msg, sizeof rep->msg, "pipe failed");
-        return;
-    }
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        close(fd[0]);
-        gpu_report mine = {0};
-        gpu_child(cf, n, fade, &mine);
-        ssize_t w = write(fd[1], &mine, sizeof mine);
-        _exit(w == (ssize_t)sizeof mine ? 0 : 1);
-    }
-    close(fd[1]);
-    ssize_t got = pid > 0 ? read(fd[0], rep, sizeof *rep) : -1;
-    close(fd[0]);
-    int status = 0;
-    if (pid > 0) waitpid(pid, &status, 0);
-    if (got != (ssize_t)sizeof *rep) {
-        memset(rep, 0, sizeof *rep);
-        snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", status);
-    }
+    else if (o != WW_CHILD_REPORTED)
+        snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", end.status);
 }
 
 typedef struct gpu_table {

@@ -3,7 +3,7 @@
  * rumble, the engine's harmonic wavetable and a slow chord pad. Every random choice comes from a
  * PCG stream seeded by (scene seed, sound, variant); nothing reads a clock.
  */
-#include "tools/audio_synth.h"
+#include "render/audio_synth.h"
 
 #include <math.h>
 #include <stdlib.h>

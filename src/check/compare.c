@@ -3,7 +3,7 @@
  * image on its own thread; no allocation per pixel. Definitions, and what they agree with, are
  * in compare.h.
  */
-#include "tools/compare_impl.h"
+#include "check/compare_impl.h"
 
 #include <math.h>
 #include <pthread.h>

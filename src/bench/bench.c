@@ -5,19 +5,18 @@
  * fill floor, with the speed targets: the full world within 15x the floor at 1280x720, water and
  * sky within 3x. `bench sim` is in bench_sim.c, `bench quality` in bench_quality.c.
  */
-#include "tools/bench.h"
+#include "bench/bench.h"
 
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/child.h"
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
 #include "io/json.h"
+#include "render/job.h"
 #include "scene/scene.h"
-#include "tools/job.h"
 
 /* the speed targets for render / fill floor at 1280x720: a scene with solid objects (the lake's
  * full world) and one of water and sky only */
@@ -68,33 +67,6 @@ static void child_run(const char *scene, ww_backend_kind kind, int w, int h, int
     rep->ok = 1;
 }
 
-long ww_bench_in_child(void (*fn)(void *ctx, void *report), void *ctx, void *report, size_t size,
-                       int *died) {
-    int fd[2];
-    memset(report, 0, size);
-    *died = 0;
-    if (pipe(fd) != 0) return -1;
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        close(fd[0]);
-        fn(ctx, report);
-        ssize_t n = write(fd[1], report, size);
-        _exit(n == (ssize_t)size ? 0 : 1);
-    }
-    close(fd[1]);
-    ssize_t got = pid > 0 ? read(fd[0], report, size) : -1;
-    close(fd[0]);
-    int status = 0;
-    struct rusage ru;
-    if (pid < 0 || wait4(pid, &status, 0, &ru) < 0) return -1;
-    if (got != (ssize_t)size) {
-        memset(report, 0, size);
-        *died = status ? status : -1;
-    }
-    return ru.ru_maxrss;
-}
-
 /* one configuration of bench render */
 typedef struct config {
     const char *scene, *dir;
@@ -102,7 +74,7 @@ typedef struct config {
     int w, h, frames;
 } config;
 
-static void config_run(void *ctx, void *report) {
+static void config_run(const void *ctx, void *report) {
     const config *c = ctx;
     child_run(c->scene, c->kind, c->w, c->h, c->frames, c->dir, report);
 }
@@ -111,10 +83,11 @@ static void config_run(void *ctx, void *report) {
 static long run_config(const char *scene, ww_backend_kind kind, int w, int h, int frames,
                        const char *dir, child_report *rep) {
     config c = {.scene = scene, .dir = dir, .kind = kind, .w = w, .h = h, .frames = frames};
-    int died = 0;
-    long rss = ww_bench_in_child(config_run, &c, rep, sizeof *rep, &died);
-    if (died) snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", died);
-    return rss;
+    ww_child_end end;
+    if (ww_child_run(config_run, &c, rep, sizeof *rep, &end) == WW_CHILD_DIED)
+        snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)",
+                 end.status ? end.status : -1);
+    return end.max_rss_kib;
 }
 
 static const char *base_name(const char *path) {
@@ -122,7 +95,8 @@ static const char *base_name(const char *path) {
     return s ? s + 1 : path;
 }
 
-/* the target a configuration is held to, or 0 when it is not one the issue names */
+/* the speed target a configuration is held to (render time over the fill floor), or 0 at sizes
+ * other than the targets' 1280x720 */
 static double target_x(const child_report *rep, int w, int h) {
     if (w != TARGET_WIDTH || h != TARGET_HEIGHT) return 0.0;
     return rep->full_world ? TARGET_FULL_WORLD_X : TARGET_WATER_SKY_X;

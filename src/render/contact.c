@@ -2,7 +2,7 @@
  * stb_easy_font, whose output is a list of axis-aligned quads that we fill into the image
  * ourselves, pixel for pixel, so the sheet needs no GL and is the same bytes on every machine.
  */
-#include "tools/contact.h"
+#include "render/contact.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -2,7 +2,7 @@
  * system owning each field, all driven by the X-macro tables of sim/state.h and sim/fields_*.h
  * (so a system's new fields are found without any change here).
  */
-#include "tools/sim_out.h"
+#include "render/sim_out.h"
 
 #include <math.h>
 #include <string.h>

@@ -3,7 +3,7 @@
  * bytes, held as RGB bytes (8-bit without alpha) or float RGBA with the colour premultiplied by
  * alpha, and hashed for the exact-match fast path.
  */
-#include "tools/compare_impl.h"
+#include "check/compare_impl.h"
 
 #include <limits.h>
 #include <pthread.h>

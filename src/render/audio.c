@@ -8,7 +8,7 @@
  * before it and the loops' state (engine phase, smoothed levels) are what a full run has: frames
  * 0:30 + 30:60 give the same samples as 0:60.
  */
-#include "tools/audio.h"
+#include "render/audio.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -16,10 +16,10 @@
 
 #include "core/rng.h"
 #include "io/wav.h"
+#include "render/audio_synth.h"
 #include "sim/events.h"
 #include "sim/step.h"
 #include "sim/water.h"
-#include "tools/audio_synth.h"
 
 #define DITHER_STREAM 0x64697468u  /* "dith": TPDF dither draws, by absolute sample */
 #define LIMIT_KNEE 0.8             /* the limiter is the identity below this level (-1.9 dBFS) */

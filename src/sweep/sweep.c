@@ -3,7 +3,7 @@
  * ww_wave_stats_compute, rows written as CSV and JSON lines in point order from this process or
  * from forked workers, thumbnails rendered in a child process per point, and the contact sheet.
  */
-#include "tools/sweep.h"
+#include "sweep/sweep.h"
 
 #include <errno.h>
 #include <math.h>
@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/child.h"
 #include "core/numfmt.h"
 #include "core/readfile.h"
 #include "core/rng.h"
@@ -21,11 +22,11 @@
 #include "io/json.h"
 #include "io/stream.h"
 #include "io/writers.h"
+#include "render/audio.h"
+#include "render/contact.h"
+#include "render/job.h"
 #include "sim/floater_stats.h"
 #include "sim/wave_stats.h"
-#include "tools/audio.h"
-#include "tools/contact.h"
-#include "tools/job.h"
 
 #define THUMB_W_DEFAULT 160
 #define THUMB_H_DEFAULT 90
@@ -339,77 +340,32 @@ typedef struct child_report {
     ww_error err;
 } child_report;
 
-static int write_all(int fd, const void *p, size_t n) {
-    const char *c = p;
-    while (n > 0) {
-        ssize_t w = write(fd, c, n);
-        if (w < 0 && errno == EINTR) continue;
-        if (w <= 0) return -1;
-        c += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
-/* 0 when all n bytes came, -1 at an early end */
-static int read_all(int fd, void *p, size_t n) {
-    char *c = p;
-    while (n > 0) {
-        ssize_t r = read(fd, c, n);
-        if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) return -1;
-        c += r;
-        n -= (size_t)r;
-    }
-    return 0;
-}
-
-static const char *how_it_ended(int status, char *buf, size_t cap) {
-    if (WIFSIGNALED(status))
-        snprintf(buf, cap, "killed by signal %d", WTERMSIG(status));
-    else
-        snprintf(buf, cap, "exit status %d", WIFEXITED(status) ? WEXITSTATUS(status) : -1);
-    return buf;
-}
-
-/* run fn in a forked child (its own GL context, its own crash) and bring back its report */
-static void in_child(void (*fn)(const void *ctx, child_report *rep), const void *ctx,
-                     child_report *rep) {
-    memset(rep, 0, sizeof *rep);
-    int fd[2];
-    if (pipe(fd) != 0) {
-        rep->code = ww_error_set(&rep->err, WW_E_IO, NULL, 0, 0, "pipe: %s", strerror(errno));
+/* fn in a child process (core/child.h: its own GL context, its own crash), its outcome in
+ * rep's code and message */
+static void in_child(void (*fn)(const void *ctx, void *rep), const void *ctx, child_report *rep) {
+    ww_child_end end;
+    switch (ww_child_run(fn, ctx, rep, sizeof *rep, &end)) {
+    case WW_CHILD_REPORTED:
         return;
-    }
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid == 0) {
-        close(fd[0]);
-        child_report mine;
-        memset(&mine, 0, sizeof mine);
-        fn(ctx, &mine);
-        _exit(write_all(fd[1], &mine, sizeof mine) == 0 ? 0 : 1);
-    }
-    close(fd[1]);
-    int got = pid > 0 ? read_all(fd[0], rep, sizeof *rep) : -1;
-    close(fd[0]);
-    int status = 0;
-    if (pid < 0) {
-        rep->code = ww_error_set(&rep->err, WW_E_IO, NULL, 0, 0, "fork: %s", strerror(errno));
+    case WW_CHILD_NO_PIPE:
+        rep->code = ww_error_set(&rep->err, WW_E_IO, NULL, 0, 0, "pipe: %s", strerror(end.errnum));
         return;
-    }
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-    if (got != 0) {
+    case WW_CHILD_NO_FORK:
+        rep->code = ww_error_set(&rep->err, WW_E_IO, NULL, 0, 0, "fork: %s", strerror(end.errnum));
+        return;
+    case WW_CHILD_DIED: {
         char how[64];
-        memset(rep, 0, sizeof *rep);
         rep->code = ww_error_set(&rep->err, WW_E_BACKEND, NULL, 0, 0,
                                  "the rendering child process died (%s)",
-                                 how_it_ended(status, how, sizeof how));
+                                 ww_child_how_ended(end.status, how, sizeof how));
+        return;
+    }
     }
 }
 
-static void probe_child(const void *ctx, child_report *rep) {
+static void probe_child(const void *ctx, void *report) {
     const ww_sweep *s = ctx;
+    child_report *rep = report;
     ww_backend *b = NULL;
     rep->code = ww_backend_open(s->o.backend, &b, &rep->err);
     if (rep->code == WW_OK) ww_backend_close(b);
@@ -427,8 +383,9 @@ static void thumb_path(const ww_sweep *s, long long i, char *out, size_t cap) {
 
 /* render the thumbnail frame into a private folder with the render job, then move the frame to
  * its name: what a thumbnail shows is what `render --size` shows */
-static void thumb_child(const void *ctx, child_report *rep) {
+static void thumb_child(const void *ctx, void *report) {
     const thumb_ctx *t = ctx;
+    child_report *rep = report;
     const ww_sweep *s = t->s;
     char dir[1024], frame[1100], final[1100];
     snprintf(dir, sizeof dir, "%s/thumbs/.point_%0*lld.%ld", s->o.out_dir, s->digits, t->point,
@@ -803,7 +760,7 @@ static ww_result run_workers(const ww_sweep *s, int jobs, sink *k, ww_error *err
             row rw;
             for (long long i = started; i < s->npoints; i += jobs) {
                 compute_row(s, i, &rw);
-                if (write_all(p[1], &rw, sizeof rw) != 0) _exit(1);
+                if (ww_pipe_write_all(p[1], &rw, sizeof rw) != 0) _exit(1);
             }
             _exit(0);
         }
@@ -820,7 +777,7 @@ static ww_result run_workers(const ww_sweep *s, int jobs, sink *k, ww_error *err
     row rw;
     for (long long i = 0; i < s->npoints && !r; i++) {
         int w = (int)(i % jobs);
-        if (read_all(fd[w], &rw, sizeof rw) != 0 || rw.point != i) {
+        if (ww_pipe_read_all(fd[w], &rw, sizeof rw) != 0 || rw.point != i) {
             r = ww_error_set(err, WW_E_IO, NULL, 0, 0, "sweep worker %d stopped before point %lld", w, i);
             break;
         }
@@ -838,7 +795,7 @@ static ww_result run_workers(const ww_sweep *s, int jobs, sink *k, ww_error *err
         if (!r && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
             char how[64];
             r = ww_error_set(err, WW_E_IO, NULL, 0, 0, "sweep worker %d failed (%s)", w,
-                             how_it_ended(status, how, sizeof how));
+                             ww_child_how_ended(status, how, sizeof how));
         }
     }
     return r;

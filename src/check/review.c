@@ -2,7 +2,7 @@
  * each shot's scene loaded to check its frame, and the contact sheet and HTML page built from the
  * rendered frames. Rendering itself is `waterworld render`, run by cli/cmd_review.c.
  */
-#include "tools/review.h"
+#include "check/review.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -13,8 +13,8 @@
 #include "io/image.h"
 #include "io/stream.h"
 #include "io/writers.h"
+#include "render/contact.h"
 #include "scene/scene.h"
-#include "tools/contact.h"
 
 #define LIST_MAX_BYTES (1u << 20)
 #define FIELDS 5

@@ -3,7 +3,7 @@
  * queue (io/queue.h), encode and write them atomically, and hand the slots back. Also --resume,
  * SIGINT/SIGTERM, the progress line and --stats.
  */
-#include "tools/job.h"
+#include "render/job.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -25,10 +25,10 @@
 #include "io/stream.h"
 #include "io/writers.h"
 #include "io/y4m.h"
+#include "render/audio.h"
 #include "scene/plan.h"
 #include "sim/state.h"
 #include "sim/step.h"
-#include "tools/audio.h"
 
 #define MAX_THREADS 64
 /* slots beyond one per encoder thread: one being filled by the render thread, one queued, so

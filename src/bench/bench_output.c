@@ -6,14 +6,15 @@
  * high-water mark of the configurations before it, and every format starts with the same cold
  * caches and a fresh GL context.
  */
-#include "tools/bench.h"
+#include "bench/bench.h"
 
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include "core/child.h"
+#include "render/job.h"
 #include "scene/scene.h"
-#include "tools/job.h"
 
 /* the target: PNG frames at >= 0.85x the frames per second of rendering without writing */
 #define TARGET_PNG_OVER_NONE 0.85
@@ -71,7 +72,7 @@ typedef struct config {
     int w, h, frames;
 } config;
 
-static void config_run(void *ctx, void *report) {
+static void config_run(const void *ctx, void *report) {
     const config *c = ctx;
     child_run(c->scene, c->fmt, c->w, c->h, c->frames, c->dir, report);
 }
@@ -80,10 +81,11 @@ static void config_run(void *ctx, void *report) {
 static long run_child(const char *scene, ww_out_format fmt, int w, int h, int frames,
                       const char *dir, out_report *rep) {
     config c = {.scene = scene, .dir = dir, .fmt = fmt, .w = w, .h = h, .frames = frames};
-    int died = 0;
-    long rss = ww_bench_in_child(config_run, &c, rep, sizeof *rep, &died);
-    if (died) snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)", died);
-    return rss;
+    ww_child_end end;
+    if (ww_child_run(config_run, &c, rep, sizeof *rep, &end) == WW_CHILD_DIED)
+        snprintf(rep->msg, sizeof rep->msg, "benchmark child died (status %d)",
+                 end.status ? end.status : -1);
+    return end.max_rss_kib;
 }
 
 /* frames per second after the first frame, whose render pays for llvmpipe's shader compilation

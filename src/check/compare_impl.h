@@ -1,4 +1,4 @@
-/* compare_impl.h - what the comparison's files share inside tools/ (not an interface): the
+/* compare_impl.h - what the comparison's files share inside check/ (not an interface): the
  * pixelmatch pieces, used by the metrics (compare.c) and the diff image (compare_out.c).
  *
  * pixelmatch's method (Mapbox's published description): both pixels are blended on white on an
@@ -20,7 +20,7 @@
 #ifndef WW_COMPARE_IMPL_H
 #define WW_COMPARE_IMPL_H
 
-#include "tools/compare.h"
+#include "check/compare.h"
 
 #define WW_CMP_YIQ_MAX_DELTA 35215.0 /* pixelmatch: the largest delta (red against cyan) */
 

@@ -25,9 +25,9 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "check/compare.h"
 #include "core/error.h"
 #include "scene/scene.h"
-#include "tools/compare.h"
 
 typedef struct ww_golden_opts {
     const char *golden_dir;  /* DIR of --golden */

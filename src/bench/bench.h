@@ -21,14 +21,7 @@
 #include <stdio.h>
 
 #include "core/error.h"
-#include "tools/job.h"
-
-/* run fn(ctx, report) in a forked child (its own GL context and its own peak RSS) and copy the
- * report of `size` bytes back through a pipe; returns the child's peak RSS in KiB, or -1 when no
- * child ran. When the child dies before reporting, the report is zeroed and *died holds its
- * wait status (else 0). Shared by bench render and bench output. */
-long ww_bench_in_child(void (*fn)(void *ctx, void *report), void *ctx, void *report, size_t size,
-                       int *died);
+#include "render/job.h"
 
 typedef struct ww_bench_opts {
     int frames;             /* frames per configuration (0: 20) */

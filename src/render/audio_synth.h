@@ -1,4 +1,4 @@
-/* audio_synth.h - the procedural sounds of the sound track (private to tools/audio*.c): each is
+/* audio_synth.h - the procedural sounds of the sound track (private to render/audio*.c): each is
  * a clip of float samples at WW_AUDIO_RATE, synthesised from a seeded random stream (core/rng.h)
  * and nothing else, so the same seed gives the same clip on every run.
  *

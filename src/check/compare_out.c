@@ -2,7 +2,7 @@
  * JSON and text lines of a result, and the threshold options shared by `compare` and
  * `render --golden`.
  */
-#include "tools/compare_impl.h"
+#include "check/compare_impl.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -81,12 +81,6 @@ void ww_cmp_result_json_fields(const ww_cmp_result *r, const ww_cmp_opts *o, FIL
     if (o->rel_max >= 0) fprintf(f, ",\"rel_max\":%.9g", o->rel_max);
     fprintf(f, "},\"pass\":%s,\"why\":", r->pass ? "true" : "false");
     ww_json_string(f, r->why);
-}
-
-void ww_cmp_result_json(const ww_cmp_result *r, const ww_cmp_opts *o, FILE *f) {
-    fputc('{', f);
-    ww_cmp_result_json_fields(r, o, f);
-    fputc('}', f);
 }
 
 void ww_cmp_result_line(const ww_cmp_result *r, FILE *f) {

@@ -10,17 +10,17 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench/bench.h"
+#include "bench/plot.h"
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
 #include "io/image.h"
 #include "io/json.h"
 #include "io/writers.h"
+#include "render/job.h"
 #include "scene/plan.h"
 #include "sim/state.h"
 #include "sim/step.h"
-#include "tools/bench.h"
-#include "tools/job.h"
-#include "tools/plot.h"
 
 #define DEFAULT_SCENE "scenes/lake.yaml"
 #define DEFAULT_WIDTH 640

@@ -16,7 +16,7 @@
  *           Crossings of the water (skips, sinks) are solved inside the step and stay in;
  *   share   the simulation's share of a frame of scenes/demo.yaml (sim ms / render ms, target
  *           under 1%), from one render job in a child process (bench.c).
- * Metrics read state fields by name (tools/sim_out.h), so they follow the X-macro tables; a
+ * Metrics read state fields by name (render/sim_out.h), so they follow the X-macro tables; a
  * metric whose system the scene lacks is skipped ("-"). The script's events fire on the first
  * step at or after their time, so part of a coarse dt's error is that up-to-one-step delay.
  */
@@ -25,15 +25,15 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "bench/bench.h"
+#include "bench/plot.h"
 #include "io/json.h"
 #include "io/writers.h"
+#include "render/sim_out.h"
 #include "scene/scene.h"
 #include "sim/events.h"
 #include "sim/state.h"
 #include "sim/step.h"
-#include "tools/bench.h"
-#include "tools/plot.h"
-#include "tools/sim_out.h"
 
 #define NDT 4
 static const int DT_DIVS[NDT] = {30, 60, 120, 240}; /* dt = 1 / div, s */

@@ -3,7 +3,7 @@
  * the same run (IM 7's `magick compare -channel RGB -metric RMSE`, else IM 6's `compare` with the
  * same options), both timed by wall clock (processes by fork/exec). Printed, never asserted.
  */
-#include "tools/bench.h"
+#include "bench/bench.h"
 
 #include <fcntl.h>
 #include <spawn.h>
@@ -12,7 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "tools/compare.h"
+#include "check/compare.h"
 
 #define DEFAULT_REPEATS 7
 #define DEFAULT_W 1280
