@@ -15,6 +15,7 @@
 #include "io/writers.h"
 #include "scene/plan.h"
 #include "sim/state.h"
+#include "sim/step.h"
 #include "test.h"
 #include "bench/bench.h"
 #include "render/job.h"

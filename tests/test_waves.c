@@ -14,6 +14,7 @@
 #include "sim/ripples.h"
 #include "scene/spectrum.h"
 #include "sim/state.h"
+#include "sim/step.h"
 #include "sim/wave_stats.h"
 #include "sim/water.h"
 #include "sim/waves.h"

@@ -9,7 +9,6 @@
 
 #include "core/hash.h"
 #include "core/numfmt.h"
-#include "sim/step.h"
 
 /* bytes of one field, rounded to 16 so every array starts aligned */
 static size_t field_bytes(size_t elem, long long count) {
@@ -37,13 +36,12 @@ static size_t state_bytes(const ww_scene *sc) {
     return n;
 }
 
-ww_state *ww_state_new(const ww_scene *sc) {
+ww_state *ww_state_alloc(const ww_scene *sc) {
     size_t n = state_bytes(sc);
     ww_state *st = calloc(1, n);
     if (!st) return NULL;
     st->bytes = n;
     bind_fields(sc, st);
-    ww_state_reset(sc, st);
     return st;
 }
 

@@ -1,7 +1,7 @@
 /* state.h - everything a step changes (the "data" of MuJoCo's model/data pair).
  *
- *   ww_state *st = ww_state_new(sc);     // one allocation, sized from the scene's counts
- *   ww_state_reset(sc, st);              // step 0 at t = start (ww_state_new does this)
+ *   ww_state *st = ww_state_new(sc);     // sim/step.h: one allocation, sized from the scene's
+ *                                        // counts, reset to step 0 at t = start
  *   ww_step(sc, st); ...                 // sim/step.h
  *   uint64_t h = ww_state_hash(sc, st);
  *   ww_state_free(st);
@@ -64,8 +64,9 @@ typedef struct ww_state {
     /* the arrays follow in the same allocation */
 } ww_state;
 
-ww_state *ww_state_new(const ww_scene *sc);   /* NULL when out of memory */
-void ww_state_reset(const ww_scene *sc, ww_state *st); /* in step.c: runs every system's init */
+/* the block for this scene's counts, every array zero (not a step-0 state: ww_state_new in
+ * sim/step.h resets it); NULL when out of memory */
+ww_state *ww_state_alloc(const ww_scene *sc);
 void ww_state_free(ww_state *st);
 /* zero every array (used by reset) */
 void ww_state_clear(ww_state *st);

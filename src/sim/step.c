@@ -45,6 +45,12 @@ static void reset_systems(const ww_scene *sc, ww_state *st) {
     RUN_STAGE(reset);
 }
 
+ww_state *ww_state_new(const ww_scene *sc) {
+    ww_state *st = ww_state_alloc(sc);
+    if (st) ww_state_reset(sc, st);
+    return st;
+}
+
 void ww_state_reset(const ww_scene *sc, ww_state *st) {
     ww_state_clear(st);
     st->step = 0;

@@ -14,6 +14,11 @@
 #include "scene/scene.h"
 #include "sim/state.h"
 
+/* a state for the scene at step 0 (ww_state_alloc, then ww_state_reset); NULL when out of
+ * memory. Free it with ww_state_free. */
+ww_state *ww_state_new(const ww_scene *sc);
+/* back to step 0 at t = start: every system's reset, then the step-0 events and update */
+void ww_state_reset(const ww_scene *sc, ww_state *st);
 ww_result ww_step(const ww_scene *sc, ww_state *st, ww_error *err);
 ww_result ww_sim_advance_to(const ww_scene *sc, ww_state *st, int64_t step, ww_error *err);
 
