@@ -381,20 +381,13 @@ ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step
         return r;
     }
 
-    /* the loops start at their step-0 levels; then the prefix is heard, not kept */
+    /* the loops start at their step-0 levels; the caller's steps before first_step (the
+     * prefix) are then heard, not kept */
     mix_reels(a, sc);
     set_controls(a, sc, st);
     smooth *all[] = {&a->eng_l, &a->eng_r, &a->eng_rate, &a->underwater, &a->music_gain};
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) all[i]->v = all[i]->target;
-    while (st->step < first_step) {
-        if ((r = ww_step(sc, st, err))) break;
-        ww_audio_step(a, sc, st);
-    }
     ww_state_free(st);
-    if (r) {
-        ww_audio_free(a);
-        return r;
-    }
     *out = a;
     return WW_OK;
 }

@@ -4,15 +4,16 @@
  *
  *   ww_audio *a = NULL;
  *   ww_audio_new(sc, first_step, last_step, &a, &err);  // the track covers steps [first, last)
- *   for each step s in [first, last): ww_step(sc, st, ...); ww_audio_step(a, sc, st);
+ *   for each step s in [1, last): ww_step(sc, st, ...); ww_audio_step(a, sc, st);
  *   ww_audio_write(a, "out/demo.wav", &err);            // 44.1 kHz stereo 16-bit WAV, atomic
  *   ww_audio_free(a);
  *
  * Sample grid: step k ends at sample llround(k dt 44100) counted from step 0; the track is the
  * samples of [first, last). ww_audio_new decodes the scene's WAV files (errors name the scene's
- * file:line:column), synthesises the other sounds and, when first > 0, replays the prefix on a
- * private state so that a slice's samples equal the full run's. ww_audio_step neither allocates
- * nor fails. The audio object owns everything it allocates; ww_audio_free frees it (NULL is fine).
+ * file:line:column) and synthesises the other sounds; the caller then feeds it every step from
+ * step 1 on, the prefix before `first` included: those steps are heard (the engine's and the
+ * ambience's levels, the reels), not kept, so that a slice's samples equal the full run's, and
+ * the prefix is simulated once, by the caller. ww_audio_step neither allocates nor fails. The audio object owns everything it allocates; ww_audio_free frees it (NULL is fine).
  */
 #ifndef WW_AUDIO_H
 #define WW_AUDIO_H

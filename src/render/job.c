@@ -581,9 +581,9 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
                                            o->last * sc->steps_per_frame, &j.audio, err)))
         goto done;
     if ((r = job_open(&j, s, err))) goto done;
-    /* the prefix is stepped, not rendered */
+    /* the prefix is stepped, not rendered (and heard by the sound track, not kept) */
     double t0 = ww_now_seconds();
-    if ((r = ww_sim_advance_to(sc, j.st, o->first * sc->steps_per_frame, err))) goto done;
+    if ((r = advance(sc, &j, o->first * sc->steps_per_frame, err))) goto done;
     s->prefix_s = ww_now_seconds() - t0;
     if ((r = job_loop(&j, s, err))) goto done;
     if (job_signal) {
