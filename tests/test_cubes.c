@@ -16,13 +16,13 @@
 #include "sim/waves.h"
 #include "test.h"
 
-/* the bound on the draft: 1% of (rho / rho_w) H */
+/* the draft within 1% of (rho / rho_w) H */
 #define DRAFT_REL_TOL 0.01
-/* the bound on the heave period against 2 pi sqrt(d / g) (no added mass) */
+/* the heave period within 5% of 2 pi sqrt(d / g) (no added mass in the closed form) */
 #define HEAVE_PERIOD_REL_TOL 0.05
 /* amplitude "never grows": a peak may exceed the release depth by rounding only */
 #define HEAVE_AMPLITUDE_GROWTH_TOL 1e-9
-/* the issue's bound on the spring mode against the closed-form damped oscillator, relative to
+/* the spring mode against the closed-form damped oscillator, relative to
  * the initial displacement */
 #define SPRING_REL_TOL 1e-3
 /* stiff and folding runs: energy may not rise above its start by more than rounding, J/J */

@@ -505,7 +505,7 @@ TEST_PROC(gfx_shader_dir_override) {
 /* ---- one field, two consumers: the water shaders' surface against the CPU's ---- */
 
 /* float shaders (phases wrapped in double at the camera, float sums and sin/cos) against the
- * double CPU field: the issue's bound on the height, a fraction of the total amplitude */
+ * double CPU field: the height within a thousandth of the total amplitude */
 #define PROBE_HEIGHT_TOL 1e-3
 /* the same for the angle between the GPU and CPU normals, degrees */
 #define PROBE_NORMAL_TOL_DEG 0.5

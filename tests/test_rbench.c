@@ -132,7 +132,7 @@ TEST_PROC(rbench_quality_reference_identical_lower_knob_finite) {
  * reflection knob alone (each knob's machinery is the same; six would take seconds per test):
  * its reference row is the same frame, a build without the reflection pass says so, and with the
  * pass its cheapest value changes the lake's frame (the water covers half of it) */
-TEST_PROC(rbench_quality_issue_knobs) {
+TEST_PROC(rbench_quality_knob_defaults_and_reference) {
     int nknobs;
     const ww_quality_knob *knobs = ww_quality_knobs(&nknobs);
     ENSURE_EQ_INT(nknobs, 6);

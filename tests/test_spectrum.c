@@ -15,11 +15,11 @@
 
 /* adaptive Simpson is asked for 1e-10 of the whole; this allows rounding on top */
 #define SPECTRUM_INTEGRAL_REL_TOL 1e-8
-/* the bound: discrete variance against the continuous spectrum's integral */
+/* the discrete variance within 3% of the continuous spectrum's integral */
 #define SPECTRUM_VARIANCE_REL_TOL 0.03
-/* the bound: Hs as the component count goes from 16 to 256 */
+/* Hs within 5% as the component count goes from 16 to 256 */
 #define SPECTRUM_HS_COUNT_REL_TOL 0.05
-/* the issue's bound on the published PM figures 0.21 U^2 / g and 0.877 g / U (rounded to 2 and
+/* within 5% of the published PM figures 0.21 U^2 / g and 0.877 g / U (rounded to 2 and
  * 3 digits: 2 sqrt(alpha / beta) = 0.2092, (4 beta / 5)^(1/4) = 0.8772) */
 #define PM_PUBLISHED_REL_TOL 0.05
 /* a grid search for the peak resolves it to its spacing, 1e-4 relative */

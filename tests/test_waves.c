@@ -67,7 +67,7 @@
 #define STATS_SAMPLE_REL_TOL 0.0125
 /* the spectrum's peak period against 2 pi / (0.877 g / U): 0.877 is (0.8 beta)^(1/4) rounded */
 #define PM_PEAK_REL_TOL 1e-3
-/* Hs of a Pierson-Moskowitz sea against 0.21 U^2 / g (the issue's 5%; 0.21 is rounded and the
+/* Hs of a Pierson-Moskowitz sea against 0.21 U^2 / g (5%: 0.21 is rounded and the
  * sampled range leaves out the far tails) */
 #define PM_HS_REL_TOL 0.05
 
