@@ -122,15 +122,13 @@ static ww_result config_open(config *c, const ww_quality_opts *o, const ww_gl *g
     ww_result rc = ww_scene_load(o->scene, NULL, 0, &c->sc, err);
     if (rc) return rc;
     configure(c->sc, knobs, nknobs, vary, v);
-    ww_plan plan;
-    ww_plan_build(c->sc, o->width, o->height, &plan);
+    if ((rc = ww_renderer_for_scene(gl, c->sc, o->width, o->height, &c->r, err))) return rc;
     if (vary >= 0) {
         ww_pass_id id = knobs[vary].pass;
-        *effect = !ww_renderer_has_pass(id)      ? WW_QUALITY_NOT_BUILT
-                  : !ww_plan_pass(&plan, id)      ? WW_QUALITY_NOT_PLANNED
-                                                  : WW_QUALITY_MEASURED;
+        *effect = !ww_renderer_has_pass(id)                     ? WW_QUALITY_NOT_BUILT
+                  : !ww_plan_pass(ww_renderer_plan(c->r), id) ? WW_QUALITY_NOT_PLANNED
+                                                               : WW_QUALITY_MEASURED;
     }
-    if ((rc = ww_renderer_new(gl, c->sc, &plan, &c->r, err))) return rc;
     ww_renderer_time_passes(c->r, WW_TIMING_AUTO);
     if (!(c->st = ww_state_new(c->sc)))
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "bench quality: out of memory for the state");

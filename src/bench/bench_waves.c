@@ -18,7 +18,6 @@
 #include "io/json.h"
 #include "io/writers.h"
 #include "render/job.h"
-#include "scene/plan.h"
 #include "scene/scene.h"
 #include "sim/state.h"
 #include "sim/step.h"
@@ -415,15 +414,14 @@ static void gpu_child(const config *cf, int n, int fade, gpu_report *rep) {
     sc->ncam = 1;
     sc->width = cf->gpu_w;
     sc->height = cf->gpu_h;
-    ww_plan plan;
-    ww_plan_build(sc, cf->gpu_w, cf->gpu_h, &plan);
     if (ww_backend_open(WW_BACKEND_AUTO, &b, &err) != WW_OK) {
         rep->no_backend = 1;
         goto done;
     }
     snprintf(rep->backend, sizeof rep->backend, "%s", ww_backend_describe(b));
     snprintf(rep->renderer, sizeof rep->renderer, "%s", ww_backend_renderer(b));
-    if (ww_renderer_new(ww_backend_gl(b), sc, &plan, &ren, &err) != WW_OK) goto done;
+    if (ww_renderer_for_scene(ww_backend_gl(b), sc, cf->gpu_w, cf->gpu_h, &ren, &err) != WW_OK)
+        goto done;
     if (!(st = ww_state_new(sc))) {
         ww_error_set(&err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the state");
         goto done;

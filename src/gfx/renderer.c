@@ -63,6 +63,15 @@ void ww_renderer_free(ww_renderer *r) {
     free(r);
 }
 
+ww_result ww_renderer_for_scene(const ww_gl *gl, const ww_scene *sc, int w, int h,
+                                ww_renderer **out, ww_error *err) {
+    ww_plan plan;
+    ww_plan_build(sc, w, h, &plan);
+    return ww_renderer_new(gl, sc, &plan, out, err);
+}
+
+const ww_plan *ww_renderer_plan(const ww_renderer *r) { return &r->plan; }
+
 ww_result ww_renderer_new(const ww_gl *gl, const ww_scene *sc, const ww_plan *plan,
                           ww_renderer **out, ww_error *err) {
     WW_ASSERT(gl && sc && plan && out);

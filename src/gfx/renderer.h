@@ -4,7 +4,7 @@
  * flipped once, so images come out top row first.
  *
  *   ww_renderer *r = NULL;
- *   ww_renderer_new(gl, sc, &plan, &r, &err);     // compiles shaders, makes targets
+ *   ww_renderer_for_scene(gl, sc, w, h, &r, &err); // plans, compiles shaders, makes targets
  *   ww_render_frame(r, sc, st);                   // draws all passes
  *   ww_renderer_read_ldr(r, &img);                // RGB8 (or RGBA8) final image, caller allocs
  *   ww_renderer_read_hdr(r, &img);                // RGBA float linear HDR image
@@ -29,8 +29,14 @@
 
 typedef struct ww_renderer ww_renderer;
 
+/* the renderer of the scene's own plan (ww_plan_build at w x h): what every command uses */
+ww_result ww_renderer_for_scene(const ww_gl *gl, const ww_scene *sc, int w, int h,
+                                ww_renderer **out, ww_error *err);
+/* the renderer of a plan built by hand (tests: a main pass and tone mapping alone, say) */
 ww_result ww_renderer_new(const ww_gl *gl, const ww_scene *sc, const ww_plan *plan,
                           ww_renderer **out, ww_error *err);
+/* the plan the renderer was built from */
+const ww_plan *ww_renderer_plan(const ww_renderer *r);
 void ww_renderer_free(ww_renderer *r);
 ww_result ww_render_frame(ww_renderer *r, const ww_scene *sc, const ww_state *st, ww_error *err);
 /* im must be allocated by the caller at the plan's size: U8 with 3 or 4 channels / F32 with 4 */

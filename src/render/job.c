@@ -26,7 +26,6 @@
 #include "io/writers.h"
 #include "io/y4m.h"
 #include "render/audio.h"
-#include "scene/plan.h"
 #include "sim/state.h"
 #include "sim/step.h"
 
@@ -491,15 +490,15 @@ static ww_result check_opts(const ww_job_opts *o, ww_error *err) {
 static ww_result job_open(job *j, ww_job_stats *s, ww_error *err) {
     const ww_job_opts *o = j->o;
     double t0 = ww_now_seconds();
-    ww_plan plan;
-    ww_plan_build(j->sc, o->width, o->height, &plan);
     ww_result r = ww_backend_open(o->backend, &j->backend, err);
     if (r) return r;
     snprintf(s->backend, sizeof s->backend, "%s", ww_backend_describe(j->backend));
     snprintf(s->renderer, sizeof s->renderer, "%s", ww_backend_renderer(j->backend));
     snprintf(s->gl_version, sizeof s->gl_version, "%s", ww_backend_version(j->backend));
     snprintf(j->renderer_name, sizeof j->renderer_name, "%s", s->renderer);
-    if ((r = ww_renderer_new(ww_backend_gl(j->backend), j->sc, &plan, &j->renderer, err))) return r;
+    if ((r = ww_renderer_for_scene(ww_backend_gl(j->backend), j->sc, o->width, o->height,
+                                   &j->renderer, err)))
+        return r;
     if (!(j->st = ww_state_new(j->sc)))
         return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the state");
     s->state_bytes = j->st->bytes;
