@@ -166,8 +166,8 @@ TEST(assets_obj_malformed_lines_name_their_place) {
         ww_assets a = {0};
         ww_mesh_data m;
         ww_error err = {0};
-        ww_result r = ww_obj_parse(&a, "tests/data/bad.obj", bad[i].text, strlen(bad[i].text), &m,
-                                   &err);
+        ww_result r = ww_assets_obj_parse(&a, "tests/data/bad.obj", bad[i].text,
+                                          strlen(bad[i].text), &m, &err);
         ENSURE_MSG(r == bad[i].code && err.line == bad[i].line && err.column == bad[i].column,
                    "case %zu: got %s %d:%d, expected %s %d:%d (%s)", i, ww_result_name(r),
                    err.line, err.column, ww_result_name(bad[i].code), bad[i].line, bad[i].column,
@@ -187,7 +187,7 @@ TEST(assets_obj_caps_corners) {
     ww_assets a = {0};
     ww_mesh_data m;
     ww_error err = {0};
-    ENSURE_EQ_INT(ww_obj_parse(&a, "cap.obj", text, n, &m, &err), WW_E_RANGE);
+    ENSURE_EQ_INT(ww_assets_obj_parse(&a, "cap.obj", text, n, &m, &err), WW_E_RANGE);
     ENSURE_EQ_INT(err.line, 4);
     ww_assets_free(&a);
 }

@@ -18,6 +18,7 @@
 
 #include "core/readfile.h"
 #include "core/stb_guard.h"
+#include "scene/files.h"
 #include "scene/obj.h"
 
 /* bytes read to find an image's size: a PNG's IHDR and a TGA's header are at the start; a JPEG's
@@ -25,26 +26,6 @@
  * whole file is read (under its cap) and looked at again */
 #define IMAGE_PEEK_BYTES 65536
 
-ww_result ww_assets_check_file(const char *path, size_t max, const char *from, int line,
-                               int column, ww_error *err) {
-    struct stat st;
-    if (stat(path, &st) != 0 || access(path, R_OK) != 0)
-        return ww_error_set(err, WW_E_NOFILE, from, line, column, "cannot open '%s': %s", path,
-                            strerror(errno));
-    if (S_ISDIR(st.st_mode))
-        return ww_error_set(err, WW_E_NOFILE, from, line, column,
-                            "'%s' is a folder: expected a file", path);
-    if (!S_ISREG(st.st_mode))
-        return ww_error_set(err, WW_E_NOFILE, from, line, column,
-                            "'%s' is not a regular file (a device, FIFO or socket): expected a "
-                            "file",
-                            path);
-    if ((unsigned long long)st.st_size > (unsigned long long)max)
-        return ww_error_set(err, WW_E_RANGE, from, line, column,
-                            "'%s' is %lld bytes: expected at most %zu (%.0f MiB)", path,
-                            (long long)st.st_size, max, (double)max / (1 << 20));
-    return WW_OK;
-}
 
 /* err moved to the place that named the file, its message kept (the readers below io/ know the
  * file, not who named it) */
@@ -126,7 +107,7 @@ ww_result ww_assets_image(ww_assets *a, const char *path, const char *from, int 
     if (a->nimage >= WW_ASSETS_MAX)
         return ww_error_set(err, WW_E_RANGE, from, line, column, "more than %d images",
                             WW_ASSETS_MAX);
-    ww_result r = ww_assets_check_file(path, WW_IMAGE_MAX_BYTES, from, line, column, err);
+    ww_result r = ww_file_check_named(path, WW_IMAGE_MAX_BYTES, from, line, column, err);
     int w = 0, h = 0;
     if (!r) r = image_size(path, from, line, column, &w, &h, err);
     if (r) return r;
@@ -158,7 +139,7 @@ ww_result ww_assets_decode(const ww_image_data *im, unsigned char **rgba, ww_err
     *rgba = NULL;
     unsigned char *file;
     size_t len;
-    ww_result r = ww_assets_check_file(im->path, WW_IMAGE_MAX_BYTES, from, im->line, im->column, err);
+    ww_result r = ww_file_check_named(im->path, WW_IMAGE_MAX_BYTES, from, im->line, im->column, err);
     if (!r && (r = ww_file_read_max(im->path, WW_IMAGE_MAX_BYTES, WW_IMAGE_MAX_BYTES, &file, &len, err)))
         r = at_place(r, from, im->line, im->column, err);
     if (r) return r;
@@ -183,17 +164,22 @@ ww_result ww_assets_decode(const ww_image_data *im, unsigned char **rgba, ww_err
 
 void ww_assets_pixels_free(unsigned char *rgba) { stbi_image_free(rgba); }
 
-ww_result ww_assets_named_at(ww_result r, const char *from, int line, int column, ww_error *err) {
-    if (!err || !from || strcmp(err->file, from) == 0) return r;
-    size_t n = strlen(err->msg);
-    snprintf(err->msg + n, sizeof err->msg - n, " (named at %s:%d:%d)", from, line, column);
-    return r;
-}
 
 static long long scene_triangles(const ww_assets *a) {
     long long n = 0;
     for (int i = 0; i < a->nmesh; i++) n += a->mesh[i].nindex / 3;
     return n;
+}
+
+static ww_result load_texture(void *ctx, const char *path, const char *from, int line,
+                              int column, int *index, ww_error *err) {
+    return ww_assets_image(ctx, path, from, line, column, index, err);
+}
+
+ww_result ww_assets_obj_parse(ww_assets *a, const char *path, const char *text, size_t len,
+                              ww_mesh_data *out, ww_error *err) {
+    ww_obj_textures tx = {.load = load_texture, .ctx = a};
+    return ww_obj_parse(&tx, path, text, len, out, err);
 }
 
 ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int line, int column,
@@ -211,16 +197,16 @@ ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int li
                             WW_ASSETS_MAX);
     char *text;
     size_t len;
-    ww_result r = ww_assets_read_file(path, WW_OBJ_MAX_BYTES, from, line, column, &text, &len, err);
+    ww_result r = ww_file_read_named(path, WW_OBJ_MAX_BYTES, from, line, column, &text, &len, err);
     if (r != WW_OK) return r;
     ww_mesh_data m;
-    r = ww_obj_parse(a, path, text, len, &m, err);
+    r = ww_assets_obj_parse(a, path, text, len, &m, err);
     free(text);
     /* a file without faces (a binary file, a point cloud) is wrong as a whole: the scene's place */
     if (r == WW_E_EMPTY)
         return ww_error_set(err, r, from, line, column,
                             "'%s' holds no faces: expected an OBJ model with 'f' lines", path);
-    if (r != WW_OK) return ww_assets_named_at(r, from, line, column, err);
+    if (r != WW_OK) return ww_file_named_at(r, from, line, column, err);
     long long total = scene_triangles(a) + m.nindex / 3;
     if (total > WW_OBJ_MAX_ELEMENTS) {
         ww_mesh_data_free(&m);

@@ -89,6 +89,10 @@ void ww_assets_pixels_free(unsigned char *rgba);
 /* an OBJ file with its MTL libraries and their textures, kept once per path */
 ww_result ww_assets_obj(ww_assets *a, const char *path, const char *from, int line, int column,
                         int *index, ww_error *err);
+/* OBJ text already read (path names it and what it names is relative to it) into one mesh, its
+ * textures loaded into a; on success out's arrays are the caller's */
+ww_result ww_assets_obj_parse(ww_assets *a, const char *path, const char *text, size_t len,
+                              ww_mesh_data *out, ww_error *err);
 void ww_assets_free(ww_assets *a);
 
 #endif

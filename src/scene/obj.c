@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/readfile.h"
+#include "scene/files.h"
 
 /* the MTL defaults (Wavefront's: Kd 0.8 grey, no specular, opaque) */
 static const float DEFAULT_KD = 0.8f;
@@ -137,25 +137,6 @@ static int join_path(char *out, size_t size, const char *from, const char *name,
     return n >= 0 && (size_t)n < size;
 }
 
-ww_result ww_assets_read_file(const char *path, size_t max, const char *from, int line,
-                              int column, char **text, size_t *len, ww_error *err) {
-    unsigned char *buf = NULL;
-    *text = NULL;
-    *len = 0;
-    ww_result r = ww_assets_check_file(path, max, from, line, column, err);
-    if (r) return r;
-    if ((r = ww_file_read_max(path, max, max, &buf, len, err))) {
-        if (err) {
-            snprintf(err->file, sizeof err->file, "%s", from ? from : "");
-            err->line = line;
-            err->column = column;
-        }
-        return r;
-    }
-    *text = (char *)buf;
-    return WW_OK;
-}
-
 void ww_mesh_data_free(ww_mesh_data *m) {
     free(m->vertex);
     free(m->index);
@@ -203,7 +184,7 @@ static ww_result color(cur *c, const char *what, float out[3], ww_error *err) {
     return numbers(c, what, 2, out + 1, err);
 }
 
-static ww_result parse_mtl(ww_assets *a, const char *path, const char *text, size_t len, vec *mats,
+static ww_result parse_mtl(const ww_obj_textures *tx, const char *path, const char *text, size_t len, vec *mats,
                            ww_error *err) {
     cur c = {.p = text, .end = text + len, .bol = text, .line = 1, .file = path};
     ww_material *m = NULL;
@@ -262,7 +243,7 @@ static ww_result parse_mtl(ww_assets *a, const char *path, const char *text, siz
             char file[WW_ASSET_PATH];
             if (!join_path(file, sizeof file, path, name, nl))
                 return fail(&c, WW_E_RANGE, fcol, err, "%s", "map_Kd: file name too long");
-            r = ww_assets_image(a, file, path, c.line, fcol, &m->texture, err);
+            r = tx->load(tx->ctx, file, path, c.line, fcol, &m->texture, err);
             continue;
         }
 #undef IS
@@ -366,7 +347,7 @@ static ww_result parse_face(cur *c, obj *o, int col, ww_error *err) {
     return WW_OK;
 }
 
-static ww_result parse_mtllib(cur *c, ww_assets *a, obj *o, ww_error *err) {
+static ww_result parse_mtllib(cur *c, const ww_obj_textures *tx, obj *o, ww_error *err) {
     const char *s;
     size_t n;
     int any = 0;
@@ -380,12 +361,12 @@ static ww_result parse_mtllib(cur *c, ww_assets *a, obj *o, ww_error *err) {
             return fail(c, WW_E_RANGE, col, err, "%s", "mtllib: file name too long");
         char *text;
         size_t len;
-        ww_result r = ww_assets_read_file(file, WW_OBJ_MAX_BYTES, c->file, c->line, col, &text,
-                                          &len, err);
+        ww_result r = ww_file_read_named(file, WW_OBJ_MAX_BYTES, c->file, c->line, col, &text,
+                                         &len, err);
         if (r != WW_OK) return r;
-        r = parse_mtl(a, file, text, len, &o->mats, err);
+        r = parse_mtl(tx, file, text, len, &o->mats, err);
         free(text);
-        if (r != WW_OK) return ww_assets_named_at(r, c->file, c->line, col, err);
+        if (r != WW_OK) return ww_file_named_at(r, c->file, c->line, col, err);
     }
     if (!any) return fail(c, WW_E_SYNTAX, column(c), err, "%s", "mtllib: expected a file name");
     return WW_OK;
@@ -532,7 +513,7 @@ static ww_result build(obj *o, const char *path, ww_mesh_data *m, ww_error *err)
     return WW_OK;
 }
 
-ww_result ww_obj_parse(ww_assets *a, const char *path, const char *text, size_t len,
+ww_result ww_obj_parse(const ww_obj_textures *tx, const char *path, const char *text, size_t len,
                        ww_mesh_data *out, ww_error *err) {
     obj o = {.pos = {.size = 3 * sizeof(float), .max = WW_OBJ_MAX_ELEMENTS},
              .uv = {.size = 2 * sizeof(float), .max = WW_OBJ_MAX_ELEMENTS},
@@ -564,7 +545,7 @@ ww_result ww_obj_parse(ww_assets *a, const char *path, const char *text, size_t 
         } else if (n == 1 && kw[0] == 'f') {
             r = parse_face(&c, &o, col, err);
         } else if (n == 6 && memcmp(kw, "mtllib", 6) == 0) {
-            r = parse_mtllib(&c, a, &o, err);
+            r = parse_mtllib(&c, tx, &o, err);
         } else if (n == 6 && memcmp(kw, "usemtl", 6) == 0) {
             r = parse_usemtl(&c, &o, err);
         }

@@ -1,9 +1,9 @@
 /* obj.h - the Wavefront OBJ + MTL reader behind ww_assets_obj (scene/assets.h), private to
- * src/scene. Text in, one ww_mesh_data out; textures named by map_Kd go through ww_assets_image
- * into the same asset table.
+ * src/scene. Text in, one ww_mesh_data out; textures named by map_Kd are handed to the caller's
+ * loader (assets.c's puts them in the scene's asset table: ww_assets_obj_parse).
  *
  *   ww_mesh_data m = {0};
- *   ww_obj_parse(a, "boat.obj", text, len, &m, &err);   // reads the mtllib files itself
+ *   ww_obj_parse(&textures, "boat.obj", text, len, &m, &err);   // reads the mtllib files itself
  *   ... on success m's arrays belong to the caller (ww_assets_free frees them in the table);
  *   on failure nothing is left allocated in m.
  *
@@ -30,20 +30,17 @@
 #define WW_OBJ_MAX_MATERIALS 256         /* materials over all of an OBJ's libraries */
 #define WW_OBJ_MAX_LIBRARIES 16          /* mtllib files of one OBJ */
 
-ww_result ww_obj_parse(ww_assets *a, const char *path, const char *text, size_t len,
+/* how the reader hands over a texture a material names (map_Kd): the caller loads it and gives
+ * back its index in its image table (assets.c puts it in the scene's assets) */
+typedef struct ww_obj_textures {
+    ww_result (*load)(void *ctx, const char *path, const char *from, int line, int column,
+                      int *index, ww_error *err);
+    void *ctx;
+} ww_obj_textures;
+
+ww_result ww_obj_parse(const ww_obj_textures *tx, const char *path, const char *text, size_t len,
                        ww_mesh_data *out, ww_error *err);
 
-/* a whole file into a NUL-terminated malloc'd buffer of at most max bytes; errors name
- * from:line:column (the place that named the file) */
-ww_result ww_assets_read_file(const char *path, size_t max, const char *from, int line,
-                              int column, char **text, size_t *len, ww_error *err);
-/* path is a readable regular file of at most max bytes (looked at, not opened: a FIFO would
- * wait for a writer); errors name from:line:column (assets.c) */
-ww_result ww_assets_check_file(const char *path, size_t max, const char *from, int line,
-                               int column, ww_error *err);
-/* r, with " (named at from:line:column)" added to the message of an error raised inside a file
- * that from named (the error keeps its own place: the OBJ's or MTL's line) */
-ww_result ww_assets_named_at(ww_result r, const char *from, int line, int column, ww_error *err);
 /* frees the arrays of one mesh and zeroes it */
 void ww_mesh_data_free(ww_mesh_data *m);
 

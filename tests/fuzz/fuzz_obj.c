@@ -38,7 +38,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     ww_assets a = {0};
     ww_mesh_data m;
     ww_error err = {0};
-    if (ww_obj_parse(&a, obj, text, size, &m, &err) == WW_OK) {
+    if (ww_assets_obj_parse(&a, obj, text, size, &m, &err) == WW_OK) {
         for (uint32_t i = 0; i < m.nindex; i++)
             if (m.index[i] >= (uint32_t)m.nvert) abort();
         for (int s = 0; s < m.nsub; s++)
