@@ -48,6 +48,7 @@ typedef struct ww_frame {
     double surface_y;   /* water surface height over the camera, world m (exact query) */
     int underwater;     /* the camera is below that surface */
     int64_t frame;      /* frames rendered by this renderer before this one */
+    int width, height;  /* the main pass's targets (the frame's size), px */
 } ww_frame;
 
 /* what one pass leaves for later passes of the same frame (renderer.c clears it each frame) */
@@ -218,12 +219,12 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
 void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f);
 void ww_sky_free(ww_sky *s, const ww_gl *gl);
 
-/* water.c: the wave field as shaders/gerstner.glsl takes it, in two std140 uniform blocks (the
- * layouts below mirror WwWaves and WwRipples; creating a program checks the driver agrees).
- * Shared by the water pass and the probe (water_probe.c):
+/* waveblock.c: the wave field as shaders/gerstner.glsl takes it, in two std140 uniform blocks
+ * (the layouts below mirror WwWaves and WwRipples; creating a program checks the driver agrees).
+ * Shared by the water pass, the geometry and the probe (water_probe.c):
  *
  *   ww_water_waves ww; ww_water_waves_init(sc, &ww);          // once per scene: order, columns
- *   ww_water_program(gl, sc, vs, fs, fade, &prog, &err);       // the scene's family as defines
+ *   ww_water_program(gl, sc, vs, fs, fade, NULL, &prog, &err); // the scene's family as defines
  *   ww_water_ubos u; ww_water_ubos_new(gl, sc, &ww, &u, &err);
  *   per frame: ww_water_waves_phases(sc, st, centre, &ww);      // phases at the centre, double
  *              ww_water_pack_ripples(sc, st, centre, &rb);
@@ -272,10 +273,11 @@ void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double 
 int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double centre[2],
                           ww_ripple_block *b);
 /* vs + fs with common.glsl and gerstner.glsl, built for the scene's wave family and ripples;
- * fade 0 turns the distance fade off. Binds the blocks to WW_UBO_WAVES / WW_UBO_RIPPLES and
+ * fade 0 turns the distance fade off; more: further #define lines (each ending in a newline)
+ * or NULL. Binds the blocks to WW_UBO_WAVES / WW_UBO_RIPPLES and
  * checks their sizes against the driver's layout and GL_MAX_UNIFORM_BLOCK_SIZE. */
 ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, const char *fs,
-                           int fade, GLuint *prog, ww_error *err);
+                           int fade, const char *more, GLuint *prog, ww_error *err);
 ww_result ww_water_ubos_new(const ww_gl *gl, const ww_scene *sc, const ww_water_waves *w,
                             ww_water_ubos *u, ww_error *err);
 /* the whole wave block when full is set, else only its header and phases; rb may be NULL */

@@ -150,6 +150,8 @@ static void frame_camera(ww_frame *f, const ww_renderer *r) {
     glm_perspective((float)fov, (float)main->width / (float)main->height, (float)sc->near_clip,
                     (float)sc->far_clip, f->proj);
     f->pixel_angle = (float)(2.0 * tan(0.5 * fov) / main->height);
+    f->width = main->width;
+    f->height = main->height;
     f->tan_half[1] = tan(0.5 * fov);
     f->tan_half[0] = f->tan_half[1] * (double)main->width / (double)main->height;
     for (int c = 0; c < 3; c++) {

@@ -1,10 +1,9 @@
 /* water.c - the water surface: a static polar mesh built once (rings whose spacing grows
  * geometrically from 0.5 m to the horizon, scene/plan.h), re-centred each frame on the camera
  * snapped to a 0.5 m grid and displaced in the vertex shader by the scene's wave family and its
- * ripples (shaders/gerstner.glsl, the formulas of src/sim/waves.h and src/sim/ripples.c).
- * Also the packing of the wave field into its uniform blocks, which the GPU probe shares: wave
- * phases and ripple ages are taken at the centre here in double, so the shaders stay exact in
- * float at t = 1e6 s and 1e5 m from the origin.
+ * ripples (shaders/gerstner.glsl, the formulas of src/sim/waves.h and src/sim/ripples.c,
+ * packed by waveblock.c), then shaded by water.frag.glsl with the optics the earlier passes of
+ * the frame left (reflection, prepass) and foam's memory where the scene can fold.
  */
 #include <math.h>
 #include <stdio.h>
@@ -45,122 +44,6 @@ struct ww_water {
     ww_water_waves waves;    /* the components in upload order; phases set per frame */
     ww_ripple_block ripples; /* filled per frame when the scene has ripples */
 };
-
-/* mean over a period of (e u^(e - 1) cos(phi))^2, u = (sin(phi) + 1) / 2: the mean square slope
- * of a steep sine 2 A (u^e - mean) per unit (A k)^2 (1/2 for a sine, e = 1). The rectangle rule
- * over a whole period converges spectrally for a smooth periodic integrand (exact for integer e,
- * a trigonometric polynomial of degree 2e - 1 < 256). */
-static double steep_slope_factor(double e) {
-    const int n = 256;
-    double sum = 0.0;
-    for (int j = 0; j < n; j++) {
-        double phi = WW_TAU * j / n, u = 0.5 * (sin(phi) + 1.0);
-        double d = e * (e > 1.0 ? pow(u, e - 1.0) : 1.0) * cos(phi);
-        sum += d * d;
-    }
-    return sum / n;
-}
-
-void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w) {
-    memset(w, 0, sizeof *w);
-    ww_wave_block *b = &w->block;
-    if (sc->wave_model == WW_WAVES_FLAT) return;
-    int n = 0;
-    for (int i = 0; i < sc->nwaves && i < WW_MAX_WAVES; i++)
-        if (sc->waves[i].k > 0.0) w->order[n++] = i; /* no wave to draw, no direction to divide by */
-    /* insertion sort by wavenumber ascending, stable so equal k keep the scene's order */
-    for (int i = 1; i < n; i++) {
-        int j = i, v = w->order[i];
-        for (; j > 0 && sc->waves[w->order[j - 1]].k > sc->waves[v].k; j--) w->order[j] = w->order[j - 1];
-        w->order[j] = v;
-    }
-    int gerstner = sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM;
-    int steep = sc->wave_model == WW_WAVES_STEEP_SINES;
-    double total = 0.0;
-    for (int i = 0; i < n; i++) {
-        const ww_wave *wv = &sc->waves[w->order[i]];
-        double q = gerstner ? wv->steepness : 0.0; /* sines move no water sideways */
-        double c = steep ? steep_slope_factor(wv->exponent) : 0.5;
-        b->wave[i][0] = (float)(wv->k * wv->dir[0]);
-        b->wave[i][1] = (float)(wv->k * wv->dir[1]);
-        b->wave[i][2] = (float)wv->amplitude;
-        b->wave[i][3] = (float)q;
-        b->wave2[i][1] = (float)wv->exponent;
-        b->wave2[i][2] = (float)wv->mean;
-        b->wave2[i][3] = (float)c;
-        total += c * (wv->amplitude * wv->k) * (wv->amplitude * wv->k);
-        w->sideways += q * wv->amplitude;
-    }
-    b->n = n;
-    b->slope2_total = (float)total;
-}
-
-void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double centre[2],
-                           ww_water_waves *w) {
-    for (int i = 0; i < w->block.n; i++) {
-        int s = w->order[i];
-        const ww_wave *wv = &sc->waves[s];
-        double kx = wv->k * wv->dir[0], kz = wv->k * wv->dir[1];
-        w->block.wave2[i][0] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] + st->wave_phase[s]);
-    }
-}
-
-int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double centre[2],
-                          ww_ripple_block *b) {
-    const ww_ripple_desc *d = &sc->ripples;
-    int n = 0;
-    b->param[0] = (float)d->radial_decay;
-    b->param[1] = (float)d->time_decay;
-    b->param[2] = (float)d->wavenumber;
-    b->param[3] = (float)d->speed;
-    b->shape[0] = d->wavenumber > 0.0 ? (float)(WW_TAU / d->wavenumber) : 0.0f;
-    b->shape[1] = d->wavenumber > 0.0 ? (float)(1.0 / d->wavenumber) : 0.0f;
-    if (sc->ripples_on && st->ripple && d->wavenumber > 0.0) {
-        for (int i = 0; i < d->max && i < WW_MAX_RIPPLES; i++) {
-            const double *e = st->ripple + i * WW_RIPPLE_STRIDE;
-            double age = st->t - e[2];
-            if (e[3] == 0.0 || age < 0.0) continue; /* free, or not yet started (as ripples.c) */
-            b->ripple[n][0] = (float)(e[0] - centre[0]);
-            b->ripple[n][1] = (float)(e[1] - centre[1]);
-            b->ripple[n][2] = (float)age;
-            b->ripple[n][3] = (float)e[3];
-            n++;
-        }
-    }
-    b->n = n;
-    return n;
-}
-
-int ww_water_shader_model(ww_wave_model m) {
-    switch (m) {
-    case WW_WAVES_FLAT: return 0;
-    case WW_WAVES_GERSTNER:
-    case WW_WAVES_SPECTRUM: return 1;
-    case WW_WAVES_SINES: return 2;
-    case WW_WAVES_STEEP_SINES: return 3;
-    }
-    return 0;
-}
-
-/* bind block `name` of prog to `binding`, checking that the driver lays it out as our struct */
-static ww_result bind_block(const ww_gl *gl, GLuint prog, const char *name, GLuint binding,
-                            size_t bytes, ww_error *err) {
-    GLuint idx = gl->GetUniformBlockIndex(prog, name);
-    if (idx == GL_INVALID_INDEX) return WW_OK; /* the program does not read it */
-    GLint size = 0, max = 0;
-    gl->GetActiveUniformBlockiv(prog, idx, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
-    gl->GetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &max);
-    if ((size_t)size != bytes)
-        return ww_error_set(err, WW_E_GL, "gerstner.glsl", 0, 0,
-                            "uniform block %s is %d bytes here, %zu in render_impl.h (std140)",
-                            name, size, bytes);
-    if ((size_t)max < bytes)
-        return ww_error_set(err, WW_E_GL, "gerstner.glsl", 0, 0,
-                            "uniform block %s needs %zu bytes; GL_MAX_UNIFORM_BLOCK_SIZE is %d",
-                            name, bytes, max);
-    gl->UniformBlockBinding(prog, idx, binding);
-    return WW_OK;
-}
 
 /* the components foam's memory re-evaluates at past instants (water.frag.glsl): the
  * WATER_FOAM_WAVES that fold or steepen the surface most, and none (the code is not even built
@@ -215,80 +98,6 @@ static void foam_components(const ww_scene *sc, ww_water *w) {
         w->foam_slot[n] = best;
         w->foam_n = n + 1;
     }
-}
-
-ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, const char *fs,
-                           int fade, GLuint *prog, ww_error *err) {
-    static const char *const includes[] = {"common.glsl", "gerstner.glsl", NULL};
-    char defines[200];
-    snprintf(defines, sizeof defines,
-             "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES %d\n#define WW_FADE %d\n"
-             "#define WW_FOAM_MEMORY %d\n",
-             ww_water_shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0,
-             foam_remembers(sc));
-    ww_result rc = ww_gfx_program_defs(gl, vs, fs, includes, defines, prog, err);
-    if (rc == WW_OK)
-        rc = bind_block(gl, *prog, "WwWaves", WW_UBO_WAVES, sizeof(ww_wave_block), err);
-    if (rc == WW_OK && sc->ripples_on)
-        rc = bind_block(gl, *prog, "WwRipples", WW_UBO_RIPPLES, sizeof(ww_ripple_block), err);
-    if (rc != WW_OK && *prog) {
-        gl->DeleteProgram(*prog);
-        *prog = 0;
-    }
-    return rc;
-}
-
-ww_result ww_water_ubos_new(const ww_gl *gl, const ww_scene *sc, const ww_water_waves *w,
-                            ww_water_ubos *u, ww_error *err) {
-    *u = (ww_water_ubos){0};
-    gl->GenBuffers(1, &u->waves);
-    gl->BindBuffer(GL_UNIFORM_BUFFER, u->waves);
-    gl->BufferData(GL_UNIFORM_BUFFER, sizeof w->block, &w->block, GL_DYNAMIC_DRAW);
-    if (sc->ripples_on) {
-        ww_ripple_block zero = {0};
-        gl->GenBuffers(1, &u->ripples);
-        gl->BindBuffer(GL_UNIFORM_BUFFER, u->ripples);
-        gl->BufferData(GL_UNIFORM_BUFFER, sizeof zero, &zero, GL_DYNAMIC_DRAW);
-    }
-    gl->BindBuffer(GL_UNIFORM_BUFFER, 0);
-    GLenum e = gl->GetError();
-    if (e != GL_NO_ERROR) {
-        ww_water_ubos_free(gl, u);
-        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "water: uniform buffers raised GL error 0x%04x",
-                            (unsigned)e);
-    }
-    return WW_OK;
-}
-
-void ww_water_ubos_upload(const ww_gl *gl, const ww_water_ubos *u, const ww_water_waves *w,
-                          const ww_ripple_block *rb, int full) {
-    const ww_wave_block *b = &w->block;
-    gl->BindBuffer(GL_UNIFORM_BUFFER, u->waves);
-    if (full) {
-        gl->BufferSubData(GL_UNIFORM_BUFFER, 0, sizeof *b, b);
-    } else if (b->n > 0) {
-        /* only the phases change from frame to frame */
-        GLintptr at = (GLintptr)offsetof(ww_wave_block, wave2);
-        gl->BufferSubData(GL_UNIFORM_BUFFER, at, (GLsizeiptr)((size_t)b->n * sizeof b->wave2[0]), b->wave2);
-    }
-    if (rb && u->ripples) {
-        /* the header and the live entries */
-        gl->BindBuffer(GL_UNIFORM_BUFFER, u->ripples);
-        size_t bytes = offsetof(ww_ripple_block, ripple) + (size_t)rb->n * sizeof rb->ripple[0];
-        gl->BufferSubData(GL_UNIFORM_BUFFER, 0, (GLsizeiptr)bytes, rb);
-    }
-    gl->BindBuffer(GL_UNIFORM_BUFFER, 0);
-}
-
-void ww_water_ubos_bind(const ww_gl *gl, const ww_water_ubos *u) {
-    gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, u->waves);
-    if (u->ripples) gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_RIPPLES, u->ripples);
-}
-
-void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u) {
-    if (u->waves) gl->DeleteBuffers(1, &u->waves);
-    if (u->ripples) gl->DeleteBuffers(1, &u->ripples);
-    *u = (ww_water_ubos){0};
 }
 
 /* the two triangles between rings j and j + 1 in segment i */
@@ -418,7 +227,9 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->cull = !(cull && strcmp(cull, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
     ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
-                                    !(fade && strcmp(fade, "0") == 0), &w->prog, err);
+                                    !(fade && strcmp(fade, "0") == 0),
+                                    foam_remembers(sc) ? "#define WW_FOAM_MEMORY 1\n" : NULL,
+                                    &w->prog, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
     if (rc != WW_OK) {
@@ -597,8 +408,7 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     rl = rl > 1e-9 ? rl : 1.0;
     fl = fl > 1e-9 ? fl : 1.0;
     gl->Uniform4f(w->cam_axes, (float)(rx / rl), (float)(rz / rl), (float)(fx / fl), (float)(fz / fl));
-    const ww_rt *main = ww_renderer_output(r, WW_PASS_MAIN);
-    if (main) gl->Uniform2f(w->inv_size, 1.0f / (float)main->width, 1.0f / (float)main->height);
+    gl->Uniform2f(w->inv_size, 1.0f / (float)f->width, 1.0f / (float)f->height);
     gl->Uniform2f(w->clip_range, (float)sc->near_clip, (float)sc->far_clip);
 
     gl->Uniform1i(w->reflect_tex, refl);

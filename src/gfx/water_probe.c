@@ -77,7 +77,7 @@ ww_result ww_gfx_water_probe(const ww_gl *gl, const ww_scene *sc, const ww_state
     ww_water_pack_ripples(sc, st, centre, &p->ripples);
     for (int i = 0; i < 2 * n; i++) p->rest[i] = (float)rest_xz[i];
 
-    ww_result rc = ww_water_program(gl, sc, "water_probe.vert.glsl", "water_probe.frag.glsl", 0,
+    ww_result rc = ww_water_program(gl, sc, "water_probe.vert.glsl", "water_probe.frag.glsl", 0, NULL,
                                     &p->prog, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &p->waves, &p->ubos, err);
     if (rc == WW_OK) rc = make_targets(p, gl, w, h, err);
