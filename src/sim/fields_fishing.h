@@ -17,7 +17,7 @@
     X(double, rod_line_time, WW_N_ROD(sc), "seconds since the cast (1)")                         \
     X(double, rod_active_left, WW_N_ROD(sc), "seconds left in the floating lure's window (1)")    \
     X(int32_t, rod_fish, WW_N_ROD(sc), "fish that bit this cast, -1 none (at most one) (1)")      \
-    X(double, rod_casts, WW_N_ROD(sc), "casts so far (1)")                                       \
+    X(int32_t, rod_casts, WW_N_ROD(sc), "casts so far (1)")                                       \
     X(double, fish_vel, 3 * WW_N_FISH(sc), "fish velocities, m/s (3 per fish)")                  \
     X(double, fish_yaw, WW_N_FISH(sc), "heading, rad, 0 = +x, pi/2 = +z (1 per fish)")           \
     X(double, fish_yaw_rate, WW_N_FISH(sc), "yaw rate of the last step, rad/s (1 per fish)")     \
