@@ -360,16 +360,29 @@ TEST(simtools_fields_by_name) {
     ENSURE(strcmp(ww_state_field_system("cube_pos"), "cubes") == 0);
     ENSURE(strcmp(ww_state_field_system("boat_pos"), "boat") == 0);
     ENSURE(strcmp(ww_state_field_system("stone_pos"), "stones") == 0);
-    ENSURE(strcmp(ww_state_field_system("fish_pos"), "fishing") == 0);
-    ENSURE(strcmp(ww_state_field_system("chest_pos"), "reef") == 0);
-    ENSURE(strcmp(ww_state_field_system("cam_pos"), "world") == 0);
+    ENSURE(strcmp(ww_state_field_system("fish_pos"), "fish") == 0);
+    ENSURE(strcmp(ww_state_field_system("lure_pos"), "rod") == 0);
+    ENSURE(strcmp(ww_state_field_system("chest_pos"), "chest") == 0);
+    ENSURE(strcmp(ww_state_field_system("collide_prev"), "collide") == 0);
+    ENSURE(strcmp(ww_state_field_system("cam_pos"), "camera") == 0);
+    ENSURE(strcmp(ww_state_field_system("events"), "events") == 0);
+    ENSURE(ww_state_field_system("no_such_field") == NULL);
+    /* every field's system is one of the scene's systems, or the outbox */
+#define WW_FIELD_OWNER(type, fname, cnt, sys, comment)                                             \
+    {                                                                                             \
+        int known = strcmp(sys, "events") == 0;                                                   \
+        for (int s_ = 0; s_ < WW_SYS_COUNT; s_++) known |= strcmp(sys, ww_system_name(s_)) == 0;  \
+        ENSURE_MSG(known, "%s: system '%s' is not in WW_SYSTEM_LIST", #fname, sys);              \
+    }
+    WW_STATE_FIELDS(WW_FIELD_OWNER)
+#undef WW_FIELD_OWNER
 
     /* the first non-finite value, named with its system, index and step */
-    ENSURE_EQ_INT(ww_sim_nan_report(sc, st, &err), WW_OK);
+    ENSURE_EQ_INT(ww_state_check(sc, st, &err), WW_OK);
     ENSURE_EQ_INT(ww_sim_advance_to(sc, st, 5, &err), WW_OK);
     st->ripple[6] = INFINITY;
-    ENSURE_EQ_INT(ww_sim_nan_report(sc, st, &err), WW_E_NAN);
-    ENSURE(strstr(err.msg, "world system: ripple[6] = inf at step 5") != NULL);
+    ENSURE_EQ_INT(ww_state_check(sc, st, &err), WW_E_NAN);
+    ENSURE(strstr(err.msg, "ripples system: ripple[6] = inf at step 5") != NULL);
     ww_state_free(st);
     ww_scene_free(sc);
 }

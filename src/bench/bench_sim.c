@@ -200,7 +200,6 @@ static ww_result run_dt(const char *path, int div, int integ, double seconds, ru
         if (st->step % per_sample == 0) sample(sc, st, u, (int)(st->step / per_sample));
     }
     u->wall_s = ww_now_seconds() - t0;
-    if (r == WW_E_NAN) ww_sim_nan_report(sc, st, err);
 done:
     ww_state_free(st);
     ww_scene_free(sc);

@@ -146,7 +146,6 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
         }
     }
     /* the step's own check names the field; say which system wrote it */
-    if (r == WW_E_NAN) ww_sim_nan_report(sc, st, err);
     r = close_outputs(&o, r, err);
     double wall = ww_now_seconds() - t0;
     if (!r && want_hash) printf("%016" PRIx64 "\n", ww_state_hash(sc, st));

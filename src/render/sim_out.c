@@ -45,7 +45,7 @@ int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to) {
 
 const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char *name,
                              long long *count) {
-#define WW_FIELD_BY_NAME(type, fname, n, comment)                                                 \
+#define WW_FIELD_BY_NAME(type, fname, n, sys, comment)                                                 \
     if (strcmp(name, #fname) == 0) {                                                              \
         const double *p_ = _Generic(st->fname, double *: (const double *)(const void *)st->fname, \
                                     default: NULL);                                               \
@@ -58,38 +58,10 @@ const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char 
     return NULL;
 }
 
-/* each system's field names, from its own table */
-#define WW_FIELD_NAME(type, fname, n, comment) #fname,
-static const char *const CUBES[] = {WW_FIELDS_CUBES(WW_FIELD_NAME) NULL};
-static const char *const STONES[] = {WW_FIELDS_STONES(WW_FIELD_NAME) NULL};
-static const char *const FISHING[] = {WW_FIELDS_FISHING(WW_FIELD_NAME) NULL};
-static const char *const REEF[] = {WW_FIELDS_REEF(WW_FIELD_NAME) NULL};
-static const char *const BOAT[] = {WW_FIELDS_BOAT(WW_FIELD_NAME) NULL};
-#undef WW_FIELD_NAME
-
-static const struct {
-    const char *system;
-    const char *const *fields;
-} SYSTEMS[] = {{"cubes", CUBES}, {"stones", STONES}, {"fishing", FISHING}, {"reef", REEF},
-               {"boat", BOAT}};
-
 const char *ww_state_field_system(const char *name) {
-    for (size_t s = 0; s < sizeof SYSTEMS / sizeof SYSTEMS[0]; s++)
-        for (const char *const *f = SYSTEMS[s].fields; *f; f++)
-            if (strcmp(*f, name) == 0) return SYSTEMS[s].system;
-    return "world";
-}
-
-ww_result ww_sim_nan_report(const ww_scene *sc, const ww_state *st, ww_error *err) {
-#define WW_FIELD_NAN(type, fname, n, comment)                                                     \
-    for (long long i = 0; i < (long long)(n); i++)                                                \
-        if (!isfinite((double)st->fname[i]))                                                      \
-            return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                    \
-                                "non-finite value in the %s system: %s[%lld] = %g at step %lld "  \
-                                "(t = %.6f s)",                                                   \
-                                ww_state_field_system(#fname), #fname, i, (double)st->fname[i],   \
-                                (long long)st->step, st->t);
-    WW_STATE_FIELDS(WW_FIELD_NAN)
-#undef WW_FIELD_NAN
-    return WW_OK;
+#define WW_FIELD_SYSTEM(type, fname, n, sys, comment)                                             \
+    if (strcmp(name, #fname) == 0) return sys;
+    WW_STATE_FIELDS(WW_FIELD_SYSTEM)
+#undef WW_FIELD_SYSTEM
+    return NULL;
 }

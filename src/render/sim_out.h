@@ -5,7 +5,6 @@
  *   ww_step(sc, st, &err);
  *   ww_sim_events_write(sc, st, file);          // one line per event in the outbox
  *   long long n; const double *y = ww_state_field(sc, st, "cube_pos", &n);   // NULL: no such
- *   if (r == WW_E_NAN) ww_sim_nan_report(sc, st, &err);   // re-words err with the system
  *
  * Nothing here allocates or writes the state.
  */
@@ -27,12 +26,8 @@ int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to);
 const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char *name,
                              long long *count);
 
-/* the system a field belongs to: "cubes", "stones", "fishing" (rod, lure, fish), "reef" (chest,
- * bubbles, camera collision), "boat", or "world" (clock, sky, camera, waves, ripples, outbox) */
+/* the system a field belongs to, as its state table says: a name of scene.h's WW_SYSTEM_LIST
+ * ("cubes", "rod", "fish", "camera", ...) or "events" (the outbox); NULL for no such field */
 const char *ww_state_field_system(const char *name);
-
-/* the first non-finite value of the state as WW_E_NAN: "non-finite value in the <system>
- * system: <field>[<index>] = nan at step S (t = T s)"; WW_OK (err untouched) when all are finite */
-ww_result ww_sim_nan_report(const ww_scene *sc, const ww_state *st, ww_error *err);
 
 #endif

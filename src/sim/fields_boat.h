@@ -8,15 +8,15 @@
 #define WW_N_BOAT(sc) ((sc)->boat.on ? 1 : 0)
 
 #define WW_FIELDS_BOAT(X)                                                                         \
-    X(double, boat_pos, 3 * WW_N_BOAT(sc), "hull centre, m (3)")                                 \
-    X(double, boat_vel, 3 * WW_N_BOAT(sc), "velocity, m/s (3)")                                  \
-    X(double, boat_heading, WW_N_BOAT(sc), "heading, rad in [-pi, pi) (1)")                      \
-    X(double, boat_speed, WW_N_BOAT(sc), "forward speed along the heading, signed, m/s (1)")    \
-    X(double, boat_tilt, 2 * WW_N_BOAT(sc), "pitch (bow up +), roll (starboard down +), rad (2)") \
-    X(double, boat_follow, 3 * WW_N_BOAT(sc), "last step's surface targets: height m, pitch, roll rad (3)") \
-    X(double, boat_input, 3 * WW_N_BOAT(sc), "inputs in force: throttle, steer, until s (-1: none) (3)") \
-    X(double, boat_command, 4 * WW_N_BOAT(sc), "inputs from this step's action: throttle, steer, until, 1 = pending (4)") \
-    X(double, boat_look_yaw, WW_N_BOAT(sc), "seat view heading, rad (1)")                         \
-    X(int32_t, boat_camera, WW_N_BOAT(sc), "camera mode: 0 free (the path), 1 the boat's seat (1)")
+    X(double, boat_pos, 3 * WW_N_BOAT(sc), "boat", "hull centre, m (3)")                            \
+    X(double, boat_vel, 3 * WW_N_BOAT(sc), "boat", "velocity, m/s (3)")                             \
+    X(double, boat_heading, WW_N_BOAT(sc), "boat", "heading, rad in [-pi, pi) (1)")                 \
+    X(double, boat_speed, WW_N_BOAT(sc), "boat", "forward speed along the heading, signed, m/s (1)") \
+    X(double, boat_tilt, 2 * WW_N_BOAT(sc), "boat", "pitch (bow up +), roll (starboard down +), rad (2)") \
+    X(double, boat_follow, 3 * WW_N_BOAT(sc), "boat", "last step's surface targets: height m, pitch, roll rad (3)") \
+    X(double, boat_input, 3 * WW_N_BOAT(sc), "boat", "inputs in force: throttle, steer, until s (-1: none) (3)") \
+    X(double, boat_command, 4 * WW_N_BOAT(sc), "boat", "inputs from this step's action: throttle, steer, until, 1 = pending (4)") \
+    X(double, boat_look_yaw, WW_N_BOAT(sc), "boat", "seat view heading, rad (1)")                   \
+    X(int32_t, boat_camera, WW_N_BOAT(sc), "boat", "camera mode: 0 free (the path), 1 the boat's seat (1)")
 
 #endif

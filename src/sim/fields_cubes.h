@@ -1,5 +1,5 @@
 /* fields_cubes.h - the state fields of the cubes system, an X-macro table appended to
- * WW_STATE_FIELDS (sim/state.h): X(type, name, count, comment), count 0 without cubes.
+ * WW_STATE_FIELDS (sim/state.h): X(type, name, count, system, comment), count 0 without cubes.
  * cube_pos, cube_vel and cube_rot are read (and cube_pos/cube_vel written when pushing) by the
  * boat, stones, fish and camera collision. The rest is the cubes' own (sim/cubes.c). */
 #ifndef WW_FIELDS_CUBES_H
@@ -8,11 +8,11 @@
 #define WW_N_CUBES(sc) ((sc)->cubes.on ? (sc)->cubes.count : 0)
 
 #define WW_FIELDS_CUBES(X)                                                                        \
-    X(double, cube_pos, 3 * WW_N_CUBES(sc), "cube centres, m (3 per cube)")                      \
-    X(double, cube_vel, 3 * WW_N_CUBES(sc), "cube velocities, m/s (3 per cube)")                 \
-    X(double, cube_rot, 4 * WW_N_CUBES(sc), "cube orientations, unit quaternion w x y z (4 per cube)") \
-    X(double, cube_omega, 3 * WW_N_CUBES(sc), "cube angular velocities, world frame, rad/s (3 per cube)") \
-    X(double, cube_press, 2 * WW_N_CUBES(sc), "press: hold left, s (0: not pressed); held so far, s (2 per cube)") \
-    X(double, cube_submerged, WW_N_CUBES(sc), "submerged fraction of the volume, 0..1 (1 per cube)")
+    X(double, cube_pos, 3 * WW_N_CUBES(sc), "cubes", "cube centres, m (3 per cube)")                \
+    X(double, cube_vel, 3 * WW_N_CUBES(sc), "cubes", "cube velocities, m/s (3 per cube)")           \
+    X(double, cube_rot, 4 * WW_N_CUBES(sc), "cubes", "cube orientations, unit quaternion w x y z (4 per cube)") \
+    X(double, cube_omega, 3 * WW_N_CUBES(sc), "cubes", "cube angular velocities, world frame, rad/s (3 per cube)") \
+    X(double, cube_press, 2 * WW_N_CUBES(sc), "cubes", "press: hold left, s (0: not pressed); held so far, s (2 per cube)") \
+    X(double, cube_submerged, WW_N_CUBES(sc), "cubes", "submerged fraction of the volume, 0..1 (1 per cube)")
 
 #endif

@@ -21,7 +21,7 @@ static size_t header_bytes(void) { return (sizeof(ww_state) + 15u) & ~(size_t)15
 /* point the field pointers into the block that follows the header */
 static void bind_fields(const ww_scene *sc, ww_state *st) {
     unsigned char *p = (unsigned char *)st + header_bytes();
-#define WW_STATE_BIND(type, name, count, comment)                                                 \
+#define WW_STATE_BIND(type, name, count, sys, comment)                                            \
     st->name = (type *)(void *)p;                                                                 \
     p += field_bytes(sizeof(type), (long long)(count));
     WW_STATE_FIELDS(WW_STATE_BIND)
@@ -30,7 +30,8 @@ static void bind_fields(const ww_scene *sc, ww_state *st) {
 
 static size_t state_bytes(const ww_scene *sc) {
     size_t n = header_bytes();
-#define WW_STATE_SIZE(type, name, count, comment) n += field_bytes(sizeof(type), (long long)(count));
+#define WW_STATE_SIZE(type, name, count, sys, comment)                                            \
+    n += field_bytes(sizeof(type), (long long)(count));
     WW_STATE_FIELDS(WW_STATE_SIZE)
 #undef WW_STATE_SIZE
     return n;
@@ -118,20 +119,21 @@ static int finite_int(int32_t v) { return (void)v, 1; }
 void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
     fprintf(to, "{\"step\":%lld,\"t\":", (long long)st->step);
     put_num(to, st->t);
-#define WW_STATE_JSON(type, name, count, comment) PUT_FIELD(to, #name, st->name, (long long)(count));
+#define WW_STATE_JSON(type, name, count, sys, comment)                                            \
+    PUT_FIELD(to, #name, st->name, (long long)(count));
     WW_STATE_FIELDS(WW_STATE_JSON)
 #undef WW_STATE_JSON
     fputc('}', to);
 }
 
 ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err) {
-#define WW_STATE_CHECK(type, name, count, comment)                                                \
+#define WW_STATE_CHECK(type, name, count, sys, comment)                                           \
     for (long long i = 0; i < (long long)(count); i++)                                           \
         if (!FINITE(st->name[i]))                                                                 \
             return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                   \
-                                "non-finite value in the simulation: %s[%lld] = %g at step %lld " \
+                                "non-finite value in the %s system: %s[%lld] = %g at step %lld "  \
                                 "(t = %.6f s)",                                                   \
-                                #name, i, (double)st->name[i], (long long)st->step, st->t);
+                                sys, #name, i, (double)st->name[i], (long long)st->step, st->t);
     WW_STATE_FIELDS(WW_STATE_CHECK)
 #undef WW_STATE_CHECK
     return WW_OK;

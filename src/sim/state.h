@@ -7,7 +7,8 @@
  *   ww_state_free(st);
  *
  * Each array is declared once in WW_STATE_FIELDS (MuJoCo's mjxmacro.h): the table drives sizing,
- * reset, hashing and trace output. X(type, name, count, comment). `count` may use `sc->...`.
+ * reset, hashing and trace output. X(type, name, count, system, comment), `system` the name
+ * of the system that owns it (scene.h's WW_SYSTEM_LIST; "events" for the outbox). `count` may use `sc->...`.
  * `type` is double for physics and int32_t for modes, flags, indices and counters (the trace
  * prints both as the same numbers; the NaN guard skips the integers).
  * The arrays live in the same block as the header; the field pointers point into it, so
@@ -31,21 +32,21 @@
 #define WW_SIM_EVENT_STRIDE 8
 
 #define WW_STATE_FIELDS(X)                                                                        \
-    X(double, time_of_day, 1, "clock, hours 0..24 (1)")                                          \
-    X(double, clock_anchor, 2, "clock was set to [0] hours at simulated time [1] s (2)")          \
-    X(double, sun_dir, 3, "unit vector toward the sun, world (3)")                               \
-    X(double, sun_color, 3, "sun radiance at the ground, linear RGB (3)")                        \
-    X(double, sky_zenith, 3, "sky colour straight up, linear RGB (3)")                           \
-    X(double, sky_horizon, 3, "sky colour at the horizon, linear RGB (3)")                       \
-    X(double, ambient, 3, "sky ambient light, linear RGB (3)")                                   \
-    X(double, cam_pos, 3, "camera position, m (3)")                                              \
-    X(double, cam_fwd, 3, "camera forward, unit (3)")                                            \
-    X(double, cam_fov, 1, "camera vertical field of view, rad (1)")                              \
-    X(double, wave_phase, sc->nwaves, "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)") \
-    X(double, ripple, sc->ripples_on ? 4 * sc->ripples.max : 0, "ripple pool: x, z, t0, A0 per entry; A0 = 0 is free (4 max)") \
-    X(int32_t, event_count, ww_scene_has_objects(sc) ? 1 : 0, "events in the step's outbox (1)") \
-    X(int32_t, events_dropped, ww_scene_has_objects(sc) ? 1 : 0, "events a full outbox could not hold, since step 0 (1)") \
-    X(double, events, ww_scene_has_objects(sc) ? WW_MAX_STEP_EVENTS * WW_SIM_EVENT_STRIDE : 0, "the step's outbox, sim/events.h")  \
+    X(double, time_of_day, 1, "clock", "clock, hours 0..24 (1)")                                    \
+    X(double, clock_anchor, 2, "clock", "clock was set to [0] hours at simulated time [1] s (2)")   \
+    X(double, sun_dir, 3, "clock", "unit vector toward the sun, world (3)")                         \
+    X(double, sun_color, 3, "clock", "sun radiance at the ground, linear RGB (3)")                  \
+    X(double, sky_zenith, 3, "clock", "sky colour straight up, linear RGB (3)")                     \
+    X(double, sky_horizon, 3, "clock", "sky colour at the horizon, linear RGB (3)")                 \
+    X(double, ambient, 3, "clock", "sky ambient light, linear RGB (3)")                             \
+    X(double, cam_pos, 3, "camera", "camera position, m (3)")                                       \
+    X(double, cam_fwd, 3, "camera", "camera forward, unit (3)")                                     \
+    X(double, cam_fov, 1, "camera", "camera vertical field of view, rad (1)")                       \
+    X(double, wave_phase, sc->nwaves, "waves", "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)") \
+    X(double, ripple, sc->ripples_on ? 4 * sc->ripples.max : 0, "ripples", "ripple pool: x, z, t0, A0 per entry; A0 = 0 is free (4 max)") \
+    X(int32_t, event_count, ww_scene_has_objects(sc) ? 1 : 0, "events", "events in the step's outbox (1)") \
+    X(int32_t, events_dropped, ww_scene_has_objects(sc) ? 1 : 0, "events", "events a full outbox could not hold, since step 0 (1)") \
+    X(double, events, ww_scene_has_objects(sc) ? WW_MAX_STEP_EVENTS * WW_SIM_EVENT_STRIDE : 0, "events", "the step's outbox, sim/events.h") \
     WW_FIELDS_CUBES(X)                                                                           \
     WW_FIELDS_STONES(X)                                                                          \
     WW_FIELDS_FISHING(X)                                                                         \
@@ -58,7 +59,7 @@ typedef struct ww_state {
     int event_next;        /* index of the next script event to apply */
     int pad_;
     size_t bytes;          /* size of the whole block */
-#define WW_STATE_DECL(type, name, count, comment) type *name;
+#define WW_STATE_DECL(type, name, count, sys, comment) type *name;
     WW_STATE_FIELDS(WW_STATE_DECL)
 #undef WW_STATE_DECL
     /* the arrays follow in the same allocation */
