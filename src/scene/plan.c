@@ -8,7 +8,7 @@
 #include <stdlib.h>
 
 static const char *const system_names[WW_SYS_COUNT] = {
-#define WW_SYS_NAME(id, name, present) [WW_SYS_##id] = name,
+#define WW_SYS_NAME(id, name, present, object) [WW_SYS_##id] = name,
     WW_SYSTEM_LIST(WW_SYS_NAME)
 #undef WW_SYS_NAME
 };
@@ -16,7 +16,7 @@ static const char *const system_names[WW_SYS_COUNT] = {
 const char *ww_system_name(ww_system s) { return system_names[s]; }
 
 void ww_scene_plan_systems(ww_scene *sc) {
-#define WW_SYS_PRESENT(id, name, present) sc->system_on[WW_SYS_##id] = (present) ? 1 : 0;
+#define WW_SYS_PRESENT(id, name, present, object) sc->system_on[WW_SYS_##id] = (present) ? 1 : 0;
     WW_SYSTEM_LIST(WW_SYS_PRESENT)
 #undef WW_SYS_PRESENT
 }

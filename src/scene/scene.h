@@ -169,27 +169,29 @@ typedef struct ww_event {
 
 typedef enum ww_tonemap_op { WW_TONEMAP_EXP = 0, WW_TONEMAP_ACES } ww_tonemap_op;
 
-/* the simulation's systems: X(ID, name, present) with `present` an expression of the compiled
- * scene `sc`. This list makes the ww_system enum, the names `plan` prints, and sc->system_on
- * (ww_scene_plan_systems: decided once, when the scene is compiled); sim/systems.c runs them in
- * its own order. The collision needs something solid for the camera to meet. */
+/* the simulation's systems: X(ID, name, present, object) with `present` an expression of the
+ * compiled scene `sc`, and `object` 1 for the systems of the scripted world (they emit
+ * simulation events: a scene with one has the events outbox, ww_scene_has_objects). This list
+ * makes the ww_system enum, the names `plan` prints, and sc->system_on (ww_scene_plan_systems:
+ * decided once, when the scene is compiled); sim/systems.c runs them in its own order. The
+ * collision needs something solid for the camera to meet. */
 #define WW_SYSTEM_LIST(X)                                                                         \
-    X(CLOCK, "clock", 1)                         /* sky clock: time of day, sun, sky colours */  \
-    X(CAMERA, "camera", 1)                       /* camera path */                               \
-    X(WAVES, "waves", sc->nwaves > 0)            /* wave phases */                               \
-    X(SCRIPT, "script", sc->nevents > 0)         /* script events */                             \
-    X(RIPPLES, "ripples", sc->ripples_on)        /* the ripple pool */                           \
-    X(CUBES, "cubes", sc->cubes.on)              /* floating cubes */                            \
-    X(STONES, "stones", sc->stones.on)           /* thrown stones */                             \
-    X(ROD, "rod", sc->rod.on)                    /* rod and lure */                              \
-    X(FISH, "fish", sc->fish.on)                 /* fish */                                      \
-    X(CHEST, "chest", sc->chest.on)              /* treasure chest */                            \
-    X(BUBBLES, "bubbles", sc->bubbles.on)        /* air bubbles */                               \
-    X(BOAT, "boat", sc->boat.on)                 /* the boat */                                  \
-    X(COLLIDE, "collide", sc->camera_collide && ww_scene_has_solids(sc)) /* camera collision */
+    X(CLOCK, "clock", 1, 0)                      /* sky clock: time of day, sun, sky colours */  \
+    X(CAMERA, "camera", 1, 0)                    /* camera path */                               \
+    X(WAVES, "waves", sc->nwaves > 0, 0)         /* wave phases */                               \
+    X(SCRIPT, "script", sc->nevents > 0, 0)      /* script events */                             \
+    X(RIPPLES, "ripples", sc->ripples_on, 0)     /* the ripple pool */                           \
+    X(CUBES, "cubes", sc->cubes.on, 1)           /* floating cubes */                            \
+    X(STONES, "stones", sc->stones.on, 1)        /* thrown stones */                             \
+    X(ROD, "rod", sc->rod.on, 1)                 /* rod and lure */                              \
+    X(FISH, "fish", sc->fish.on, 1)              /* fish */                                      \
+    X(CHEST, "chest", sc->chest.on, 1)           /* treasure chest */                            \
+    X(BUBBLES, "bubbles", sc->bubbles.on, 1)     /* air bubbles */                               \
+    X(BOAT, "boat", sc->boat.on, 1)              /* the boat */                                  \
+    X(COLLIDE, "collide", sc->camera_collide && ww_scene_has_solids(sc), 0) /* camera collision */
 
 typedef enum ww_system {
-#define WW_SYS_ENUM(id, name, present) WW_SYS_##id,
+#define WW_SYS_ENUM(id, name, present, object) WW_SYS_##id,
     WW_SYSTEM_LIST(WW_SYS_ENUM)
 #undef WW_SYS_ENUM
     WW_SYS_COUNT
@@ -306,16 +308,19 @@ void ww_scene_defaults(ww_scene *sc);
  * exponent; speed is the phase speed in m/s, or <= 0 for deep-water dispersion w^2 = g k */
 void ww_wave_derive(ww_wave *w, double speed);
 
-/* any system of the scripted world is on (they emit simulation events; models block the
- * camera, which logs it) */
-static inline int ww_scene_has_objects(const ww_scene *sc) {
-    return sc->cubes.on || sc->boat.on || sc->stones.on || sc->rod.on || sc->fish.on ||
-           sc->chest.on || sc->bubbles.on || sc->models.count > 0;
-}
-
 /* something the camera cannot pass through: the boat, cubes, the chest, models */
 static inline int ww_scene_has_solids(const ww_scene *sc) {
     return sc->boat.on || sc->cubes.on || sc->chest.on || sc->models.count > 0;
+}
+
+/* any system of the scripted world is on (WW_SYSTEM_LIST's objects: they emit simulation
+ * events), or a model (models block the camera, which logs it) */
+static inline int ww_scene_has_objects(const ww_scene *sc) {
+#define WW_SYS_OBJECT(id, name, present, object)                                                  \
+    if ((object) && (present)) return 1;
+    WW_SYSTEM_LIST(WW_SYS_OBJECT)
+#undef WW_SYS_OBJECT
+    return sc->models.count > 0;
 }
 
 /* decide which systems the scene has (sc->system_on) from its sections: done once at the end
