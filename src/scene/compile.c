@@ -101,15 +101,6 @@ static const action ACTIONS[] = {
 #define NACTIONS ((int)(sizeof ACTIONS / sizeof ACTIONS[0]))
 
 /* enum words, indexed by the enum value */
-static const char *const WAVE_WORDS[] = {[WW_WAVES_FLAT] = "flat",
-                                         [WW_WAVES_GERSTNER] = "gerstner",
-                                         [WW_WAVES_SINES] = "sines",
-                                         [WW_WAVES_STEEP_SINES] = "steep_sines",
-                                         [WW_WAVES_SPECTRUM] = "spectrum", NULL};
-const char *ww_wave_model_name(ww_wave_model m) {
-    return m >= WW_WAVES_FLAT && m <= WW_WAVES_SPECTRUM ? WAVE_WORDS[m] : "unknown";
-}
-
 static const char *const SPECTRUM_WORDS[] = {[WW_SPECTRUM_PM] = "pierson_moskowitz",
                                              [WW_SPECTRUM_JONSWAP] = "jonswap", NULL};
 static const char *const FOLD_WORDS[] = {[WW_FOLD_WARN] = "warn", [WW_FOLD_ERROR] = "error",
@@ -642,26 +633,6 @@ static ww_result compile_wave(ctx *c, const ww_node *item, int i, ww_wave_model 
     return WW_OK;
 }
 
-void ww_wave_derive(ww_wave *w, double speed) {
-    /* deep-water dispersion w^2 = g k (Airy wave theory) unless the phase speed is given */
-    w->dir[0] = cos(w->direction);
-    w->dir[1] = sin(w->direction);
-    w->k = WW_TAU / w->wavelength;
-    w->omega = speed > 0.0 ? speed * w->k : sqrt(WW_G * w->k);
-    w->speed = w->omega / w->k;
-    /* mean of ((sin phi + 1) / 2)^e over a period: with u = (sin + 1) / 2 = sin^2(phi / 2 +
-     * pi / 4), the Wallis integral (1 / pi) int_0^pi sin^(2e) = Gamma(e + 1/2) / (sqrt(pi)
-     * Gamma(e + 1)) (Abramowitz and Stegun 6.1.1, 6.2.1) */
-    w->mean = tgamma(w->exponent + 0.5) / (sqrt(WW_PI) * tgamma(w->exponent + 1.0));
-}
-
-double ww_waves_fold_sum(const ww_scene *sc) {
-    double sum = 0.0;
-    for (int i = 0; i < sc->nwaves; i++)
-        sum += sc->waves[i].steepness * sc->waves[i].k * sc->waves[i].amplitude;
-    return sum;
-}
-
 /* water.waves.random: the description; count stays 0 when the section is absent */
 static ww_result compile_random(ctx *c, const section *waves, ww_wave_model model, int nlisted,
                                 section *s) {
@@ -726,7 +697,7 @@ static ww_result compile_spectrum(ctx *c, const section *waves, ww_wave_model mo
         return wwc_fail(c, WW_E_INCONSISTENT, s->map->key,
                     "water.waves.spectrum is read only by model: spectrum, and the model is %s: "
                     "remove it, or set water.waves.model: spectrum",
-                    WAVE_WORDS[model]);
+                    ww_wave_model_words[model]);
     int kind = (int)d->kind;
     TRY(wwc_get_word(c, s, "kind", SPECTRUM_WORDS, &kind));
     d->kind = (ww_spectrum_kind)kind;
@@ -786,7 +757,7 @@ static ww_result compile_waves(ctx *c, const section *water) {
     const ww_node *list;
     TRY(wwc_open_section(c, water, "waves", keys, &s));
     int m = (int)sc->wave_model;
-    TRY(wwc_get_word(c, &s, "model", WAVE_WORDS, &m));
+    TRY(wwc_get_word(c, &s, "model", ww_wave_model_words, &m));
     ww_wave_model model = (ww_wave_model)m;
     sc->wave_model = model;
     TRY(wwc_get_list(c, &s, "list", WW_MAX_WAVES, &list));

@@ -328,8 +328,10 @@ static inline int ww_scene_has_objects(const ww_scene *sc) {
 void ww_scene_plan_systems(ww_scene *sc);
 const char *ww_system_name(ww_system s);
 
-/* the model's word in the scene format: "gerstner", "sines", ... */
+/* the model's word in the scene format: "gerstner", "sines", ...; the words, by model, NULL
+ * last (scene/wave.c) */
 const char *ww_wave_model_name(ww_wave_model m);
+extern const char *const ww_wave_model_words[];
 
 /* sum Q k A over the components: above 1 the Gerstner surface folds */
 double ww_waves_fold_sum(const ww_scene *sc);
