@@ -32,6 +32,11 @@ uniform float u_fog_below_density;
 uniform vec3 u_extinction;     // sunlight lost per metre of water it crosses, 1/m per channel
 uniform float u_caustics;      // strength (0 off)
 // the lights' uniforms and their range window: common.glsl (the water shares them)
+// the OBJ material of the submesh drawn (gfx/geometry.c; the identity for every other mesh)
+uniform vec4 u_mat_kd;         // Kd, multiplying the instance's albedo; a: 1 times map_Kd
+uniform vec4 u_mat_ks;         // Ks and Ns (a): Blinn-Phong; Ns 0: the instance's own specular
+uniform vec4 u_mat_ke;         // Ke, emitted radiance added unlit, linear RGB; a: d (opacity)
+uniform sampler2D u_mat_map;   // map_Kd, sRGB (read as linear)
 uniform vec4 u_glow;           // the glow column: axis x, z (camera-relative), radius m, 1/m
 uniform vec2 u_glow_y;         // its bottom and top, camera-relative y, m
 
@@ -147,7 +152,13 @@ void main() {
 
     vec3 n = normalize(v_normal);
     if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
-    vec3 albedo = v_color.rgb;
+    vec3 albedo = v_color.rgb * u_mat_kd.rgb;
+    if (u_mat_kd.a > 0.5) albedo *= texture(u_mat_map, v_uv).rgb;
+    // the specular colour and exponent: the material's, or the instance's strength at
+    // WW_SHININESS
+    bool mat_spec = u_mat_ks.a > 0.0;
+    vec3 ks = mat_spec ? u_mat_ks.rgb : vec3(v_spec);
+    float shininess = mat_spec ? u_mat_ks.a : WW_SHININESS;
 
     // sunlight, through the water column above when under water
     float sun_up = smoothstep(-0.02, 0.02, u_sun_dir.y);
@@ -182,7 +193,7 @@ void main() {
     float lit = ww_shadow(p, n);
     float ndl = max(dot(n, l), 0.0);
     vec3 h = normalize(l + v);
-    float spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), WW_SHININESS) * v_spec : 0.0;
+    vec3 spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), shininess) * ks : vec3(0.0);
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
 
     for (int i = 0; i < u_nlights; i++) {
@@ -190,9 +201,9 @@ void main() {
         float att = ww_light_att(i, p, l);
         float nl = max(dot(n, l), 0.0);
         vec3 hl = normalize(l + v);
-        float sl = nl > 0.0 ? pow(max(dot(n, hl), 0.0), WW_SHININESS) * v_spec : 0.0;
+        vec3 sl = nl > 0.0 ? pow(max(dot(n, hl), 0.0), shininess) * ks : vec3(0.0);
         c += u_light_color[i] * att * (albedo * nl + sl);
     }
-    c += albedo * v_color.a; // emission
-    o_color = vec4(ww_fog_segment(c, p), 1.0);
+    c += albedo * v_color.a + u_mat_ke.rgb; // emission: the instance's factor, the material's Ke
+    o_color = vec4(ww_fog_segment(c, p), u_mat_ke.a);
 }

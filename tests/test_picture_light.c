@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "io/writers.h"
 #include "scene/scene.h"
@@ -403,6 +404,115 @@ TEST_IMAGE(light_emissive_model) {
     ENSURE_MSG(halo >= BLOOM_HALO_MIN, "bloom adds %.1f < %g", halo, BLOOM_HALO_MIN);
     ww_image_free(&lit.im);
     ww_image_free(&glow.im);
+}
+
+/* ---- OBJ materials drawn ---- */
+
+/* four quads of one OBJ model facing a camera 6 m away at noon, each with its own material:
+ *   Q1 Kd 1 0 0 (red)                          x -4 .. -2.4
+ *   Q2 map_Kd tests/data/checker.tga (2 x 2: red, lime, blue, white)   x -2 .. -0.4
+ *   Q3 Kd 0 0 1 with d 0.5 before an opaque red Q3' 0.5 m behind it      x 0 .. 1.6
+ *   Q4 Kd 0.05 with Ke 2 2 2 (emission)           x 2 .. 3.6
+ * all y 0.2 .. 1.8, facing -z. The camera looks along +z, so +x is to the left: at 320x180 and
+ * 60 deg a metre is 26 px, the quads' centres at columns 243, 191, 139 and 87, row 90. */
+static const char MATERIAL_OBJ[] =
+    "mtllib quads.mtl\n"
+    "vn 0 0 -1\n"
+    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+    "v -4 0.2 0\nv -2.4 0.2 0\nv -2.4 1.8 0\nv -4 1.8 0\n"
+    "v -2 0.2 0\nv -0.4 0.2 0\nv -0.4 1.8 0\nv -2 1.8 0\n"
+    "v 0 0.2 0\nv 1.6 0.2 0\nv 1.6 1.8 0\nv 0 1.8 0\n"
+    "v 0 0.2 0.5\nv 1.6 0.2 0.5\nv 1.6 1.8 0.5\nv 0 1.8 0.5\n"
+    "v 2 0.2 0\nv 3.6 0.2 0\nv 3.6 1.8 0\nv 2 1.8 0\n"
+    "usemtl red\nf 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n"
+    "f 13/1/1 14/2/1 15/3/1\nf 13/1/1 15/3/1 16/4/1\n"
+    "usemtl checker\nf 5/1/1 6/2/1 7/3/1\nf 5/1/1 7/3/1 8/4/1\n"
+    "usemtl glass\nf 9/1/1 10/2/1 11/3/1\nf 9/1/1 11/3/1 12/4/1\n"
+    "usemtl glow\nf 17/1/1 18/2/1 19/3/1\nf 17/1/1 19/3/1 20/4/1\n";
+#define MATERIAL_DOMINANT 2.0  /* a coloured patch's strongest channel over each other one */
+#define TEXEL_DOMINANT 1.5     /* the same for a texel's patch, which bilinear filtering of the
+                                * 2 x 2 texture blends with its neighbours (1.9 to 2.7 seen) */
+#define MATERIAL_MIX 0.25      /* each of red and blue through the glass: its share, at least */
+#define MATERIAL_GLOW_MIN 150.0 /* the emissive quad's 8-bit luma at night, at least ... */
+#define MATERIAL_DARK_MAX 40.0 /* ... while the red one, lit only by the night, stays under this */
+
+/* mean RGB of the (2r+1)^2 pixels around (x, y) */
+static void patch_rgb(const pic *p, int x, int y, int r, double out[3]) {
+    out[0] = out[1] = out[2] = 0.0;
+    for (int j = y - r; j <= y + r; j++)
+        for (int i = x - r; i <= x + r; i++)
+            for (int k = 0; k < 3; k++) out[k] += px(p, i, j)[k];
+    for (int k = 0; k < 3; k++) out[k] /= (double)((2 * r + 1) * (2 * r + 1));
+}
+
+static int dominant(const double c[3], int k, double by) {
+    return c[k] >= by * c[(k + 1) % 3] && c[k] >= by * c[(k + 2) % 3];
+}
+
+TEST_IMAGE(light_obj_materials_drawn) {
+    REQUIRE_GL();
+    char cwd[512], mtl[1024], obj[700], scene[1024], text[1024];
+    ENSURE(getcwd(cwd, sizeof cwd) != NULL);
+    const char *dir = ww_test_tmpdir("materials");
+    snprintf(mtl, sizeof mtl,
+             "newmtl red\nKd 1 0 0\n"
+             "newmtl checker\nKd 1 1 1\nmap_Kd %s/tests/data/checker.tga\n"
+             "newmtl glass\nKd 0 0 1\nd 0.5\n"
+             "newmtl glow\nKd 0.05 0.05 0.05\nKe 2 2 2\n", cwd);
+    snprintf(obj, sizeof obj, "%s/quads.mtl", dir);
+    ENSURE(ww_test_write_text(obj, mtl) == 0);
+    snprintf(obj, sizeof obj, "%s/quads.obj", dir);
+    ENSURE(ww_test_write_text(obj, MATERIAL_OBJ) == 0);
+    snprintf(text, sizeof text,
+             "time: {dt: 1/120, fps: 30, duration: 1}\n"
+             "render: {shadows: false, refraction: false, reflection: false, bloom: false,\n"
+             "         god_rays: false, fxaa: false, msaa: 0, seabed: false}\n"
+             "sky: {model: gradient, time_of_day: 12, day_length: 0}\n"
+             "objects:\n"
+             "  models: [{name: quads, obj: quads.obj, position: [0, 0, 0]}]\n"
+             "camera: {fov: 60, path: [{t: 0, position: [0, 1, -6], look_at: [0, 1, 0]}]}\n");
+    write_scene("materials", text, scene, sizeof scene);
+    pic day, night;
+    if (!render_frame(scene, 0, "320x180", NULL, "mat_day", &day)) return;
+    if (!render_frame(scene, 0, "320x180", "--set sky.time_of_day=23", "mat_night", &night)) {
+        ww_image_free(&day.im);
+        return;
+    }
+    double red[3], glass[3], q[4][3], glow[3], dark[3];
+    patch_rgb(&day, 243, 90, 4, red);
+    /* the checker's four texel centres (uv 0.25 and 0.75 each way) */
+    patch_rgb(&day, 202, 80, 2, q[0]);
+    patch_rgb(&day, 181, 80, 2, q[1]);
+    patch_rgb(&day, 202, 100, 2, q[2]);
+    patch_rgb(&day, 181, 100, 2, q[3]);
+    patch_rgb(&day, 139, 90, 4, glass);
+    patch_rgb(&night, 87, 90, 4, glow);
+    patch_rgb(&night, 243, 90, 4, dark);
+    fprintf(stderr, "    red %.0f %.0f %.0f; checker %.0f %.0f %.0f | %.0f %.0f %.0f | %.0f %.0f %.0f |"
+            " %.0f %.0f %.0f; glass %.0f %.0f %.0f; at night glow %.0f %.0f %.0f, red %.0f %.0f %.0f\n",
+            red[0], red[1], red[2], q[0][0], q[0][1], q[0][2], q[1][0], q[1][1], q[1][2], q[2][0],
+            q[2][1], q[2][2], q[3][0], q[3][1], q[3][2], glass[0], glass[1], glass[2], glow[0],
+            glow[1], glow[2], dark[0], dark[1], dark[2]);
+    ENSURE_MSG(dominant(red, 0, MATERIAL_DOMINANT), "Kd 1 0 0 is not drawn red");
+    /* the texture: one patch each red, green and blue dominated, and one near white */
+    int seen[4] = {0};
+    for (int i = 0; i < 4; i++) {
+        for (int k = 0; k < 3; k++) seen[k] |= dominant(q[i], k, TEXEL_DOMINANT);
+        double lo = fmin(q[i][0], fmin(q[i][1], q[i][2])), hi = fmax(q[i][0], fmax(q[i][1], q[i][2]));
+        seen[3] |= hi > 60.0 && lo > 0.6 * hi;
+    }
+    ENSURE_MSG(seen[0] && seen[1] && seen[2] && seen[3], "map_Kd's four texels not drawn: red %d "
+               "green %d blue %d white %d", seen[0], seen[1], seen[2], seen[3]);
+    double sum = glass[0] + glass[1] + glass[2];
+    ENSURE_MSG(sum > 0.0 && glass[0] >= MATERIAL_MIX * sum && glass[2] >= MATERIAL_MIX * sum,
+               "d 0.5 blue before red does not show both: %.0f %.0f %.0f", glass[0], glass[1],
+               glass[2]);
+    double lg = 0.2126 * glow[0] + 0.7152 * glow[1] + 0.0722 * glow[2];
+    double ld = 0.2126 * dark[0] + 0.7152 * dark[1] + 0.0722 * dark[2];
+    ENSURE_MSG(lg >= MATERIAL_GLOW_MIN && ld <= MATERIAL_DARK_MAX, "Ke: the glowing quad %.0f, the "
+               "red one %.0f at night", lg, ld);
+    ww_image_free(&day.im);
+    ww_image_free(&night.im);
 }
 
 /* ---- the sky ---- */

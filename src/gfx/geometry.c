@@ -40,6 +40,7 @@
 #define GLOW_NEAR_FAR 10.0
 #define GLOW_NEAR_MIN 0.2
 #define WW_TEX_SHADOW 3            /* texture unit of the shadow map (shaders/shadow.glsl) */
+#define WW_TEX_MATERIAL 4          /* texture unit of an OBJ material's map_Kd */
 #define SPEC_DEFAULT 0.25         /* sun highlight on most things */
 #define SPEC_WET 0.6              /* on fish and bubbles */
 /* sunlight lost per metre of water (red goes first): seed 003's green-blue under water */
@@ -98,6 +99,10 @@ struct ww_geometry {
     int nobj;         /* OBJ models: one mesh per model */
     gmesh obj[WW_MAX_MODELS];
     int obj_model[WW_MAX_MODELS];
+    const ww_mesh_data *obj_data[WW_MAX_MODELS]; /* its submeshes and materials (the scene's) */
+    GLuint *image_tex; /* the scene's images a material draws (map_Kd), by asset index; 0 none */
+    int nimage;
+    GLint mat_kd, mat_ks, mat_ke, mat_map;
     instance *scratch; /* the largest slot's instances, filled per frame */
     int scratch_cap;
     int draws;         /* instanced draws of the last ww_geometry_draw (tests) */
@@ -330,6 +335,9 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     for (int s = 0; s < SLOT_COUNT; s++) mesh_free(gl, &g->slot[s]);
     mesh_free(gl, &g->hull_cap);
     for (int i = 0; i < g->nobj; i++) mesh_free(gl, &g->obj[i]);
+    for (int i = 0; i < g->nimage; i++)
+        if (g->image_tex[i]) gl->DeleteTextures(1, &g->image_tex[i]);
+    free(g->image_tex);
     ww_water_ubos_free(gl, &g->ubos);
     free(g->scratch);
     free(g);
@@ -348,6 +356,36 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     if (rc != WW_OK) return rc;
     GLuint idx = gl->GetUniformBlockIndex(g->prog, "WwWaves");
     if (idx != GL_INVALID_INDEX) gl->UniformBlockBinding(g->prog, idx, WW_UBO_WAVES);
+    return WW_OK;
+}
+
+/* the GL texture of the scene's image `index` (a material's map_Kd), uploaded the first time a
+ * material names it: sRGB, mipmapped, repeating (OBJ uvs tile); -1 names none */
+static ww_result material_texture(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, int index,
+                                  ww_error *err) {
+    if (index < 0 || !sc->assets || index >= sc->assets->nimage) return WW_OK;
+    if (!g->image_tex) {
+        g->image_tex = calloc((size_t)sc->assets->nimage, sizeof *g->image_tex);
+        if (!g->image_tex) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
+        g->nimage = sc->assets->nimage;
+    }
+    if (g->image_tex[index]) return WW_OK;
+    const ww_image_data *im = &sc->assets->image[index];
+    unsigned char *rgba = NULL;
+    ww_result r = ww_assets_decode(im, &rgba, err);
+    if (r) return r;
+    gl->GenTextures(1, &g->image_tex[index]);
+    gl->BindTexture(GL_TEXTURE_2D, g->image_tex[index]);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl->TexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, im->width, im->height, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, rgba);
+    gl->GenerateMipmap(GL_TEXTURE_2D);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    ww_assets_pixels_free(rgba);
     return WW_OK;
 }
 
@@ -387,7 +425,10 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
             continue;
         const ww_mesh_data *m = &sc->assets->mesh[d->asset];
         mesh_upload(gl, &g->obj[g->nobj], m->vertex, m->nvert, m->index, (int)m->nindex, 1);
+        g->obj_data[g->nobj] = m;
         g->obj_model[g->nobj++] = i;
+        for (int k = 0; k < m->nmaterial && rc == WW_OK; k++)
+            rc = material_texture(g, gl, sc, m->material[k].texture, err);
     }
     if (rc == WW_OK) {
         g->scratch = malloc((size_t)most * sizeof *g->scratch);
@@ -419,6 +460,10 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
     g->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
     g->shadow_filter = ww_gfx_uniform(gl, p, "u_shadow_filter");
+    g->mat_kd = ww_gfx_uniform(gl, p, "u_mat_kd");
+    g->mat_ks = ww_gfx_uniform(gl, p, "u_mat_ks");
+    g->mat_ke = ww_gfx_uniform(gl, p, "u_mat_ke");
+    g->mat_map = ww_gfx_uniform(gl, p, "u_mat_map");
     g->lights.n = ww_gfx_uniform(gl, p, "u_nlights");
     g->lights.pos = ww_gfx_uniform(gl, p, "u_light_pos");
     g->lights.dir = ww_gfx_uniform(gl, p, "u_light_dir");
@@ -678,6 +723,64 @@ static int draw_mesh(const ww_gl *gl, const gmesh *m) {
     return 1;
 }
 
+/* the material uniforms (geometry.frag.glsl): an OBJ submesh's, or with mt NULL the identity
+ * every other mesh is drawn with (the instance's own albedo and specular, no emission, opaque) */
+static void set_material(const ww_geometry *g, const ww_gl *gl, const ww_material *mt) {
+    GLuint tex = 0;
+    if (mt && mt->texture >= 0 && mt->texture < g->nimage) tex = g->image_tex[mt->texture];
+    if (!mt) {
+        gl->Uniform4f(g->mat_kd, 1.0f, 1.0f, 1.0f, 0.0f);
+        gl->Uniform4f(g->mat_ks, 0.0f, 0.0f, 0.0f, 0.0f);
+        gl->Uniform4f(g->mat_ke, 0.0f, 0.0f, 0.0f, 1.0f);
+    } else {
+        const float *kd = mt->diffuse, *ks = mt->specular, *ke = mt->emission;
+        gl->Uniform4f(g->mat_kd, kd[0], kd[1], kd[2], tex ? 1.0f : 0.0f);
+        gl->Uniform4f(g->mat_ks, ks[0], ks[1], ks[2], fmaxf(mt->shininess, 1.0f));
+        gl->Uniform4f(g->mat_ke, ke[0], ke[1], ke[2], mt->opacity);
+    }
+    gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_MATERIAL);
+    gl->BindTexture(GL_TEXTURE_2D, tex);
+    gl->ActiveTexture(GL_TEXTURE0);
+}
+
+/* an OBJ model by its submeshes, each with its material: the opaque ones first, then those with
+ * d < 1 blended over them (depth tested, not written; within one model, in file order). The
+ * depth-only shadow pass draws the whole mesh at once. */
+static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode mode) {
+    const gmesh *m = &g->obj[i];
+    const ww_mesh_data *d = g->obj_data[i];
+    if (m->ninst <= 0) return 0;
+    if (mode == WW_GEOM_SHADOW || !d || d->nsub <= 0) {
+        set_material(g, gl, NULL);
+        return draw_mesh(gl, m);
+    }
+    gl->BindVertexArray(m->vao);
+    for (int pass = 0; pass < 2; pass++) {
+        for (int k = 0; k < d->nsub; k++) {
+            const ww_submesh *sub = &d->sub[k];
+            const ww_material *mt = sub->material >= 0 && sub->material < d->nmaterial
+                                        ? &d->material[sub->material] : NULL;
+            int blended = mt && mt->opacity < 1.0f;
+            if (blended != pass || sub->count == 0) continue;
+            set_material(g, gl, mt);
+            if (blended) {
+                gl->Enable(GL_BLEND);
+                gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                gl->DepthMask(GL_FALSE);
+            }
+            gl->DrawElementsInstanced(GL_TRIANGLES, (GLsizei)sub->count, GL_UNSIGNED_INT,
+                                      (const void *)((size_t)sub->first * sizeof(GLuint)),
+                                      m->ninst);
+            if (blended) {
+                gl->DepthMask(GL_TRUE);
+                gl->Disable(GL_BLEND);
+            }
+        }
+    }
+    set_material(g, gl, NULL);
+    return 1;
+}
+
 int ww_geometry_draw_count(const ww_geometry *g) { return g ? g->draws : 0; }
 
 int ww_geometry_has_hulls(const ww_geometry *g) { return g && g->hull_cap.cap > 0; }
@@ -748,6 +851,8 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
     gl->DepthMask(GL_TRUE);
+    gl->Uniform1i(g->mat_map, WW_TEX_MATERIAL);
+    set_material(g, gl, NULL);
     int draws = 0;
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
@@ -756,7 +861,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         draws += draw_mesh(gl, &g->slot[s]);
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
-        draws += draw_mesh(gl, &g->obj[i]);
+        draws += draw_obj(g, gl, i, mode);
 
     g->glow_clip = clip != NULL;
     /* a pass that draws its parts in several calls counts them from the one with the solids */
