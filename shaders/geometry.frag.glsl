@@ -10,7 +10,8 @@
 //   fog: exp2 above and below the water (seeds 000, 003). Seed 000 fogs a point by the medium
 //        the camera is in; here the segment camera -> point is split where it crosses the water
 //        plane and each part is fogged by its own medium, far part first.
-// Modes (u_mode): 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive).
+// Modes (u_mode): 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive),
+// 3 an air bubble (blended, premultiplied).
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on.
@@ -101,6 +102,35 @@ void main() {
     vec3 v = normalize(u_eye - p);
     float depth = u_water_y - p.y; // below the water plane, m (negative above)
 
+    if (u_mode == 3) {
+        // an air bubble: a sphere of air seen from the water, blended over what lies behind it
+        // (premultiplied: rgb is light added, a the share of the background it hides). Near its
+        // centre the light passes through (water to air and back: little is reflected), so the
+        // seabed shows through; toward the rim the rays meet the air past the critical angle,
+        // asin(1 / 1.333) = 48.6 deg, and are reflected whole (total internal reflection), so
+        // the rim is a bright ring of the water's light, brighter from above; and a highlight
+        // of the (refracted) sun.
+        vec3 n = normalize(v_normal);
+        float c = abs(dot(n, v));
+        float refl = smoothstep(0.8, 0.55, c) * 0.85 + 0.04; // TIR past cos 0.66, Fresnel inside
+        vec3 r = reflect(-v, n);
+        vec3 l = u_sun_dir;
+        vec3 sun = u_sun_color * smoothstep(-0.02, 0.02, u_sun_dir.y);
+        vec3 env = ww_sky(r);
+        if (depth > 0.0) {
+            vec3 ts = refract(-u_sun_dir, vec3(0.0, 1.0, 0.0), 1.0 / WW_ETA_WATER);
+            if (ts.y < 0.0) l = -ts;
+            sun *= exp(-u_extinction * depth / max(-l.y, 0.6));
+            // what the rim mirrors: the daylight coming down through the water above it,
+            // the water's own colour below
+            vec3 down = u_ambient * exp(-u_extinction * depth) + 0.8 * sun;
+            env = mix(u_fog_below_color, down, smoothstep(-0.3, 0.6, r.y));
+        }
+        float hi = pow(max(dot(n, normalize(l + v)), 0.0), 300.0);
+        vec3 t = ww_fog_segment(vec3(1.0), p) - ww_fog_segment(vec3(0.0), p); // transmittance
+        o_color = vec4(ww_fog_segment(env, p) * refl + sun * hi * 0.5 * t, refl);
+        return;
+    }
     if (u_mode == 2) {
         // the glow column as a glowing medium: along the view ray, the
         // radiance of an emitting and absorbing slab is S (1 - e^(-tau)), tau the optical depth

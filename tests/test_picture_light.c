@@ -515,6 +515,89 @@ TEST_IMAGE(light_obj_materials_drawn) {
     ww_image_free(&night.im);
 }
 
+/* ---- bubbles: the seabed shows through them ---- */
+
+/* a column of 25 cm bubbles rising 2.5 m in front of the camera, 4.5 m down in clear flat water
+ * at noon, the seabed behind them. Rendered with and without the bubbles, each over a red and
+ * over a green seabed: through the bubbles' middles a see-through bubble passes on most of the
+ * seabed's change of colour; an opaque bead passed on none of it. */
+#define BUBBLE_SEE_THROUGH 0.5 /* the seabed's change of colour seen inside the bubbles' footprint
+                                * over the same without bubbles, at least */
+#define BUBBLE_FOOTPRINT 4     /* 8-bit levels a pixel must move with the bubbles to count */
+static const char BUBBLE_SCENE[] =
+    "seed: 3\n"
+    "time: {dt: 1/120, fps: 30, duration: 4}\n"
+    "render: {shadows: false, reflection: false, bloom: false, god_rays: false, fxaa: false,\n"
+    "         msaa: 0}\n"
+    "sky: {time_of_day: 12, day_length: 0}\n"
+    "water: {level: 0, depth: 8, waves: {model: flat}, look: {caustics: false}}\n"
+    "objects:\n"
+    "  bubbles: [{at: [0, -7.9, -2.5], rate: 1, speed: 0.6, wobble: 0.02, frequency: 1,\n"
+    "             size: 0.25, count: 16}]\n"
+    "camera: {fov: 60, path: [{t: 0, position: [0, -4.5, 0.5], look_at: [0, -7.5, -2.5]}]}\n";
+
+TEST_IMAGE(light_bubbles_show_the_seabed_through) {
+    REQUIRE_GL();
+    char scene[1024];
+    write_scene("bubbles", BUBBLE_SCENE, scene, sizeof scene);
+    static const char *const red = "--set 'render.seabed.color=[0.6, 0.15, 0.1]'";
+    static const char *const green = "--set 'render.seabed.color=[0.1, 0.6, 0.15]'";
+    char args[4][200];
+    snprintf(args[0], sizeof args[0], "%s", red);
+    snprintf(args[1], sizeof args[1], "%s", green);
+    snprintf(args[2], sizeof args[2], "%s --set 'objects.bubbles=[]'", red);
+    snprintf(args[3], sizeof args[3], "%s --set 'objects.bubbles=[]'", green);
+    static const char *const tags[4] = {"bub_red", "bub_green", "none_red", "none_green"};
+    pic p[4];
+    int ok = 1;
+    for (int i = 0; i < 4 && ok; i++) ok = render_frame(scene, 90, "320x180", args[i], tags[i], &p[i]);
+    if (ok) {
+        /* the footprint: the bubbles' axis (the mean column of the pixels they move), in the
+         * rows where they move pixels beside it, the strip of +-3 px along that axis: the
+         * bubbles' middles, where a see-through bubble shows what lies behind it */
+        int w = p[0].w, h = p[0].h;
+        double sx = 0.0;
+        long moved_n = 0;
+        int *row = calloc((size_t)h, sizeof *row);
+        ENSURE(row != NULL);
+        for (int y = 0; row && y < h; y++)
+            for (int x = 0; x < w; x++) {
+                const uint8_t *a = px(&p[0], x, y), *c = px(&p[2], x, y);
+                int moved = 0;
+                for (int k = 0; k < 3; k++)
+                    moved = moved || abs((int)a[k] - (int)c[k]) > BUBBLE_FOOTPRINT;
+                if (!moved) continue;
+                sx += x;
+                moved_n++;
+                row[y]++;
+            }
+        int axis = moved_n ? (int)lround(sx / (double)moved_n) : w / 2;
+        double through = 0.0, bare = 0.0;
+        long n = 0;
+        for (int y = 0; row && y < h; y++) {
+            if (row[y] < 6) continue;
+            for (int x = axis - 3; x <= axis + 3; x++) {
+                const uint8_t *a = px(&p[0], x, y), *b = px(&p[1], x, y);
+                const uint8_t *c = px(&p[2], x, y), *d = px(&p[3], x, y);
+                for (int k = 0; k < 3; k++) {
+                    through += abs((int)a[k] - (int)b[k]);
+                    bare += abs((int)c[k] - (int)d[k]);
+                }
+                n++;
+            }
+        }
+        free(row);
+        double ratio = bare > 0.0 ? through / bare : 0.0;
+        fprintf(stderr, "    %ld pixels along the bubbles' axis (column %d): the seabed's change "
+                "seen through them %.2f of it without them\n", n, axis, ratio);
+        ENSURE_MSG(n > 200, "the bubbles cover only %ld pixels of their axis", n);
+        ENSURE_MSG(ratio >= BUBBLE_SEE_THROUGH, "the bubbles hide the seabed: %.2f < %.2f", ratio,
+                   BUBBLE_SEE_THROUGH);
+    }
+    for (int i = 0; i < 4; i++)
+        if (ok || i == 0) ww_image_free(&p[i].im);
+}
+
 /* ---- the sky ---- */
 
 /* noon, looking away from the sun (north, +z... the sun culminates toward -z) with the camera

@@ -59,6 +59,7 @@ enum {
     SLOT_LURE,
     SLOT_CHEST,
     SLOT_GRID,
+    SLOT_BUBBLE, /* air bubbles: blended, back to front (WW_GEOM_PART_BUBBLES) */
     SLOT_COLUMN, /* glow: drawn additively, never into depth */
     SLOT_COUNT
 };
@@ -67,7 +68,20 @@ static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
     [SLOT_BOX] = WW_MESH_BOX,     [SLOT_SPHERE] = WW_MESH_SPHERE, [SLOT_STONE] = WW_MESH_STONE,
     [SLOT_HULL] = WW_MESH_HULL,   [SLOT_FISH] = WW_MESH_FISH,     [SLOT_LURE] = WW_MESH_LURE,
     [SLOT_CHEST] = WW_MESH_CHEST, [SLOT_GRID] = WW_MESH_GRID,     [SLOT_COLUMN] = WW_MESHGEN_COLUMN,
+    [SLOT_BUBBLE] = WW_MESH_SPHERE,
 };
+
+/* a bubble's squared distance from the camera and its index, for the back-to-front order */
+typedef struct bubble_order {
+    double d2;
+    int index;
+} bubble_order;
+
+static int farther_first(const void *a, const void *b) {
+    const bubble_order *p = a, *q = b;
+    if (p->d2 != q->d2) return p->d2 < q->d2 ? 1 : -1;
+    return p->index - q->index;
+}
 
 /* one mesh on the GPU with its per-instance buffer */
 typedef struct gmesh {
@@ -103,6 +117,7 @@ struct ww_geometry {
     GLuint *image_tex; /* the scene's images a material draws (map_Kd), by asset index; 0 none */
     int nimage;
     GLint mat_kd, mat_ks, mat_ke, mat_map;
+    struct bubble_order *bubble_order; /* scratch: this frame's bubbles, farthest first */
     instance *scratch; /* the largest slot's instances, filled per frame */
     int scratch_cap;
     int draws;         /* instanced draws of the last ww_geometry_draw (tests) */
@@ -321,11 +336,12 @@ static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
     cap[SLOT_LURE] = sc->rod.on ? 1 : 0;
     cap[SLOT_CHEST] = sc->chest.on ? 1 : 0;
     cap[SLOT_COLUMN] = sc->chest.on ? 1 : 0;
-    cap[SLOT_SPHERE] = sc->bubbles.on ? sc->bubbles.total : 0;
+    cap[SLOT_BUBBLE] = sc->bubbles.on ? sc->bubbles.total : 0;
     for (int i = 0; i < sc->models.count; i++) {
         ww_mesh_kind k = sc->models.model[i].mesh;
         for (int s = 1; s < SLOT_COUNT; s++)
-            if (SLOT_KIND[s] == k && k != WW_MESH_NONE && k != WW_MESH_OBJ) cap[s]++;
+            if (SLOT_KIND[s] == k && k != WW_MESH_NONE && k != WW_MESH_OBJ && s != SLOT_BUBBLE)
+                cap[s]++;
     }
 }
 
@@ -338,6 +354,7 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     for (int i = 0; i < g->nimage; i++)
         if (g->image_tex[i]) gl->DeleteTextures(1, &g->image_tex[i]);
     free(g->image_tex);
+    free(g->bubble_order);
     ww_water_ubos_free(gl, &g->ubos);
     free(g->scratch);
     free(g);
@@ -430,6 +447,9 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         for (int k = 0; k < m->nmaterial && rc == WW_OK; k++)
             rc = material_texture(g, gl, sc, m->material[k].texture, err);
     }
+    if (rc == WW_OK && sc->bubbles.on &&
+        !(g->bubble_order = malloc((size_t)sc->bubbles.total * sizeof *g->bubble_order)))
+        rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
     if (rc == WW_OK) {
         g->scratch = malloc((size_t)most * sizeof *g->scratch);
         g->scratch_cap = most;
@@ -684,17 +704,29 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         slot_upload(gl, &g->slot[SLOT_CHEST], in, add_models(sc, st, WW_MESH_CHEST, cam, in, n));
         slot_upload(gl, &g->slot[SLOT_COLUMN], &glow, nglow);
     }
-    if (g->slot[SLOT_SPHERE].cap) {
+    if (g->slot[SLOT_SPHERE].cap)
+        slot_upload(gl, &g->slot[SLOT_SPHERE], in, add_models(sc, st, WW_MESH_SPHERE, cam, in, 0));
+    if (g->slot[SLOT_BUBBLE].cap) {
+        /* back to front: each blends over the ones behind it (ties by index, so the order is
+         * the same on every run) */
+        bubble_order *order = g->bubble_order;
         int n = 0;
-        for (int i = 0; sc->bubbles.on && i < sc->bubbles.total; i++) {
-            if (st->bubble_on[i] == 0.0) continue;
+        for (int i = 0; i < sc->bubbles.total; i++) {
+            if (st->bubble_on[i] == 0) continue;
+            const double *b = st->bubble_pos + 3 * i;
+            double d[3] = {b[0] - cam[0], b[1] - cam[1], b[2] - cam[2]};
+            order[n++] = (bubble_order){d[0] * d[0] + d[1] * d[1] + d[2] * d[2], i};
+        }
+        qsort(order, (size_t)n, sizeof *order, farther_first);
+        for (int k = 0; k < n; k++) {
+            int i = order[k].index;
             double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, m[16], d = 2.0 * st->bubble_radius[i];
             double s[3] = {d, d, d};
-            static const double air[3] = {0.75, 0.88, 0.92};
+            static const double air[3] = {1.0, 1.0, 1.0};
             m4_trs(m, st->bubble_pos + 3 * i, I, s);
-            put(&in[n++], m, cam, air, 0.35, SPEC_WET);
+            put(&in[k], m, cam, air, 0.0, SPEC_WET);
         }
-        slot_upload(gl, &g->slot[SLOT_SPHERE], in, add_models(sc, st, WW_MESH_SPHERE, cam, in, n));
+        slot_upload(gl, &g->slot[SLOT_BUBBLE], in, n);
     }
     if (g->slot[SLOT_GRID].cap)
         slot_upload(gl, &g->slot[SLOT_GRID], in, add_models(sc, st, WW_MESH_GRID, cam, in, 0));
@@ -856,12 +888,23 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     int draws = 0;
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
-        if (s == SLOT_COLUMN || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW)) continue;
+        if (s == SLOT_COLUMN || s == SLOT_BUBBLE || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW))
+            continue;
         if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
         draws += draw_mesh(gl, &g->slot[s]);
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
         draws += draw_obj(g, gl, i, mode);
+    if ((parts & WW_GEOM_PART_BUBBLES) && mode == WW_GEOM_MAIN && g->slot[SLOT_BUBBLE].ninst > 0) {
+        /* over everything already drawn, the sky included; tested against depth, never written */
+        gl->Uniform1i(g->mode, 3);
+        gl->Enable(GL_BLEND);
+        gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied: rim light, then cover */
+        gl->DepthMask(GL_FALSE);
+        draws += draw_mesh(gl, &g->slot[SLOT_BUBBLE]);
+        gl->DepthMask(GL_TRUE);
+        gl->Disable(GL_BLEND);
+    }
 
     g->glow_clip = clip != NULL;
     /* a pass that draws its parts in several calls counts them from the one with the solids */

@@ -41,6 +41,13 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     return WW_OK;
 }
 
+/* the air bubbles last, blended over all that lies behind them (the water, the sky) */
+static void draw_bubbles(ww_renderer *r, const ww_frame *f) {
+    if (r->geometry)
+        ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
+                               WW_GEOM_PART_BUBBLES);
+}
+
 static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
     (void)err;
     main_pass *p = self;
@@ -60,6 +67,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         ww_water_draw(p->water, r, f);
+        draw_bubbles(r, f);
     } else if (!ww_geometry_has_hulls(r->geometry)) {
         /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
          * which the water shows through the prepass) then fails the depth test before it is
@@ -70,6 +78,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
+        draw_bubbles(r, f);
     } else {
         /* with boats: the objects, then the lids over the boats' insides into depth (the insides
          * keep their colour, the water under a lid fails the depth test), then the opaque water,
@@ -85,6 +94,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
+        draw_bubbles(r, f);
     }
     if (p->rt->fbo_ms) {
         /* post: resolve the samples: colour averaged, depth one sample per pixel (NEAREST, the

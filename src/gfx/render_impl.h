@@ -151,7 +151,8 @@ void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, 
 enum {
     WW_GEOM_PART_SOLIDS = 1, /* objects and models */
     WW_GEOM_PART_SEABED = 2,
-    WW_GEOM_PART_ALL = 3
+    WW_GEOM_PART_ALL = 3,    /* the opaque parts */
+    WW_GEOM_PART_BUBBLES = 4 /* the air bubbles: blended, back to front, after the sky */
 };
 void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
                             ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts);
