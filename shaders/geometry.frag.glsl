@@ -50,6 +50,7 @@ out vec4 o_color;
 
 const float WW_SHININESS = 48.0;
 const float WW_ETA_WATER = 1.333;
+const float BUBBLE_DISC_MEAN = 0.55; // a bubble's mean reflectance over its disc (see mode 3)
 const float WW_CAUSTIC_MIN_DET = 0.12; // caps the focus at about 8x (the sun is not a point)
 
 #if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
@@ -113,6 +114,11 @@ void main() {
         vec3 n = normalize(v_normal);
         float c = abs(dot(n, v));
         float refl = smoothstep(0.8, 0.55, c) * 0.85 + 0.04; // TIR past cos 0.66, Fresnel inside
+        // a bubble a few pixels across is sampled near its middle alone: it takes the disc's
+        // mean instead (about half of it is past the critical angle), so a column of small
+        // bubbles reads as the bright specks it is, not as nothing
+        float tiny = clamp(2.0 * length(fwidth(n)) - 0.5, 0.0, 1.0);
+        refl = mix(refl, BUBBLE_DISC_MEAN, tiny);
         vec3 r = reflect(-v, n);
         vec3 l = u_sun_dir;
         vec3 sun = u_sun_color * smoothstep(-0.02, 0.02, u_sun_dir.y);
