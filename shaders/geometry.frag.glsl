@@ -60,6 +60,11 @@ const float WW_CAUSTIC_MIN_DET = 0.12; // caps the focus at about 8x (the sun is
 // det(I - d kappa H), H the Hessian of the height (the irradiance is 1 / |det|, mean 1).
 // H = -sum A k^2 D D^T sin(phi) for every family taken as sines; components shorter than the
 // blur of the sun's disc over the depth (and the pixel) are faded out.
+const int WW_NDETAIL = 6; // gfx/render_impl.h: WW_WATER_NDETAIL
+// the surface's normal-only detail (gfx/waveblock.c), as water.frag.glsl's: (k Dx, k Dz 1/m,
+// slope amplitude A k, phase at the camera rad), longest first
+uniform vec4 u_detail[WW_NDETAIL];
+
 float ww_caustic(vec2 q, float depth) {
     float kappa = 1.0 - 1.0 / WW_ETA_WATER;
     float blur = depth * 2.0 * WW_SUN_RADIUS + 0.05;
@@ -71,6 +76,16 @@ float ww_caustic(vec2 q, float depth) {
         if (f == 0.0) break; // sorted by k: the rest are shorter still
         vec2 d = w.xy / k;
         H -= (f * w.z * k * k * sin(ww_wave_phi(i, q))) * outerProduct(d, d);
+    }
+    // the surface's fine detail (a height (A k / k) sin phi each): the short ripples that make
+    // most of what a seabed shows, long swells alone focusing only a few percent
+    for (int j = 0; j < WW_NDETAIL; j++) {
+        vec4 w = u_detail[j];
+        float k = length(w.xy), L = 2.0 * WW_PI / k;
+        float f = smoothstep(2.0 * blur, 6.0 * blur, L);
+        if (f == 0.0) break; // longest first: the rest are shorter still
+        vec2 d = w.xy / k;
+        H -= (f * w.z * k * sin(w.w + dot(w.xy, q))) * outerProduct(d, d);
     }
     mat2 J = mat2(1.0) - (depth * kappa) * H;
     return 1.0 / max(abs(determinant(J)), WW_CAUSTIC_MIN_DET);

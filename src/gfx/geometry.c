@@ -124,6 +124,8 @@ struct ww_geometry {
     int glow_clip;     /* the last ww_geometry_draw had a clip plane (the glow draws with it) */
     float glow_cyl[6]; /* the glow column, camera-relative: axis x, z, radius, bottom y, top y */
     ww_water_waves waves; /* caustics: the wave field's phases at the camera */
+    float detail[WW_WATER_NDETAIL][4]; /* ... and the surface's detail at the camera */
+    GLint detail_loc;
     ww_water_ubos ubos;
     int caustics;
     /* this frame's lights, camera-relative */
@@ -473,6 +475,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->fog_below_density = ww_gfx_uniform(gl, p, "u_fog_below_density");
     g->extinction = ww_gfx_uniform(gl, p, "u_extinction");
     g->caustics_loc = ww_gfx_uniform(gl, p, "u_caustics");
+    g->detail_loc = ww_gfx_uniform(gl, p, "u_detail");
     g->mode = ww_gfx_uniform(gl, p, "u_mode");
     g->glow = ww_gfx_uniform(gl, p, "u_glow");
     g->glow_y = ww_gfx_uniform(gl, p, "u_glow_y");
@@ -741,10 +744,12 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
     frame_lights(g, sc, st, cam);
 
     if (g->caustics) {
-        /* the wave field's phases at the camera: the shader's positions are camera-relative */
+        /* the wave field's phases at the camera: the shader's positions are camera-relative;
+         * the surface's fine detail focuses the light too */
         double centre[2] = {cam[0], cam[2]};
         ww_water_waves_phases(sc, st, centre, &g->waves);
         ww_water_ubos_upload(gl, &g->ubos, &g->waves, NULL, 0);
+        ww_water_detail(st, centre, g->detail);
     }
 }
 
@@ -878,7 +883,10 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->Uniform3fv(g->lights.color, g->nlights, &g->light_color[0][0]);
         gl->Uniform4fv(g->lights.param, g->nlights, &g->light_param[0][0]);
     }
-    if (g->caustics) gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
+    if (g->caustics) {
+        gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
+        gl->Uniform4fv(g->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
+    }
 
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);

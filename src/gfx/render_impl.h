@@ -273,6 +273,11 @@ void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double 
 /* the pool's live ripples relative to the centre, ages t - t0 in double; returns how many */
 int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double centre[2],
                           ww_ripple_block *b);
+/* the surface's normal-only detail (waveblock.c): WW_WATER_NDETAIL short sines as the shaders
+ * take them, (k Dx, k Dz 1/m, slope amplitude A k, phase at the centre rad), the phases taken at
+ * centre (world x, z) in double */
+#define WW_WATER_NDETAIL 6 /* water.frag.glsl: NDETAIL; geometry.frag.glsl: WW_NDETAIL */
+void ww_water_detail(const ww_state *st, const double centre[2], float d[WW_WATER_NDETAIL][4]);
 /* vs + fs with common.glsl and gerstner.glsl, built for the scene's wave family and ripples;
  * fade 0 turns the distance fade off; more: further #define lines (each ending in a newline)
  * or NULL. Binds the blocks to WW_UBO_WAVES / WW_UBO_RIPPLES and

@@ -321,27 +321,6 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
     *count = n;
 }
 
-/* the normal-only detail of water.frag.glsl: short deep-water sines (wavelength m, direction deg,
- * slope amplitude A k) that only the shading sees, so the near water is not smooth plastic;
- * each fades with the pixel footprint like the waves, and travels at the deep-water speed.
- * Longest first: the shader stops at the first one faded out. */
-#define WATER_NDETAIL 6
-static const double detail_wave[WATER_NDETAIL][3] = {
-    {1.31, 23.0, 0.03},  {0.87, 131.0, 0.03},  {0.61, -52.0, 0.025},
-    {0.43, 77.0, 0.025}, {0.29, 188.0, 0.02},  {0.19, -11.0, 0.02}};
-
-static void detail_waves(const ww_state *st, const double centre[2], float d[WATER_NDETAIL][4]) {
-    for (int j = 0; j < WATER_NDETAIL; j++) {
-        double k = WW_TAU / detail_wave[j][0], a = detail_wave[j][1] * (WW_PI / 180.0);
-        double kx = k * cos(a), kz = k * sin(a), omega = sqrt(9.81 * k);
-        d[j][0] = (float)kx;
-        d[j][1] = (float)kz;
-        d[j][2] = (float)detail_wave[j][2];
-        /* as the wave phases: the wrap of omega t alone keeps it exact at large t */
-        d[j][3] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] - ww_m_wrap_tau(omega * st->t));
-    }
-}
-
 /* the DuDv pattern's two layers (water.frag.glsl): layer j maps a rest offset p (m) to lattice
  * cells M_j p + o_j, with M_j = cells per metre x a rotation and o_j = M_j (centre + drift_j t)
  * wrapped to the lattice period in double, so the pattern is fixed to the world, drifts, and
@@ -427,9 +406,9 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     gl->Uniform3f(w->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
     gl->Uniform1f(w->fog_below_density, (float)sc->render.fog_below_density);
     gl->Uniform2f(w->alpha, lk->alpha_blend ? 1.0f : 0.0f, (float)lk->alpha);
-    float det[WATER_NDETAIL][4];
-    detail_waves(f->st, centre, det);
-    gl->Uniform4fv(w->detail, WATER_NDETAIL, &det[0][0]);
+    float det[WW_WATER_NDETAIL][4];
+    ww_water_detail(f->st, centre, det);
+    gl->Uniform4fv(w->detail, WW_WATER_NDETAIL, &det[0][0]);
     set_foam_memory(w, gl, sc);
     bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);

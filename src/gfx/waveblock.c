@@ -200,3 +200,23 @@ void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u) {
     if (u->ripples) gl->DeleteBuffers(1, &u->ripples);
     *u = (ww_water_ubos){0};
 }
+
+/* the normal-only detail of the surface: short deep-water sines (wavelength m, direction deg,
+ * slope amplitude A k) that only the shading sees (the water's normals so the near water is not
+ * smooth plastic, the caustics their focus), never the physics; each travels at the
+ * deep-water speed. Longest first: the shaders stop at the first one faded out. */
+static const double detail_wave[WW_WATER_NDETAIL][3] = {
+    {1.31, 23.0, 0.03},  {0.87, 131.0, 0.03},  {0.61, -52.0, 0.025},
+    {0.43, 77.0, 0.025}, {0.29, 188.0, 0.02},  {0.19, -11.0, 0.02}};
+
+void ww_water_detail(const ww_state *st, const double centre[2], float d[WW_WATER_NDETAIL][4]) {
+    for (int j = 0; j < WW_WATER_NDETAIL; j++) {
+        double k = WW_TAU / detail_wave[j][0], a = detail_wave[j][1] * (WW_PI / 180.0);
+        double kx = k * cos(a), kz = k * sin(a), omega = sqrt(9.81 * k);
+        d[j][0] = (float)kx;
+        d[j][1] = (float)kz;
+        d[j][2] = (float)detail_wave[j][2];
+        /* as the wave phases: the wrap of omega t alone keeps it exact at large t */
+        d[j][3] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] - ww_m_wrap_tau(omega * st->t));
+    }
+}
