@@ -33,3 +33,13 @@ int ww_num_text_near(char *buf, size_t cap, double v, double tol) {
     }
     return ww_num_text(buf, cap, w);
 }
+
+void ww_num_json(FILE *to, double v) {
+    char t[WW_NUM_TEXT];
+    if (!isfinite(v)) {
+        fputs("null", to);
+        return;
+    }
+    ww_num_text(t, sizeof t, v);
+    fputs(t, to);
+}

@@ -10,6 +10,7 @@
 #define WW_NUMFMT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* room for any double's text ("-2.2250738585072014e-308" and the NUL) */
 #define WW_NUM_TEXT 32
@@ -26,5 +27,8 @@ int ww_num_text(char *buf, size_t cap, double v);
  * second of 0.1:0.4:4), so the text is the number they meant and the run uses exactly it.
  * tol <= 0 is ww_num_text. */
 int ww_num_text_near(char *buf, size_t cap, double v, double tol);
+
+/* v as a JSON number in ww_num_text's form; JSON has no NaN or infinity: those are null */
+void ww_num_json(FILE *to, double v);
 
 #endif

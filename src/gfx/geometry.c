@@ -822,6 +822,8 @@ int ww_geometry_draw_count(const ww_geometry *g) { return g ? g->draws : 0; }
 
 int ww_geometry_has_hulls(const ww_geometry *g) { return g && g->hull_cap.cap > 0; }
 
+int ww_geometry_has_bubbles(const ww_geometry *g) { return g && g->slot[SLOT_BUBBLE].cap > 0; }
+
 void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
                             ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts) {
     const ww_gl *gl = r->gl;

@@ -43,7 +43,7 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
 
 /* the air bubbles last, blended over all that lies behind them (the water, the sky) */
 static void draw_bubbles(ww_renderer *r, const ww_frame *f) {
-    if (r->geometry)
+    if (ww_geometry_has_bubbles(r->geometry))
         ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
                                WW_GEOM_PART_BUBBLES);
 }

@@ -163,6 +163,8 @@ void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *
 /* 1 when the scene has a boat or hull models (a lid to draw), so the main pass pays for the
  * mask's order only then */
 int ww_geometry_has_hulls(const ww_geometry *g);
+/* the scene has air bubbles to draw (WW_GEOM_PART_BUBBLES) */
+int ww_geometry_has_bubbles(const ww_geometry *g);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
 int ww_geometry_draw_count(const ww_geometry *g);

@@ -409,7 +409,7 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     float det[WW_WATER_NDETAIL][4];
     ww_water_detail(f->st, centre, det);
     gl->Uniform4fv(w->detail, WW_WATER_NDETAIL, &det[0][0]);
-    set_foam_memory(w, gl, sc);
+    if (w->foam_n > 0) set_foam_memory(w, gl, sc); /* else the shader has no memory built in */
     bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);

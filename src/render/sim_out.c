@@ -10,34 +10,23 @@
 #include "core/numfmt.h"
 #include "sim/events.h"
 
-/* the shortest text that reads back as the same double (core/numfmt.h); JSON has no NaN */
-static void put_num(FILE *to, double v) {
-    char t[WW_NUM_TEXT];
-    if (!isfinite(v)) {
-        fputs("null", to);
-        return;
-    }
-    ww_num_text(t, sizeof t, v);
-    fputs(t, to);
-}
-
 int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to) {
     int n = ww_events_count(sc, st);
     for (int i = 0; i < n; i++) {
         const double *e = st->events + i * WW_SIM_EVENT_STRIDE;
         fprintf(to, "{\"step\":%lld,\"t\":", (long long)st->step);
-        put_num(to, st->t);
+        ww_num_json(to, st->t);
         fprintf(to, ",\"kind\":\"%s\",\"object\":%d,\"pos\":[",
                 ww_sim_event_name((ww_sim_event_kind)(int)e[0]), (int)e[1]);
-        put_num(to, e[2]);
+        ww_num_json(to, e[2]);
         fputc(',', to);
-        put_num(to, e[3]);
+        ww_num_json(to, e[3]);
         fputc(',', to);
-        put_num(to, e[4]);
+        ww_num_json(to, e[4]);
         fputs("],\"magnitude\":", to);
-        put_num(to, e[5]);
+        ww_num_json(to, e[5]);
         fputs(",\"aux\":", to);
-        put_num(to, e[6]);
+        ww_num_json(to, e[6]);
         fputs("}\n", to);
     }
     return n;
@@ -55,13 +44,5 @@ const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char 
     WW_STATE_FIELDS(WW_FIELD_BY_NAME)
 #undef WW_FIELD_BY_NAME
     *count = 0;
-    return NULL;
-}
-
-const char *ww_state_field_system(const char *name) {
-#define WW_FIELD_SYSTEM(type, fname, n, sys, comment)                                             \
-    if (strcmp(name, #fname) == 0) return sys;
-    WW_STATE_FIELDS(WW_FIELD_SYSTEM)
-#undef WW_FIELD_SYSTEM
     return NULL;
 }

@@ -1,6 +1,5 @@
 /* sim_out.h - what the simulation tools read out of a state beyond the trace: the step's events as
- * JSON lines (`simulate --events`), a state field by name (bench sim's metrics), and the system
- * that owns a field (so a NaN report names system, field, index and step).
+ * JSON lines (`simulate --events`) and a state field by name (bench sim's metrics).
  *
  *   ww_step(sc, st, &err);
  *   ww_sim_events_write(sc, st, file);          // one line per event in the outbox
@@ -26,8 +25,5 @@ int ww_sim_events_write(const ww_scene *sc, const ww_state *st, FILE *to);
 const double *ww_state_field(const ww_scene *sc, const ww_state *st, const char *name,
                              long long *count);
 
-/* the system a field belongs to, as its state table says: a name of scene.h's WW_SYSTEM_LIST
- * ("cubes", "rod", "fish", "camera", ...) or "events" (the outbox); NULL for no such field */
-const char *ww_state_field_system(const char *name);
 
 #endif

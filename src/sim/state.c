@@ -71,27 +71,16 @@ uint64_t ww_state_hash(const ww_scene *sc, const ww_state *st) {
     return ww_hash_bytes(h, (const unsigned char *)st + header_bytes(), st->bytes - header_bytes());
 }
 
-/* the shortest text that reads back as the same double (core/numfmt.h); JSON has no NaN */
-static void put_num(FILE *to, double v) {
-    char t[WW_NUM_TEXT];
-    if (!isfinite(v)) {
-        fputs("null", to);
-        return;
-    }
-    ww_num_text(t, sizeof t, v);
-    fputs(t, to);
-}
-
 static void put_array(FILE *to, const char *name, const double *v, long long n) {
     fprintf(to, ",\"%s\":", name);
     if (n == 1) {
-        put_num(to, v[0]);
+        ww_num_json(to, v[0]);
         return;
     }
     fputc('[', to);
     for (long long i = 0; i < n; i++) {
         if (i) fputc(',', to);
-        put_num(to, v[i]);
+        ww_num_json(to, v[i]);
     }
     fputc(']', to);
 }
@@ -118,7 +107,7 @@ static int finite_int(int32_t v) { return (void)v, 1; }
 
 void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
     fprintf(to, "{\"step\":%lld,\"t\":", (long long)st->step);
-    put_num(to, st->t);
+    ww_num_json(to, st->t);
 #define WW_STATE_JSON(type, name, count, sys, comment)                                            \
     PUT_FIELD(to, #name, st->name, (long long)(count));
     WW_STATE_FIELDS(WW_STATE_JSON)

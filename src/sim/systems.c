@@ -68,12 +68,6 @@ const ww_system_row *ww_systems(int *n) {
     return ROWS;
 }
 
-const ww_system_row *ww_system_row_of(ww_system id) {
-    for (int i = 0; i < NROWS; i++)
-        if (ROWS[i].id == id) return &ROWS[i];
-    return NULL;
-}
-
 const ww_system_row *ww_system_taking(ww_event_kind k) {
     for (int i = 0; i < NROWS; i++)
         if (ROWS[i].takes & TAKES(k)) return &ROWS[i];

@@ -46,8 +46,6 @@ typedef struct ww_system_row {
 
 /* the table, in the order its rows run; *n rows */
 const ww_system_row *ww_systems(int *n);
-/* the row of system id, or NULL when the table has none */
-const ww_system_row *ww_system_row_of(ww_system id);
 /* the row that takes script event kind k, or NULL */
 const ww_system_row *ww_system_taking(ww_event_kind k);
 /* whether the scene runs row r */
