@@ -64,6 +64,41 @@ const int WW_NDETAIL = 6; // gfx/render_impl.h: WW_WATER_NDETAIL
 // the surface's normal-only detail (gfx/waveblock.c), as water.frag.glsl's: (k Dx, k Dz 1/m,
 // slope amplitude A k, phase at the camera rad), longest first
 uniform vec4 u_detail[WW_NDETAIL];
+// the water's DuDv pattern (water.frag.glsl; gfx/waveblock.c: ww_water_dudv): per layer the mat2
+// from camera-relative metres to lattice cells and the offset, and (DETAIL_SLOPE / cells per
+// metre, 0): the height of the small ripples it stands for per unit of noise
+uniform vec4 u_dudv_m[2];
+uniform vec2 u_dudv_o[2];
+uniform vec2 u_dudv_h;
+const float DUDV_WEIGHT0 = 0.6; // water.frag.glsl: LAYER_WEIGHT0, LAYER_WEIGHT1
+const float DUDV_WEIGHT1 = 0.4;
+
+// water.frag.glsl's lattice hash (PCG output permutation, 256 cells), so the caustics see the
+// same ripples the water's shading draws
+float ww_dudv_hash(ivec2 c) {
+    uvec2 q = uvec2(c & 255);
+    uint h = q.x + q.y * 256u;
+    h = h * 747796405u + 2891336453u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    return float(h) * (1.0 / 4294967295.0);
+}
+
+// the Hessian (d2n/dx2, d2n/dy2, d2n/dxdy, in cells) of the DuDv's value noise in [-1, 1]: the
+// same lattice values, interpolated with the quintic fade 6f^5 - 15f^4 + 10f^3 (Perlin,
+// "Improving Noise", 2002) whose second derivative vanishes at the cell edges. With the water's
+// cubic fade the curvature jumps at every edge and the caustics would draw the lattice.
+vec3 ww_dudv_hessian(vec2 x) {
+    vec2 i = floor(x), f = x - i;
+    vec2 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
+    vec2 du = 30.0 * f * f * (f * (f - 2.0) + 1.0);
+    vec2 ddu = 60.0 * f * (f - 1.0) * (2.0 * f - 1.0);
+    ivec2 c = ivec2(i);
+    float a = ww_dudv_hash(c), b = ww_dudv_hash(c + ivec2(1, 0));
+    float d = ww_dudv_hash(c + ivec2(0, 1)), e = ww_dudv_hash(c + ivec2(1, 1));
+    float k = a - b - d + e;
+    return 2.0 * vec3(ddu.x * (b - a + k * u.y), ddu.y * (d - a + k * u.x), k * du.x * du.y);
+}
 
 float ww_caustic(vec2 q, float depth) {
     float kappa = 1.0 - 1.0 / WW_ETA_WATER;
@@ -86,6 +121,18 @@ float ww_caustic(vec2 q, float depth) {
         if (f == 0.0) break; // longest first: the rest are shorter still
         vec2 d = w.xy / k;
         H -= (f * w.z * k * sin(w.w + dot(w.xy, q))) * outerProduct(d, d);
+    }
+    // the irregular small ripples the water's DuDv pattern draws (seed 002): a height
+    // u_dudv_h.x sum_j w_j n_j(M_j q + o_j), whose Hessian is M_j^T Hn M_j per layer. Without
+    // them, 10 m down only the two longest detail sines outlast the sun's blur and their
+    // product draws a plaid; real caustics there are an irregular web.
+    for (int j = 0; j < 2; j++) {
+        mat2 m = mat2(u_dudv_m[j].xy, u_dudv_m[j].zw);
+        float f = smoothstep(2.0 * blur, 6.0 * blur, 1.0 / length(m[0])); // a cell, m
+        if (f == 0.0) continue;
+        vec3 hn = ww_dudv_hessian(m * q + u_dudv_o[j]);
+        mat2 hc = mat2(hn.x, hn.z, hn.z, hn.y);
+        H += (f * u_dudv_h.x * (j == 0 ? DUDV_WEIGHT0 : DUDV_WEIGHT1)) * (transpose(m) * hc * m);
     }
     mat2 J = mat2(1.0) - (depth * kappa) * H;
     return 1.0 / max(abs(determinant(J)), WW_CAUSTIC_MIN_DET);

@@ -47,6 +47,7 @@
 #define WATER_EXTINCTION_R 0.45
 #define WATER_EXTINCTION_G 0.09
 #define WATER_EXTINCTION_B 0.07
+#define WATER_DETAIL_SLOPE 0.06   /* water.frag.glsl: DETAIL_SLOPE, the DuDv ripples' slope */
 
 /* the shared slots: one instanced draw each */
 enum {
@@ -125,7 +126,8 @@ struct ww_geometry {
     float glow_cyl[6]; /* the glow column, camera-relative: axis x, z, radius, bottom y, top y */
     ww_water_waves waves; /* caustics: the wave field's phases at the camera */
     float detail[WW_WATER_NDETAIL][4]; /* ... and the surface's detail at the camera */
-    GLint detail_loc;
+    float dudv_m[2][4], dudv_o[2][2];  /* ... and its DuDv ripples (ww_water_dudv) */
+    GLint detail_loc, dudv_m_loc, dudv_o_loc, dudv_h_loc;
     ww_water_ubos ubos;
     int caustics;
     /* this frame's lights, camera-relative */
@@ -476,6 +478,9 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->extinction = ww_gfx_uniform(gl, p, "u_extinction");
     g->caustics_loc = ww_gfx_uniform(gl, p, "u_caustics");
     g->detail_loc = ww_gfx_uniform(gl, p, "u_detail");
+    g->dudv_m_loc = ww_gfx_uniform(gl, p, "u_dudv_m");
+    g->dudv_o_loc = ww_gfx_uniform(gl, p, "u_dudv_o");
+    g->dudv_h_loc = ww_gfx_uniform(gl, p, "u_dudv_h");
     g->mode = ww_gfx_uniform(gl, p, "u_mode");
     g->glow = ww_gfx_uniform(gl, p, "u_glow");
     g->glow_y = ww_gfx_uniform(gl, p, "u_glow_y");
@@ -750,6 +755,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         ww_water_waves_phases(sc, st, centre, &g->waves);
         ww_water_ubos_upload(gl, &g->ubos, &g->waves, NULL, 0);
         ww_water_detail(st, centre, g->detail);
+        ww_water_dudv(sc, st, centre, g->dudv_m, g->dudv_o);
     }
 }
 
@@ -888,6 +894,11 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     if (g->caustics) {
         gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
         gl->Uniform4fv(g->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
+        gl->Uniform4fv(g->dudv_m_loc, 2, &g->dudv_m[0][0]);
+        gl->Uniform2fv(g->dudv_o_loc, 2, &g->dudv_o[0][0]);
+        /* the ripples' height per unit of noise: water.frag.glsl's DETAIL_SLOPE times a cell */
+        double scale = sc->render.water.distortion_scale;
+        gl->Uniform2f(g->dudv_h_loc, scale > 0.0 ? (float)(WATER_DETAIL_SLOPE / scale) : 0.0f, 0.0f);
     }
 
     gl->Enable(GL_DEPTH_TEST);

@@ -280,6 +280,11 @@ int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double c
  * centre (world x, z) in double */
 #define WW_WATER_NDETAIL 6 /* water.frag.glsl: NDETAIL; geometry.frag.glsl: WW_NDETAIL */
 void ww_water_detail(const ww_state *st, const double centre[2], float d[WW_WATER_NDETAIL][4]);
+/* the water's DuDv pattern (waveblock.c): per layer the mat2 (column-major) from metres
+ * relative to `centre` to lattice cells, and the offset there (water.frag.glsl, and the
+ * caustics of geometry.frag.glsl, which see it as the surface's small irregular ripples) */
+void ww_water_dudv(const ww_scene *sc, const ww_state *st, const double centre[2], float m[2][4],
+                   float o[2][2]);
 /* vs + fs with common.glsl and gerstner.glsl, built for the scene's wave family and ripples;
  * fade 0 turns the distance fade off; more: further #define lines (each ending in a newline)
  * or NULL. Binds the blocks to WW_UBO_WAVES / WW_UBO_RIPPLES and
