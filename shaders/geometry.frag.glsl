@@ -14,7 +14,7 @@
 // 3 an air bubble (blended, premultiplied).
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
-// Defines: WW_CAUSTICS 1 when water.look.caustics is on.
+// Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture.
 
 #ifndef WW_CAUSTICS
 #define WW_CAUSTICS 0
@@ -53,7 +53,7 @@ const float WW_ETA_WATER = 1.333;
 const float BUBBLE_DISC_MEAN = 0.55; // a bubble's mean reflectance over its disc (see mode 3)
 const float WW_CAUSTIC_MIN_DET = 0.12; // caps the focus at about 8x (the sun is not a point)
 
-#if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
+#if WW_CAUSTICS == 1 && WW_WAVE_MODEL != WW_MODEL_FLAT
 // caustics: the refracted sun through the surface above lands at x = q + d T(n(q)); to first
 // order in the slope T_xz = -kappa grad h with kappa = 1 - 1 / eta, so the landing map is
 // q -> q - d kappa grad h(q) and the light it carries spreads by its Jacobian determinant
@@ -136,6 +136,25 @@ float ww_caustic(vec2 q, float depth) {
     }
     mat2 J = mat2(1.0) - (depth * kappa) * H;
     return 1.0 / max(abs(determinant(J)), WW_CAUSTIC_MIN_DET);
+}
+#endif
+
+#if WW_CAUSTICS == 2
+// method texture: seed 003's looped set of caustic frames (gfx/caustic_set.c), computed from the
+// wave field on a periodic patch and focused at the seabed's depth; sampled at the surface point
+// q the refracted sun ray left from, the two frames of this instant blended
+uniform sampler2DArray u_caustic_set;
+uniform vec4 u_caustic_set_at;    // (camera x, z wrapped to the patch m; 1 / patch 1/m; depth m)
+uniform vec3 u_caustic_set_frame; // (frame, next frame, the next one's weight)
+
+float ww_caustic(vec2 q, float depth) {
+    vec2 uv = (q + u_caustic_set_at.xy) * u_caustic_set_at.z;
+    float a = texture(u_caustic_set, vec3(uv, u_caustic_set_frame.x)).r;
+    float b = texture(u_caustic_set, vec3(uv, u_caustic_set_frame.y)).r;
+    float c = mix(a, b, u_caustic_set_frame.z);
+    // shallower than the depth it was focused at, the focusing d kappa H grows with the depth
+    // (to first order): the contrast scales down with it
+    return 1.0 + (c - 1.0) * min(depth / u_caustic_set_at.w, 1.0);
 }
 #endif
 
@@ -280,7 +299,7 @@ void main() {
             sun *= (1.0 - (0.02 + 0.98 * m2 * m2 * m)) * ci / max(-ts.y, 1e-3);
         }
         amb *= t;
-#if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
+#if WW_CAUSTICS == 2 || (WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT)
         // the surface point the refracted sun ray through p left from (camera-relative xz)
         vec3 tr = refract(-u_sun_dir, vec3(0.0, 1.0, 0.0), 1.0 / WW_ETA_WATER);
         vec2 q = p.xz - tr.xz * (depth / min(tr.y, -0.05));

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "core/mathx.h"
+#include "gfx/caustic_set.h"
 #include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
 
@@ -41,6 +42,7 @@
 #define GLOW_NEAR_MIN 0.2
 #define WW_TEX_SHADOW 3            /* texture unit of the shadow map (shaders/shadow.glsl) */
 #define WW_TEX_MATERIAL 4          /* texture unit of an OBJ material's map_Kd */
+#define WW_TEX_CAUSTIC_SET 5       /* texture unit of the caustics' looped set (method texture) */
 #define SPEC_DEFAULT 0.25         /* sun highlight on most things */
 #define SPEC_WET 0.6              /* on fish and bubbles */
 /* sunlight lost per metre of water (red goes first): seed 003's green-blue under water */
@@ -129,7 +131,11 @@ struct ww_geometry {
     float dudv_m[2][4], dudv_o[2][2];  /* ... and its DuDv ripples (ww_water_dudv) */
     GLint detail_loc, dudv_m_loc, dudv_o_loc, dudv_h_loc;
     ww_water_ubos ubos;
-    int caustics;
+    int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
+    GLuint caustic_tex; /* method texture: the set, a 2D array of single-channel frames */
+    ww_caustic_set cset;
+    float cset_at[4], cset_frame[3]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
+    GLint cset_loc, cset_at_loc, cset_frame_loc;
     /* this frame's lights, camera-relative */
     int nlights;
     float light_pos[WW_MAX_LIGHTS][3], light_dir[WW_MAX_LIGHTS][3], light_color[WW_MAX_LIGHTS][3],
@@ -360,6 +366,8 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     free(g->image_tex);
     free(g->bubble_order);
     ww_water_ubos_free(gl, &g->ubos);
+    if (g->caustic_tex) gl->DeleteTextures(1, &g->caustic_tex);
+    ww_caustic_set_free(&g->cset);
     free(g->scratch);
     free(g);
 }
@@ -410,17 +418,43 @@ static ww_result material_texture(ww_geometry *g, const ww_gl *gl, const ww_scen
     return WW_OK;
 }
 
+/* method texture: the looped set computed once (caustic_set.c), uploaded as a 2D array of
+ * half-float frames, mipmapped so the far seabed averages toward the mean, repeating */
+static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, ww_error *err) {
+    ww_result rc = ww_caustic_set_make(sc, &g->cset, err);
+    if (rc != WW_OK) return rc;
+    const ww_caustic_set *cs = &g->cset;
+    gl->GenTextures(1, &g->caustic_tex);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl->TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_R16F, cs->size, cs->size, cs->frames, 0, GL_RED,
+                   GL_FLOAT, cs->texel);
+    gl->GenerateMipmap(GL_TEXTURE_2D_ARRAY);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    GLenum e = gl->GetError();
+    if (e != GL_NO_ERROR)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "caustics: the texture set raised GL error 0x%04x",
+                            (unsigned)e);
+    return WW_OK;
+}
+
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err) {
     const ww_gl *gl = r->gl;
     ww_geometry *g = calloc(1, sizeof *g);
     if (!g) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
     g->uploaded = -1;
     g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
+    if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
     ww_result rc = make_program(g, gl, sc, err);
-    if (rc == WW_OK && g->caustics) {
+    if (rc == WW_OK && g->caustics == 1) {
         ww_water_waves_init(sc, &g->waves);
         rc = ww_water_ubos_new(gl, sc, &g->waves, &g->ubos, err);
     }
+    if (rc == WW_OK && g->caustics == 2) rc = caustic_set_new(g, gl, sc, err);
     int cap[SLOT_COUNT], most = 1;
     slot_caps(sc, cap);
     if (rc == WW_OK && cap[SLOT_SEABED]) rc = seabed_new(gl, &g->slot[SLOT_SEABED], err);
@@ -481,6 +515,9 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->dudv_m_loc = ww_gfx_uniform(gl, p, "u_dudv_m");
     g->dudv_o_loc = ww_gfx_uniform(gl, p, "u_dudv_o");
     g->dudv_h_loc = ww_gfx_uniform(gl, p, "u_dudv_h");
+    g->cset_loc = ww_gfx_uniform(gl, p, "u_caustic_set");
+    g->cset_at_loc = ww_gfx_uniform(gl, p, "u_caustic_set_at");
+    g->cset_frame_loc = ww_gfx_uniform(gl, p, "u_caustic_set_frame");
     g->mode = ww_gfx_uniform(gl, p, "u_mode");
     g->glow = ww_gfx_uniform(gl, p, "u_glow");
     g->glow_y = ww_gfx_uniform(gl, p, "u_glow_y");
@@ -748,7 +785,20 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
     (void)one;
     frame_lights(g, sc, st, cam);
 
-    if (g->caustics) {
+    if (g->caustics == 2) {
+        /* the set: the camera wrapped to its patch (double), the two frames of this instant */
+        const ww_caustic_set *cs = &g->cset;
+        int i0, i1;
+        double w;
+        ww_caustic_set_frame(cs, st->t, &i0, &i1, &w);
+        g->cset_at[0] = (float)(cam[0] - cs->patch * floor(cam[0] / cs->patch));
+        g->cset_at[1] = (float)(cam[2] - cs->patch * floor(cam[2] / cs->patch));
+        g->cset_at[2] = (float)(1.0 / cs->patch);
+        g->cset_at[3] = (float)cs->depth;
+        g->cset_frame[0] = (float)i0;
+        g->cset_frame[1] = (float)i1;
+        g->cset_frame[2] = (float)w;
+    } else if (g->caustics) {
         /* the wave field's phases at the camera: the shader's positions are camera-relative;
          * the surface's fine detail focuses the light too */
         double centre[2] = {cam[0], cam[2]};
@@ -891,7 +941,14 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->Uniform3fv(g->lights.color, g->nlights, &g->light_color[0][0]);
         gl->Uniform4fv(g->lights.param, g->nlights, &g->light_param[0][0]);
     }
-    if (g->caustics) {
+    if (g->caustics == 2) {
+        gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_CAUSTIC_SET);
+        gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
+        gl->ActiveTexture(GL_TEXTURE0);
+        gl->Uniform1i(g->cset_loc, WW_TEX_CAUSTIC_SET);
+        gl->Uniform4fv(g->cset_at_loc, 1, g->cset_at);
+        gl->Uniform3fv(g->cset_frame_loc, 1, g->cset_frame);
+    } else if (g->caustics) {
         gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
         gl->Uniform4fv(g->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
         gl->Uniform4fv(g->dudv_m_loc, 2, &g->dudv_m[0][0]);

@@ -57,6 +57,8 @@ static const char *const SKY_WORDS[] = {[WW_SKY_GRADIENT] = "gradient",
                                         [WW_SKY_PREETHAM] = "preetham", NULL};
 static const char *const FRESNEL_WORDS[] = {[WW_FRESNEL_BIAS_SCALE] = "bias_scale",
                                             [WW_FRESNEL_SCHLICK] = "schlick", NULL};
+static const char *const CAUSTICS_WORDS[] = {[WW_CAUSTICS_ANALYTIC] = "analytic",
+                                             [WW_CAUSTICS_TEXTURE] = "texture", NULL};
 static const char *const LIGHT_WORDS[] = {[WW_LIGHT_POINT] = "point", [WW_LIGHT_SPOT] = "spot",
                                           NULL};
 static const char *const BOOL_WORDS[] = {"false", "true", NULL};
@@ -335,7 +337,7 @@ ww_result wwc_water_look(ctx *c, const section *water) {
                                        "distortion_speed", "specular", "foam", "murk",
                                        "caustics", "alpha_blend", NULL};
     static const char *const foam_keys[] = {"on", "amount", "life", NULL};
-    static const char *const caustic_keys[] = {"on", "strength", NULL};
+    static const char *const caustic_keys[] = {"on", "strength", "method", NULL};
     static const char *const alpha_keys[] = {"on", "alpha", NULL};
     ww_water_look *w = &c->sc->render.water;
     section s, f;
@@ -356,6 +358,9 @@ ww_result wwc_water_look(ctx *c, const section *water) {
     TRY(wwc_get_number(c, &f, "life", &R_FOAM_LIFE, OPTIONAL, &w->foam_life));
     TRY(get_feature(c, &s, "caustics", caustic_keys, &w->caustics, &f));
     TRY(wwc_get_number(c, &f, "strength", &R_STRENGTH, OPTIONAL, &w->caustics_strength));
+    int method = (int)w->caustics_method;
+    TRY(wwc_get_word(c, &f, "method", CAUSTICS_WORDS, &method));
+    w->caustics_method = (ww_caustics_method)method;
     TRY(get_feature(c, &s, "alpha_blend", alpha_keys, &w->alpha_blend, &f));
     return wwc_get_number(c, &f, "alpha", &R_UNIT, OPTIONAL, &w->alpha);
 }

@@ -57,6 +57,10 @@ typedef struct ww_shafts_desc {
     double scale;      /* target size as a fraction of the frame's */
 } ww_shafts_desc;
 
+/* how caustics are drawn: the focusing of the wave field's curvature per pixel, or seed 003's
+ * looped set of caustic textures computed from the wave field when the renderer is made */
+typedef enum ww_caustics_method { WW_CAUSTICS_ANALYTIC = 0, WW_CAUSTICS_TEXTURE } ww_caustics_method;
+
 /* the water's optics (seeds 000, 002, 004) */
 typedef struct ww_water_look {
     ww_fresnel fresnel;          /* bias + scale (1 - v.n)^power, or Schlick with F0 */
@@ -71,6 +75,7 @@ typedef struct ww_water_look {
     double murk;                 /* extinction under water for refraction, 1/m */
     int caustics;                /* animated caustics on surfaces under water */
     double caustics_strength;
+    ww_caustics_method caustics_method; /* focused per pixel, or a looped set of textures */
     int alpha_blend;             /* seed 004: the surface alpha-blended over what lies below */
     double alpha;                /* its opacity at normal incidence */
 } ww_water_look;
