@@ -145,13 +145,13 @@ float ww_caustic(vec2 q, float depth) {
 // q the refracted sun ray left from, the two frames of this instant blended
 uniform sampler2DArray u_caustic_set;
 uniform vec4 u_caustic_set_at;    // (camera x, z wrapped to the patch m; 1 / patch 1/m; depth m)
-uniform vec3 u_caustic_set_frame; // (frame, next frame, the next one's weight)
+uniform vec2 u_caustic_set_frame; // (frame, the next one's weight)
 
 float ww_caustic(vec2 q, float depth) {
     vec2 uv = (q + u_caustic_set_at.xy) * u_caustic_set_at.z;
-    float a = texture(u_caustic_set, vec3(uv, u_caustic_set_frame.x)).r;
-    float b = texture(u_caustic_set, vec3(uv, u_caustic_set_frame.y)).r;
-    float c = mix(a, b, u_caustic_set_frame.z);
+    // layer i holds frames i and i + 1: one lookup for both
+    vec2 ab = texture(u_caustic_set, vec3(uv, u_caustic_set_frame.x)).rg;
+    float c = mix(ab.x, ab.y, u_caustic_set_frame.y);
     // shallower than the depth it was focused at, the focusing d kappa H grows with the depth
     // (to first order): the contrast scales down with it
     return 1.0 + (c - 1.0) * min(depth / u_caustic_set_at.w, 1.0);

@@ -134,7 +134,7 @@ struct ww_geometry {
     int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
     GLuint caustic_tex; /* method texture: the set, a 2D array of single-channel frames */
     ww_caustic_set cset;
-    float cset_at[4], cset_frame[3]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
+    float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
     GLint cset_loc, cset_at_loc, cset_frame_loc;
     /* this frame's lights, camera-relative */
     int nlights;
@@ -419,7 +419,7 @@ static ww_result material_texture(ww_geometry *g, const ww_gl *gl, const ww_scen
 }
 
 /* method texture: the looped set computed once (caustic_set.c), uploaded as a 2D array of
- * half-float frames, mipmapped so the far seabed averages toward the mean, repeating */
+ * half-float frame pairs, mipmapped so the far seabed averages toward the mean, repeating */
 static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, ww_error *err) {
     ww_result rc = ww_caustic_set_make(sc, &g->cset, err);
     if (rc != WW_OK) return rc;
@@ -427,8 +427,21 @@ static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene
     gl->GenTextures(1, &g->caustic_tex);
     gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    gl->TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_R16F, cs->size, cs->size, cs->frames, 0, GL_RED,
-                   GL_FLOAT, cs->texel);
+    /* layer i holds frames i and i + 1 (looped) in red and green: one lookup blends them */
+    size_t per = (size_t)cs->size * (size_t)cs->size;
+    float *pair = malloc(2 * per * (size_t)cs->frames * sizeof *pair);
+    if (!pair) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "caustics: out of memory");
+    for (int f = 0; f < cs->frames; f++) {
+        const float *a = cs->texel + per * (size_t)f, *b = cs->texel + per * (size_t)((f + 1) % cs->frames);
+        float *o = pair + 2 * per * (size_t)f;
+        for (size_t i = 0; i < per; i++) {
+            o[2 * i] = a[i];
+            o[2 * i + 1] = b[i];
+        }
+    }
+    gl->TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RG16F, cs->size, cs->size, cs->frames, 0, GL_RG,
+                   GL_FLOAT, pair);
+    free(pair);
     gl->GenerateMipmap(GL_TEXTURE_2D_ARRAY);
     gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -795,9 +808,9 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         g->cset_at[1] = (float)(cam[2] - cs->patch * floor(cam[2] / cs->patch));
         g->cset_at[2] = (float)(1.0 / cs->patch);
         g->cset_at[3] = (float)cs->depth;
+        (void)i1; /* layer i0 holds frame i1 too */
         g->cset_frame[0] = (float)i0;
-        g->cset_frame[1] = (float)i1;
-        g->cset_frame[2] = (float)w;
+        g->cset_frame[1] = (float)w;
     } else if (g->caustics) {
         /* the wave field's phases at the camera: the shader's positions are camera-relative;
          * the surface's fine detail focuses the light too */
@@ -947,7 +960,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->ActiveTexture(GL_TEXTURE0);
         gl->Uniform1i(g->cset_loc, WW_TEX_CAUSTIC_SET);
         gl->Uniform4fv(g->cset_at_loc, 1, g->cset_at);
-        gl->Uniform3fv(g->cset_frame_loc, 1, g->cset_frame);
+        gl->Uniform2fv(g->cset_frame_loc, 1, g->cset_frame);
     } else if (g->caustics) {
         gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
         gl->Uniform4fv(g->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
