@@ -85,14 +85,15 @@ float ww_dudv_hash(ivec2 c) {
 }
 
 // the Hessian (d2n/dx2, d2n/dy2, d2n/dxdy, in cells) of the DuDv's value noise in [-1, 1]: the
-// same lattice values, interpolated with the quintic fade 6f^5 - 15f^4 + 10f^3 (Perlin,
-// "Improving Noise", 2002) whose second derivative vanishes at the cell edges. With the water's
-// cubic fade the curvature jumps at every edge and the caustics would draw the lattice.
+// same lattice values, interpolated with the septic fade 35f^4 - 84f^5 + 70f^6 - 20f^7, whose
+// first three derivatives vanish at the cell edges. With the water's cubic fade the curvature
+// jumps at every edge, with Perlin's quintic ("Improving Noise", 2002) it kinks there: either
+// way the caustics would draw the lattice's straight lines.
 vec3 ww_dudv_hessian(vec2 x) {
-    vec2 i = floor(x), f = x - i;
-    vec2 u = f * f * f * (f * (f * 6.0 - 15.0) + 10.0);
-    vec2 du = 30.0 * f * f * (f * (f - 2.0) + 1.0);
-    vec2 ddu = 60.0 * f * (f - 1.0) * (2.0 * f - 1.0);
+    vec2 i = floor(x), f = x - i, g = 1.0 - f;
+    vec2 u = f * f * f * f * (35.0 - f * (84.0 - f * (70.0 - 20.0 * f)));
+    vec2 du = 140.0 * f * f * f * g * g * g;
+    vec2 ddu = 420.0 * f * f * g * g * (1.0 - 2.0 * f);
     ivec2 c = ivec2(i);
     float a = ww_dudv_hash(c), b = ww_dudv_hash(c + ivec2(1, 0));
     float d = ww_dudv_hash(c + ivec2(0, 1)), e = ww_dudv_hash(c + ivec2(1, 1));

@@ -195,6 +195,7 @@ static void golden_of(const char *name) {
 
 TEST_IMAGE(geometry_golden_shadows) { golden_of("shadows"); }
 TEST_IMAGE(geometry_golden_caustics) { golden_of("caustics"); }
+TEST_IMAGE(geometry_golden_caustics_texture) { golden_of("caustics_texture"); }
 TEST_IMAGE(geometry_golden_lights) { golden_of("lights"); }
 TEST_IMAGE(geometry_golden_fog) { golden_of("fog"); }
 TEST_IMAGE(geometry_golden_lake_dusk) { golden_of("lake_dusk"); }

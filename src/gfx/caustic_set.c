@@ -63,14 +63,15 @@ static double lattice_hash(int i, int j) {
 }
 
 /* the gradient (in cells) of value noise in [-1, 1] on a lattice of c x c cells that wraps,
- * quintic fade (as geometry.frag.glsl's caustics) */
+ * septic fade (as geometry.frag.glsl's caustics) */
 static void noise_grad(const layer *l, double x, double y, double g[2]) {
     double fi = floor(x), fj = floor(y), fx = x - fi, fy = y - fj;
     int i = ((int)fi % l->c + l->c) % l->c, j = ((int)fj % l->c + l->c) % l->c;
     int i1 = (i + 1) % l->c, j1 = (j + 1) % l->c;
-    double ux = fx * fx * fx * (fx * (fx * 6.0 - 15.0) + 10.0);
-    double uy = fy * fy * fy * (fy * (fy * 6.0 - 15.0) + 10.0);
-    double dx = 30.0 * fx * fx * (fx * (fx - 2.0) + 1.0), dy = 30.0 * fy * fy * (fy * (fy - 2.0) + 1.0);
+    double gx = 1.0 - fx, gy = 1.0 - fy;
+    double ux = fx * fx * fx * fx * (35.0 - fx * (84.0 - fx * (70.0 - 20.0 * fx)));
+    double uy = fy * fy * fy * fy * (35.0 - fy * (84.0 - fy * (70.0 - 20.0 * fy)));
+    double dx = 140.0 * fx * fx * fx * gx * gx * gx, dy = 140.0 * fy * fy * fy * gy * gy * gy;
     double a = lattice_hash(i, j), b = lattice_hash(i1, j), d = lattice_hash(i, j1);
     double e = lattice_hash(i1, j1), k = a - b - d + e;
     g[0] = 2.0 * dx * (b - a + k * uy);
