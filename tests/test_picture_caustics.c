@@ -6,6 +6,7 @@
  *   texture    water.look.caustics.method texture (scenes/features/caustics_texture.yaml): the
  *              caustics show, move, loop over the set's period, and light the seabed as brightly
  *              on average as the analytic method
+ *   objects    both methods light the fish and the cubes' submerged sides, not the seabed alone
  */
 #include <math.h>
 #include <stdio.h>
@@ -43,6 +44,10 @@
 #define TEX_W 320
 #define TEX_H 180
 #define SEABED_TOP 0.4         /* the seabed fills the frame below this share of its height */
+#define OBJECT_LEVELS 2.0      /* 8-bit levels the caustics must move a pixel of an object ... */
+#define OBJECT_PIXELS_MIN 150  /* ... in this many pixels at least (fish and cubes under water) */
+#define OBJECT_W 640           /* the objects are small: a larger frame */
+#define OBJECT_H 360
 
 typedef struct img {
     ww_image im;
@@ -316,4 +321,28 @@ TEST_PROC(picture_caustics_texture_set_mean_one) {
     ENSURE_NEAR(w, 0.0, 1e-9);
     ww_caustic_set_free(&cs);
     ww_scene_free(sc);
+}
+
+/* the caustics light the objects under water too (fish, the cubes' submerged sides), with
+ * either method: without a seabed only they can change when the caustics go off (the fog
+ * behind them takes no sunlight) */
+TEST_IMAGE(picture_caustics_on_objects_both_methods) {
+    REQUIRE_GL();
+    static const char *const method[2] = {"analytic", "texture"};
+    for (int m = 0; m < 2; m++) {
+        char args[256], tag[64];
+        snprintf(args, sizeof args, "--set render.seabed=false --set water.look.caustics.method=%s",
+                 method[m]);
+        snprintf(tag, sizeof tag, "pc_objects_%s", method[m]);
+        double *d = caustic_light("scenes/features/caustics_texture.yaml", 0, args, tag, OBJECT_W,
+                                  OBJECT_H, 0);
+        ENSURE(d != NULL);
+        if (!d) continue;
+        long lit = 0;
+        for (long i = 0; i < (long)OBJECT_W * OBJECT_H; i++) lit += fabs(d[i]) > OBJECT_LEVELS;
+        printf("  %s: %ld pixels of objects changed by caustics\n", method[m], lit);
+        ENSURE_MSG(lit >= OBJECT_PIXELS_MIN, "%s: caustics changed only %ld pixels of objects",
+                   method[m], lit);
+        free(d);
+    }
 }
