@@ -38,7 +38,8 @@
 #define SUN_RADIUS 0.00925     /* rad: common.glsl's WW_SUN_RADIUS */
 #define DETAIL_SLOPE 0.06      /* water.frag.glsl's DETAIL_SLOPE: the DuDv ripples' slope */
 #define MAX_COMP (WW_MAX_WAVES + WW_WATER_NDETAIL)
-#define DEPTH_MIN 0.5          /* m: the shallowest plane the set is focused at */
+#define DEPTH_MIN 0.5          /* m: the shallowest plane the set is focused at ... */
+#define DEPTH_MAX 20.0         /* ... and the deepest: below, the sun's blur leaves little */
 
 static const double layer_weight[2] = {0.6, 0.4}; /* water.frag.glsl: LAYER_WEIGHT0, 1 */
 
@@ -198,8 +199,8 @@ ww_result ww_caustic_set_make(const ww_scene *sc, ww_caustic_set *cs, ww_error *
     cs->frames = WW_CAUSTIC_SET_FRAMES;
     cs->patch = WW_CAUSTIC_SET_PATCH;
     cs->period = WW_CAUSTIC_SET_PERIOD;
-    /* focused at the seabed, where most of it is seen */
-    cs->depth = fmax(sc->water_depth, DEPTH_MIN);
+    /* focused at the seabed, where most of it is seen (deeper still, it keeps this pattern) */
+    cs->depth = ww_m_clamp(sc->water_depth, DEPTH_MIN, DEPTH_MAX);
     size_t per = (size_t)cs->size * (size_t)cs->size;
     cs->texel = malloc(per * (size_t)cs->frames * sizeof *cs->texel);
     if (!cs->texel) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "caustics: out of memory");
