@@ -132,7 +132,7 @@ struct ww_geometry {
     GLint detail_loc, dudv_m_loc, dudv_o_loc, dudv_h_loc;
     ww_water_ubos ubos;
     int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
-    GLuint caustic_tex; /* method texture: the set, a 2D array of single-channel frames */
+    GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
     GLint cset_loc, cset_at_loc, cset_frame_loc;
@@ -432,7 +432,8 @@ static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene
     float *pair = malloc(2 * per * (size_t)cs->frames * sizeof *pair);
     if (!pair) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "caustics: out of memory");
     for (int f = 0; f < cs->frames; f++) {
-        const float *a = cs->texel + per * (size_t)f, *b = cs->texel + per * (size_t)((f + 1) % cs->frames);
+        const float *a = cs->texel + per * (size_t)f;
+        const float *b = cs->texel + per * (size_t)((f + 1) % cs->frames);
         float *o = pair + 2 * per * (size_t)f;
         for (size_t i = 0; i < per; i++) {
             o[2 * i] = a[i];
@@ -442,6 +443,8 @@ static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene
     gl->TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RG16F, cs->size, cs->size, cs->frames, 0, GL_RG,
                    GL_FLOAT, pair);
     free(pair);
+    free(g->cset.texel); /* the GL copy is all the frames need; the set keeps its geometry */
+    g->cset.texel = NULL;
     gl->GenerateMipmap(GL_TEXTURE_2D_ARRAY);
     gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
