@@ -16,6 +16,7 @@
 #include "core/mathx.h"
 #include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
+#include "sim/floaters.h"
 
 #define SEABED_CELLS 64      /* grid cells per side */
 #define SEABED_HALF 400.0    /* half its side, m (snapped to the camera) */
@@ -206,13 +207,35 @@ static void boat_pose(const ww_state *st, double m[16]) {
     m4_trs(m, st->boat_pos, R, one);
 }
 
+/* floater fl's frame now (f) and the inverse of the rigid frame its model was written at (inv) */
+static void floater_rebase(const ww_scene *sc, const ww_state *st, int fl, const double frame[16],
+                           double f[16], double inv[16]) {
+    ww_floater_pose(sc, st, fl, f);
+    m4_identity(inv);
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++) inv[c * 4 + r] = frame[r * 4 + c];
+        inv[12 + r] = -(frame[r * 4] * frame[12] + frame[r * 4 + 1] * frame[13] +
+                        frame[r * 4 + 2] * frame[14]);
+    }
+}
+
 /* a model's matrix `own` (its world matrix, or its frame: where its children and lights sit,
  * without its scale) this frame, composed with the boat's pose when its chain ends there */
 static void model_to_world(const ww_scene *sc, const ww_state *st, int i, const double own[16],
                            double m[16]) {
-    int p = sc->models.model[i].parent;
-    while (p >= 0) p = sc->models.model[p].parent; /* the root of the chain */
-    if (p == WW_PARENT_BOAT && sc->boat.on) {
+    int p = sc->models.model[i].parent, root = i;
+    while (p >= 0) { /* the root of the chain */
+        root = p;
+        p = sc->models.model[p].parent;
+    }
+    int fl = ww_floater_of_model(sc, root);
+    if (fl >= 0) {
+        /* a floating root: its simulated frame replaces the frame it was written at */
+        double f[16], inv[16], rel[16];
+        floater_rebase(sc, st, fl, sc->models.model[root].frame, f, inv);
+        m4_mul(inv, own, rel);
+        m4_mul(f, rel, m);
+    } else if (p == WW_PARENT_BOAT && sc->boat.on) {
         double b[16];
         boat_pose(st, b);
         m4_mul(b, own, m);

@@ -117,6 +117,7 @@ ww_result wwc_boat(ctx *c, const section *objects);      /* compile_boat.c */
 ww_result wwc_stones(ctx *c, const section *objects);    /* compile_stones.c */
 ww_result wwc_fishing(ctx *c, const section *objects);   /* compile_fishing.c: rod and fish */
 ww_result wwc_reef(ctx *c, const section *objects);      /* compile_reef.c: chest, bubbles, models */
+ww_result wwc_floaters(ctx *c, const section *objects);  /* compile_floaters.c: models[].float */
 
 /* script actions: the event's mapping s (t already read) and the action's value node; each fills
  * ev->v / index / flags as its system's header documents. */
