@@ -19,6 +19,7 @@
 
 #include "core/error.h"
 #include "scene/assets.h"
+#include "scene/desc_fish_species.h"
 #include "scene/desc_reef.h"
 
 /* tessellation, shared with the tests that check volumes against the analytic shapes */
