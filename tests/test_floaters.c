@@ -31,11 +31,16 @@
  * between its up axis and the surface normal under its centre after the start, rad (the swell's
  * steepest slope is atan(k A) = 4.5 deg) */
 #define TILT_FOLLOW_TOL ww_m_rad(1.0)
-/* the rendered buoy: its mask's centroid moves at least this much between frames 60 and 96
- * (half the 9 m swell's period of 2.4 s apart), px at 256x144 */
+/* the rendered buoy: its mask's centroid moves at least this much between frames 36 and 84
+ * (half the 16 m swell's period of 3.2 s apart), px at 256x144 */
 #define HEAVE_MIN_PX 5.0
 /* its mask's lowest row lies within this of the projected waterline under it, px */
 #define WATERLINE_TOL_PX 3.0
+/* the crate's child lamp (emissive): the brightest pixel near where the crate's simulated frame
+ * puts it lies within this of it, px, and is this bright (8-bit luma) */
+#define LAMP_TOL_PX 2.5
+#define LAMP_MIN_LUMA 200.0
+#define LAMP_UP 1.45 /* the lamp's position in the crate's frame, m (floating_models.yaml) */
 
 static ww_scene *load(const char *text) {
     ww_scene *sc = NULL;
@@ -231,23 +236,47 @@ static void cross(const double a[3], const double b[3], double o[3]) {
     o[0] = a[1] * b[2] - a[2] * b[1], o[1] = a[2] * b[0] - a[0] * b[2], o[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* the image row of world point p seen by the scene's first camera key (y from the top) */
-static double row_of(const ww_scene *sc, const ww_state *st, const double p[3]) {
+/* world point p to pixel (x right, y down) for the state's camera */
+static void project(const ww_scene *sc, const ww_state *st, const double p[3], double px[2]) {
     const double *e = st->cam_pos, *f = st->cam_fwd, up[3] = {0.0, 1.0, 0.0};
     double r[3], u[3], d[3];
     cross(f, up, r);
     ww_m_normalize3(r);
     cross(r, f, u);
     ww_m_sub3(p, e, d);
-    double ndc = ww_m_dot3(d, u) / (ww_m_dot3(d, f) * tan(0.5 * st->cam_fov[0]));
-    return 0.5 * (1.0 - ndc) * sc->height;
+    double z = ww_m_dot3(d, f), t = tan(0.5 * st->cam_fov[0]);
+    px[0] = 0.5 * (1.0 + ww_m_dot3(d, r) / (z * t * sc->width / sc->height)) * sc->width;
+    px[1] = 0.5 * (1.0 - ww_m_dot3(d, u) / (z * t)) * sc->height;
+}
+
+static double row_of(const ww_scene *sc, const ww_state *st, const double p[3]) {
+    double px[2];
+    project(sc, st, p, px);
+    return px[1];
+}
+
+/* the brightest pixel's distance from (x, y) within a window of half-size r, and its luma */
+static double brightest_near(const ww_image *im, double x, double y, int r, double *luma) {
+    double best = -1.0, dist = 1e9;
+    for (int j = (int)y - r; j <= (int)y + r; j++)
+        for (int i = (int)x - r; i <= (int)x + r; i++) {
+            if (i < 0 || j < 0 || i >= im->width || j >= im->height) continue;
+            const unsigned char *c = ww_test_pixel(im, i, j);
+            double l = 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+            if (l > best) {
+                best = l;
+                dist = hypot(i + 0.5 - x, j + 0.5 - y);
+            }
+        }
+    *luma = best;
+    return dist;
 }
 
 TEST_IMAGE(floaters_rendered_buoy_heaves_and_sits_on_the_waterline) {
     REQUIRE_GL();
     char dir[512], cmd[1024], path[600];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("fm"));
-    const int frames[2] = {60, 96};
+    const int frames[2] = {36, 84};
     for (int k = 0; k < 2; k++) {
         snprintf(cmd, sizeof cmd, "render " FEATURE " --frames %d:%d -o %s --quiet", frames[k],
                  frames[k] + 1, dir);
@@ -265,6 +294,17 @@ TEST_IMAGE(floaters_rendered_buoy_heaves_and_sits_on_the_waterline) {
         snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frames[k]);
         ENSURE_MSG(ww_read_png(path, &im, &err) == WW_OK, "%s: %s", path, err.msg);
         m[k] = ball_mask(&im);
+        /* a child rides on its floating parent: the lamp on the crate's mast */
+        double pose[16], lamp[3], lp[2], luma;
+        ww_floater_pose(sc, st, 0, pose);
+        for (int a = 0; a < 3; a++) lamp[a] = pose[12 + a] + pose[4 + a] * LAMP_UP;
+        project(sc, st, lamp, lp);
+        double off = brightest_near(&im, lp[0], lp[1], 6, &luma);
+        fprintf(stderr, "frame %d: lamp %.2f px from its place (luma %.0f) at (%.1f, %.1f)\n",
+                frames[k], off, luma, lp[0], lp[1]);
+        ENSURE_MSG(off < LAMP_TOL_PX && luma > LAMP_MIN_LUMA,
+                   "frame %d: brightest pixel %.2f px from the lamp's place, luma %.0f",
+                   frames[k], off, luma);
         ww_image_free(&im);
         ENSURE_MSG(m[k].n > 50, "frame %d: %ld buoy pixels", frames[k], m[k].n);
         /* the waterline in front of the buoy: where its sphere (the mesh in its box) meets the
