@@ -324,6 +324,8 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
         if (s == WW_SYS_FISH)
             fprintf(to, " %d fish, %s", sc->fish.count,
                     sc->fish.mode == WW_FISH_TARGETS ? "swimming to targets" : "wandering");
+        if (s == WW_SYS_FISH && sc->fish.nspecies > 0)
+            fprintf(to, ", %d species in their own schools", sc->fish.nspecies);
         if (s == WW_SYS_STONES) fprintf(to, " up to %d in flight", WW_MAX_STONES);
         if (s == WW_SYS_ROD) fprintf(to, " lure active %g s after landing", sc->rod.window);
         if (s == WW_SYS_CHEST)
