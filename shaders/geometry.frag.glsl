@@ -14,10 +14,14 @@
 // 3 an air bubble (blended, premultiplied).
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
-// Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture.
+// Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture;
+// WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns, below).
 
 #ifndef WW_CAUSTICS
 #define WW_CAUSTICS 0
+#endif
+#ifndef WW_FISH_PATTERNS
+#define WW_FISH_PATTERNS 0
 #endif
 
 uniform int u_mode;
@@ -46,6 +50,10 @@ in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_color;
 in float v_spec;
+#if WW_FISH_PATTERNS
+in vec3 v_mesh;
+flat in float v_pattern;
+#endif
 out vec4 o_color;
 
 const float WW_SHININESS = 48.0;
@@ -176,6 +184,47 @@ vec3 ww_fog_segment(vec3 c, vec3 p) {
     return ww_fog(c, near, eye_below);
 }
 
+#if WW_FISH_PATTERNS
+// a species' markings over its albedo c, in mesh space (head +x, back +y, unit length):
+//   1 slim (mackerel): a dark back with wavy dark bars over a silver belly, lateral line above
+//     the middle;
+//   2 deep (angelfish, butterflyfish): dark vertical bands (one through the eye), dark fin edges;
+//   3 long: a paler belly and pale spots along the flank.
+// Every fish gets a dark eye with a light ring. Bands fade to their mean where they would be
+// finer than a pixel (fwidth), so a far school does not shimmer.
+vec3 ww_fish_pattern(vec3 c, vec3 m, float pattern) {
+    int k = int(pattern + 0.5);
+    vec2 eye = k == 1 ? vec2(0.40, 0.02) : k == 2 ? vec2(0.33, 0.07) : vec2(0.44, 0.012);
+    float eye_r = k == 1 ? 0.02 : k == 2 ? 0.03 : 0.014;
+    if (k == 1) {
+        vec3 belly = vec3(0.72, 0.75, 0.78);
+        float back = smoothstep(-0.005, 0.025, m.y);
+        float ph = 48.0 * m.x + 3.0 * sin(90.0 * m.y);
+        float aa = clamp(1.0 - 2.0 * fwidth(ph) / 6.2832, 0.0, 1.0);
+        float bar = mix(0.5, smoothstep(0.2, 0.6, sin(ph)), aa);
+        c = mix(belly, c * (1.0 - 0.7 * bar), back);
+    } else if (k == 2) {
+        float ph = 4.5 * m.x + 0.17;
+        float aa = clamp(1.0 - 4.0 * fwidth(ph), 0.0, 1.0);
+        float f = fract(ph);
+        float band = mix(0.3, smoothstep(0.0, 0.04, f) * (1.0 - smoothstep(0.26, 0.3, f)), aa);
+        band = max(band, smoothstep(0.36, 0.42, abs(m.y)));
+        c = mix(c, c * 0.05, band);
+    } else if (k == 3) {
+        c = mix(c, vec3(0.85, 0.62, 0.5), smoothstep(0.0, -0.03, m.y));
+        float ph = 70.0 * m.x, aa = clamp(1.0 - 2.0 * fwidth(ph) / 6.2832, 0.0, 1.0);
+        float spot = smoothstep(0.75, 0.9, sin(ph) * sin(160.0 * m.y + 1.0)) * aa;
+        c = mix(c, vec3(0.95, 0.8, 0.65), 0.6 * spot);
+    }
+    float d = length(m.xy - eye);
+    if (abs(m.z) > 0.004) {
+        c = mix(c, vec3(0.8), 1.0 - smoothstep(eye_r, eye_r * 1.35, d));
+        c = mix(c, vec3(0.02), 1.0 - smoothstep(eye_r * 0.75, eye_r * 0.95, d));
+    }
+    return c;
+}
+#endif
+
 void main() {
     if (u_mode == 0) {
         o_color = vec4(0.0);
@@ -272,6 +321,9 @@ void main() {
     if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
     vec3 albedo = v_color.rgb * u_mat_kd.rgb;
     if (u_mat_kd.a > 0.5) albedo *= texture(u_mat_map, v_uv).rgb;
+#if WW_FISH_PATTERNS
+    if (v_pattern > 0.5) albedo = ww_fish_pattern(albedo, v_mesh, v_pattern);
+#endif
     // the specular colour and exponent: the material's, or the instance's strength at
     // WW_SHININESS
     bool mat_spec = u_mat_ks.a > 0.0;

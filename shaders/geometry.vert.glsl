@@ -5,13 +5,20 @@
 // Fish swim: a travelling wave runs down the body, weighted by the tail weight in uv.x
 // (gfx/meshgen.h), swinging vertices sideways (mesh z); a fish's phase and amplitude come per
 // instance, so the whole school is one draw.
+// Defines: WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns
+// in geometry.frag.glsl need the mesh-space position).
+
+#ifndef WW_FISH_PATTERNS
+#define WW_FISH_PATTERNS 0
+#endif
 
 layout(location = 0) in vec3 a_pos;      // mesh space, m
 layout(location = 1) in vec3 a_normal;   // mesh space
 layout(location = 2) in vec2 a_uv;
 layout(location = 3) in mat4 a_model;    // mesh -> camera-relative world (locations 3..6)
 layout(location = 7) in vec4 a_color;    // linear RGB albedo, a: emission factor
-layout(location = 8) in vec4 a_extra;    // (wiggle phase rad, wiggle amplitude, specular, 0)
+layout(location = 8) in vec4 a_extra;    // (wiggle phase rad, wiggle amplitude, specular,
+                                         //  fish pattern: 0 none, 1 + ww_fish_shape)
 
 uniform mat4 u_view_proj;  // camera-relative world -> clip
 uniform vec4 u_clip;       // keep a.x + b.y + c.z + d >= 0 (camera-relative), when enabled
@@ -21,6 +28,10 @@ out vec3 v_normal;  // world
 out vec2 v_uv;
 out vec4 v_color;
 out float v_spec;
+#if WW_FISH_PATTERNS
+out vec3 v_mesh;           // mesh space at rest (the pattern stays on the bending body)
+flat out float v_pattern;
+#endif
 
 const float WW_WIGGLE_K = 9.0; // rad per mesh unit: about 1.4 waves along the body
 
@@ -41,6 +52,10 @@ void main() {
     v_uv = a_uv;
     v_color = a_color;
     v_spec = a_extra.z;
+#if WW_FISH_PATTERNS
+    v_mesh = a_pos;
+    v_pattern = a_extra.w;
+#endif
     gl_ClipDistance[0] = dot(vec4(p.xyz, 1.0), u_clip);
     gl_Position = u_view_proj * p;
 }

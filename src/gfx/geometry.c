@@ -17,6 +17,7 @@
 #include "gfx/caustic_set.h"
 #include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
+#include "sim/floaters.h"
 
 #define SEABED_CELLS 64      /* grid cells per side */
 #define SEABED_HALF 400.0    /* half its side, m (snapped to the camera) */
@@ -28,6 +29,7 @@
 #define FISH_WIGGLE_HZ 1.2        /* tail beats per second when still */
 #define FISH_WIGGLE_PER_SPEED 2.5 /* more beats per second per m/s of speed */
 #define FISH_MAX_PITCH 0.6        /* rad: how far a fish noses up or down */
+#define FISH_SPECIES_VARY 0.2     /* a species' fish differ by up to +-10% in size and shade */
 #define LURE_SIZE 0.09            /* m, the bobber's height */
 #define GLOW_RADIUS 0.7           /* m, the chest's glow column */
 #define GLOW_ABOVE 1.5            /* m: the column rises this far above the water's rest level */
@@ -62,6 +64,9 @@ enum {
     SLOT_LURE,
     SLOT_CHEST,
     SLOT_GRID,
+    SLOT_FISH_SLIM, /* objects.fish.species: one slot per body plan (ww_fish_shape order) */
+    SLOT_FISH_DEEP,
+    SLOT_FISH_LONG,
     SLOT_BUBBLE, /* air bubbles: blended, back to front (WW_GEOM_PART_BUBBLES) */
     SLOT_COLUMN, /* glow: drawn additively, never into depth */
     SLOT_COUNT
@@ -72,6 +77,9 @@ static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
     [SLOT_HULL] = WW_MESH_HULL,   [SLOT_FISH] = WW_MESH_FISH,     [SLOT_LURE] = WW_MESH_LURE,
     [SLOT_CHEST] = WW_MESH_CHEST, [SLOT_GRID] = WW_MESH_GRID,     [SLOT_COLUMN] = WW_MESHGEN_COLUMN,
     [SLOT_BUBBLE] = WW_MESH_SPHERE,
+    [SLOT_FISH_SLIM] = WW_MESHGEN_FISH_OF(WW_FISH_SLIM),
+    [SLOT_FISH_DEEP] = WW_MESHGEN_FISH_OF(WW_FISH_DEEP),
+    [SLOT_FISH_LONG] = WW_MESHGEN_FISH_OF(WW_FISH_LONG),
 };
 
 /* a bubble's squared distance from the camera and its index, for the back-to-front order */
@@ -96,7 +104,8 @@ typedef struct gmesh {
 typedef struct instance {
     float model[16]; /* column-major, camera-relative */
     float color[4];  /* albedo, emission factor */
-    float extra[4];  /* wiggle phase rad, wiggle amplitude, specular, 0 */
+    float extra[4];  /* wiggle phase rad, wiggle amplitude, specular, fish pattern (0 none,
+                      * 1 + ww_fish_shape: geometry.frag.glsl's WW_FISH_PATTERNS) */
 } instance;
 
 typedef struct light_locs {
@@ -214,13 +223,35 @@ static void boat_pose(const ww_state *st, double m[16]) {
     m4_trs(m, st->boat_pos, R, one);
 }
 
+/* floater fl's frame now (f) and the inverse of the rigid frame its model was written at (inv) */
+static void floater_rebase(const ww_scene *sc, const ww_state *st, int fl, const double frame[16],
+                           double f[16], double inv[16]) {
+    ww_floater_pose(sc, st, fl, f);
+    m4_identity(inv);
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++) inv[c * 4 + r] = frame[r * 4 + c];
+        inv[12 + r] = -(frame[r * 4] * frame[12] + frame[r * 4 + 1] * frame[13] +
+                        frame[r * 4 + 2] * frame[14]);
+    }
+}
+
 /* a model's matrix `own` (its world matrix, or its frame: where its children and lights sit,
  * without its scale) this frame, composed with the boat's pose when its chain ends there */
 static void model_to_world(const ww_scene *sc, const ww_state *st, int i, const double own[16],
                            double m[16]) {
-    int p = sc->models.model[i].parent;
-    while (p >= 0) p = sc->models.model[p].parent; /* the root of the chain */
-    if (p == WW_PARENT_BOAT && sc->boat.on) {
+    int p = sc->models.model[i].parent, root = i;
+    while (p >= 0) { /* the root of the chain */
+        root = p;
+        p = sc->models.model[p].parent;
+    }
+    int fl = ww_floater_of_model(sc, root);
+    if (fl >= 0) {
+        /* a floating root: its simulated frame replaces the frame it was written at */
+        double f[16], inv[16], rel[16];
+        floater_rebase(sc, st, fl, sc->models.model[root].frame, f, inv);
+        m4_mul(inv, own, rel);
+        m4_mul(f, rel, m);
+    } else if (p == WW_PARENT_BOAT && sc->boat.on) {
         double b[16];
         boat_pose(st, b);
         m4_mul(b, own, m);
@@ -342,7 +373,9 @@ static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
     cap[SLOT_BOX] = sc->cubes.on ? sc->cubes.count : 0;
     cap[SLOT_HULL] = sc->boat.on ? 1 : 0;
     cap[SLOT_STONE] = sc->stones.on ? WW_MAX_STONES : 0;
-    cap[SLOT_FISH] = sc->fish.on ? sc->fish.count : 0;
+    cap[SLOT_FISH] = sc->fish.on && sc->fish.nspecies == 0 ? sc->fish.count : 0;
+    for (int k = 0; sc->fish.on && k < sc->fish.nspecies; k++)
+        cap[SLOT_FISH_SLIM + sc->fish.species[k].shape] += sc->fish.species[k].count;
     cap[SLOT_LURE] = sc->rod.on ? 1 : 0;
     cap[SLOT_CHEST] = sc->chest.on ? 1 : 0;
     cap[SLOT_COLUMN] = sc->chest.on ? 1 : 0;
@@ -375,11 +408,12 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
 static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc,
                               ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
-    char defs[192];
+    char defs[256];
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
-             "#define WW_CAUSTICS %d\n",
-             ww_water_shader_model(sc->wave_model), g->caustics);
+             "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n",
+             ww_water_shader_model(sc->wave_model), g->caustics,
+             sc->fish.on && sc->fish.nspecies > 0);
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &g->prog, err);
     if (rc != WW_OK) return rc;
@@ -577,6 +611,42 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)n * (GLsizeiptr)sizeof *in, in);
 }
 
+/* fish i's pose (yaw, pitch from its velocity, bank) scaled by its length, and its tail's
+ * beat: phase and amplitude in extra[0..1] */
+static void fish_instance(const ww_state *st, int i, double length, const double cam[3],
+                          const double col[3], instance *in) {
+    const double *v = st->fish_vel + 3 * i;
+    double sp = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    double pitch = ww_m_clamp(atan2(v[1], hypot(v[0], v[2])), -FISH_MAX_PITCH, FISH_MAX_PITCH);
+    double R[9], m[16], s[3] = {length, length, length};
+    m3_hpr(st->fish_yaw[i], pitch, st->fish_bank[i], R);
+    m4_trs(m, st->fish_pos + 3 * i, R, s);
+    put(in, m, cam, col, 0.0, SPEC_WET);
+    double hz = FISH_WIGGLE_HZ + FISH_WIGGLE_PER_SPEED * sp;
+    double ph = fmod(2.0 * WW_PI * hz * st->t + 2.399963 * i, 2.0 * WW_PI);
+    in->extra[0] = (float)ph;
+    in->extra[1] = (float)(FISH_WIGGLE * (st->fish_mode[i] == 1.0 ? 2.0 : 1.0));
+}
+
+/* the fish of every species of this body plan: the species' colour and length, each fish
+ * within +-FISH_SPECIES_VARY of them (from its index), its pattern in extra[3] */
+static int species_fish(const ww_scene *sc, const ww_state *st, ww_fish_shape shape,
+                        const double cam[3], instance *in) {
+    int n = 0;
+    for (int k = 0; k < sc->fish.nspecies; k++) {
+        const ww_fish_species *sp = &sc->fish.species[k];
+        if (sp->shape != shape) continue;
+        for (int i = sp->first; i < sp->first + sp->count; i++) {
+            if (st->fish_mode[i] == 2.0) continue; /* caught: away */
+            double u = (double)((i * 7919) % 97) / 97.0 - 0.5, col[3];
+            for (int c = 0; c < 3; c++) col[c] = sp->color[c] * (1.0 + FISH_SPECIES_VARY * u);
+            fish_instance(st, i, sp->length * (1.0 + FISH_SPECIES_VARY * u), cam, col, &in[n]);
+            in[n++].extra[3] = (float)(1 + shape);
+        }
+    }
+    return n;
+}
+
 /* models of a procedural kind join that kind's slot */
 static int add_models(const ww_scene *sc, const ww_state *st, ww_mesh_kind kind,
                       const double cam[3], instance *in, int n) {
@@ -699,9 +769,13 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         }
         slot_upload(gl, &g->slot[SLOT_STONE], in, add_models(sc, st, WW_MESH_STONE, cam, in, n));
     }
+    for (int shape = 0; shape < WW_FISH_SHAPES; shape++) {
+        gmesh *slot = &g->slot[SLOT_FISH_SLIM + shape];
+        if (slot->cap) slot_upload(gl, slot, in, species_fish(sc, st, (ww_fish_shape)shape, cam, in));
+    }
     if (g->slot[SLOT_FISH].cap) {
         int n = 0;
-        for (int i = 0; sc->fish.on && i < sc->fish.count; i++) {
+        for (int i = 0; sc->fish.on && sc->fish.nspecies == 0 && i < sc->fish.count; i++) {
             if (st->fish_mode[i] == 2.0) continue; /* caught: away */
             const double *v = st->fish_vel + 3 * i;
             double sp = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

@@ -232,7 +232,7 @@ static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc
                                const ww_node **parent, int *given) {
     static const char *const keys[] = {"name",  "mesh",  "obj",    "position", "rotation",
                                        "scale", "color", "parent", "min",      "max",
-                                       "emissive", NULL};
+                                       "emissive", "float", NULL};
     static const char *const axes[] = {"x", "y", "z"};
     section s;
     const ww_node *name, *obj;

@@ -320,9 +320,12 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
         if (s == WW_SYS_CLOCK) fprintf(to, " %.2f h, day length %g s", sc->time_of_day, sc->day_length);
         if (s == WW_SYS_RIPPLES) fprintf(to, " pool of %d, lifetime %g s", sc->ripples.max, sc->ripples.lifetime);
         if (s == WW_SYS_CUBES) fprintf(to, " %d cubes", sc->cubes.count);
+        if (s == WW_SYS_FLOATERS) fprintf(to, " %d floating models", sc->floaters.count);
         if (s == WW_SYS_FISH)
             fprintf(to, " %d fish, %s", sc->fish.count,
                     sc->fish.mode == WW_FISH_TARGETS ? "swimming to targets" : "wandering");
+        if (s == WW_SYS_FISH && sc->fish.nspecies > 0)
+            fprintf(to, ", %d species in their own schools", sc->fish.nspecies);
         if (s == WW_SYS_STONES) fprintf(to, " up to %d in flight", WW_MAX_STONES);
         if (s == WW_SYS_ROD) fprintf(to, " lure active %g s after landing", sc->rod.window);
         if (s == WW_SYS_CHEST)
