@@ -145,6 +145,7 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
 void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode);
 /* this frame's point and spot lights into prog (in use; it includes common.glsl) */
 void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog);
+int ww_lights_scatter_on(const ww_scene *sc);
 /* the same, only some parts (the main pass draws the solids before the water and the seabed,
  * which the water mostly hides, after it; the glow is
  * ww_geometry_draw_glow's, after the sky) */

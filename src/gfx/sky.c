@@ -6,6 +6,7 @@
  * ww_sky_dome). Also sets common.glsl's sky uniforms for any program that includes it.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "core/mathx.h"
@@ -27,7 +28,9 @@ struct ww_sky {
     GLuint prog;
     ww_sky_model model;
     ww_sky_locs sky;
-    GLint inv_view_proj, intensity, below, cubemap, drift;
+    GLint inv_view_proj, intensity, below, below_density, cubemap, drift;
+    ww_renderer *r;   /* its geometry holds this frame's lights (the glow under water) */
+    int scatter;      /* WW_LIGHT_SCATTER: the lights glow in the water */
     GLuint cube_tex;  /* owned when this sky uploaded it (0 otherwise) */
     GLuint cube_draw; /* the cube texture drawn (owned or the renderer's) */
 };
@@ -242,8 +245,13 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     ww_sky *s = calloc(1, sizeof *s);
     if (!s) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "sky: out of memory");
     s->model = sc->render.sky;
-    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes,
-                                       defines[s->model], &s->prog, err);
+    s->r = r;
+    s->scatter = ww_lights_scatter_on(sc);
+    char defs[96];
+    snprintf(defs, sizeof defs, "%s#define WW_LIGHT_SCATTER %d\n",
+             defines[s->model] ? defines[s->model] : "", s->scatter);
+    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes, defs,
+                                       &s->prog, err);
     /* one cube texture per renderer: a second sky (the reflection's) draws the first one's */
     if (rc == WW_OK && s->model == WW_SKY_CUBEMAP) {
         if (r->sky_cubemap) {
@@ -261,6 +269,7 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     s->inv_view_proj = ww_gfx_uniform(gl, s->prog, "u_inv_view_proj");
     s->intensity = ww_gfx_uniform(gl, s->prog, "u_intensity");
     s->below = ww_gfx_uniform(gl, s->prog, "u_below");
+    s->below_density = ww_gfx_uniform(gl, s->prog, "u_below_density");
     s->cubemap = ww_gfx_uniform(gl, s->prog, "u_cubemap");
     s->drift = ww_gfx_uniform(gl, s->prog, "u_drift");
     *out = s;
@@ -279,6 +288,11 @@ void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_fr
     double fb[3];
     ww_fog_below_color(f->sc, f->st, fb);
     gl->Uniform4f(s->below, (float)fb[0], (float)fb[1], (float)fb[2], f->underwater ? 1.0f : 0.0f);
+    if (s->scatter && f->underwater) {
+        /* the lights' glow along the rays that meet nothing under water */
+        gl->Uniform1f(s->below_density, (float)f->sc->render.fog_below_density);
+        ww_geometry_lights_set(s->r->geometry, gl, f, s->prog);
+    }
     if (s->model == WW_SKY_CUBEMAP) {
         gl->ActiveTexture(GL_TEXTURE0);
         gl->BindTexture(GL_TEXTURE_CUBE_MAP, s->cube_draw);

@@ -49,6 +49,7 @@ static const rule R_RANGE = OPEN_LO(0, 1e5, "m");
 static const rule R_CONE = OPEN_LO(0, 89, "deg");
 static const rule R_RATE = CLOSED(0, 100, "Hz");
 static const rule R_FOAM_LIFE = CLOSED(0, 30, "s");
+static const rule R_SCATTER = CLOSED(0, 20, "");
 
 static const char *const TONEMAP_WORDS[] = {[WW_TONEMAP_EXP] = "exp", [WW_TONEMAP_ACES] = "aces",
                                             NULL};
@@ -363,7 +364,7 @@ ww_result wwc_water_look(ctx *c, const section *water) {
 static ww_result compile_light(ctx *c, const ww_node *item, int i, ww_light_desc *l) {
     static const char *const keys[] = {"type", "position", "direction", "color", "intensity",
                                        "range", "angle", "softness", "flicker", "flicker_rate",
-                                       "parent", NULL};
+                                       "parent", "scatter", NULL};
     section s;
     TRY(wwc_open_item(c, item, "lights", i, keys, &s));
     *l = (ww_light_desc){.kind = WW_LIGHT_POINT,
@@ -375,6 +376,7 @@ static ww_result compile_light(ctx *c, const ww_node *item, int i, ww_light_desc
                          .softness = 0.25,
                          .flicker = 0.0,
                          .flicker_rate = 6.0,
+                         .scatter = 1.0,
                          .line = s.map->mark.line,
                          .column = s.map->mark.column};
     int kind = (int)l->kind;
@@ -395,6 +397,7 @@ static ww_result compile_light(ctx *c, const ww_node *item, int i, ww_light_desc
     TRY(wwc_get_number(c, &s, "softness", &R_UNIT, OPTIONAL, &l->softness));
     TRY(wwc_get_number(c, &s, "flicker", &R_UNIT, OPTIONAL, &l->flicker));
     TRY(wwc_get_number(c, &s, "flicker_rate", &R_RATE, OPTIONAL, &l->flicker_rate));
+    TRY(wwc_get_number(c, &s, "scatter", &R_SCATTER, OPTIONAL, &l->scatter));
     const ww_node *parent;
     TRY(wwc_lookup(c, &s, "parent", OPTIONAL, &parent));
     if (parent) {

@@ -87,6 +87,7 @@ typedef struct ww_light_desc {
     double softness;             /* spot: fraction of the cone that fades out */
     double flicker;              /* 0..1: depth of the flicker */
     double flicker_rate;         /* Hz */
+    double scatter;              /* its glow in the water (in-scattering), x fog.below.density; 0 off */
     char parent[32];             /* "" world; "boat"; or a model's name */
     int line, column;            /* where it was written */
 } ww_light_desc;
