@@ -34,6 +34,7 @@ uniform vec2 u_sky_mode;      // (1: Preetham's sky, its share against the twili
 uniform vec4 u_sky_clouds;    // (cover 0..1, 0 none; drift x, z in noise units; -)
 
 vec3 ww_sky_physical(vec3 d); // below, after the noise it draws the clouds with
+float ww_acos(float x);
 float ww_sky_cloud(vec3 d);
 
 // the sky seen along unit direction d, without the sun disc: a gradient from the horizon to the
@@ -122,6 +123,34 @@ vec4 ww_sky_dome(vec3 d, vec2 drift) {
     vec3 cloud = light * (1.0 - 0.4 * smoothstep(0.62, 0.85, n));
     return vec4(mix(c, cloud, cover), cover);
 }
+
+// ---- the dome's picture (sky.image) ---------------------------------------------------------
+// Seed 003 paints its dome. WW_SKY_DOME_IMAGE 1 (gfx/sky.c, sky.model dome with sky.image) maps
+// the picture by the classic dome projection (azimuthal equidistant, as a fisheye photograph of
+// the whole sky): the image's centre is the zenith, the circle inscribed in it the horizon, the
+// distance from the centre proportional to the zenith angle; the image's top is -z (north, ahead
+// of a camera with no yaw), its right +x. Chosen over the upper half of an equirectangular map:
+// no seam where the azimuth wraps (which breaks the mip selection along a line) and no pinch at
+// the zenith, where an equirectangular map spends a whole row on one point; the texels spread
+// evenly over the sky. Below the horizon the horizon's ring, darkened as the gradient is.
+#ifndef WW_SKY_DOME_IMAGE
+#define WW_SKY_DOME_IMAGE 0
+#endif
+#if WW_SKY_DOME_IMAGE
+uniform sampler2D u_sky_dome_image; // sRGB, decoded to linear by the sampler
+
+vec2 ww_dome_uv(vec3 d) {
+    float h = length(d.xz);
+    vec2 az = h > 1e-6 ? d.xz / h : vec2(0.0);
+    float r = 0.5 * min(ww_acos(clamp(d.y, -1.0, 1.0)) / (0.5 * WW_PI), 1.0);
+    return vec2(0.5) + r * az; // image x toward +x, image rows (t, top first) toward +z
+}
+
+vec3 ww_sky_dome_image(vec3 d) {
+    vec3 c = texture(u_sky_dome_image, ww_dome_uv(d)).rgb;
+    return d.y >= 0.0 ? c : c * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
+}
+#endif
 
 // ---- point and spot lights on a surface --------------------------------------------------------
 // Light i's irradiance factor at p (camera-relative) and the unit vector l toward it: the smooth

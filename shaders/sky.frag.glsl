@@ -1,8 +1,8 @@
 #version 330 core
 // sky.frag.glsl - the sky behind everything, one view ray per pixel: Preetham's sky with its
 // clouds or the gradient (seed 000; both common.glsl's ww_sky), a
-// cubemap skybox (seed 004; WW_SKY_CUBEMAP) or the procedural dome (seed 003; WW_SKY_DOME), with
-// the sun disc on top.
+// cubemap skybox (seed 004; WW_SKY_CUBEMAP) or the procedural dome (seed 003; WW_SKY_DOME) or its
+// picture (sky.image; WW_SKY_DOME_IMAGE, common.glsl), with the sun disc on top.
 //
 // Seed 004 draws a unit cube with gl_Position = pos.xyww and samples (x, y, -z); here a
 // full-screen triangle on the far plane gives the same depth, and the cubemap is sampled along
@@ -38,6 +38,8 @@ void main() {
     }
 #if defined(WW_SKY_CUBEMAP)
     o_color = vec4(texture(u_cubemap, d).rgb * u_intensity + ww_sun_disc(d), 1.0);
+#elif defined(WW_SKY_DOME) && WW_SKY_DOME_IMAGE
+    o_color = vec4(ww_sky_dome_image(d) * u_intensity + ww_sun_disc(d), 1.0);
 #elif defined(WW_SKY_DOME)
     vec4 dome = ww_sky_dome(d, u_drift);
     o_color = vec4(dome.rgb * u_intensity + ww_sun_disc(d) * (1.0 - dome.a), 1.0);

@@ -211,8 +211,11 @@ float ww_fresnel(float c) {
     return u_fresnel.y + (1.0 - u_fresnel.y) * (m2 * m2 * m);
 }
 
-// the sky along d: the cubemap when the sky is one, else the gradient
+// the sky along d: the cubemap when the sky is one, the dome's picture, else the gradient
 vec3 ww_sky_any(vec3 d) {
+#if WW_SKY_DOME_IMAGE
+    return u_sky_intensity * ww_sky_dome_image(d); // the dome's picture (common.glsl)
+#endif
     if (u_cube != 0) return u_sky_intensity * texture(u_sky_cube, d).rgb;
     return ww_sky(d);
 }

@@ -114,6 +114,8 @@ typedef struct ww_render_desc {
     ww_sky_model sky;
     char cubemap[6][WW_PATH_MAX];/* +x, -x, +y, -y, +z, -z image files, resolved from the scene */
     int cubemap_image[6];        /* index in the scene's assets (scene/assets.h), -1 none */
+    char dome_image_path[WW_PATH_MAX]; /* sky.image: the dome's picture, resolved; "" none */
+    int dome_image;              /* its index in the scene's assets, -1 none (procedural dome) */
     double sky_intensity;        /* cubemap and dome radiance scale */
     double sky_turbidity;        /* Preetham's turbidity T (haze: 2 clear .. 10 hazy) */
     double cloud_cover;          /* share of the sky the clouds cover, 0: none (preetham) */
