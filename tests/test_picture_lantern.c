@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gfx/render_impl.h"
 #include "io/writers.h"
 #include "scene/scene.h"
 #include "test.h"
@@ -198,4 +199,22 @@ TEST(lantern_scatter_key_validated) {
     bad_key("lights:\n  - {type: spot, position: [0, -2, 0], scatter: -1}\n", 2, 49);
     bad_key("lights:\n  - {type: spot, position: [0, -2, 0], scatter: 50}\n", 2, 49);
     bad_key("lights:\n  - {type: spot, position: [0, -2, 0], scatter: [1]}\n", 2, 49);
+}
+
+/* a scene pays only for what it uses: the shaders build the glow (WW_LIGHT_SCATTER) only when a
+ * light has scatter > 0, so scenes without lights, or with scatter 0, never compile it */
+static int scatter_on(const char *text) {
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_MSG(ww_scene_load_string("s.yaml", text, strlen(text), NULL, 0, &sc, &err) == WW_OK,
+               "%s", err.msg);
+    int on = sc ? ww_lights_scatter_on(sc) : -1;
+    ww_scene_free(sc);
+    return on;
+}
+
+TEST(lantern_glow_built_only_where_used) {
+    ENSURE_EQ_INT(scatter_on("seed: 1\n"), 0);
+    ENSURE_EQ_INT(scatter_on("lights: [{type: spot, position: [0, -2, 0], scatter: 0}]\n"), 0);
+    ENSURE_EQ_INT(scatter_on("lights: [{type: point, position: [0, -2, 0]}]\n"), 1);
 }
