@@ -15,7 +15,9 @@
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture;
-// WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns, below).
+// WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns, below);
+// WW_LIGHT_SCATTER 1 when a light glows in the water (common.glsl: the lights' in-scattering
+// along the part of the view ray under water).
 
 #ifndef WW_CAUSTICS
 #define WW_CAUSTICS 0
@@ -375,5 +377,7 @@ void main() {
         c += u_light_color[i] * att * (albedo * nl + sl);
     }
     c += albedo * v_color.a + u_mat_ke.rgb; // emission: the instance's factor, the material's Ke
-    o_color = vec4(ww_fog_segment(c, p), u_mat_ke.a);
+    c = ww_fog_segment(c, p) + ww_lights_scatter_segment(u_eye, p, u_water_y, u_mirrored,
+                                                         u_fog_below_density, gl_FragCoord.xy);
+    o_color = vec4(c, u_mat_ke.a);
 }

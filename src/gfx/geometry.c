@@ -109,7 +109,7 @@ typedef struct instance {
 } instance;
 
 typedef struct light_locs {
-    GLint n, pos, dir, color, param;
+    GLint n, pos, dir, color, param, scatter;
 } light_locs;
 
 struct ww_geometry {
@@ -117,7 +117,7 @@ struct ww_geometry {
     ww_sky_locs sky;
     GLint view_proj, clip, ambient, eye, mirrored, water_y, fog_color, fog_density,
         fog_below_color, fog_below_density, extinction, caustics_loc, mode, glow, glow_y;
-    GLint shadow_map, shadow_on, sun_view_proj, shadow_filter;
+    GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, scatter_through;
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
     gmesh slot[SLOT_COUNT];
@@ -148,7 +148,7 @@ struct ww_geometry {
     /* this frame's lights, camera-relative */
     int nlights;
     float light_pos[WW_MAX_LIGHTS][3], light_dir[WW_MAX_LIGHTS][3], light_color[WW_MAX_LIGHTS][3],
-        light_param[WW_MAX_LIGHTS][4];
+        light_param[WW_MAX_LIGHTS][4], light_scatter[WW_MAX_LIGHTS];
 };
 
 /* ---- small double matrices (column-major 4x4: m[c * 4 + r]) ---- */
@@ -411,9 +411,9 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     char defs[256];
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
-             "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n",
+             "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n",
              ww_water_shader_model(sc->wave_model), g->caustics,
-             sc->fish.on && sc->fish.nspecies > 0);
+             sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc));
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &g->prog, err);
     if (rc != WW_OK) return rc;
@@ -554,6 +554,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
     g->eye = ww_gfx_uniform(gl, p, "u_eye");
     g->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
+    g->scatter_through = ww_gfx_uniform(gl, p, "u_scatter_through");
     g->water_y = ww_gfx_uniform(gl, p, "u_water_y");
     g->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
     g->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
@@ -584,6 +585,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->lights.dir = ww_gfx_uniform(gl, p, "u_light_dir");
     g->lights.color = ww_gfx_uniform(gl, p, "u_light_color");
     g->lights.param = ww_gfx_uniform(gl, p, "u_light_param");
+    g->lights.scatter = ww_gfx_uniform(gl, p, "u_light_scatter");
     *out = g;
     return WW_OK;
 }
@@ -660,6 +662,14 @@ static int add_models(const ww_scene *sc, const ww_state *st, ww_mesh_kind kind,
     return n;
 }
 
+/* 1 when some light glows in the water (lights[].scatter > 0): the shaders then build
+ * common.glsl's in-scattering (WW_LIGHT_SCATTER), which scenes without it never compile */
+int ww_lights_scatter_on(const ww_scene *sc) {
+    for (int i = 0; i < sc->render.nlights; i++)
+        if (sc->render.light[i].scatter > 0.0) return 1;
+    return 0;
+}
+
 /* the flicker of light i at time t: 1 - depth (1 + s) / 2 with s a sum of three sines at
  * incommensurate multiples of the rate (1, golden ratio, e), phases from the index: never a
  * clock, the same frame gives the same light */
@@ -708,6 +718,7 @@ static void frame_lights(ww_geometry *g, const ww_scene *sc, const ww_state *st,
         g->light_param[i][1] = (float)cos_outer;
         g->light_param[i][2] = (float)(cos_inner > cos_outer + 1e-4 ? cos_inner : cos_outer + 1e-4);
         g->light_param[i][3] = l->kind == WW_LIGHT_SPOT ? 1.0f : 0.0f;
+        g->light_scatter[i] = (float)l->scatter;
     }
 }
 
@@ -993,6 +1004,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
     /* ... whose path to a point is air all the way: no under-water fog on it */
     gl->Uniform1i(g->mirrored, mode == WW_GEOM_REFLECTION);
+    gl->Uniform1i(g->scatter_through, mode == WW_GEOM_PREPASS);
     gl->Uniform1f(g->water_y, water_y);
     double hz[3];
     ww_sky_horizon(sc, st, hz);
@@ -1030,6 +1042,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->Uniform3fv(g->lights.dir, g->nlights, &g->light_dir[0][0]);
         gl->Uniform3fv(g->lights.color, g->nlights, &g->light_color[0][0]);
         gl->Uniform4fv(g->lights.param, g->nlights, &g->light_param[0][0]);
+        gl->Uniform1fv(g->lights.scatter, g->nlights, g->light_scatter);
     }
     if (g->caustics == 2) {
         gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_CAUSTIC_SET);
@@ -1090,13 +1103,15 @@ void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, 
     light_locs l = {ww_gfx_uniform(gl, prog, "u_nlights"), ww_gfx_uniform(gl, prog, "u_light_pos"),
                     ww_gfx_uniform(gl, prog, "u_light_dir"),
                     ww_gfx_uniform(gl, prog, "u_light_color"),
-                    ww_gfx_uniform(gl, prog, "u_light_param")};
+                    ww_gfx_uniform(gl, prog, "u_light_param"),
+                    ww_gfx_uniform(gl, prog, "u_light_scatter")};
     gl->Uniform1i(l.n, g->nlights);
     if (g->nlights <= 0) return;
     gl->Uniform3fv(l.pos, g->nlights, &g->light_pos[0][0]);
     gl->Uniform3fv(l.dir, g->nlights, &g->light_dir[0][0]);
     gl->Uniform3fv(l.color, g->nlights, &g->light_color[0][0]);
     gl->Uniform4fv(l.param, g->nlights, &g->light_param[0][0]);
+    gl->Uniform1fv(l.scatter, g->nlights, g->light_scatter);
 }
 
 /* the chest's glow column: additive light drawn after the sky, never into depth. Drawn before

@@ -92,6 +92,7 @@ typedef struct ww_light_desc {
     double softness;             /* spot: fraction of the cone that fades out */
     double flicker;              /* 0..1: depth of the flicker */
     double flicker_rate;         /* Hz */
+    double scatter;              /* its glow in the water (in-scattering), x fog.below.density; 0 off */
     char parent[32];             /* "" world; "boat"; or a model's name */
     int line, column;            /* where it was written */
 } ww_light_desc;
@@ -118,6 +119,8 @@ typedef struct ww_render_desc {
     ww_sky_model sky;
     char cubemap[6][WW_PATH_MAX];/* +x, -x, +y, -y, +z, -z image files, resolved from the scene */
     int cubemap_image[6];        /* index in the scene's assets (scene/assets.h), -1 none */
+    char dome_image_path[WW_PATH_MAX]; /* sky.image: the dome's picture, resolved; "" none */
+    int dome_image;              /* its index in the scene's assets, -1 none (procedural dome) */
     double sky_intensity;        /* cubemap and dome radiance scale */
     double sky_turbidity;        /* Preetham's turbidity T (haze: 2 clear .. 10 hazy) */
     double cloud_cover;          /* share of the sky the clouds cover, 0: none (preetham) */

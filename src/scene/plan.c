@@ -182,9 +182,10 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     *p = (ww_plan){0};
     for (int s = 0; s < WW_SYS_COUNT; s++) p->system_on[s] = sc->system_on[s];
 
-    /* solid geometry: what casts shadows and what refraction and shafts see under the water */
+    /* solid geometry: what casts shadows and what refraction and shafts see under the water;
+     * it also holds the frame's lights, which the water and the sky take from it */
     const ww_render_desc *rd = &sc->render;
-    p->geometry = ww_scene_has_objects(sc) || rd->seabed;
+    p->geometry = ww_scene_has_objects(sc) || rd->seabed || rd->nlights > 0;
     int casters = ww_scene_has_objects(sc);
 
     if (rd->shadows.on && casters) {
