@@ -79,6 +79,12 @@ static int get_solid(const ww_scene *sc, const ww_state *st, int k, double m, so
     }
     if (rides_boat(sc, k)) return 0;
     const ww_model_desc *md = &sc->models.model[k];
+    if (!md->solid) return 0; /* plants, groups: the camera passes */
+    if (md->oriented) {
+        box(s, WW_SOLID_MODEL, k, md->obb_c, md->obb_h, m);
+        for (int a = 0; a < 4; a++) s->q[a] = md->obb_q[a];
+        return 1;
+    }
     double c[3], half[3];
     for (int a = 0; a < 3; a++) {
         c[a] = 0.5 * (md->min[a] + md->max[a]);
