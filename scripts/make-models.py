@@ -95,7 +95,7 @@ def tex_wood(path, size=128, planks=8):
             u = x / size
             g = fbm(grain, u * 4 + shift[k], fv * 0.7 + k * 3.1, 3)
             streak = 0.85 + 0.3 * math.sin((g * 9.0 + fv * 2.0) * math.pi)
-            r, gg, b = 0.20, 0.11, 0.05
+            r, gg, b = 0.46, 0.26, 0.11
             m = tone[k] * streak
             r, gg, b = r * m, gg * m, b * m
             # butt joints: each strake's planks end at its own places
@@ -104,8 +104,8 @@ def tex_wood(path, size=128, planks=8):
             if seam:
                 r, gg, b = r * 0.3, gg * 0.3, b * 0.3
             a = fbm(growth, u * 8, y / size * 8, 3)
-            w = max(0.0, min(1.0, (a - 0.5) * 3.0))
-            r, gg, b = r * (1 - w) + 0.10 * w, gg * (1 - w) + 0.13 * w, b * (1 - w) + 0.07 * w
+            w = max(0.0, min(1.0, (a - 0.55) * 2.5))
+            r, gg, b = r * (1 - w) + 0.16 * w, gg * (1 - w) + 0.15 * w, b * (1 - w) + 0.07 * w
             row.append((srgb(r), srgb(gg), srgb(b)))
         rows.append(row)
     write_png(path, size, size, rows)
@@ -157,7 +157,7 @@ def tex_blade(path, w, h, base, edge, rib):
 def tex_dots(path, size, base, dot, seed):
     """a starfish's back: pale tubercles on the base colour"""
     rng = random.Random(seed)
-    pts = [(rng.random(), rng.random(), 0.02 + 0.025 * rng.random()) for _ in range(70)]
+    pts = [(rng.random(), rng.random(), 0.02 + 0.025 * rng.random()) for _ in range(45)]
     rows = []
     for y in range(size):
         row = []
@@ -473,13 +473,12 @@ def make_wreck(out):
     # keel: a timber under the hull, stem to stern
     hull.box("timber", (-0.09, -0.22, -LENGTH / 2 + 0.1), (0.09, 0.05, zt), 0.5)
     # ribs (frames): bent timbers inside the planking, seen through the broken side
-    for j in range(2, len(zs) - 2, 3):
+    for j in range(2, len(zs) - 2, 2):
         z = zs[j]
         path = [add(hull_point(z, -1 + 2 * i / 12), (0, 0, 0)) for i in range(13)]
         path = [(p[0] * 0.94, p[1] * 0.98 + 0.05, p[2]) for p in path]
-        broken = 9 <= j <= 15
-        if broken:  # snapped where the side is gone
-            path = path[:10]
+        if j == 12:  # one frame snapped where the side is gone
+            path = path[:11]
         hull.tube("timber", path, [0.07] * len(path), sides=4, cap_end=True, uvlen=0.3)
     # gunwale rails
     for side in (-1, 1):
@@ -856,7 +855,7 @@ def main():
     write_mtl(os.path.join(out, "starfish.mtl"), [
         ("top", (1.0, 1.0, 1.0), (0.15, 0.12, 0.1), 30, "starfish.png"),
         ("under", (0.8, 0.55, 0.4), (0.0, 0.0, 0.0), 1, None)])
-    tex_dots(os.path.join(out, "starfish.png"), 64, (0.8, 0.18, 0.03), (0.95, 0.55, 0.25), 17)
+    tex_dots(os.path.join(out, "starfish.png"), 64, (0.85, 0.1, 0.02), (0.95, 0.4, 0.15), 17)
     meshes["starfish_purple"] = make_starfish(out, "starfish_purple", "top")
     write_mtl(os.path.join(out, "starfish_purple.mtl"), [
         ("top", (1.0, 1.0, 1.0), (0.15, 0.12, 0.1), 30, "starfish_purple.png"),
