@@ -283,6 +283,15 @@ TEST_IMAGE(models_wood_is_brown_and_the_starfish_orange_in_daylight) {
     ww_image_free(&star_bare.im);
 }
 
+TEST_IMAGE(models_golden_wreck) {
+    REQUIRE_GL();
+    char dir[512], actual[600];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("wreck_golden"));
+    ENSURE(ww_test_render(WRECK_SCENE, NULL, dir) == 0);
+    snprintf(actual, sizeof actual, "%s/frame_00000.png", dir);
+    ww_test_check_golden("golden/features/wreck.png", actual);
+}
+
 /* a kelp 7 m in front of the camera in still, flat water (no caustics: only the sway moves),
  * swaying along x by 0.5 m at its tip, one cycle in 2 s */
 static const char SWAY_SCENE[] =
