@@ -343,9 +343,9 @@ class Mesh:
         return lo, hi
 
     def write(self, path, mtl, name):
-        """OBJ with v, vt and vn each written once per distinct value (4 decimals: 0.1 mm),
+        """OBJ with v, vt and vn each written once per distinct value (3 decimals: 1 mm),
         faces v/vt/vn by material"""
-        f4 = lambda x: ("%.4f" % x).rstrip("0").rstrip(".").replace("-0", "-0") if abs(x) >= 5e-5 else "0"
+        f4 = lambda x: ("%.3f" % x).rstrip("0").rstrip(".") if abs(x) >= 5e-4 else "0"
         pools = ({}, {}, {})
         lines = ([], [], [])
         keys = ("v", "vt", "vn")
@@ -430,7 +430,8 @@ def make_wreck(out):
             rows, uvs = [], []
             for j, z in enumerate(zs):
                 p0 = hull_point(z, side * a0)
-                p1 = hull_point(z, side * a1)
+                # its upper edge tucks under the next strake's stepped-out lower edge: no crack
+                p1 = hull_point(z, side * min(1.0, a1 + 0.25 / STRAKES))
                 lap = 0.03 * (1 - a0)
                 out_dir = norm((p0[0], 0.4 * (p0[1] - DEPTH) / DEPTH - 0.2, 0.0)) if k > 0 else (0, -1, 0)
                 p0 = add(p0, mul(out_dir, lap))
@@ -470,6 +471,11 @@ def make_wreck(out):
         p, q = ring[i], ring[i + 1]
         hull.flat_tri("planks", p, (q[0], top, zt), q, [(p[0], p[1] / 2), (q[0], 1), (q[0], q[1] / 2)])
         hull.flat_tri("planks", p, (p[0], top, zt), (q[0], top, zt), [(p[0], p[1] / 2), (p[0], 1), (q[0], 1)])
+    # the stem: a post up the bow, covering where the two sides' strakes meet
+    z0 = zs[0]
+    stem = [(0.0, hull_point(z0, a / 6)[1] if a else 0.02, z0 + 0.02) for a in range(7)]
+    stem = [(0.0, -0.2, zs[1])] + stem
+    hull.tube("timber", stem, [0.08] * len(stem), sides=4, uvlen=0.3)
     # keel: a timber under the hull, stem to stern
     hull.box("timber", (-0.09, -0.22, -LENGTH / 2 + 0.1), (0.09, 0.05, zt), 0.5)
     # ribs (frames): bent timbers inside the planking, seen through the broken side
@@ -763,6 +769,8 @@ def make_starfish(out, name, mat):
     for line in idx:  # the seam column shares its normal
         nn = norm(add(m.vn[line[0]], m.vn[line[-1]]))
         m.vn[line[0]] = m.vn[line[-1]] = nn
+    for k in idx[0]:  # the centre, one point in every column: straight up
+        m.vn[k] = (0.0, 1.0, 0.0)
     # the underside: a flat fan (seen from below only through the sand, cheap)
     c = m.vertex((0.0, 0.0, 0.0), (0.5, 0.5), (0, -1, 0))
     edge = [m.vertex((p[0], 0.0, p[2]), (0.5, 0.5), (0, -1, 0)) for p in rows[-1][:-1]]
@@ -792,7 +800,7 @@ def make_coral_branch(out):
         m.tube("coral", path, radii, sides=5, cap_end=depth == 0, uvlen=0.3)
         if depth == 0:
             return
-        for b in range(rng.choice((2, 3))):
+        for b in range(rng.choice((2, 2, 3))):
             az = rng.uniform(0, 2 * math.pi)
             nd = norm(add(d, (0.8 * math.cos(az), 0.15, 0.8 * math.sin(az))))
             grow(path[-1], nd, length * rng.uniform(0.65, 0.85), radii[-1] * 0.9, depth - 1)
