@@ -104,7 +104,7 @@ typedef struct ww_model_desc {
 #define WW_PARENT_BOAT (-2)
 
 typedef struct ww_models_desc {
-    int count;       /* static models (their bounds are solid to the camera) */
+    int count;       /* static models (the solid ones' bounds stop the camera) */
     ww_model_desc model[WW_MAX_MODELS];
 } ww_models_desc;
 
