@@ -813,6 +813,33 @@ def make_coral_branch(out):
     return m
 
 
+def make_coral_fan(out):
+    """a sea fan (gorgonian): a short stem splitting again and again in one plane (x, y) into a
+    fan of thin twigs, about 0.9 m tall and 1 m wide; flexible, so it may sway"""
+    rng = random.Random(17)
+    m = Mesh()
+
+    def grow(p, ang, length, radius, depth):
+        d = (math.sin(ang), math.cos(ang), 0.0)
+        path, radii = [p], [radius]
+        for k in range(1, 4):
+            wob = (0.0, 0.0, rng.uniform(-0.015, 0.015))
+            p = add(add(p, mul(d, length / 3)), wob)
+            path.append(p)
+            radii.append(radius * (1 - 0.2 * k / 3))
+        m.tube("fan", path, radii, sides=3, cap_end=depth == 0, uvlen=0.3)
+        if depth == 0:
+            return
+        spread = 0.35 + 0.1 * rng.random()
+        for side in (-1, 1):
+            grow(p, ang + side * spread * rng.uniform(0.7, 1.1), length * rng.uniform(0.75, 0.9),
+                 radius * 0.75, depth - 1)
+
+    grow((0.0, 0.0, 0.0), 0.0, 0.22, 0.025, 4)
+    m.write(os.path.join(out, "coral_fan.obj"), "coral.mtl", "coral_fan")
+    return m
+
+
 def make_coral_brain(out):
     """brain coral: a squat dome (0.9 m across) whose surface folds in meandering ridges"""
     m = Mesh()
@@ -871,9 +898,11 @@ def main():
     tex_dots(os.path.join(out, "starfish_purple.png"), 64, (0.32, 0.06, 0.35), (0.75, 0.5, 0.8), 18)
     meshes["coral_branch"] = make_coral_branch(out)
     meshes["coral_brain"] = make_coral_brain(out)
+    meshes["coral_fan"] = make_coral_fan(out)
     write_mtl(os.path.join(out, "coral.mtl"), [
         ("coral", (0.95, 0.42, 0.38), (0.08, 0.08, 0.08), 20, None),
-        ("brain", (1.0, 1.0, 1.0), (0.06, 0.06, 0.06), 16, "brain.png")])
+        ("brain", (1.0, 1.0, 1.0), (0.06, 0.06, 0.06), 16, "brain.png"),
+        ("fan", (0.55, 0.12, 0.6), (0.05, 0.05, 0.05), 16, None)])
     tex_brain(os.path.join(out, "brain.png"))
     for name in sorted(meshes):
         lo, hi = meshes[name].bounds()

@@ -49,6 +49,7 @@ static const model_spec SPECS[] = {
     {"starfish_purple.obj", 200, 2000, {0.2, 0.02, 0.2}, {0.4, 0.06, 0.4}, 1, 1},
     {"coral_branch.obj", 300, 5000, {0.3, 0.5, 0.3}, {1.2, 1.2, 1.2}, 1, 1},
     {"coral_brain.obj", 300, 5000, {0.6, 0.2, 0.6}, {1.2, 0.6, 1.2}, 1, 1},
+    {"coral_fan.obj", 200, 3000, {0.5, 0.5, 0.05}, {1.2, 1.2, 0.3}, 1, 1},
 };
 
 static double now_s(void) {
