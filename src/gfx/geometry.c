@@ -126,6 +126,10 @@ struct ww_geometry {
     gmesh obj[WW_MAX_MODELS];
     int obj_model[WW_MAX_MODELS];
     const ww_mesh_data *obj_data[WW_MAX_MODELS]; /* its submeshes and materials (the scene's) */
+    int sway;          /* the scene has a swaying model: the shader is built WW_SWAY */
+    float obj_sway[WW_MAX_MODELS][4];      /* u_sway of each OBJ model this frame (0: rigid) */
+    float obj_sway_axis[WW_MAX_MODELS][4]; /* its u_sway_axis */
+    GLint sway_loc, sway_axis_loc;
     GLuint *image_tex; /* the scene's images a material draws (map_Kd), by asset index; 0 none */
     int nimage;
     GLint mat_kd, mat_ks, mat_ke, mat_map;
@@ -411,9 +415,10 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     char defs[256];
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
-             "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n",
+             "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_SWAY %d\n",
              ww_water_shader_model(sc->wave_model), g->caustics,
-             sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc));
+             sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc), g->sway);
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &g->prog, err);
     if (rc != WW_OK) return rc;
@@ -499,6 +504,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->uploaded = -1;
     g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
+    for (int i = 0; i < sc->models.count; i++)
+        if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
     ww_result rc = make_program(g, gl, sc, err);
     if (rc == WW_OK && g->caustics == 1) {
         ww_water_waves_init(sc, &g->waves);
@@ -576,6 +583,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
     g->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
     g->shadow_filter = ww_gfx_uniform(gl, p, "u_shadow_filter");
+    g->sway_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway") : -1;
+    g->sway_axis_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway_axis") : -1;
     g->mat_kd = ww_gfx_uniform(gl, p, "u_mat_kd");
     g->mat_ks = ww_gfx_uniform(gl, p, "u_mat_ks");
     g->mat_ke = ww_gfx_uniform(gl, p, "u_mat_ke");
@@ -603,6 +612,35 @@ static void put(instance *in, const double m[16], const double cam[3], const dou
     in->color[3] = (float)emission;
     in->extra[0] = in->extra[1] = in->extra[3] = 0.0f;
     in->extra[2] = (float)spec;
+}
+
+/* a plant's sway this frame (shaders/geometry.vert.glsl): the surge under a wave of the sway's
+ * wavelength travelling along its direction reaches a plant at (x, z) with phase
+ * 2 pi (f t - (x, z).D / wavelength); a hash of its place adds up to a turn more, so plants
+ * side by side across the wave do not move in lockstep. From the frame's simulated time only. */
+#define SWAY_LAG 1.2 /* rad: how far the tip's swing trails the base's */
+static void obj_sway(ww_geometry *g, const ww_scene *sc, const ww_state *st, int i,
+                     const double world[16]) {
+    const ww_model_desc *d = &sc->models.model[g->obj_model[i]];
+    const ww_mesh_data *md = g->obj_data[i];
+    for (int k = 0; k < 4; k++) g->obj_sway[i][k] = g->obj_sway_axis[i][k] = 0.0f;
+    double tall = md->max[1] - md->min[1];
+    if (d->sway_amplitude <= 0.0 || !(tall > 0.0)) return;
+    double x = world[12], z = world[14];
+    double along = (x * d->sway_dir[0] + z * d->sway_dir[1]) / d->sway_wavelength;
+    double h = sin(x * 12.9898 + z * 78.233) * 43758.5453;
+    double jitter = h - floor(h);
+    double phase = 2.0 * WW_PI * (fmod(d->sway_frequency * st->t - along, 1.0) + jitter);
+    /* the mesh's height in metres: its y axis's length in the world matrix */
+    double sy = sqrt(world[4] * world[4] + world[5] * world[5] + world[6] * world[6]);
+    g->obj_sway[i][0] = (float)d->sway_amplitude;
+    g->obj_sway[i][1] = (float)phase;
+    g->obj_sway[i][2] = (float)SWAY_LAG;
+    g->obj_sway[i][3] = (float)(tall * sy);
+    g->obj_sway_axis[i][0] = md->min[1];
+    g->obj_sway_axis[i][1] = (float)(1.0 / tall);
+    g->obj_sway_axis[i][2] = (float)d->sway_dir[0];
+    g->obj_sway_axis[i][3] = (float)d->sway_dir[1];
 }
 
 static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
@@ -882,6 +920,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         model_world(sc, st, g->obj_model[i], m);
         put(&in[0], m, cam, d->color, d->emissive, SPEC_DEFAULT);
         slot_upload(gl, &g->obj[i], in, 1);
+        if (g->sway) obj_sway(g, sc, st, i, m);
     }
     (void)one;
     frame_lights(g, sc, st, cam);
@@ -944,6 +983,10 @@ static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode m
     const gmesh *m = &g->obj[i];
     const ww_mesh_data *d = g->obj_data[i];
     if (m->ninst <= 0) return 0;
+    if (g->sway) {
+        gl->Uniform4fv(g->sway_loc, 1, g->obj_sway[i]);
+        gl->Uniform4fv(g->sway_axis_loc, 1, g->obj_sway_axis[i]);
+    }
     if (mode == WW_GEOM_SHADOW || !d || d->nsub <= 0) {
         set_material(g, gl, NULL);
         return draw_mesh(gl, m);
@@ -1066,6 +1109,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     gl->DepthMask(GL_TRUE);
     gl->Uniform1i(g->mat_map, WW_TEX_MATERIAL);
     set_material(g, gl, NULL);
+    if (g->sway) gl->Uniform4f(g->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* the meshes are rigid */
     int draws = 0;
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
@@ -1076,6 +1120,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
         draws += draw_obj(g, gl, i, mode);
+    if (g->sway) gl->Uniform4f(g->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* later draws are rigid */
     if ((parts & WW_GEOM_PART_BUBBLES) && mode == WW_GEOM_MAIN && g->slot[SLOT_BUBBLE].ninst > 0) {
         /* over everything already drawn, the sky included; tested against depth, never written */
         gl->Uniform1i(g->mode, 3);

@@ -334,9 +334,14 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
                     sc->chest.ttl);
         if (s == WW_SYS_BUBBLES) fprintf(to, " %d emitters", sc->bubbles.count);
         if (s == WW_SYS_BOAT) fprintf(to, " radius %g m", sc->boat.radius);
-        if (s == WW_SYS_COLLIDE)
+        if (s == WW_SYS_COLLIDE) {
+            int solid = 0;
+            for (int i = 0; i < sc->models.count; i++) solid += sc->models.model[i].solid;
             fprintf(to, " boat %d, cubes %d, chest %d, models %d", sc->boat.on,
-                    sc->cubes.on ? sc->cubes.count : 0, sc->chest.on, sc->models.count);
+                    sc->cubes.on ? sc->cubes.count : 0, sc->chest.on, solid);
+            if (solid < sc->models.count)
+                fprintf(to, " (%d not solid)", sc->models.count - solid);
+        }
         fputc('\n', to);
     }
     print_water(sc, &p->water, to);

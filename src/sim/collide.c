@@ -80,12 +80,18 @@ static int get_solid(const ww_scene *sc, const ww_state *st, int k, double m, so
     }
     if (rides_boat(sc, k)) return 0;
     const ww_model_desc *md = &sc->models.model[k];
+    if (!md->solid) return 0; /* plants, groups: the camera passes */
     double c[3], half[3], fq[4];
     int floating = ww_floater_box(sc, st, k, c, half, fq); /* sim/floaters.h */
     if (floating < 0) return 0;
     if (floating > 0) {
         box(s, WW_SOLID_MODEL, k, c, half, m);
         for (int a = 0; a < 4; a++) s->q[a] = fq[a];
+        return 1;
+    }
+    if (md->oriented) {
+        box(s, WW_SOLID_MODEL, k, md->obb_c, md->obb_h, m);
+        for (int a = 0; a < 4; a++) s->q[a] = md->obb_q[a];
         return 1;
     }
     for (int a = 0; a < 3; a++) {
