@@ -16,8 +16,8 @@
 
 #define WW_TEST_PI 3.14159265358979323846
 
-/* the chest's glow (scenes/reef.yaml frame 480: the camera beside the chest, 0.4 s before it
- * picks it up; the column fills the left 250 of 640 columns) */
+/* the chest's glow (tests/data/reef_chest.yaml frame 480: the camera beside the chest, 0.4 s
+ * before it picks it up; the column fills the left 250 of 640 columns) */
 #define GLOW_COLS 0.35            /* the column's share of the width, from the left edge */
 #define DARK_ROW_DROP 12.0        /* 8-bit luma a row must fall below both neighbours by ... */
 #define DARK_ROW_SHARE 0.5        /* ... over this share of the column's width to be a dark row */
@@ -104,7 +104,7 @@ static int dark_rows(const pic *p) {
 TEST_IMAGE(light_glow_no_dark_row) {
     REQUIRE_GL();
     pic a;
-    if (!render_frame("scenes/reef.yaml", 480, "640x360", NULL, "glow_row", &a)) return;
+    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_row", &a)) return;
     int rows = dark_rows(&a);
     fprintf(stderr, "    dark rows across the column: %d\n", rows);
     ENSURE_MSG(rows == 0, "%d dark rows across the glow column", rows);
@@ -117,8 +117,8 @@ TEST_IMAGE(light_glow_without_seabed) {
     REQUIRE_GL();
     pic on, off;
     const char *ns = "--set render.seabed=false";
-    if (!render_frame("scenes/reef.yaml", 480, "640x360", ns, "glow_ns_on", &on)) return;
-    if (!render_frame("scenes/reef.yaml", 480, "640x360",
+    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", ns, "glow_ns_on", &on)) return;
+    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360",
                       "--set render.seabed=false --set objects.chest.glow=0", "glow_ns_off", &off))
         return;
     /* below eye level (the lower half), above the chest */
@@ -135,7 +135,7 @@ TEST_IMAGE(light_glow_without_seabed) {
 TEST_IMAGE(light_glow_pickup_bounded) {
     REQUIRE_GL();
     pic a, b;
-    if (!render_frame("scenes/reef.yaml", 480, "640x360", NULL, "glow_sat_reef", &a)) return;
+    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_sat_reef", &a)) return;
     if (!render_frame("scenes/lake.yaml", 300, "640x360", NULL, "glow_sat_lake", &b)) return;
     double sa = saturated_share(&a), sb = saturated_share(&b);
     fprintf(stderr, "    saturated share: reef 480 %.4f, lake 300 %.4f\n", sa, sb);
@@ -149,11 +149,11 @@ TEST_IMAGE(light_glow_pickup_bounded) {
 TEST_IMAGE(light_glow_key) {
     REQUIRE_GL();
     pic on, half, off;
-    if (!render_frame("scenes/reef.yaml", 480, "640x360", NULL, "glow_k1", &on)) return;
-    if (!render_frame("scenes/reef.yaml", 480, "640x360", "--set objects.chest.glow=0.5",
+    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_k1", &on)) return;
+    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", "--set objects.chest.glow=0.5",
                       "glow_k05", &half))
         return;
-    if (!render_frame("scenes/reef.yaml", 480, "640x360", "--set objects.chest.glow=0",
+    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", "--set objects.chest.glow=0",
                       "glow_k0", &off))
         return;
     double l1 = mean_luma(&on, 0.0, 0.0, GLOW_COLS, 0.7);

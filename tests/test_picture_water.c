@@ -319,7 +319,7 @@ TEST_IMAGE(picture_water_underwater_dark_at_night) {
 /* ---- caustics: seen on the seabed ------------------------------------------------------- */
 
 /* the seabed (the frame's lower 40%) with caustics on and off: how far the caustics move its
- * pixels, on the reef 10 m down (scenes/reef.yaml frame 420, the camera near the seabed) and in
+ * pixels, on the reef 10 m down (scenes/reef.yaml frame 420, the camera 1.3 m over the seabed by the chest) and in
  * the shallow lake of scenes/features/caustics.yaml. From the swell alone they moved the reef's
  * seabed by 2.84 levels on average and the lake's by 7.74; with the surface's fine ripples,
  * which focus most of the light under a light breeze, 7.70 and 10.40. */
