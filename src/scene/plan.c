@@ -36,7 +36,7 @@ const char *ww_format_name(ww_format f) {
     case WW_FMT_RGBA16F: return "rgba16f";
     case WW_FMT_DEPTH24: return "depth24";
     case WW_FMT_RGBA8: return "rgba8";
-    case WW_FMT_DEPTH24_STENCIL8: return "depth24s8";
+    case WW_FMT_DEPTH24_STENCIL8: return "d24s8";
     }
     return "?";
 }
@@ -211,7 +211,9 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
         add_target(p, "depth", WW_FMT_DEPTH24, rw, rh);
     }
     add_pass(p, WW_PASS_MAIN, "main",
-             p->geometry ? "HDR: sky, lit geometry, water" : "HDR: sky with sun disc, water");
+             !p->geometry ? "HDR: sky with sun disc, water"
+             : stencil    ? "HDR: sky, lit geometry, water; stencilled sun shadows"
+                          : "HDR: sky, lit geometry, water");
     add_target(p, "hdr", WW_FMT_RGBA16F, width, height);
     add_target(p, "depth", depth_fmt, width, height);
     if (rd->msaa > 1) {
