@@ -31,6 +31,11 @@
 #define PLANE_OFFSET_UNITS -4.0f
 #define SUN_MIN_Y 0.02         /* below this sun height (sin of elevation) nothing is cast */
 #define MAX_MESHES 64          /* adjacencies kept (procedural slots and OBJ models) */
+/* m: each volume starts this far beyond its caster, away from the sun. On the cap, the faces
+ * turned from the sun, the count is otherwise a coin toss (the cap and the face have one depth,
+ * computed twice), speckling them, and a smooth-shaded face there, whose normals still see the
+ * sun near the terminator, went dark along its facets instead of fading as the map has it */
+#define VOLUME_START 0.03
 /* volumes_visible: the volume's faces, premultiplied HDR colour and cover (seed 003's "show the
  * shadow volume": a violet glass) */
 static const float VOLUME_TINT[4] = {0.05f, 0.03f, 0.12f, 0.12f};
@@ -214,8 +219,10 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
         s->lost = 1;
         return;
     }
-    /* world positions of the welded corners, computed as used */
+    /* world positions of the welded corners, computed as used, moved VOLUME_START from the sun */
     float inf[4] = {-L[0], -L[1], -L[2], 0.0f};
+    float start[3] = {-(float)VOLUME_START * L[0], -(float)VOLUME_START * L[1],
+                      -(float)VOLUME_START * L[2]};
     for (int t = 0; t < a->ntri; t++) {
         const float *n = a->normal + 3 * t;
         if (side * (n[0] * Lm[0] + n[1] * Lm[1] + n[2] * Lm[2]) >= 0.0f) continue;
@@ -225,7 +232,8 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
             const float *p = a->pos + 3 * a->tri[3 * t + order[side < 0.0f][k]];
             float w[4] = {0, 0, 0, 1};
             for (int r = 0; r < 3; r++)
-                w[r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r];
+                w[r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r] +
+                       start[r];
             put4(s, w);
         }
     }
@@ -248,7 +256,8 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
             const float *p = a->pos + 3 * (k ? v1 : v0);
             w[k][3] = 1.0f;
             for (int r = 0; r < 3; r++)
-                w[k][r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r];
+                w[k][r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] +
+                          model[12 + r] + start[r];
         }
         if (side < 0.0f) {
             put4(s, w[1]);
