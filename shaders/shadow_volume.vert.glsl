@@ -5,5 +5,9 @@
 layout(location = 0) in vec4 a_pos;
 
 uniform mat4 u_view_proj; // camera-relative world -> clip
+uniform vec4 u_clip;      // keep a.x + b.y + c.z + d w >= 0 (the prepass's water plane), when enabled
 
-void main() { gl_Position = u_view_proj * a_pos; }
+void main() {
+    gl_ClipDistance[0] = dot(a_pos, u_clip);
+    gl_Position = u_view_proj * a_pos;
+}

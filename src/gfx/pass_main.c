@@ -106,7 +106,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         draw_bubbles(r, f);
     }
     /* volumes_visible: the volumes themselves, over everything opaque */
-    ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj);
+    ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, NULL);
     if (p->rt->fbo_ms) {
         /* post: resolve the samples: colour averaged, depth one sample per pixel (NEAREST, the
          * only filter a depth blit allows) */

@@ -190,14 +190,15 @@ int ww_geometry_draw_count(const ww_geometry *g);
 /* stencil_shadows.c: seed 003's stencilled sun shadows (render.shadows projected, volumes,
  * volumes_visible). The renderer makes one when the scene asks and has casters (its main pass
  * and prepass then have a stencil); a pass calls apply after its opaque geometry, with the
- * view_proj and clip it drew them with, and the main pass draw_visible after its water. */
+ * view_proj and clip it drew them with, and draw_visible after everything opaque (the main
+ * pass after its water). */
 typedef struct ww_stencil_shadows ww_stencil_shadows;
 ww_result ww_stencil_shadows_new(ww_renderer *r, const ww_scene *sc, ww_stencil_shadows **out,
                                  ww_error *err);
 void ww_stencil_shadows_apply(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
                               ww_geom_mode mode, mat4 view_proj, const float *clip);
 void ww_stencil_shadows_draw_visible(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
-                                     mat4 view_proj);
+                                     mat4 view_proj, const float *clip);
 void ww_stencil_shadows_free(ww_stencil_shadows *s, const ww_gl *gl);
 
 /* renderer.c: the targets of pass `id`, or NULL when the plan has no such pass */

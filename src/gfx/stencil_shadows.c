@@ -18,7 +18,8 @@
  * Then the marked pixels are drawn again over themselves (depth EQUAL, the same program and
  * vertices) without the sun's direct light: the ambient, the lamps, the emission and the fog
  * stay as they were, so a fogged seabed far off barely changes. volumes_visible draws the
- * volumes themselves translucent over the main pass too.
+ * volumes themselves translucent over the main pass and the prepass too (from above the water
+ * they are seen through it).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -59,7 +60,7 @@ typedef struct adjacency {
 struct ww_stencil_shadows {
     ww_shadow_technique technique;
     GLuint prog, vao, vbo;
-    GLint view_proj, tint;
+    GLint view_proj, tint, clip;
     int nmesh;
     adjacency mesh[MAX_MESHES];
     float *verts; /* this frame's volume triangles, camera-relative, 4 floats per corner */
@@ -285,12 +286,20 @@ static void build_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame 
     gl->BindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-static void draw_volumes(const ww_stencil_shadows *s, const ww_gl *gl, mat4 view_proj) {
+static void draw_volumes(const ww_stencil_shadows *s, const ww_gl *gl, mat4 view_proj,
+                         const float *clip) {
     gl->UseProgram(s->prog);
     gl->UniformMatrix4fv(s->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
+    if (clip) {
+        gl->Enable(GL_CLIP_DISTANCE0);
+        gl->Uniform4f(s->clip, clip[0], clip[1], clip[2], clip[3]);
+    } else {
+        gl->Uniform4f(s->clip, 0.0f, 0.0f, 0.0f, 1.0f);
+    }
     gl->BindVertexArray(s->vao);
     gl->DrawArrays(GL_TRIANGLES, 0, (GLsizei)s->nverts);
     gl->BindVertexArray(0);
+    gl->Disable(GL_CLIP_DISTANCE0);
 }
 
 /* ---- the passes' side ---- */
@@ -311,6 +320,7 @@ ww_result ww_stencil_shadows_new(ww_renderer *r, const ww_scene *sc, ww_stencil_
         }
         s->view_proj = ww_gfx_uniform(gl, s->prog, "u_view_proj");
         s->tint = ww_gfx_uniform(gl, s->prog, "u_tint");
+        s->clip = ww_gfx_uniform(gl, s->prog, "u_clip");
         gl->GenVertexArrays(1, &s->vao);
         gl->BindVertexArray(s->vao);
         gl->GenBuffers(1, &s->vbo);
@@ -375,7 +385,7 @@ static void mark_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *
     gl->DepthMask(GL_FALSE);
     gl->Disable(GL_CULL_FACE);
     gl->Enable(GL_DEPTH_CLAMP);
-    draw_volumes(s, gl, view_proj);
+    draw_volumes(s, gl, view_proj, NULL);
     gl->Disable(GL_DEPTH_CLAMP);
     gl->DepthMask(GL_TRUE);
 }
@@ -405,7 +415,7 @@ void ww_stencil_shadows_apply(ww_stencil_shadows *s, ww_renderer *r, const ww_fr
 }
 
 void ww_stencil_shadows_draw_visible(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
-                                     mat4 view_proj) {
+                                     mat4 view_proj, const float *clip) {
     if (!s || s->technique != WW_SHADOW_VOLUMES_VISIBLE || !(f->st->sun_dir[1] > SUN_MIN_Y))
         return;
     const ww_gl *gl = r->gl;
@@ -419,7 +429,7 @@ void ww_stencil_shadows_draw_visible(ww_stencil_shadows *s, ww_renderer *r, cons
     gl->Enable(GL_DEPTH_CLAMP);
     gl->Enable(GL_BLEND);
     gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied */
-    draw_volumes(s, gl, view_proj);
+    draw_volumes(s, gl, view_proj, clip);
     gl->Disable(GL_BLEND);
     gl->Disable(GL_DEPTH_CLAMP);
     gl->DepthMask(GL_TRUE);
