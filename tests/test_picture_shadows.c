@@ -280,6 +280,17 @@ TEST_IMAGE(shadow_volumes_agree_with_a_4096_map) {
                VOLUME_MAP_IOU);
 }
 
+/* an open mesh (the grid: a sheet facing up, toward the sun) casts too: each of its faces
+ * makes a volume, a lit one turned over */
+TEST_IMAGE(shadow_volumes_from_an_open_sheet) {
+    REQUIRE_GL();
+    double j;
+    volumes_against_map("--set 'objects.models=[{name: sheet, mesh: grid, position: [-0.5, -2, -4.5],"
+                        " scale: 1.5}]'", "sv_sheet", &j);
+    ENSURE_MSG(j >= VOLUME_MAP_IOU, "an open sheet's volumes against a 4096 map: IoU %.3f < %.2f",
+               j, VOLUME_MAP_IOU);
+}
+
 /* the camera inside the hull's volume (1.5 m from the hull's middle away from the sun), then
  * 2.5 m aside, outside it: depth-fail counting with the volume unclipped gives the same shadows
  * both times (an inverted count would light the shadow and shade the rest: IoU near 0) */

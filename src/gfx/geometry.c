@@ -71,10 +71,10 @@ static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
     [SLOT_BUBBLE] = WW_MESH_SPHERE,
 };
 
-/* the slots whose things cast shadow volumes: the solids (not the seabed, the open grid, the
- * see-through bubbles or the glow) */
+/* the slots whose things cast shadow volumes: what casts into the shadow map (not the seabed,
+ * the see-through bubbles or the glow) */
 static int slot_casts(int s) {
-    return s != SLOT_SEABED && s != SLOT_GRID && s != SLOT_BUBBLE && s != SLOT_COLUMN;
+    return s != SLOT_SEABED && s != SLOT_BUBBLE && s != SLOT_COLUMN;
 }
 
 /* a bubble's squared distance from the camera and its index, for the back-to-front order */

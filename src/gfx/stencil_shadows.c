@@ -51,6 +51,7 @@ typedef struct edge {
 typedef struct adjacency {
     const ww_mesh_data *mesh; /* key */
     int nvert, ntri, nedge;
+    int closed;               /* every edge has its two triangles */
     float *pos;               /* welded positions, 3 per vertex */
     int *tri;                 /* 3 welded corners per triangle */
     float *normal;            /* 3 per triangle, unnormalised (b - a) x (c - a) */
@@ -163,6 +164,9 @@ static int adjacency_build(const ww_mesh_data *m, adjacency *a) {
             }
             i = j;
         }
+        a->closed = 1;
+        for (int e = 0; e < a->nedge; e++)
+            if (a->edges[e].t1 < 0) a->closed = 0;
     }
     free(keys);
     free(remap);
@@ -195,10 +199,38 @@ static void put4(ww_stencil_shadows *s, const float p[4]) {
     memcpy(s->verts + 4 * s->nverts++, p, 4 * sizeof *p);
 }
 
+/* a face turned from the sun (model space; side -1 under a mirroring matrix) */
+static int is_dark(const adjacency *a, int t, const vec3 Lm, float side) {
+    const float *n = a->normal + 3 * t;
+    return side * (n[0] * Lm[0] + n[1] * Lm[1] + n[2] * Lm[2]) < 0.0f;
+}
+
+/* welded corner v into the volumes, in camera-relative world, moved by `start` */
+static void put_corner(ww_stencil_shadows *s, const adjacency *a, int v, const float model[16],
+                       const float start[3]) {
+    const float *p = a->pos + 3 * v;
+    float w[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    for (int r = 0; r < 3; r++)
+        w[r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r] +
+               start[r];
+    put4(s, w);
+}
+
+/* the side of edge p -> q (reversed when `flip`) out to the point at infinity */
+static void put_side(ww_stencil_shadows *s, const adjacency *a, int p, int q, int flip,
+                     const float model[16], const float start[3], const float inf[4]) {
+    put_corner(s, a, flip ? q : p, model, start);
+    put_corner(s, a, flip ? p : q, model, start);
+    put4(s, inf);
+}
+
 /* one caster instance's volume: the faces turned from the sun (model space: n . L_m < 0, with
  * L_m = A^-1 L, since n_world . L = n . A^-1 L for n_world = A^-T n) are the near cap, wound
- * inward-out; each edge between such a face and a face toward the sun (or none) is a silhouette
- * edge, a triangle out to the point at infinity away from the sun */
+ * to face the sun; each edge between such a face and a face toward the sun (or none) is a
+ * silhouette edge, a triangle out to the point at infinity away from the sun. A mesh with open
+ * edges (a sheet, a leaf) may show the sun either side: each of its faces casts, a lit one
+ * turned over, so a sheet facing the sun casts as one facing away does (the count is then the
+ * number of faces above a point, never 0 in a shadow) */
 static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const float model[16]) {
     (void)mesh_id;
     ww_stencil_shadows *s = user;
@@ -225,49 +257,31 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
     float start[3] = {-(float)VOLUME_START * L[0], -(float)VOLUME_START * L[1],
                       -(float)VOLUME_START * L[2]};
     for (int t = 0; t < a->ntri; t++) {
-        const float *n = a->normal + 3 * t;
-        if (side * (n[0] * Lm[0] + n[1] * Lm[1] + n[2] * Lm[2]) >= 0.0f) continue;
-        /* reversed: the cap faces the sun (a mirroring matrix has reversed it already) */
+        int dark = is_dark(a, t, Lm, side);
+        if (!dark && a->closed) continue;
+        /* the cap faces the sun: a dark face reversed, an open mesh's lit face as it is (and a
+         * mirroring matrix has reversed both already) */
         static const int order[2][3] = {{0, 2, 1}, {0, 1, 2}};
-        for (int k = 0; k < 3; k++) {
-            const float *p = a->pos + 3 * a->tri[3 * t + order[side < 0.0f][k]];
-            float w[4] = {0, 0, 0, 1};
-            for (int r = 0; r < 3; r++)
-                w[r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r] +
-                       start[r];
-            put4(s, w);
-        }
+        const int *o = order[!dark != (side < 0.0f)];
+        for (int k = 0; k < 3; k++) put_corner(s, a, a->tri[3 * t + o[k]], model, start);
     }
     for (int e = 0; e < a->nedge; e++) {
         const edge *ed = &a->edges[e];
-        const float *n0 = a->normal + 3 * ed->t0;
-        int dark0 = side * (n0[0] * Lm[0] + n0[1] * Lm[1] + n0[2] * Lm[2]) < 0.0f;
-        int dark1 = 0;
-        if (ed->t1 >= 0) {
-            const float *n1 = a->normal + 3 * ed->t1;
-            dark1 = side * (n1[0] * Lm[0] + n1[1] * Lm[1] + n1[2] * Lm[2]) < 0.0f;
+        int dark0 = is_dark(a, ed->t0, Lm, side);
+        if (ed->t1 < 0) {
+            /* an open edge: its face's side (turned away from the sun when it is lit) */
+            if (dark0 || !a->closed) put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model,
+                                              start, inf);
+            continue;
         }
-        if (dark0 == dark1 && ed->t1 >= 0) continue; /* not on the silhouette */
-        if (!dark0 && ed->t1 < 0) continue;          /* an open edge of a lit face */
-        /* the side runs along the edge as the dark face does: v0 -> v1 in t0, or reversed when
-         * the dark one is t1 */
-        int v0 = dark0 ? ed->v0 : ed->v1, v1 = dark0 ? ed->v1 : ed->v0;
-        float w[2][4];
-        for (int k = 0; k < 2; k++) {
-            const float *p = a->pos + 3 * (k ? v1 : v0);
-            w[k][3] = 1.0f;
-            for (int r = 0; r < 3; r++)
-                w[k][r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] +
-                          model[12 + r] + start[r];
-        }
-        if (side < 0.0f) {
-            put4(s, w[1]);
-            put4(s, w[0]);
-        } else {
-            put4(s, w[0]);
-            put4(s, w[1]);
-        }
-        put4(s, inf);
+        int dark1 = is_dark(a, ed->t1, Lm, side);
+        if (dark0 == dark1) continue; /* not on the silhouette */
+        /* the side runs along the edge as the dark face does (v0 -> v1 in t0, v1 -> v0 in t1);
+         * an open mesh's lit face, turned away from the sun, gives a side of its own too */
+        if (dark0 || !a->closed) put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model,
+                                          start, inf);
+        if (dark1 || !a->closed) put_side(s, a, ed->v1, ed->v0, !dark1 != (side < 0.0f), model,
+                                          start, inf);
     }
 }
 
