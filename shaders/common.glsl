@@ -34,6 +34,7 @@ uniform vec2 u_sky_mode;      // (1: Preetham's sky, its share against the twili
 uniform vec4 u_sky_clouds;    // (cover 0..1, 0 none; drift x, z in noise units; -)
 
 vec3 ww_sky_physical(vec3 d); // below, after the noise it draws the clouds with
+float ww_acos(float x);
 float ww_sky_cloud(vec3 d);
 
 // the sky seen along unit direction d, without the sun disc: a gradient from the horizon to the
@@ -123,6 +124,34 @@ vec4 ww_sky_dome(vec3 d, vec2 drift) {
     return vec4(mix(c, cloud, cover), cover);
 }
 
+// ---- the dome's picture (sky.image) ---------------------------------------------------------
+// Seed 003 paints its dome. WW_SKY_DOME_IMAGE 1 (gfx/sky.c, sky.model dome with sky.image) maps
+// the picture by the classic dome projection (azimuthal equidistant, as a fisheye photograph of
+// the whole sky): the image's centre is the zenith, the circle inscribed in it the horizon, the
+// distance from the centre proportional to the zenith angle; the image's top is -z (north, ahead
+// of a camera with no yaw), its right +x. Chosen over the upper half of an equirectangular map:
+// no seam where the azimuth wraps (which breaks the mip selection along a line) and no pinch at
+// the zenith, where an equirectangular map spends a whole row on one point; the texels spread
+// evenly over the sky. Below the horizon the horizon's ring, darkened as the gradient is.
+#ifndef WW_SKY_DOME_IMAGE
+#define WW_SKY_DOME_IMAGE 0
+#endif
+#if WW_SKY_DOME_IMAGE
+uniform sampler2D u_sky_dome_image; // sRGB, decoded to linear by the sampler
+
+vec2 ww_dome_uv(vec3 d) {
+    float h = length(d.xz);
+    vec2 az = h > 1e-6 ? d.xz / h : vec2(0.0);
+    float r = 0.5 * min(ww_acos(clamp(d.y, -1.0, 1.0)) / (0.5 * WW_PI), 1.0);
+    return vec2(0.5) + r * az; // image x toward +x, image rows (t, top first) toward +z
+}
+
+vec3 ww_sky_dome_image(vec3 d) {
+    vec3 c = texture(u_sky_dome_image, ww_dome_uv(d)).rgb;
+    return d.y >= 0.0 ? c : c * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
+}
+#endif
+
 // ---- point and spot lights on a surface --------------------------------------------------------
 // Light i's irradiance factor at p (camera-relative) and the unit vector l toward it: the smooth
 // range window of Karis, "Real Shading in Unreal Engine 4" (SIGGRAPH 2013 course),
@@ -139,25 +168,159 @@ float ww_light_att(int i, vec3 p, out vec3 l) {
     return att;
 }
 
-// the water lit by the lights, toward v (unit, toward the eye) at p with normal n: the body's
-// diffuse light (albedo: the water colour) and the surface's normalised Blinn-Phong reflection
-// (s + 8) / (8 pi) (n.h)^s, with Schlick's Fresnel of water (F0 0.02) on h.v, so a lantern over
-// the water draws its glitter path as the sun does
-vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess) {
+// the water lit by the lights, toward v (unit, toward the eye) at p with normal n (facing the
+// eye): the body's diffuse light (albedo: the water colour) and the surface's normalised
+// Blinn-Phong reflection (s + 8) / (8 pi) (n.h)^s with the Fresnel reflectance on h.v, so a
+// lantern over the water draws its glitter path as the sun does. From above (below false):
+// Schlick's (F0 0.02); the body also glows over a light under the surface (|n.l|: the water
+// just beneath scatters what crosses it either way, less what the surface reflects back). From
+// below (below true): the water side's, 1 past the critical angle asin(1 / 1.333) (total
+// internal reflection), else Schlick's on the air side's angle, so a lantern under the water
+// lights a pool on the underside of the surface above it.
+vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess, bool below) {
     vec3 c = vec3(0.0);
     float norm = (shininess + 8.0) / (8.0 * WW_PI);
     for (int i = 0; i < u_nlights; i++) {
         vec3 l;
         float att = ww_light_att(i, p, l);
-        float nl = max(dot(n, l), 0.0);
-        if (att <= 0.0 || nl <= 0.0) continue;
+        float nl = dot(n, l);
+        if (att <= 0.0 || (below && nl <= 0.0)) continue;
+        if (nl <= 0.0) {
+            // a light under the surface seen from above: what crosses into the body's glow
+            if (below || l.y >= 0.0) continue;
+            c += u_light_color[i] * att * (-nl) * 0.98 * albedo / WW_PI;
+            continue;
+        }
         vec3 h = normalize(l + v);
-        float m = 1.0 - clamp(dot(h, v), 0.0, 1.0), m2 = m * m;
-        float fr = 0.02 + 0.98 * m2 * m2 * m;
+        float ch = clamp(dot(h, v), 0.0, 1.0), fr;
+        if (below) {
+            float s2 = 1.777689 * (1.0 - ch * ch); // sin^2 of the refracted angle, 1.333^2
+            float m = s2 >= 1.0 ? 0.0 : 1.0 - sqrt(1.0 - s2), m2 = m * m;
+            fr = s2 >= 1.0 ? 1.0 : 0.02 + 0.98 * m2 * m2 * m;
+        } else {
+            float m = 1.0 - ch, m2 = m * m;
+            fr = 0.02 + 0.98 * m2 * m2 * m;
+        }
         float spec = norm * pow(max(dot(n, h), 0.0), shininess) * fr;
         c += u_light_color[i] * att * nl * (albedo / WW_PI + spec);
     }
     return c;
+}
+
+// ---- the lights' glow in the water: single in-scattering along a view ray -----------------
+// WW_LIGHT_SCATTER 1 (gfx/geometry.c, per scene: some light has lights[].scatter > 0) builds it
+// in; without it the call folds to zero. Light i scattered once toward the eye by the water
+// along the ray o + t d, t in [t0, t1] (under water), is
+//   L = scatter_i rho C_i int att_i(x(t)) p(theta) T(t) dt,   T(t) = exp(-(rho (t - t0))^2),
+// rho fog.below.density taken as the scattering coefficient, att the lights' own window and
+// cone (ww_light_att: surfaces and water see the same light), T the exp2 fog's transmittance
+// from where the ray enters the water, p Henyey-Greenstein's phase (water scatters forward).
+// The ray is first clipped to the light's range sphere and, for a spot, to its cone
+// (analytically: no step is spent outside), then integrated with WW_SCATTER_STEPS samples spaced
+// equiangularly about the light (Kulla and Fajardo, "Importance Sampling Techniques for Path
+// Tracing in Participating Media", EGSR 2012): t = t_c + H tan(a), so the 1 / (dist^2 + 1) of
+// the falloff cancels against dt = H sec^2(a) da and each sample weighs (a1 - a0) / (N H); a
+// smooth integrand remains, exact for a bare point light. The samples' start is dithered per
+// pixel (interleaved gradient noise, Jimenez 2014: a fixed function of the pixel, deterministic)
+// so the few steps leave no bands.
+#ifndef WW_LIGHT_SCATTER
+#define WW_LIGHT_SCATTER 0
+#endif
+const int WW_SCATTER_STEPS = 12;
+const float WW_SCATTER_G = 0.45; // Henyey-Greenstein asymmetry: forward, as sea water's particles
+
+#if WW_LIGHT_SCATTER
+uniform float u_light_scatter[WW_NLIGHTS_MAX]; // lights[].scatter, 0: this light adds no glow
+// the geometry's prepass (gfx/geometry.c): what lies under the water seen from above through it,
+// so a ray from above glows along its part under the plane; in the other passes such a point is
+// hidden by the opaque water or lies in the air inside a hull, and gets none
+uniform bool u_scatter_through;
+
+// the interval of t in which o + t d lies inside the forward nappe of light i's cone (cos c about
+// axis a from the apex q): (x - q).a >= c |x - q| is q(t) = A t^2 + 2 B t + C >= 0 on the
+// nappe's side; one interval at most (a line crosses a convex nappe once)
+vec2 ww_cone_clip(vec3 co, vec3 d, vec3 a, float c, vec2 r) {
+    float da = dot(d, a), ca = dot(co, a), c2 = c * c;
+    float A = da * da - c2, B = da * ca - c2 * dot(d, co), C = ca * ca - c2 * dot(co, co);
+    float disc = B * B - A * C;
+    if (abs(A) < 1e-6) {
+        // the ray runs along the cone's side: one crossing, inside on the axis' side
+        if (abs(B) < 1e-9) return C >= 0.0 && ca >= 0.0 ? r : vec2(1.0, 0.0);
+        float tx = -0.5 * C / B;
+        return da > 0.0 ? vec2(max(r.x, tx), r.y) : vec2(r.x, min(r.y, tx));
+    }
+    if (disc < 0.0) return A > 0.0 && ca >= 0.0 ? r : vec2(1.0, 0.0);
+    float s = sqrt(disc), ta = (-B - s) / A, tb = (-B + s) / A;
+    vec2 i;
+    if (A < 0.0) i = vec2(min(ta, tb), max(ta, tb));    // inside between the crossings
+    else i = da > 0.0 ? vec2(max(ta, tb), 1e30) : vec2(-1e30, min(ta, tb)); // toward the nappe
+    // the forward nappe only: (co + t d).a >= 0
+    if (abs(da) > 1e-9) {
+        float th = -ca / da;
+        if (da > 0.0) i.x = max(i.x, th); else i.y = min(i.y, th);
+    } else if (ca < 0.0) {
+        return vec2(1.0, 0.0);
+    }
+    return vec2(max(i.x, r.x), min(i.y, r.y));
+}
+
+vec3 ww_lights_scatter(vec3 o, vec3 d, float t0, float t1, float rho, vec2 px) {
+    vec3 sum = vec3(0.0);
+    float xi = fract(52.9829189 * fract(dot(px, vec2(0.06711056, 0.00583715))));
+    float g = WW_SCATTER_G, g2 = g * g;
+    for (int i = 0; i < u_nlights; i++) {
+        float k = u_light_scatter[i];
+        if (k <= 0.0) continue;
+        vec4 q = u_light_param[i];
+        vec3 co = o - u_light_pos[i];
+        // the range sphere |co + t d| <= range
+        float b = dot(co, d), c = dot(co, co) - q.x * q.x, disc = b * b - c;
+        if (disc <= 0.0) continue;
+        float s = sqrt(disc);
+        vec2 r = vec2(max(t0, -b - s), min(t1, -b + s));
+        if (q.w > 0.5) r = ww_cone_clip(co, d, u_light_dir[i], q.y, r);
+        if (r.y <= r.x) continue;
+        // equiangular samples about the ray's closest approach t_c (the +1 of the falloff
+        // widens H)
+        float tc = -b, H = sqrt(max(dot(co, co) - b * b, 0.0) + 1.0);
+        float a0 = atan((r.x - tc) / H), a1 = atan((r.y - tc) / H);
+        float da = (a1 - a0) / float(WW_SCATTER_STEPS), f = 0.0;
+        for (int j = 0; j < WW_SCATTER_STEPS; j++) {
+            float t = tc + H * tan(a0 + (float(j) + xi) * da);
+            vec3 x = co + t * d; // from the light
+            float dist = length(x), xr = dist / q.x, xr2 = xr * xr;
+            float win = clamp(1.0 - xr2 * xr2, 0.0, 1.0);
+            vec3 l = x / max(dist, 1e-4);
+            float w = win * win;
+            if (q.w > 0.5) w *= smoothstep(q.y, q.z, dot(l, u_light_dir[i]));
+            // the phase: the light travels along l, the eye looks back along -d
+            float m = 1.0 + g2 + 2.0 * g * dot(l, d);
+            float ph = (1.0 - g2) / (4.0 * WW_PI * m * sqrt(m));
+            float e = rho * (t - t0);
+            f += w * ph * exp(-e * e);
+        }
+        sum += u_light_color[i] * (k * rho * f * da / H);
+    }
+    return sum;
+}
+#endif
+
+// the glow the lights add to the view ray from e to p (camera-relative), on its part under the
+// water plane water_y; air_only: the ray stands for a path through the air (the reflection);
+// px: the pixel (gl_FragCoord.xy), which dithers the samples
+vec3 ww_lights_scatter_segment(vec3 e, vec3 p, float water_y, bool air_only, float rho, vec2 px) {
+#if WW_LIGHT_SCATTER
+    if (air_only || u_nlights == 0) return vec3(0.0);
+    float he = e.y - water_y, hp = p.y - water_y, len = length(p - e);
+    vec3 d = (p - e) / max(len, 1e-6);
+    if (he < 0.0 && hp < 0.0) return ww_lights_scatter(e, d, 0.0, len, rho, px);
+    if ((he >= 0.0 && hp >= 0.0) || (he >= 0.0 && !u_scatter_through)) return vec3(0.0);
+    float cross = len * he / (he - hp); // where the segment meets the plane
+    return he < 0.0 ? ww_lights_scatter(e, d, 0.0, cross, rho, px)
+                    : ww_lights_scatter(e, d, cross, len, rho, px);
+#else
+    return vec3(0.0);
+#endif
 }
 
 // ---- Preetham's daylight sky and drifting clouds ---------------------------------------------

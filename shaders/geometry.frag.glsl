@@ -14,10 +14,16 @@
 // 3 an air bubble (blended, premultiplied).
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
-// Defines: WW_CAUSTICS 1 when water.look.caustics is on.
+// Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture;
+// WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns, below);
+// WW_LIGHT_SCATTER 1 when a light glows in the water (common.glsl: the lights' in-scattering
+// along the part of the view ray under water).
 
 #ifndef WW_CAUSTICS
 #define WW_CAUSTICS 0
+#endif
+#ifndef WW_FISH_PATTERNS
+#define WW_FISH_PATTERNS 0
 #endif
 
 uniform int u_mode;
@@ -46,6 +52,10 @@ in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_color;
 in float v_spec;
+#if WW_FISH_PATTERNS
+in vec3 v_mesh;
+flat in float v_pattern;
+#endif
 out vec4 o_color;
 
 const float WW_SHININESS = 48.0;
@@ -53,7 +63,7 @@ const float WW_ETA_WATER = 1.333;
 const float BUBBLE_DISC_MEAN = 0.55; // a bubble's mean reflectance over its disc (see mode 3)
 const float WW_CAUSTIC_MIN_DET = 0.12; // caps the focus at about 8x (the sun is not a point)
 
-#if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
+#if WW_CAUSTICS == 1 && WW_WAVE_MODEL != WW_MODEL_FLAT
 // caustics: the refracted sun through the surface above lands at x = q + d T(n(q)); to first
 // order in the slope T_xz = -kappa grad h with kappa = 1 - 1 / eta, so the landing map is
 // q -> q - d kappa grad h(q) and the light it carries spreads by its Jacobian determinant
@@ -64,6 +74,42 @@ const int WW_NDETAIL = 6; // gfx/render_impl.h: WW_WATER_NDETAIL
 // the surface's normal-only detail (gfx/waveblock.c), as water.frag.glsl's: (k Dx, k Dz 1/m,
 // slope amplitude A k, phase at the camera rad), longest first
 uniform vec4 u_detail[WW_NDETAIL];
+// the water's DuDv pattern (water.frag.glsl; gfx/waveblock.c: ww_water_dudv): per layer the mat2
+// from camera-relative metres to lattice cells and the offset, and (DETAIL_SLOPE / cells per
+// metre, 0): the height of the small ripples it stands for per unit of noise
+uniform vec4 u_dudv_m[2];
+uniform vec2 u_dudv_o[2];
+uniform vec2 u_dudv_h;
+const float DUDV_WEIGHT0 = 0.6; // water.frag.glsl: LAYER_WEIGHT0, LAYER_WEIGHT1
+const float DUDV_WEIGHT1 = 0.4;
+
+// water.frag.glsl's lattice hash (PCG output permutation, 256 cells), so the caustics see the
+// same ripples the water's shading draws
+float ww_dudv_hash(ivec2 c) {
+    uvec2 q = uvec2(c & 255);
+    uint h = q.x + q.y * 256u;
+    h = h * 747796405u + 2891336453u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    return float(h) * (1.0 / 4294967295.0);
+}
+
+// the Hessian (d2n/dx2, d2n/dy2, d2n/dxdy, in cells) of the DuDv's value noise in [-1, 1]: the
+// same lattice values, interpolated with the septic fade 35f^4 - 84f^5 + 70f^6 - 20f^7, whose
+// first three derivatives vanish at the cell edges. With the water's cubic fade the curvature
+// jumps at every edge, with Perlin's quintic ("Improving Noise", 2002) it kinks there: either
+// way the caustics would draw the lattice's straight lines.
+vec3 ww_dudv_hessian(vec2 x) {
+    vec2 i = floor(x), f = x - i, g = 1.0 - f;
+    vec2 u = f * f * f * f * (35.0 - f * (84.0 - f * (70.0 - 20.0 * f)));
+    vec2 du = 140.0 * f * f * f * g * g * g;
+    vec2 ddu = 420.0 * f * f * g * g * (1.0 - 2.0 * f);
+    ivec2 c = ivec2(i);
+    float a = ww_dudv_hash(c), b = ww_dudv_hash(c + ivec2(1, 0));
+    float d = ww_dudv_hash(c + ivec2(0, 1)), e = ww_dudv_hash(c + ivec2(1, 1));
+    float k = a - b - d + e;
+    return 2.0 * vec3(ddu.x * (b - a + k * u.y), ddu.y * (d - a + k * u.x), k * du.x * du.y);
+}
 
 float ww_caustic(vec2 q, float depth) {
     float kappa = 1.0 - 1.0 / WW_ETA_WATER;
@@ -87,8 +133,39 @@ float ww_caustic(vec2 q, float depth) {
         vec2 d = w.xy / k;
         H -= (f * w.z * k * sin(w.w + dot(w.xy, q))) * outerProduct(d, d);
     }
+    // the irregular small ripples the water's DuDv pattern draws (seed 002): a height
+    // u_dudv_h.x sum_j w_j n_j(M_j q + o_j), whose Hessian is M_j^T Hn M_j per layer. Without
+    // them, 10 m down only the two longest detail sines outlast the sun's blur and their
+    // product draws a plaid; real caustics there are an irregular web.
+    for (int j = 0; j < 2; j++) {
+        mat2 m = mat2(u_dudv_m[j].xy, u_dudv_m[j].zw);
+        float f = smoothstep(2.0 * blur, 6.0 * blur, 1.0 / length(m[0])); // a cell, m
+        if (f == 0.0) continue;
+        vec3 hn = ww_dudv_hessian(m * q + u_dudv_o[j]);
+        mat2 hc = mat2(hn.x, hn.z, hn.z, hn.y);
+        H += (f * u_dudv_h.x * (j == 0 ? DUDV_WEIGHT0 : DUDV_WEIGHT1)) * (transpose(m) * hc * m);
+    }
     mat2 J = mat2(1.0) - (depth * kappa) * H;
     return 1.0 / max(abs(determinant(J)), WW_CAUSTIC_MIN_DET);
+}
+#endif
+
+#if WW_CAUSTICS == 2
+// method texture: seed 003's looped set of caustic frames (gfx/caustic_set.c), computed from the
+// wave field on a periodic patch and focused at the seabed's depth; sampled at the surface point
+// q the refracted sun ray left from, the two frames of this instant blended
+uniform sampler2DArray u_caustic_set;
+uniform vec4 u_caustic_set_at;    // (camera x, z wrapped to the patch m; 1 / patch 1/m; depth m)
+uniform vec2 u_caustic_set_frame; // (frame, the next one's weight)
+
+float ww_caustic(vec2 q, float depth) {
+    vec2 uv = (q + u_caustic_set_at.xy) * u_caustic_set_at.z;
+    // layer i holds frames i and i + 1: one lookup for both
+    vec2 ab = texture(u_caustic_set, vec3(uv, u_caustic_set_frame.x)).rg;
+    float c = mix(ab.x, ab.y, u_caustic_set_frame.y);
+    // shallower than the depth it was focused at, the focusing d kappa H grows with the depth
+    // (to first order): the contrast scales down with it
+    return 1.0 + (c - 1.0) * min(depth / u_caustic_set_at.w, 1.0);
 }
 #endif
 
@@ -108,6 +185,47 @@ vec3 ww_fog_segment(vec3 c, vec3 p) {
     c = ww_fog(c, len - near, p_below);
     return ww_fog(c, near, eye_below);
 }
+
+#if WW_FISH_PATTERNS
+// a species' markings over its albedo c, in mesh space (head +x, back +y, unit length):
+//   1 slim (mackerel): a dark back with wavy dark bars over a silver belly, lateral line above
+//     the middle;
+//   2 deep (angelfish, butterflyfish): dark vertical bands (one through the eye), dark fin edges;
+//   3 long: a paler belly and pale spots along the flank.
+// Every fish gets a dark eye with a light ring. Bands fade to their mean where they would be
+// finer than a pixel (fwidth), so a far school does not shimmer.
+vec3 ww_fish_pattern(vec3 c, vec3 m, float pattern) {
+    int k = int(pattern + 0.5);
+    vec2 eye = k == 1 ? vec2(0.40, 0.02) : k == 2 ? vec2(0.33, 0.07) : vec2(0.44, 0.012);
+    float eye_r = k == 1 ? 0.02 : k == 2 ? 0.03 : 0.014;
+    if (k == 1) {
+        vec3 belly = vec3(0.72, 0.75, 0.78);
+        float back = smoothstep(-0.005, 0.025, m.y);
+        float ph = 48.0 * m.x + 3.0 * sin(90.0 * m.y);
+        float aa = clamp(1.0 - 2.0 * fwidth(ph) / 6.2832, 0.0, 1.0);
+        float bar = mix(0.5, smoothstep(0.2, 0.6, sin(ph)), aa);
+        c = mix(belly, c * (1.0 - 0.7 * bar), back);
+    } else if (k == 2) {
+        float ph = 4.5 * m.x + 0.17;
+        float aa = clamp(1.0 - 4.0 * fwidth(ph), 0.0, 1.0);
+        float f = fract(ph);
+        float band = mix(0.3, smoothstep(0.0, 0.04, f) * (1.0 - smoothstep(0.26, 0.3, f)), aa);
+        band = max(band, smoothstep(0.36, 0.42, abs(m.y)));
+        c = mix(c, c * 0.05, band);
+    } else if (k == 3) {
+        c = mix(c, vec3(0.85, 0.62, 0.5), smoothstep(0.0, -0.03, m.y));
+        float ph = 70.0 * m.x, aa = clamp(1.0 - 2.0 * fwidth(ph) / 6.2832, 0.0, 1.0);
+        float spot = smoothstep(0.75, 0.9, sin(ph) * sin(160.0 * m.y + 1.0)) * aa;
+        c = mix(c, vec3(0.95, 0.8, 0.65), 0.6 * spot);
+    }
+    float d = length(m.xy - eye);
+    if (abs(m.z) > 0.004) {
+        c = mix(c, vec3(0.8), 1.0 - smoothstep(eye_r, eye_r * 1.35, d));
+        c = mix(c, vec3(0.02), 1.0 - smoothstep(eye_r * 0.75, eye_r * 0.95, d));
+    }
+    return c;
+}
+#endif
 
 void main() {
     if (u_mode == 0) {
@@ -205,6 +323,9 @@ void main() {
     if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
     vec3 albedo = v_color.rgb * u_mat_kd.rgb;
     if (u_mat_kd.a > 0.5) albedo *= texture(u_mat_map, v_uv).rgb;
+#if WW_FISH_PATTERNS
+    if (v_pattern > 0.5) albedo = ww_fish_pattern(albedo, v_mesh, v_pattern);
+#endif
     // the specular colour and exponent: the material's, or the instance's strength at
     // WW_SHININESS
     bool mat_spec = u_mat_ks.a > 0.0;
@@ -233,7 +354,7 @@ void main() {
             sun *= (1.0 - (0.02 + 0.98 * m2 * m2 * m)) * ci / max(-ts.y, 1e-3);
         }
         amb *= t;
-#if WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT
+#if WW_CAUSTICS == 2 || (WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT)
         // the surface point the refracted sun ray through p left from (camera-relative xz)
         vec3 tr = refract(-u_sun_dir, vec3(0.0, 1.0, 0.0), 1.0 / WW_ETA_WATER);
         vec2 q = p.xz - tr.xz * (depth / min(tr.y, -0.05));
@@ -256,5 +377,7 @@ void main() {
         c += u_light_color[i] * att * (albedo * nl + sl);
     }
     c += albedo * v_color.a + u_mat_ke.rgb; // emission: the instance's factor, the material's Ke
-    o_color = vec4(ww_fog_segment(c, p), u_mat_ke.a);
+    c = ww_fog_segment(c, p) + ww_lights_scatter_segment(u_eye, p, u_water_y, u_mirrored,
+                                                         u_fog_below_density, gl_FragCoord.xy);
+    o_color = vec4(c, u_mat_ke.a);
 }

@@ -5,22 +5,41 @@
 // Fish swim: a travelling wave runs down the body, weighted by the tail weight in uv.x
 // (gfx/meshgen.h), swinging vertices sideways (mesh z); a fish's phase and amplitude come per
 // instance, so the whole school is one draw.
+// Defines: WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns
+// in geometry.frag.glsl need the mesh-space position).
+// Plants sway (WW_SWAY, defined only in scenes with a swaying model): the water's surge pushes a
+// plant sideways along u_sway_axis.zw by s = A w^2 sin(phase - lag w), w its height above the
+// base over its height: the base stays, the tip moves most and lags, so a wave runs up a frond.
+// The phase (CPU, from the frame's simulated time and the plant's place) is per draw.
+
+#ifndef WW_FISH_PATTERNS
+#define WW_FISH_PATTERNS 0
+#endif
 
 layout(location = 0) in vec3 a_pos;      // mesh space, m
 layout(location = 1) in vec3 a_normal;   // mesh space
 layout(location = 2) in vec2 a_uv;
 layout(location = 3) in mat4 a_model;    // mesh -> camera-relative world (locations 3..6)
 layout(location = 7) in vec4 a_color;    // linear RGB albedo, a: emission factor
-layout(location = 8) in vec4 a_extra;    // (wiggle phase rad, wiggle amplitude, specular, 0)
+layout(location = 8) in vec4 a_extra;    // (wiggle phase rad, wiggle amplitude, specular,
+                                         //  fish pattern: 0 none, 1 + ww_fish_shape)
 
 uniform mat4 u_view_proj;  // camera-relative world -> clip
 uniform vec4 u_clip;       // keep a.x + b.y + c.z + d >= 0 (camera-relative), when enabled
+#if WW_SWAY
+uniform vec4 u_sway;       // (amplitude at the tip m (0: rigid), phase rad, lag rad, height m)
+uniform vec4 u_sway_axis;  // (mesh y of the base, 1 / mesh height, direction x, direction z)
+#endif
 
 out vec3 v_pos;     // camera-relative world, m
 out vec3 v_normal;  // world
 out vec2 v_uv;
 out vec4 v_color;
 out float v_spec;
+#if WW_FISH_PATTERNS
+out vec3 v_mesh;           // mesh space at rest (the pattern stays on the bending body)
+flat out float v_pattern;
+#endif
 
 const float WW_WIGGLE_K = 9.0; // rad per mesh unit: about 1.4 waves along the body
 
@@ -35,12 +54,30 @@ void main() {
         nrm = normalize(vec3(nrm.x - slope * nrm.z, nrm.y, nrm.z));
     }
     vec4 p = a_model * vec4(q, 1.0);
-    v_pos = p.xyz;
     // the inverse transpose: models may scale unevenly (chest, OBJ models)
     v_normal = transpose(inverse(mat3(a_model))) * nrm;
+#if WW_SWAY
+    if (u_sway.x != 0.0) {
+        // p += D s(y): the map's Jacobian is I + D grad(s)^T with D horizontal and grad(s)
+        // vertical, so normals (the inverse transpose) lose ds/dy (D . n) from their y
+        float w = clamp((a_pos.y - u_sway_axis.x) * u_sway_axis.y, 0.0, 1.0);
+        float arg = u_sway.y - u_sway.z * w;
+        float s = u_sway.x * w * w * sin(arg);
+        float ds = u_sway.x * (2.0 * w * sin(arg) - u_sway.z * w * w * cos(arg)) / u_sway.w;
+        vec2 d = u_sway_axis.zw;
+        p.xz += d * s;
+        vec3 n = normalize(v_normal);
+        v_normal = vec3(n.x, n.y - ds * dot(d, n.xz), n.z);
+    }
+#endif
+    v_pos = p.xyz;
     v_uv = a_uv;
     v_color = a_color;
     v_spec = a_extra.z;
+#if WW_FISH_PATTERNS
+    v_mesh = a_pos;
+    v_pattern = a_extra.w;
+#endif
     gl_ClipDistance[0] = dot(vec4(p.xyz, 1.0), u_clip);
     gl_Position = u_view_proj * p;
 }

@@ -1,6 +1,6 @@
 #version 330 core
 // reflection_sky.frag.glsl - the sky of the planar reflection pass (pass_reflection.c): the
-// gradient (common.glsl) or the cubemap along each pixel's mirrored ray, without the sun disc:
+// gradient (common.glsl), the cubemap or the dome's picture along each pixel's mirrored ray, without the sun disc:
 // the water's sun glitter is the disc's reflection, spread by the waves (water.frag.glsl), and
 // a second, mirror-sharp disc in the texture would count it twice.
 
@@ -15,6 +15,10 @@ out vec4 o_color;
 void main() {
     vec4 p = u_inv_view_proj * vec4(v_ndc, 1.0, 1.0);
     vec3 d = normalize(p.xyz / p.w);
+#if WW_SKY_DOME_IMAGE
+    vec3 c = u_sky_intensity * ww_sky_dome_image(d); // the dome's picture (common.glsl)
+#else
     vec3 c = u_cube != 0 ? u_sky_intensity * texture(u_sky_cube, d).rgb : ww_sky(d);
+#endif
     o_color = vec4(c, 1.0);
 }

@@ -211,8 +211,11 @@ float ww_fresnel(float c) {
     return u_fresnel.y + (1.0 - u_fresnel.y) * (m2 * m2 * m);
 }
 
-// the sky along d: the cubemap when the sky is one, else the gradient
+// the sky along d: the cubemap when the sky is one, the dome's picture, else the gradient
 vec3 ww_sky_any(vec3 d) {
+#if WW_SKY_DOME_IMAGE
+    return u_sky_intensity * ww_sky_dome_image(d); // the dome's picture (common.glsl)
+#endif
     if (u_cube != 0) return u_sky_intensity * texture(u_sky_cube, d).rgb;
     return ww_sky(d);
 }
@@ -306,6 +309,11 @@ void main() {
     vec3 l = u_sun_dir;
     float sun_up = smoothstep(-0.02, 0.02, l.y); // the horizon hides the sun
 
+    // the highlights' roughness: normalised Blinn-Phong whose exponent falls as the removed
+    // slopes grow (Beckmann m^2 ~ slope variance; exponent n = 2 / m^2 - 2)
+    float m2 = 2.0 / (SPEC_POWER + 2.0) + removed;
+    float pw = 2.0 / m2 - 2.0;
+
     if (u_underwater != 0) {
         // from below: the normal facing the camera; Snell's window, else total internal
         // reflection of the water below (its fog colour)
@@ -320,8 +328,16 @@ void main() {
             float fr = ww_fresnel(max(dot(t, n), 0.0));
             c = mix(ww_sky_any(t) + ww_sun_disc(t) * sun_up, below, fr);
         }
+        // the lights below light the underside: the water under it and its mirror (total
+        // internal reflection past the critical angle)
+        c += ww_lights_water(v_pos, nd, v, u_water_color, pw, true);
         float k = u_fog_below_density * dist;
-        o_color = vec4(mix(u_fog_below_color, c, exp(-k * k)), 1.0);
+        c = mix(u_fog_below_color, c, exp(-k * k));
+#if WW_LIGHT_SCATTER
+        // the lights' glow in the water between the camera and the surface (common.glsl)
+        c += ww_lights_scatter(vec3(0.0), -v, 0.0, dist, u_fog_below_density, gl_FragCoord.xy);
+#endif
+        o_color = vec4(c, 1.0);
         return;
     }
 
@@ -374,11 +390,9 @@ void main() {
     // (Beckmann m^2 ~ slope variance; exponent n = 2 / m^2 - 2). No n.l factor: a mirror
     // reflects a low sun as brightly as a high one, which is what makes the path at sunset
     vec3 h = normalize(l + v);
-    float m2 = 2.0 / (SPEC_POWER + 2.0) + removed;
-    float pw = 2.0 / m2 - 2.0;
     float spec = (pw + 8.0) / (8.0 * WW_PI) * pow(max(dot(n, h), 0.0), pw);
     vec3 sun = u_sun_color * (u_specular * spec * ww_fresnel(dot(h, v)) * sun_up);
-    c += ww_lights_water(v_pos, n, v, u_water_color, pw); // lights[] (common.glsl)
+    c += ww_lights_water(v_pos, n, v, u_water_color, pw, false); // lights[] (common.glsl)
 
     // foam: folding (J -> 0), steep, steeper-looking edge-on; broken up by noise
     float foam = 0.0;

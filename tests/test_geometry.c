@@ -111,6 +111,9 @@ static const struct {
     {WW_MESH_BOX, "box", 1},     {WW_MESH_SPHERE, "sphere", 1}, {WW_MESH_STONE, "stone", 1},
     {WW_MESH_HULL, "hull", 1},   {WW_MESH_FISH, "fish", 1},     {WW_MESH_LURE, "lure", 1},
     {WW_MESH_CHEST, "chest", 1}, {WW_MESH_GRID, "grid", 0},     {WW_MESHGEN_COLUMN, "column", 0},
+    {WW_MESHGEN_FISH_OF(WW_FISH_SLIM), "fish_slim", 1},
+    {WW_MESHGEN_FISH_OF(WW_FISH_DEEP), "fish_deep", 1},
+    {WW_MESHGEN_FISH_OF(WW_FISH_LONG), "fish_long", 1},
 };
 
 TEST(meshgen_closed_outward_in_unit_box) {
@@ -195,6 +198,7 @@ static void golden_of(const char *name) {
 
 TEST_IMAGE(geometry_golden_shadows) { golden_of("shadows"); }
 TEST_IMAGE(geometry_golden_caustics) { golden_of("caustics"); }
+TEST_IMAGE(geometry_golden_caustics_texture) { golden_of("caustics_texture"); }
 TEST_IMAGE(geometry_golden_lights) { golden_of("lights"); }
 TEST_IMAGE(geometry_golden_fog) { golden_of("fog"); }
 TEST_IMAGE(geometry_golden_lake_dusk) { golden_of("lake_dusk"); }

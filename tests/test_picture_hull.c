@@ -117,6 +117,9 @@ static const struct {
     {WW_MESH_FISH, "fish", 0},
     {WW_MESH_LURE, "lure", 0},
     {WW_MESH_CHEST, "chest", 0},
+    {WW_MESHGEN_FISH_OF(WW_FISH_SLIM), "fish_slim", 0},
+    {WW_MESHGEN_FISH_OF(WW_FISH_DEEP), "fish_deep", 0},
+    {WW_MESHGEN_FISH_OF(WW_FISH_LONG), "fish_long", 0},
     /* a plane: its four sides */
     {WW_MESH_GRID, "grid", 4 * WW_MESHGEN_GRID},
     /* the glow column: a tube open at both ends (additive light, caps would double it) */

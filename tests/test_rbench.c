@@ -128,14 +128,14 @@ TEST_PROC(rbench_quality_reference_identical_lower_knob_finite) {
     free(res);
 }
 
-/* the seven quality knobs: each knob's default (the lake's value) is one of its values; the
+/* the quality knobs: each knob's default (the lake's value) is one of its values; the
  * reflection knob alone (each knob's machinery is the same; six would take seconds per test):
  * its reference row is the same frame, a build without the reflection pass says so, and with the
  * pass its cheapest value changes the lake's frame (the water covers half of it) */
 TEST_PROC(rbench_quality_knob_defaults_and_reference) {
     int nknobs;
     const ww_quality_knob *knobs = ww_quality_knobs(&nknobs);
-    ENSURE_EQ_INT(nknobs, 7);
+    ENSURE_EQ_INT(nknobs, 8);
     ww_scene *sc = NULL;
     ww_error err = {0};
     ENSURE_MSG(ww_scene_load("scenes/lake.yaml", NULL, 0, &sc, &err) == WW_OK, "%s", err.msg);

@@ -52,8 +52,8 @@ typedef struct ww_quality_knob {
     double (*get)(const ww_scene *sc); /* its value in a scene as loaded: the default marked */
 } ww_quality_knob;
 
-/* the seven quality knobs: reflection.scale, shadows.size, shadows.technique, bloom.passes,
- * god_rays.samples, msaa, grid */
+/* the eight quality knobs: reflection.scale, shadows.size, shadows.technique, bloom.passes,
+ * god_rays.samples, msaa, grid, water.look.caustics.method */
 const ww_quality_knob *ww_quality_knobs(int *n);
 
 typedef enum ww_quality_effect {
@@ -89,7 +89,7 @@ typedef struct ww_quality_opts {
     const char *out_dir;     /* folder for quality.png (default out/bench); NULL in tests: none */
     int json;                /* one JSON object per row */
     int no_figure;           /* do not write the figure */
-    const char *knob;        /* only this knob (its name), NULL: all six */
+    const char *knob;        /* only this knob (its name), NULL: all of them */
     ww_backend_kind backend;
 } ww_quality_opts;
 
@@ -103,7 +103,7 @@ typedef struct ww_quality_result {
 /* render the reference and each value of each knob (the others at their best); fills res */
 ww_result ww_bench_quality_measure(const ww_quality_opts *o, const ww_quality_knob *knobs,
                                    int nknobs, ww_quality_result *res, ww_error *err);
-/* measure the six knobs, print the table (or JSON lines) and write DIR/quality.png */
+/* measure the knobs, print the table (or JSON lines) and write DIR/quality.png */
 ww_result ww_bench_quality(const ww_quality_opts *o, FILE *to, ww_error *err);
 ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err);
 /* [frames] bench output (bench_output.c): fps of none, png, exr, y4m at 1280x720 (tiny: 256x144),

@@ -13,6 +13,7 @@
 #include "bench/bench.h"
 #include "bench/plot.h"
 #include "gfx/backend.h"
+#include "gfx/caustic_set.h"
 #include "gfx/renderer.h"
 #include "io/image.h"
 #include "io/json.h"
@@ -80,6 +81,15 @@ static void set_grid(ww_scene *sc, double v, int on) {
 }
 static double get_grid(const ww_scene *sc) { return sc->render.grid; }
 
+/* 1: water.look.caustics.method texture (cheaper per frame, a one-off set-up); 0: analytic */
+static void set_caustics_method(ww_scene *sc, double v, int on) {
+    sc->render.water.caustics_method = v > 0.5 ? WW_CAUSTICS_TEXTURE : WW_CAUSTICS_ANALYTIC;
+    if (on) sc->render.water.caustics = 1;
+}
+static double get_caustics_method(const ww_scene *sc) {
+    return sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE ? 1.0 : 0.0;
+}
+
 /* values within the scene format's ranges (compile_render.c), cheapest first */
 static const ww_quality_knob KNOBS[] = {
     {"render.reflection.scale", WW_PASS_REFLECTION, 4, {0.125, 0.25, 0.5, 1.0},
@@ -95,6 +105,8 @@ static const ww_quality_knob KNOBS[] = {
      get_shaft_samples},
     {"render.msaa", WW_PASS_MAIN, 4, {0, 2, 4, 8}, set_msaa, get_msaa},
     {"render.grid", WW_PASS_MAIN, 5, {0.5, 0.75, 1.0, 1.5, 2.0}, set_grid, get_grid},
+    {"water.look.caustics.method", WW_PASS_MAIN, 2, {1, 0}, set_caustics_method,
+     get_caustics_method},
 };
 
 const ww_quality_knob *ww_quality_knobs(int *n) {
@@ -465,6 +477,25 @@ static ww_result write_figure(const char *dir, const ww_quality_knob *knobs, int
     return r;
 }
 
+/* the caustics' texture set (water.look.caustics.method texture) is computed once, when the
+ * renderer is made: its cost, the least of `repeats` makings, in ms (the frame times above
+ * leave it out: config_open renders once untimed) */
+static ww_result caustic_set_ms(const ww_quality_opts *o, double *ms, ww_error *err) {
+    ww_scene *sc = NULL;
+    ww_result rc = ww_scene_load(o->scene, NULL, 0, &sc, err);
+    *ms = INFINITY;
+    for (int t = 0; t < (o->repeats > 0 ? o->repeats : DEFAULT_REPEATS) && !rc; t++) {
+        ww_caustic_set cs;
+        double a = ww_now_seconds();
+        rc = ww_caustic_set_make(sc, &cs, err);
+        double b = 1e3 * (ww_now_seconds() - a);
+        if (!rc && b < *ms) *ms = b;
+        ww_caustic_set_free(&cs);
+    }
+    ww_scene_free(sc);
+    return rc;
+}
+
 ww_result ww_bench_quality(const ww_quality_opts *opts, FILE *to, ww_error *err) {
     ww_quality_opts o = *opts;
     if (!o.scene) o.scene = DEFAULT_SCENE;
@@ -494,6 +525,14 @@ ww_result ww_bench_quality(const ww_quality_opts *opts, FILE *to, ww_error *err)
     if (!r) {
         if (o.json) print_json(&o, knobs, res, to);
         else print_table(&o, knobs, nknobs, res, to);
+    }
+    if (!r && !o.json && (!o.knob || strcmp(o.knob, "water.look.caustics.method") == 0)) {
+        double ms;
+        r = caustic_set_ms(&o, &ms, err);
+        if (!r)
+            fprintf(to, "water.look.caustics.method: 0 analytic, 1 texture; the texture set (%d "
+                        "frames of %dx%d) is made once in %.1f ms\n",
+                    WW_CAUSTIC_SET_FRAMES, WW_CAUSTIC_SET_SIZE, WW_CAUSTIC_SET_SIZE, ms);
     }
     if (!r && !o.no_figure) {
         char path[1024];

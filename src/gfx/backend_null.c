@@ -111,6 +111,9 @@ static void APIENTRY n_ActiveTexture(GLenum texture) {}
 static void APIENTRY n_TexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width,
                      GLsizei height, GLint border, GLenum format, GLenum type,
                      const void *pixels) {}
+static void APIENTRY n_TexImage3D(GLenum target, GLint level, GLint internalformat, GLsizei width,
+                     GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type,
+                     const void *pixels) {}
 static void APIENTRY n_TexParameteri(GLenum target, GLenum pname, GLint param) {}
 static void APIENTRY n_DeleteFramebuffers(GLsizei n, const GLuint *framebuffers) {}
 static void APIENTRY n_BindFramebuffer(GLenum target, GLuint framebuffer) {}

@@ -14,8 +14,10 @@
 #include <string.h>
 
 #include "core/mathx.h"
+#include "gfx/caustic_set.h"
 #include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
+#include "sim/floaters.h"
 
 #define SEABED_CELLS 64      /* grid cells per side */
 #define SEABED_HALF 400.0    /* half its side, m (snapped to the camera) */
@@ -27,6 +29,7 @@
 #define FISH_WIGGLE_HZ 1.2        /* tail beats per second when still */
 #define FISH_WIGGLE_PER_SPEED 2.5 /* more beats per second per m/s of speed */
 #define FISH_MAX_PITCH 0.6        /* rad: how far a fish noses up or down */
+#define FISH_SPECIES_VARY 0.2     /* a species' fish differ by up to +-10% in size and shade */
 #define LURE_SIZE 0.09            /* m, the bobber's height */
 #define GLOW_RADIUS 0.7           /* m, the chest's glow column */
 #define GLOW_ABOVE 1.5            /* m: the column rises this far above the water's rest level */
@@ -41,12 +44,14 @@
 #define GLOW_NEAR_MIN 0.2
 #define WW_TEX_SHADOW 3            /* texture unit of the shadow map (shaders/shadow.glsl) */
 #define WW_TEX_MATERIAL 4          /* texture unit of an OBJ material's map_Kd */
+#define WW_TEX_CAUSTIC_SET 5       /* texture unit of the caustics' looped set (method texture) */
 #define SPEC_DEFAULT 0.25         /* sun highlight on most things */
 #define SPEC_WET 0.6              /* on fish and bubbles */
 /* sunlight lost per metre of water (red goes first): seed 003's green-blue under water */
 #define WATER_EXTINCTION_R 0.45
 #define WATER_EXTINCTION_G 0.09
 #define WATER_EXTINCTION_B 0.07
+#define WATER_DETAIL_SLOPE 0.06   /* water.frag.glsl: DETAIL_SLOPE, the DuDv ripples' slope */
 
 /* the shared slots: one instanced draw each */
 enum {
@@ -59,6 +64,9 @@ enum {
     SLOT_LURE,
     SLOT_CHEST,
     SLOT_GRID,
+    SLOT_FISH_SLIM, /* objects.fish.species: one slot per body plan (ww_fish_shape order) */
+    SLOT_FISH_DEEP,
+    SLOT_FISH_LONG,
     SLOT_BUBBLE, /* air bubbles: blended, back to front (WW_GEOM_PART_BUBBLES) */
     SLOT_COLUMN, /* glow: drawn additively, never into depth */
     SLOT_COUNT
@@ -69,6 +77,9 @@ static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
     [SLOT_HULL] = WW_MESH_HULL,   [SLOT_FISH] = WW_MESH_FISH,     [SLOT_LURE] = WW_MESH_LURE,
     [SLOT_CHEST] = WW_MESH_CHEST, [SLOT_GRID] = WW_MESH_GRID,     [SLOT_COLUMN] = WW_MESHGEN_COLUMN,
     [SLOT_BUBBLE] = WW_MESH_SPHERE,
+    [SLOT_FISH_SLIM] = WW_MESHGEN_FISH_OF(WW_FISH_SLIM),
+    [SLOT_FISH_DEEP] = WW_MESHGEN_FISH_OF(WW_FISH_DEEP),
+    [SLOT_FISH_LONG] = WW_MESHGEN_FISH_OF(WW_FISH_LONG),
 };
 
 /* the slots whose things cast shadow volumes: what casts into the shadow map (not the seabed,
@@ -100,11 +111,12 @@ typedef struct gmesh {
 typedef struct instance {
     float model[16]; /* column-major, camera-relative */
     float color[4];  /* albedo, emission factor */
-    float extra[4];  /* wiggle phase rad, wiggle amplitude, specular, 0 */
+    float extra[4];  /* wiggle phase rad, wiggle amplitude, specular, fish pattern (0 none,
+                      * 1 + ww_fish_shape: geometry.frag.glsl's WW_FISH_PATTERNS) */
 } instance;
 
 typedef struct light_locs {
-    GLint n, pos, dir, color, param;
+    GLint n, pos, dir, color, param, scatter;
 } light_locs;
 
 struct ww_geometry {
@@ -112,7 +124,7 @@ struct ww_geometry {
     ww_sky_locs sky;
     GLint view_proj, clip, ambient, eye, mirrored, water_y, fog_color, fog_density,
         fog_below_color, fog_below_density, extinction, caustics_loc, mode, glow, glow_y;
-    GLint shadow_map, shadow_on, sun_view_proj, shadow_filter;
+    GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, scatter_through;
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
     gmesh slot[SLOT_COUNT];
@@ -121,6 +133,10 @@ struct ww_geometry {
     gmesh obj[WW_MAX_MODELS];
     int obj_model[WW_MAX_MODELS];
     const ww_mesh_data *obj_data[WW_MAX_MODELS]; /* its submeshes and materials (the scene's) */
+    int sway;          /* the scene has a swaying model: the shader is built WW_SWAY */
+    float obj_sway[WW_MAX_MODELS][4];      /* u_sway of each OBJ model this frame (0: rigid) */
+    float obj_sway_axis[WW_MAX_MODELS][4]; /* its u_sway_axis */
+    GLint sway_loc, sway_axis_loc;
     GLuint *image_tex; /* the scene's images a material draws (map_Kd), by asset index; 0 none */
     int nimage;
     GLint mat_kd, mat_ks, mat_ke, mat_map;
@@ -132,9 +148,14 @@ struct ww_geometry {
     float glow_cyl[6]; /* the glow column, camera-relative: axis x, z, radius, bottom y, top y */
     ww_water_waves waves; /* caustics: the wave field's phases at the camera */
     float detail[WW_WATER_NDETAIL][4]; /* ... and the surface's detail at the camera */
-    GLint detail_loc;
+    float dudv_m[2][4], dudv_o[2][2];  /* ... and its DuDv ripples (ww_water_dudv) */
+    GLint detail_loc, dudv_m_loc, dudv_o_loc, dudv_h_loc;
     ww_water_ubos ubos;
-    int caustics;
+    int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
+    GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
+    ww_caustic_set cset;
+    float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
+    GLint cset_loc, cset_at_loc, cset_frame_loc;
     /* stencilled shadows (stencil_shadows.c): the casters' meshes kept on the CPU (slots that
      * cast; OBJ models are the scene's), and how the next draws test depth and light */
     int keep_casters;
@@ -143,7 +164,7 @@ struct ww_geometry {
     /* this frame's lights, camera-relative */
     int nlights;
     float light_pos[WW_MAX_LIGHTS][3], light_dir[WW_MAX_LIGHTS][3], light_color[WW_MAX_LIGHTS][3],
-        light_param[WW_MAX_LIGHTS][4];
+        light_param[WW_MAX_LIGHTS][4], light_scatter[WW_MAX_LIGHTS];
 };
 
 /* ---- small double matrices (column-major 4x4: m[c * 4 + r]) ---- */
@@ -218,13 +239,35 @@ static void boat_pose(const ww_state *st, double m[16]) {
     m4_trs(m, st->boat_pos, R, one);
 }
 
+/* floater fl's frame now (f) and the inverse of the rigid frame its model was written at (inv) */
+static void floater_rebase(const ww_scene *sc, const ww_state *st, int fl, const double frame[16],
+                           double f[16], double inv[16]) {
+    ww_floater_pose(sc, st, fl, f);
+    m4_identity(inv);
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 3; c++) inv[c * 4 + r] = frame[r * 4 + c];
+        inv[12 + r] = -(frame[r * 4] * frame[12] + frame[r * 4 + 1] * frame[13] +
+                        frame[r * 4 + 2] * frame[14]);
+    }
+}
+
 /* a model's matrix `own` (its world matrix, or its frame: where its children and lights sit,
  * without its scale) this frame, composed with the boat's pose when its chain ends there */
 static void model_to_world(const ww_scene *sc, const ww_state *st, int i, const double own[16],
                            double m[16]) {
-    int p = sc->models.model[i].parent;
-    while (p >= 0) p = sc->models.model[p].parent; /* the root of the chain */
-    if (p == WW_PARENT_BOAT && sc->boat.on) {
+    int p = sc->models.model[i].parent, root = i;
+    while (p >= 0) { /* the root of the chain */
+        root = p;
+        p = sc->models.model[p].parent;
+    }
+    int fl = ww_floater_of_model(sc, root);
+    if (fl >= 0) {
+        /* a floating root: its simulated frame replaces the frame it was written at */
+        double f[16], inv[16], rel[16];
+        floater_rebase(sc, st, fl, sc->models.model[root].frame, f, inv);
+        m4_mul(inv, own, rel);
+        m4_mul(f, rel, m);
+    } else if (p == WW_PARENT_BOAT && sc->boat.on) {
         double b[16];
         boat_pose(st, b);
         m4_mul(b, own, m);
@@ -347,7 +390,9 @@ static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
     cap[SLOT_BOX] = sc->cubes.on ? sc->cubes.count : 0;
     cap[SLOT_HULL] = sc->boat.on ? 1 : 0;
     cap[SLOT_STONE] = sc->stones.on ? WW_MAX_STONES : 0;
-    cap[SLOT_FISH] = sc->fish.on ? sc->fish.count : 0;
+    cap[SLOT_FISH] = sc->fish.on && sc->fish.nspecies == 0 ? sc->fish.count : 0;
+    for (int k = 0; sc->fish.on && k < sc->fish.nspecies; k++)
+        cap[SLOT_FISH_SLIM + sc->fish.species[k].shape] += sc->fish.species[k].count;
     cap[SLOT_LURE] = sc->rod.on ? 1 : 0;
     cap[SLOT_CHEST] = sc->chest.on ? 1 : 0;
     cap[SLOT_COLUMN] = sc->chest.on ? 1 : 0;
@@ -374,6 +419,8 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     free(g->image_tex);
     free(g->bubble_order);
     ww_water_ubos_free(gl, &g->ubos);
+    if (g->caustic_tex) gl->DeleteTextures(1, &g->caustic_tex);
+    ww_caustic_set_free(&g->cset);
     free(g->scratch);
     free(g);
 }
@@ -381,11 +428,13 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
 static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc,
                               ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
-    char defs[192];
+    char defs[256];
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
-             "#define WW_CAUSTICS %d\n",
-             ww_water_shader_model(sc->wave_model), g->caustics);
+             "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_SWAY %d\n",
+             ww_water_shader_model(sc->wave_model), g->caustics,
+             sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc), g->sway);
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &g->prog, err);
     if (rc != WW_OK) return rc;
@@ -424,20 +473,64 @@ static ww_result material_texture(ww_geometry *g, const ww_gl *gl, const ww_scen
     return WW_OK;
 }
 
+/* method texture: the looped set computed once (caustic_set.c), uploaded as a 2D array of
+ * half-float frame pairs, mipmapped so the far seabed averages toward the mean, repeating */
+static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, ww_error *err) {
+    ww_result rc = ww_caustic_set_make(sc, &g->cset, err);
+    if (rc != WW_OK) return rc;
+    const ww_caustic_set *cs = &g->cset;
+    gl->GenTextures(1, &g->caustic_tex);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    /* layer i holds frames i and i + 1 (looped) in red and green: one lookup blends them */
+    size_t per = (size_t)cs->size * (size_t)cs->size;
+    float *pair = malloc(2 * per * (size_t)cs->frames * sizeof *pair);
+    if (!pair) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "caustics: out of memory");
+    for (int f = 0; f < cs->frames; f++) {
+        const float *a = cs->texel + per * (size_t)f;
+        const float *b = cs->texel + per * (size_t)((f + 1) % cs->frames);
+        float *o = pair + 2 * per * (size_t)f;
+        for (size_t i = 0; i < per; i++) {
+            o[2 * i] = a[i];
+            o[2 * i + 1] = b[i];
+        }
+    }
+    gl->TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RG16F, cs->size, cs->size, cs->frames, 0, GL_RG,
+                   GL_FLOAT, pair);
+    free(pair);
+    free(g->cset.texel); /* the GL copy is all the frames need; the set keeps its geometry */
+    g->cset.texel = NULL;
+    gl->GenerateMipmap(GL_TEXTURE_2D_ARRAY);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    GLenum e = gl->GetError();
+    if (e != GL_NO_ERROR)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "caustics: the texture set raised GL error 0x%04x",
+                            (unsigned)e);
+    return WW_OK;
+}
+
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err) {
     const ww_gl *gl = r->gl;
     ww_geometry *g = calloc(1, sizeof *g);
     if (!g) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
     g->uploaded = -1;
     g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
+    if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
+    for (int i = 0; i < sc->models.count; i++)
+        if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
     g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||
                                                 sc->render.shadows.technique ==
                                                     WW_SHADOW_VOLUMES_VISIBLE);
     ww_result rc = make_program(g, gl, sc, err);
-    if (rc == WW_OK && g->caustics) {
+    if (rc == WW_OK && g->caustics == 1) {
         ww_water_waves_init(sc, &g->waves);
         rc = ww_water_ubos_new(gl, sc, &g->waves, &g->ubos, err);
     }
+    if (rc == WW_OK && g->caustics == 2) rc = caustic_set_new(g, gl, sc, err);
     int cap[SLOT_COUNT], most = 1;
     slot_caps(sc, cap);
     if (rc == WW_OK && cap[SLOT_SEABED]) rc = seabed_new(gl, &g->slot[SLOT_SEABED], err);
@@ -496,6 +589,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
     g->eye = ww_gfx_uniform(gl, p, "u_eye");
     g->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
+    g->scatter_through = ww_gfx_uniform(gl, p, "u_scatter_through");
     g->water_y = ww_gfx_uniform(gl, p, "u_water_y");
     g->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
     g->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
@@ -504,6 +598,12 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->extinction = ww_gfx_uniform(gl, p, "u_extinction");
     g->caustics_loc = ww_gfx_uniform(gl, p, "u_caustics");
     g->detail_loc = ww_gfx_uniform(gl, p, "u_detail");
+    g->dudv_m_loc = ww_gfx_uniform(gl, p, "u_dudv_m");
+    g->dudv_o_loc = ww_gfx_uniform(gl, p, "u_dudv_o");
+    g->dudv_h_loc = ww_gfx_uniform(gl, p, "u_dudv_h");
+    g->cset_loc = ww_gfx_uniform(gl, p, "u_caustic_set");
+    g->cset_at_loc = ww_gfx_uniform(gl, p, "u_caustic_set_at");
+    g->cset_frame_loc = ww_gfx_uniform(gl, p, "u_caustic_set_frame");
     g->mode = ww_gfx_uniform(gl, p, "u_mode");
     g->glow = ww_gfx_uniform(gl, p, "u_glow");
     g->glow_y = ww_gfx_uniform(gl, p, "u_glow_y");
@@ -511,6 +611,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
     g->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
     g->shadow_filter = ww_gfx_uniform(gl, p, "u_shadow_filter");
+    g->sway_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway") : -1;
+    g->sway_axis_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway_axis") : -1;
     g->mat_kd = ww_gfx_uniform(gl, p, "u_mat_kd");
     g->mat_ks = ww_gfx_uniform(gl, p, "u_mat_ks");
     g->mat_ke = ww_gfx_uniform(gl, p, "u_mat_ke");
@@ -520,6 +622,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->lights.dir = ww_gfx_uniform(gl, p, "u_light_dir");
     g->lights.color = ww_gfx_uniform(gl, p, "u_light_color");
     g->lights.param = ww_gfx_uniform(gl, p, "u_light_param");
+    g->lights.scatter = ww_gfx_uniform(gl, p, "u_light_scatter");
     *out = g;
     return WW_OK;
 }
@@ -539,6 +642,35 @@ static void put(instance *in, const double m[16], const double cam[3], const dou
     in->extra[2] = (float)spec;
 }
 
+/* a plant's sway this frame (shaders/geometry.vert.glsl): the surge under a wave of the sway's
+ * wavelength travelling along its direction reaches a plant at (x, z) with phase
+ * 2 pi (f t - (x, z).D / wavelength); a hash of its place adds up to a turn more, so plants
+ * side by side across the wave do not move in lockstep. From the frame's simulated time only. */
+#define SWAY_LAG 1.2 /* rad: how far the tip's swing trails the base's */
+static void obj_sway(ww_geometry *g, const ww_scene *sc, const ww_state *st, int i,
+                     const double world[16]) {
+    const ww_model_desc *d = &sc->models.model[g->obj_model[i]];
+    const ww_mesh_data *md = g->obj_data[i];
+    for (int k = 0; k < 4; k++) g->obj_sway[i][k] = g->obj_sway_axis[i][k] = 0.0f;
+    double tall = md->max[1] - md->min[1];
+    if (d->sway_amplitude <= 0.0 || !(tall > 0.0)) return;
+    double x = world[12], z = world[14];
+    double along = (x * d->sway_dir[0] + z * d->sway_dir[1]) / d->sway_wavelength;
+    double h = sin(x * 12.9898 + z * 78.233) * 43758.5453;
+    double jitter = h - floor(h);
+    double phase = 2.0 * WW_PI * (fmod(d->sway_frequency * st->t - along, 1.0) + jitter);
+    /* the mesh's height in metres: its y axis's length in the world matrix */
+    double sy = sqrt(world[4] * world[4] + world[5] * world[5] + world[6] * world[6]);
+    g->obj_sway[i][0] = (float)d->sway_amplitude;
+    g->obj_sway[i][1] = (float)phase;
+    g->obj_sway[i][2] = (float)SWAY_LAG;
+    g->obj_sway[i][3] = (float)(tall * sy);
+    g->obj_sway_axis[i][0] = md->min[1];
+    g->obj_sway_axis[i][1] = (float)(1.0 / tall);
+    g->obj_sway_axis[i][2] = (float)d->sway_dir[0];
+    g->obj_sway_axis[i][3] = (float)d->sway_dir[1];
+}
+
 static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     WW_ASSERT(n <= m->cap);
     m->ninst = n;
@@ -546,6 +678,42 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     if (m->copy) memcpy(m->copy, in, (size_t)n * sizeof *in);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)n * (GLsizeiptr)sizeof *in, in);
+}
+
+/* fish i's pose (yaw, pitch from its velocity, bank) scaled by its length, and its tail's
+ * beat: phase and amplitude in extra[0..1] */
+static void fish_instance(const ww_state *st, int i, double length, const double cam[3],
+                          const double col[3], instance *in) {
+    const double *v = st->fish_vel + 3 * i;
+    double sp = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    double pitch = ww_m_clamp(atan2(v[1], hypot(v[0], v[2])), -FISH_MAX_PITCH, FISH_MAX_PITCH);
+    double R[9], m[16], s[3] = {length, length, length};
+    m3_hpr(st->fish_yaw[i], pitch, st->fish_bank[i], R);
+    m4_trs(m, st->fish_pos + 3 * i, R, s);
+    put(in, m, cam, col, 0.0, SPEC_WET);
+    double hz = FISH_WIGGLE_HZ + FISH_WIGGLE_PER_SPEED * sp;
+    double ph = fmod(2.0 * WW_PI * hz * st->t + 2.399963 * i, 2.0 * WW_PI);
+    in->extra[0] = (float)ph;
+    in->extra[1] = (float)(FISH_WIGGLE * (st->fish_mode[i] == 1.0 ? 2.0 : 1.0));
+}
+
+/* the fish of every species of this body plan: the species' colour and length, each fish
+ * within +-FISH_SPECIES_VARY of them (from its index), its pattern in extra[3] */
+static int species_fish(const ww_scene *sc, const ww_state *st, ww_fish_shape shape,
+                        const double cam[3], instance *in) {
+    int n = 0;
+    for (int k = 0; k < sc->fish.nspecies; k++) {
+        const ww_fish_species *sp = &sc->fish.species[k];
+        if (sp->shape != shape) continue;
+        for (int i = sp->first; i < sp->first + sp->count; i++) {
+            if (st->fish_mode[i] == 2.0) continue; /* caught: away */
+            double u = (double)((i * 7919) % 97) / 97.0 - 0.5, col[3];
+            for (int c = 0; c < 3; c++) col[c] = sp->color[c] * (1.0 + FISH_SPECIES_VARY * u);
+            fish_instance(st, i, sp->length * (1.0 + FISH_SPECIES_VARY * u), cam, col, &in[n]);
+            in[n++].extra[3] = (float)(1 + shape);
+        }
+    }
+    return n;
 }
 
 /* models of a procedural kind join that kind's slot */
@@ -559,6 +727,14 @@ static int add_models(const ww_scene *sc, const ww_state *st, ww_mesh_kind kind,
         put(&in[n++], m, cam, d->color, d->emissive, SPEC_DEFAULT);
     }
     return n;
+}
+
+/* 1 when some light glows in the water (lights[].scatter > 0): the shaders then build
+ * common.glsl's in-scattering (WW_LIGHT_SCATTER), which scenes without it never compile */
+int ww_lights_scatter_on(const ww_scene *sc) {
+    for (int i = 0; i < sc->render.nlights; i++)
+        if (sc->render.light[i].scatter > 0.0) return 1;
+    return 0;
 }
 
 /* the flicker of light i at time t: 1 - depth (1 + s) / 2 with s a sum of three sines at
@@ -609,6 +785,7 @@ static void frame_lights(ww_geometry *g, const ww_scene *sc, const ww_state *st,
         g->light_param[i][1] = (float)cos_outer;
         g->light_param[i][2] = (float)(cos_inner > cos_outer + 1e-4 ? cos_inner : cos_outer + 1e-4);
         g->light_param[i][3] = l->kind == WW_LIGHT_SPOT ? 1.0f : 0.0f;
+        g->light_scatter[i] = (float)l->scatter;
     }
 }
 
@@ -670,9 +847,13 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         }
         slot_upload(gl, &g->slot[SLOT_STONE], in, add_models(sc, st, WW_MESH_STONE, cam, in, n));
     }
+    for (int shape = 0; shape < WW_FISH_SHAPES; shape++) {
+        gmesh *slot = &g->slot[SLOT_FISH_SLIM + shape];
+        if (slot->cap) slot_upload(gl, slot, in, species_fish(sc, st, (ww_fish_shape)shape, cam, in));
+    }
     if (g->slot[SLOT_FISH].cap) {
         int n = 0;
-        for (int i = 0; sc->fish.on && i < sc->fish.count; i++) {
+        for (int i = 0; sc->fish.on && sc->fish.nspecies == 0 && i < sc->fish.count; i++) {
             if (st->fish_mode[i] == 2.0) continue; /* caught: away */
             const double *v = st->fish_vel + 3 * i;
             double sp = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -768,17 +949,32 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         model_world(sc, st, g->obj_model[i], m);
         put(&in[0], m, cam, d->color, d->emissive, SPEC_DEFAULT);
         slot_upload(gl, &g->obj[i], in, 1);
+        if (g->sway) obj_sway(g, sc, st, i, m);
     }
     (void)one;
     frame_lights(g, sc, st, cam);
 
-    if (g->caustics) {
+    if (g->caustics == 2) {
+        /* the set: the camera wrapped to its patch (double), the two frames of this instant */
+        const ww_caustic_set *cs = &g->cset;
+        int i0, i1;
+        double w;
+        ww_caustic_set_frame(cs, st->t, &i0, &i1, &w);
+        g->cset_at[0] = (float)(cam[0] - cs->patch * floor(cam[0] / cs->patch));
+        g->cset_at[1] = (float)(cam[2] - cs->patch * floor(cam[2] / cs->patch));
+        g->cset_at[2] = (float)(1.0 / cs->patch);
+        g->cset_at[3] = (float)cs->depth;
+        (void)i1; /* layer i0 holds frame i1 too */
+        g->cset_frame[0] = (float)i0;
+        g->cset_frame[1] = (float)w;
+    } else if (g->caustics) {
         /* the wave field's phases at the camera: the shader's positions are camera-relative;
          * the surface's fine detail focuses the light too */
         double centre[2] = {cam[0], cam[2]};
         ww_water_waves_phases(sc, st, centre, &g->waves);
         ww_water_ubos_upload(gl, &g->ubos, &g->waves, NULL, 0);
         ww_water_detail(st, centre, g->detail);
+        ww_water_dudv(sc, st, centre, g->dudv_m, g->dudv_o);
     }
 }
 
@@ -816,6 +1012,10 @@ static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode m
     const gmesh *m = &g->obj[i];
     const ww_mesh_data *d = g->obj_data[i];
     if (m->ninst <= 0) return 0;
+    if (g->sway) {
+        gl->Uniform4fv(g->sway_loc, 1, g->obj_sway[i]);
+        gl->Uniform4fv(g->sway_axis_loc, 1, g->obj_sway_axis[i]);
+    }
     if (mode == WW_GEOM_SHADOW || !d || d->nsub <= 0) {
         set_material(g, gl, NULL);
         return draw_mesh(gl, m);
@@ -877,6 +1077,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
     /* ... whose path to a point is air all the way: no under-water fog on it */
     gl->Uniform1i(g->mirrored, mode == WW_GEOM_REFLECTION);
+    gl->Uniform1i(g->scatter_through, mode == WW_GEOM_PREPASS);
     gl->Uniform1f(g->water_y, water_y);
     double hz[3];
     ww_sky_horizon(sc, st, hz);
@@ -915,10 +1116,23 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->Uniform3fv(g->lights.dir, g->nlights, &g->light_dir[0][0]);
         gl->Uniform3fv(g->lights.color, g->nlights, &g->light_color[0][0]);
         gl->Uniform4fv(g->lights.param, g->nlights, &g->light_param[0][0]);
+        gl->Uniform1fv(g->lights.scatter, g->nlights, g->light_scatter);
     }
-    if (g->caustics) {
+    if (g->caustics == 2) {
+        gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_CAUSTIC_SET);
+        gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
+        gl->ActiveTexture(GL_TEXTURE0);
+        gl->Uniform1i(g->cset_loc, WW_TEX_CAUSTIC_SET);
+        gl->Uniform4fv(g->cset_at_loc, 1, g->cset_at);
+        gl->Uniform2fv(g->cset_frame_loc, 1, g->cset_frame);
+    } else if (g->caustics) {
         gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
         gl->Uniform4fv(g->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
+        gl->Uniform4fv(g->dudv_m_loc, 2, &g->dudv_m[0][0]);
+        gl->Uniform2fv(g->dudv_o_loc, 2, &g->dudv_o[0][0]);
+        /* the ripples' height per unit of noise: water.frag.glsl's DETAIL_SLOPE times a cell */
+        double scale = sc->render.water.distortion_scale;
+        gl->Uniform2f(g->dudv_h_loc, scale > 0.0 ? (float)(WATER_DETAIL_SLOPE / scale) : 0.0f, 0.0f);
     }
 
     gl->Enable(GL_DEPTH_TEST);
@@ -930,6 +1144,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     gl->DepthMask(g->stage == WW_GEOM_STAGE_NORMAL ? GL_TRUE : GL_FALSE);
     gl->Uniform1i(g->mat_map, WW_TEX_MATERIAL);
     set_material(g, gl, NULL);
+    if (g->sway) gl->Uniform4f(g->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* the meshes are rigid */
     int draws = 0;
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
@@ -940,6 +1155,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
         draws += draw_obj(g, gl, i, mode);
+    if (g->sway) gl->Uniform4f(g->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* later draws are rigid */
     if ((parts & WW_GEOM_PART_BUBBLES) && mode == WW_GEOM_MAIN && g->slot[SLOT_BUBBLE].ninst > 0) {
         /* over everything already drawn, the sky included; tested against depth, never written */
         gl->Uniform1i(g->mode, 3);
@@ -968,13 +1184,15 @@ void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, 
     light_locs l = {ww_gfx_uniform(gl, prog, "u_nlights"), ww_gfx_uniform(gl, prog, "u_light_pos"),
                     ww_gfx_uniform(gl, prog, "u_light_dir"),
                     ww_gfx_uniform(gl, prog, "u_light_color"),
-                    ww_gfx_uniform(gl, prog, "u_light_param")};
+                    ww_gfx_uniform(gl, prog, "u_light_param"),
+                    ww_gfx_uniform(gl, prog, "u_light_scatter")};
     gl->Uniform1i(l.n, g->nlights);
     if (g->nlights <= 0) return;
     gl->Uniform3fv(l.pos, g->nlights, &g->light_pos[0][0]);
     gl->Uniform3fv(l.dir, g->nlights, &g->light_dir[0][0]);
     gl->Uniform3fv(l.color, g->nlights, &g->light_color[0][0]);
     gl->Uniform4fv(l.param, g->nlights, &g->light_param[0][0]);
+    gl->Uniform1fv(l.scatter, g->nlights, g->light_scatter);
 }
 
 /* the chest's glow column: additive light drawn after the sky, never into depth. Drawn before

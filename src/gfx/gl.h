@@ -33,6 +33,7 @@
     X(PFNGLBINDTEXTUREPROC, BindTexture)                                                         \
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                                     \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                                           \
+    X(PFNGLTEXIMAGE3DPROC, TexImage3D)                                                           \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                                     \
     X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                                                 \
     X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)                                           \

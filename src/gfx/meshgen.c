@@ -365,6 +365,59 @@ static void gen_fish(mb *b) {
     mb_plate(b, tail, 5, c, FISH_FIN, FISH_WIGGLE_FROM);
 }
 
+/* a species' body plan (gfx/meshgen.h): a lofted body between tail_base and nose, deepest
+ * where sin(pi s^front) peaks, rounded by the power round; a tail fin and up to two more fins,
+ * each a flat plate (polygon counter-clockwise in (x, y), star-shaped around its centroid) */
+typedef struct fish_plan {
+    double nose, tail_base, height, width, front, round, wiggle_from;
+    int nfin;
+    struct {
+        int n;
+        double p[6][2];
+        double t; /* half-thickness */
+    } fin[3];
+} fish_plan;
+
+static const fish_plan FISH_PLANS[3] = {
+    /* slim: a mackerel, length / depth about 5.5 */
+    {0.5, -0.32, 0.085, 0.06, 0.8, 0.8, FISH_WIGGLE_FROM, 2,
+     {{5, {{-0.26, 0.02}, {-0.5, 0.16}, {-0.43, 0.0}, {-0.5, -0.16}, {-0.26, -0.02}}, FISH_FIN},
+      {3, {{-0.08, 0.05}, {0.10, 0.05}, {0.0, 0.14}}, 0.008}}},
+    /* deep: an angelfish, a disc as deep as long with high swept fins */
+    {0.45, -0.26, 0.24, 0.045, 0.9, 0.55, -0.1, 3,
+     {{5, {{-0.2, 0.05}, {-0.44, 0.17}, {-0.47, 0.0}, {-0.44, -0.17}, {-0.2, -0.05}}, FISH_FIN},
+      {4, {{-0.24, 0.1}, {0.1, 0.19}, {-0.06, 0.3}, {-0.3, 0.48}}, 0.008},
+      {4, {{-0.24, -0.1}, {-0.3, -0.46}, {-0.06, -0.28}, {0.06, -0.17}}, 0.008}}},
+    /* long: a slender fish that undulates from near its head */
+    {0.5, -0.42, 0.05, 0.042, 0.85, 0.45, 0.35, 2,
+     {{5, {{-0.38, 0.012}, {-0.5, 0.06}, {-0.47, 0.0}, {-0.5, -0.06}, {-0.38, -0.012}}, FISH_FIN},
+      {4, {{-0.34, 0.02}, {0.1, 0.03}, {-0.05, 0.08}, {-0.3, 0.07}}, 0.006}}},
+};
+
+static void gen_fish_species(mb *b, const fish_plan *f) {
+    enum { N = WW_MESHGEN_STACKS + 1 };
+    double a[N], rb[N], rc[N], cb[N];
+    for (int i = 0; i < N; i++) {
+        double s = (double)i / (N - 1);
+        a[i] = f->tail_base + (f->nose - f->tail_base) * s;
+        double g = i == 0 || i == N - 1 ? 0.0 : pow(sin(PI * pow(s, f->front)), f->round);
+        rb[i] = f->height * g;
+        rc[i] = f->width * g;
+        cb[i] = 0.0;
+    }
+    loft L = {N, a, rb, rc, cb, 0, f->wiggle_from};
+    mb_loft(b, &L);
+    for (int k = 0; k < f->nfin; k++) {
+        double c[2] = {0.0, 0.0};
+        int n = f->fin[k].n;
+        for (int i = 0; i < n; i++) {
+            c[0] += f->fin[k].p[i][0] / n;
+            c[1] += f->fin[k].p[i][1] / n;
+        }
+        mb_plate(b, f->fin[k].p, n, c, f->fin[k].t, f->wiggle_from);
+    }
+}
+
 /* the hull's section at station u (0 stern .. 1 bow) */
 static void hull_section(double u, double *beam, double *keel, double *gunwale) {
     double w;
@@ -542,6 +595,10 @@ ww_result ww_meshgen(ww_mesh_kind kind, ww_mesh_data *out, ww_error *err) {
     default:
         if (kind == WW_MESHGEN_COLUMN) {
             gen_column(&b);
+            break;
+        }
+        if ((int)kind >= WW_MESHGEN_FISH_SPECIES && (int)kind < WW_MESHGEN_FISH_SPECIES + 3) {
+            gen_fish_species(&b, &FISH_PLANS[(int)kind - WW_MESHGEN_FISH_SPECIES]);
             break;
         }
         if (kind == WW_MESHGEN_HULL_CAP) {

@@ -19,6 +19,7 @@
 
 #include "core/error.h"
 #include "scene/assets.h"
+#include "scene/desc_fish_species.h"
 #include "scene/desc_reef.h"
 
 /* tessellation, shared with the tests that check volumes against the analytic shapes */
@@ -41,6 +42,15 @@
  * gunwale of WW_MESH_HULL, normals up; the main pass draws it into depth before the water so
  * that no water shows inside a boat */
 #define WW_MESHGEN_HULL_CAP ((ww_mesh_kind)101)
+
+/* the fish species' bodies (not ww_mesh_kind words: objects.fish.species picks them by shape,
+ * scene/desc_fish_species.h): WW_MESHGEN_FISH_SPECIES + shape. Head +x, as WW_MESH_FISH, with
+ * its tail weight in uv.x; slim: a fusiform mackerel with a deeply forked tail and a small
+ * dorsal fin; deep: a tall compressed disc with high dorsal and anal fins and a fan tail (an
+ * angelfish or butterflyfish); long: a slender body that undulates from near the head, with a
+ * long low dorsal fin and a small tail */
+#define WW_MESHGEN_FISH_SPECIES 102
+#define WW_MESHGEN_FISH_OF(shape) ((ww_mesh_kind)(WW_MESHGEN_FISH_SPECIES + (int)(shape)))
 
 ww_result ww_meshgen(ww_mesh_kind kind, ww_mesh_data *out, ww_error *err);
 void ww_meshgen_free(ww_mesh_data *m);

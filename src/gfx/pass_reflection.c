@@ -26,7 +26,7 @@ typedef struct reflection_pass {
     GLuint color;    /* the mipmapped colour target */
     GLuint prog;     /* the mirrored sky */
     ww_sky_locs sky;
-    GLint inv_view_proj, cube, cube_tex, sky_intensity;
+    GLint inv_view_proj, cube, cube_tex, sky_intensity, dome_tex;
 } reflection_pass;
 
 static void reflection_destroy(void *self, const ww_gl *gl) {
@@ -48,8 +48,11 @@ static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "reflection pass: out of memory");
     p->rt = rt;
     p->color = color;
-    ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "reflection_sky.frag.glsl",
-                                  includes, &p->prog, err);
+    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "reflection_sky.frag.glsl",
+                                       includes,
+                                       ww_sky_dome_image_on(sc) ? "#define WW_SKY_DOME_IMAGE 1\n"
+                                                                : NULL,
+                                       &p->prog, err);
     if (rc != WW_OK) {
         reflection_destroy(p, gl);
         return rc;
@@ -59,7 +62,7 @@ static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_
     p->cube = ww_gfx_uniform(gl, p->prog, "u_cube");
     p->cube_tex = ww_gfx_uniform(gl, p->prog, "u_sky_cube");
     p->sky_intensity = ww_gfx_uniform(gl, p->prog, "u_sky_intensity");
-    (void)sc;
+    p->dome_tex = ww_gfx_uniform(gl, p->prog, "u_sky_dome_image");
 
     /* trilinear: grazing views squeeze the distorted lookups, and the mip chain keeps them from
      * shimmering (seed 000); the levels are allocated here and filled each frame */
@@ -121,10 +124,22 @@ static ww_result reflection_run(void *self, ww_renderer *r, const ww_frame *f, w
     gl->Uniform1f(p->sky_intensity, (float)f->sc->render.sky_intensity);
     gl->ActiveTexture(GL_TEXTURE0);
     gl->BindTexture(GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
+    if (r->sky_dome_image) {
+        /* the dome's picture on unit 1 (the cube's sampler keeps unit 0) */
+        gl->Uniform1i(p->dome_tex, 1);
+        gl->ActiveTexture(GL_TEXTURE1);
+        gl->BindTexture(GL_TEXTURE_2D, r->sky_dome_image);
+        gl->ActiveTexture(GL_TEXTURE0);
+    }
     gl->BindVertexArray(r->empty_vao);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
     gl->BindVertexArray(0);
     gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    if (r->sky_dome_image) {
+        gl->ActiveTexture(GL_TEXTURE1);
+        gl->BindTexture(GL_TEXTURE_2D, 0);
+        gl->ActiveTexture(GL_TEXTURE0);
+    }
     gl->DepthMask(GL_TRUE);
     gl->DepthFunc(GL_LESS);
     /* additive light last: the sky would overwrite it where nothing opaque lies behind */

@@ -117,6 +117,7 @@ struct ww_renderer {
     GLuint empty_vao; /* full-screen triangles take their corners from gl_VertexID */
     ww_plan plan;     /* what the renderer was built from */
     ww_geometry *geometry; /* solid geometry shared by the passes that draw it; NULL: none */
+    GLuint sky_dome_image; /* the dome's picture (sky.image), 2D sRGB, 0 none; as sky_cubemap */
     GLuint sky_cubemap; /* the sky's cubemap texture (sky.model cubemap), 0 otherwise; set
                          * when the pass drawing the sky is created, for the water to reflect */
     ww_shared shared; /* per frame, written by earlier passes for later ones */
@@ -147,6 +148,7 @@ void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom
 void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode);
 /* this frame's point and spot lights into prog (in use; it includes common.glsl) */
 void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog);
+int ww_lights_scatter_on(const ww_scene *sc);
 /* the same, only some parts (the main pass draws the solids before the water and the seabed,
  * which the water mostly hides, after it; the glow is
  * ww_geometry_draw_glow's, after the sky) */
@@ -252,6 +254,9 @@ void ww_fog_below_color(const ww_scene *sc, const ww_state *st, double out[3]);
  * r->sky_cubemap (the first sky created owns it and must outlive its readers; later skies of
  * the same renderer draw it). */
 typedef struct ww_sky ww_sky;
+/* 1 when the sky is the dome's picture (sky.image): the programs that draw the sky then build
+ * common.glsl's WW_SKY_DOME_IMAGE and sample r->sky_dome_image */
+int ww_sky_dome_image_on(const ww_scene *sc);
 ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error *err);
 void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f);
 void ww_sky_free(ww_sky *s, const ww_gl *gl);
@@ -314,6 +319,11 @@ int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double c
  * centre (world x, z) in double */
 #define WW_WATER_NDETAIL 6 /* water.frag.glsl: NDETAIL; geometry.frag.glsl: WW_NDETAIL */
 void ww_water_detail(const ww_state *st, const double centre[2], float d[WW_WATER_NDETAIL][4]);
+/* the water's DuDv pattern (waveblock.c): per layer the mat2 (column-major) from metres
+ * relative to `centre` to lattice cells, and the offset there (water.frag.glsl, and the
+ * caustics of geometry.frag.glsl, which see it as the surface's small irregular ripples) */
+void ww_water_dudv(const ww_scene *sc, const ww_state *st, const double centre[2], float m[2][4],
+                   float o[2][2]);
 /* vs + fs with common.glsl and gerstner.glsl, built for the scene's wave family and ripples;
  * fade 0 turns the distance fade off; more: further #define lines (each ending in a newline)
  * or NULL. Binds the blocks to WW_UBO_WAVES / WW_UBO_RIPPLES and

@@ -6,6 +6,7 @@
  * ww_sky_dome). Also sets common.glsl's sky uniforms for any program that includes it.
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "core/mathx.h"
@@ -27,9 +28,14 @@ struct ww_sky {
     GLuint prog;
     ww_sky_model model;
     ww_sky_locs sky;
-    GLint inv_view_proj, intensity, below, cubemap, drift;
+    GLint inv_view_proj, intensity, below, below_density, cubemap, drift;
+    ww_renderer *r;   /* its geometry holds this frame's lights (the glow under water) */
+    int scatter;      /* WW_LIGHT_SCATTER: the lights glow in the water */
     GLuint cube_tex;  /* owned when this sky uploaded it (0 otherwise) */
     GLuint cube_draw; /* the cube texture drawn (owned or the renderer's) */
+    GLuint dome_tex;  /* the dome's picture, owned when this sky uploaded it (0 otherwise) */
+    GLuint dome_draw; /* the picture drawn (owned or the renderer's) */
+    GLint dome_image;
 };
 
 void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l) {
@@ -232,6 +238,38 @@ static ww_result upload_cubemap(const ww_gl *gl, const ww_scene *sc, GLuint *out
     return WW_OK;
 }
 
+int ww_sky_dome_image_on(const ww_scene *sc) {
+    return sc->render.sky == WW_SKY_DOME && sc->render.dome_image >= 0;
+}
+
+/* the dome's picture as a mipmapped sRGB 2D texture, clamped at its edges (the horizon's ring
+ * lies inside them), decoded here and freed once uploaded */
+static ww_result upload_dome_image(const ww_gl *gl, const ww_scene *sc, GLuint *out,
+                                   ww_error *err) {
+    const ww_render_desc *d = &sc->render;
+    if (!sc->assets || d->dome_image < 0 || d->dome_image >= sc->assets->nimage)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0, "sky: the dome's image was not loaded");
+    const ww_image_data *im = &sc->assets->image[d->dome_image];
+    unsigned char *rgba = NULL;
+    ww_result r = ww_assets_decode(im, &rgba, err);
+    if (r) return r;
+    GLuint tex;
+    gl->GenTextures(1, &tex);
+    gl->BindTexture(GL_TEXTURE_2D, tex);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl->TexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, im->width, im->height, 0, GL_RGBA,
+                   GL_UNSIGNED_BYTE, rgba);
+    ww_assets_pixels_free(rgba);
+    gl->GenerateMipmap(GL_TEXTURE_2D);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    *out = tex;
+    return WW_OK;
+}
+
 ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error *err) {
     static const char *const includes[] = {"common.glsl", NULL};
     static const char *const defines[] = {[WW_SKY_GRADIENT] = NULL,
@@ -242,8 +280,13 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     ww_sky *s = calloc(1, sizeof *s);
     if (!s) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "sky: out of memory");
     s->model = sc->render.sky;
-    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes,
-                                       defines[s->model], &s->prog, err);
+    s->r = r;
+    s->scatter = ww_lights_scatter_on(sc);
+    char defs[128];
+    snprintf(defs, sizeof defs, "%s#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n",
+             defines[s->model] ? defines[s->model] : "", s->scatter, ww_sky_dome_image_on(sc));
+    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes, defs,
+                                       &s->prog, err);
     /* one cube texture per renderer: a second sky (the reflection's) draws the first one's */
     if (rc == WW_OK && s->model == WW_SKY_CUBEMAP) {
         if (r->sky_cubemap) {
@@ -253,14 +296,25 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
             s->cube_draw = r->sky_cubemap = s->cube_tex;
         }
     }
+    /* one picture per renderer, as the cube texture */
+    if (rc == WW_OK && ww_sky_dome_image_on(sc)) {
+        if (r->sky_dome_image) {
+            s->dome_draw = r->sky_dome_image;
+        } else {
+            rc = upload_dome_image(gl, sc, &s->dome_tex, err);
+            s->dome_draw = r->sky_dome_image = s->dome_tex;
+        }
+    }
     if (rc != WW_OK) {
         ww_sky_free(s, gl);
         return rc;
     }
+    s->dome_image = ww_gfx_uniform(gl, s->prog, "u_sky_dome_image");
     ww_sky_locs_init(gl, s->prog, sc, &s->sky);
     s->inv_view_proj = ww_gfx_uniform(gl, s->prog, "u_inv_view_proj");
     s->intensity = ww_gfx_uniform(gl, s->prog, "u_intensity");
     s->below = ww_gfx_uniform(gl, s->prog, "u_below");
+    s->below_density = ww_gfx_uniform(gl, s->prog, "u_below_density");
     s->cubemap = ww_gfx_uniform(gl, s->prog, "u_cubemap");
     s->drift = ww_gfx_uniform(gl, s->prog, "u_drift");
     *out = s;
@@ -279,10 +333,19 @@ void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_fr
     double fb[3];
     ww_fog_below_color(f->sc, f->st, fb);
     gl->Uniform4f(s->below, (float)fb[0], (float)fb[1], (float)fb[2], f->underwater ? 1.0f : 0.0f);
+    if (s->scatter && f->underwater) {
+        /* the lights' glow along the rays that meet nothing under water */
+        gl->Uniform1f(s->below_density, (float)f->sc->render.fog_below_density);
+        ww_geometry_lights_set(s->r->geometry, gl, f, s->prog);
+    }
     if (s->model == WW_SKY_CUBEMAP) {
         gl->ActiveTexture(GL_TEXTURE0);
         gl->BindTexture(GL_TEXTURE_CUBE_MAP, s->cube_draw);
         gl->Uniform1i(s->cubemap, 0);
+    } else if (s->dome_draw) {
+        gl->ActiveTexture(GL_TEXTURE0);
+        gl->BindTexture(GL_TEXTURE_2D, s->dome_draw);
+        gl->Uniform1i(s->dome_image, 0);
     } else if (s->model == WW_SKY_DOME) {
         double x = fmod(DOME_WIND[0] * f->st->t, DOME_PERIOD);
         double z = fmod(DOME_WIND[1] * f->st->t, DOME_PERIOD);
@@ -294,11 +357,13 @@ void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_fr
     gl->DepthMask(GL_TRUE);
     gl->DepthFunc(GL_LESS);
     if (s->model == WW_SKY_CUBEMAP) gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    if (s->dome_draw) gl->BindTexture(GL_TEXTURE_2D, 0);
 }
 
 void ww_sky_free(ww_sky *s, const ww_gl *gl) {
     if (!s) return;
     if (s->prog) gl->DeleteProgram(s->prog);
     if (s->cube_tex) gl->DeleteTextures(1, &s->cube_tex);
+    if (s->dome_tex) gl->DeleteTextures(1, &s->dome_tex);
     free(s);
 }

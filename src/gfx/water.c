@@ -34,7 +34,7 @@ struct ww_water {
     GLint view_proj, origin, ugrid;
     GLint water_color, ambient, fog_color, fog_density, pixel_angle;
     GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
-    GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube;
+    GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube, sky_dome;
     GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
     GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory;
     int foam_n;                      /* components foam's memory re-evaluates, 0: none */
@@ -226,10 +226,12 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
     w->cull = !(cull && strcmp(cull, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
+    char more[128];
+    snprintf(more, sizeof more,
+             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n",
+             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc));
     ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
-                                    !(fade && strcmp(fade, "0") == 0),
-                                    foam_remembers(sc) ? "#define WW_FOAM_MEMORY 1\n" : NULL,
-                                    &w->prog, err);
+                                    !(fade && strcmp(fade, "0") == 0), more, &w->prog, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
     if (rc != WW_OK) {
@@ -260,6 +262,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->scene_color = ww_gfx_uniform(gl, w->prog, "u_scene_color");
     w->scene_depth = ww_gfx_uniform(gl, w->prog, "u_scene_depth");
     w->sky_cube = ww_gfx_uniform(gl, w->prog, "u_sky_cube");
+    w->sky_dome = ww_gfx_uniform(gl, w->prog, "u_sky_dome_image");
     w->sky_intensity = ww_gfx_uniform(gl, w->prog, "u_sky_intensity");
     w->murk = ww_gfx_uniform(gl, w->prog, "u_murk");
     w->foam = ww_gfx_uniform(gl, w->prog, "u_foam");
@@ -321,38 +324,8 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
     *count = n;
 }
 
-/* the DuDv pattern's two layers (water.frag.glsl): layer j maps a rest offset p (m) to lattice
- * cells M_j p + o_j, with M_j = cells per metre x a rotation and o_j = M_j (centre + drift_j t)
- * wrapped to the lattice period in double, so the pattern is fixed to the world, drifts, and
- * stays exact in float far from the origin and at large t (seed 002 scrolls its DuDv map the
- * same way, in two directions) */
-#define DUDV_PERIOD 256.0           /* lattice cells before the noise repeats (NOISE_MASK + 1) */
-static const double dudv_scale[2] = {1.0, 1.93};  /* cells per metre over distortion_scale */
-static const double dudv_angle[2] = {0.0, 2.14};  /* rotation of each layer, rad */
-static const double dudv_drift[2][2] = {{0.8, 0.6}, {-0.45, 0.89}}; /* unit drift directions */
-
-static void dudv_layers(const ww_scene *sc, const ww_state *st, const double centre[2],
-                        float m[2][4], float o[2][2]) {
-    const ww_water_look *lk = &sc->render.water;
-    for (int j = 0; j < 2; j++) {
-        double s = lk->distortion_scale * dudv_scale[j], c = cos(dudv_angle[j]), n = sin(dudv_angle[j]);
-        double r[2][2] = {{s * c, -s * n}, {s * n, s * c}}; /* row-major */
-        double x = centre[0] + dudv_drift[j][0] * lk->distortion_speed * st->t;
-        double z = centre[1] + dudv_drift[j][1] * lk->distortion_speed * st->t;
-        for (int k = 0; k < 2; k++) {
-            double v = r[k][0] * x + r[k][1] * z;
-            o[j][k] = (float)(v - DUDV_PERIOD * floor(v / DUDV_PERIOD));
-        }
-        /* GLSL mat2 is column-major: (m00, m10, m01, m11) */
-        m[j][0] = (float)r[0][0];
-        m[j][1] = (float)r[1][0];
-        m[j][2] = (float)r[0][1];
-        m[j][3] = (float)r[1][1];
-    }
-}
-
 /* texture units of the water program */
-enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SKY_CUBE };
+enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SKY_CUBE, UNIT_SKY_DOME };
 
 static void bind_unit(const ww_gl *gl, int unit, GLenum target, GLuint tex) {
     gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
@@ -376,7 +349,7 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     int dudv = lk->distortion > 0.0 && (refl || refr);
     gl->Uniform3f(w->distort, (float)lk->distortion, (float)lk->distortion_scale, dudv ? 1.0f : 0.0f);
     float m[2][4], o[2][2];
-    dudv_layers(sc, f->st, centre, m, o);
+    ww_water_dudv(sc, f->st, centre, m, o);
     gl->Uniform4fv(w->dudv_m, 2, &m[0][0]);
     gl->Uniform2fv(w->dudv_o, 2, &o[0][0]);
 
@@ -397,6 +370,7 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     gl->Uniform1i(w->scene_color, UNIT_SCENE_COLOR);
     gl->Uniform1i(w->scene_depth, UNIT_SCENE_DEPTH);
     gl->Uniform1i(w->sky_cube, UNIT_SKY_CUBE);
+    gl->Uniform1i(w->sky_dome, UNIT_SKY_DOME);
     gl->Uniform1f(w->sky_intensity, (float)sc->render.sky_intensity);
     gl->Uniform1f(w->murk, (float)lk->murk);
     gl->Uniform1f(w->foam, lk->foam ? (float)lk->foam_amount : 0.0f);
@@ -414,10 +388,12 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
+    if (r->sky_dome_image) bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, r->sky_dome_image);
     gl->ActiveTexture(GL_TEXTURE0);
 }
 
 static void unbind_optics(const ww_gl *gl) {
+    bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, 0);
     for (int u = UNIT_SCENE_DEPTH; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
 }

@@ -220,3 +220,33 @@ void ww_water_detail(const ww_state *st, const double centre[2], float d[WW_WATE
         d[j][3] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] - ww_m_wrap_tau(omega * st->t));
     }
 }
+
+/* the DuDv pattern's two layers (water.frag.glsl): layer j maps a rest offset p (m) to lattice
+ * cells M_j p + o_j, with M_j = cells per metre x a rotation and o_j = M_j (centre + drift_j t)
+ * wrapped to the lattice period in double, so the pattern is fixed to the world, drifts, and
+ * stays exact in float far from the origin and at large t (seed 002 scrolls its DuDv map the
+ * same way, in two directions) */
+#define DUDV_PERIOD 256.0           /* lattice cells before the noise repeats (NOISE_MASK + 1) */
+static const double dudv_scale[2] = {1.0, 1.93};  /* cells per metre over distortion_scale */
+static const double dudv_angle[2] = {0.0, 2.14};  /* rotation of each layer, rad */
+static const double dudv_drift[2][2] = {{0.8, 0.6}, {-0.45, 0.89}}; /* unit drift directions */
+
+void ww_water_dudv(const ww_scene *sc, const ww_state *st, const double centre[2],
+                   float m[2][4], float o[2][2]) {
+    const ww_water_look *lk = &sc->render.water;
+    for (int j = 0; j < 2; j++) {
+        double s = lk->distortion_scale * dudv_scale[j], c = cos(dudv_angle[j]), n = sin(dudv_angle[j]);
+        double r[2][2] = {{s * c, -s * n}, {s * n, s * c}}; /* row-major */
+        double x = centre[0] + dudv_drift[j][0] * lk->distortion_speed * st->t;
+        double z = centre[1] + dudv_drift[j][1] * lk->distortion_speed * st->t;
+        for (int k = 0; k < 2; k++) {
+            double v = r[k][0] * x + r[k][1] * z;
+            o[j][k] = (float)(v - DUDV_PERIOD * floor(v / DUDV_PERIOD));
+        }
+        /* GLSL mat2 is column-major: (m00, m10, m01, m11) */
+        m[j][0] = (float)r[0][0];
+        m[j][1] = (float)r[1][0];
+        m[j][2] = (float)r[0][1];
+        m[j][3] = (float)r[1][1];
+    }
+}

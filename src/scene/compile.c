@@ -1037,7 +1037,8 @@ static ww_result compile_objects(ctx *c, const section *top) {
     TRY(wwc_boat(c, &s));
     TRY(wwc_stones(c, &s));
     TRY(wwc_fishing(c, &s));
-    return wwc_reef(c, &s);
+    TRY(wwc_reef(c, &s));
+    return wwc_floaters(c, &s);
 }
 
 /* ---- scene ----------------------------------------------------------------------------------- */

@@ -138,7 +138,7 @@ static ww_result compile_fish(ctx *c, const section *objects) {
         "count",  "center",    "radius",     "mode",     "spread",    "margin",   "positions",
         "speed",  "max_speed", "response",   "turn_rate", "jitter",   "big_turn", "big_turn_rate",
         "avoid",  "separation", "swim",      "max_bank", "length",    "fight",    "wiggle",
-        "respawn", "reach",    NULL};
+        "respawn", "reach",    "species", NULL};
     static const char *const modes[] = {"wander", "targets", NULL};
     ww_fish_desc *f = &c->sc->fish;
     section s;
@@ -148,6 +148,7 @@ static ww_result compile_fish(ctx *c, const section *objects) {
     double count = f->count;
     TRY(wwc_get_number(c, &s, "count", &R_COUNT, OPTIONAL, &count));
     f->count = (int)count;
+    TRY(wwc_fish_species(c, &s, f)); /* sets the count when given */
     TRY(wwc_get_vec(c, &s, "center", 3, &R_PLACE, OPTIONAL, f->center));
     TRY(wwc_get_number(c, &s, "radius", &R_REGION, OPTIONAL, &f->radius));
     int mode = (int)f->mode;
@@ -192,7 +193,7 @@ static ww_result compile_fish(ctx *c, const section *objects) {
         return wwc_fail(c, WW_E_INCONSISTENT, at,
                         "%s: margin %g m leaves no room in water %g m deep", s.what, f->margin,
                         c->sc->water_depth);
-    return WW_OK;
+    return wwc_fish_species_resolve(c, &s, f);
 }
 
 ww_result wwc_fishing(ctx *c, const section *objects) {

@@ -116,7 +116,12 @@ ww_result wwc_cubes(ctx *c, const section *objects);     /* compile_cubes.c */
 ww_result wwc_boat(ctx *c, const section *objects);      /* compile_boat.c */
 ww_result wwc_stones(ctx *c, const section *objects);    /* compile_stones.c */
 ww_result wwc_fishing(ctx *c, const section *objects);   /* compile_fishing.c: rod and fish */
+/* objects.fish.species (compile_fish_species.c): read with the count, then their defaults from
+ * objects.fish and cross-checks once the whole fish section is read */
+ww_result wwc_fish_species(ctx *c, const section *fish, ww_fish_desc *f);
+ww_result wwc_fish_species_resolve(ctx *c, const section *fish, ww_fish_desc *f);
 ww_result wwc_reef(ctx *c, const section *objects);      /* compile_reef.c: chest, bubbles, models */
+ww_result wwc_floaters(ctx *c, const section *objects);  /* compile_floaters.c: models[].float */
 
 /* script actions: the event's mapping s (t already read) and the action's value node; each fills
  * ev->v / index / flags as its system's header documents. */

@@ -142,6 +142,15 @@ static ww_result compile_bubbles(ctx *c, const section *objects) {
  * with the boat's pose each frame. */
 
 static const rule R_SCALE = OPEN_LO(0, 1e4, "");
+static const rule R_SWAY_AMPLITUDE = OPEN_LO(0, 10, "m");
+static const rule R_SWAY_FREQUENCY = OPEN_LO(0, 5, "Hz");
+static const rule R_SWAY_WAVELENGTH = OPEN_LO(0, 1e4, "m");
+static const char *const BOOL_WORDS[] = {"false", "true", NULL};
+
+/* sway's defaults where the water has no waves to follow */
+#define SWAY_AMPLITUDE 0.25   /* m at the top */
+#define SWAY_FREQUENCY 0.2    /* Hz: a slow surge */
+#define SWAY_WAVELENGTH 10.0  /* m */
 static const rule R_ANGLE = FINITE("deg");
 static const rule R_ALBEDO = CLOSED(0, 1, "");
 
@@ -227,12 +236,58 @@ static ww_assets *scene_assets(ctx *c) {
     return c->sc->assets;
 }
 
+/* the wave the plants follow: the component of largest amplitude (the first of equals); NULL
+ * when the water is flat */
+static const ww_wave *dominant_wave(const ww_scene *sc) {
+    const ww_wave *best = NULL;
+    for (int i = 0; i < sc->nwaves; i++)
+        if (!best || sc->waves[i].amplitude > best->amplitude) best = &sc->waves[i];
+    return best;
+}
+
+/* sway: {amplitude, frequency, direction, wavelength}: the plant bends in the vertex shader
+ * (shaders/geometry.vert.glsl), moved by the dominant wave's orbital surge under it: that
+ * wave's heading, frequency and wavelength unless given */
+static ww_result compile_sway(ctx *c, const section *s, ww_model_desc *m) {
+    static const char *const keys[] = {"amplitude", "frequency", "direction", "wavelength", NULL};
+    section w;
+    TRY(wwc_open_section(c, s, "sway", keys, &w));
+    if (!w.map) return WW_OK;
+    if (m->mesh != WW_MESH_OBJ)
+        return wwc_fail(c, WW_E_INCONSISTENT, w.map,
+                        "%s: sway bends an OBJ model's mesh: expected an obj: file", s->what);
+    const ww_wave *dom = dominant_wave(c->sc);
+    double heading = dom ? dom->direction : 0.0;
+    m->sway_amplitude = SWAY_AMPLITUDE;
+    m->sway_frequency = dom ? dom->omega / (2.0 * WW_PI) : SWAY_FREQUENCY;
+    m->sway_wavelength = dom ? dom->wavelength : SWAY_WAVELENGTH;
+    if (m->sway_frequency > R_SWAY_FREQUENCY.hi) m->sway_frequency = R_SWAY_FREQUENCY.hi;
+    TRY(wwc_get_number(c, &w, "amplitude", &R_SWAY_AMPLITUDE, OPTIONAL, &m->sway_amplitude));
+    TRY(wwc_get_number(c, &w, "frequency", &R_SWAY_FREQUENCY, OPTIONAL, &m->sway_frequency));
+    TRY(wwc_get_heading(c, &w, "direction", OPTIONAL, &heading));
+    TRY(wwc_get_number(c, &w, "wavelength", &R_SWAY_WAVELENGTH, OPTIONAL, &m->sway_wavelength));
+    m->sway_dir[0] = cos(heading);
+    m->sway_dir[1] = sin(heading);
+
+    /* a top swinging farther than the plant is tall would tear it from its base */
+    const ww_mesh_data *md = &c->sc->assets->mesh[m->asset];
+    double tall = (md->max[1] - md->min[1]) * m->scale[1];
+    if (m->sway_amplitude > tall) {
+        const ww_node *n = ww_node_find(w.map, "amplitude");
+        return wwc_fail(c, WW_E_INCONSISTENT, n ? n : w.map,
+                        "%s.sway.amplitude = %g m is more than the model's height %g m: expected "
+                        "at most its height",
+                        s->what, m->sway_amplitude, tall);
+    }
+    return WW_OK;
+}
+
 /* *given: the model's bounds were written (else they are the transformed mesh's) */
 static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc *m,
                                const ww_node **parent, int *given) {
     static const char *const keys[] = {"name",  "mesh",  "obj",    "position", "rotation",
                                        "scale", "color", "parent", "min",      "max",
-                                       "emissive", NULL};
+                                       "emissive", "float", "solid", "sway", NULL};
     static const char *const axes[] = {"x", "y", "z"};
     section s;
     const ww_node *name, *obj;
@@ -274,11 +329,16 @@ static ww_result compile_model(ctx *c, const ww_node *item, int i, ww_model_desc
     TRY(wwc_get_number(c, &s, "emissive", &R_EMISSIVE, OPTIONAL, &m->emissive));
     TRY(get_name(c, &s, "parent", sizeof m->name, parent));
     local_matrix(m, 1, m->local);
+    TRY(compile_sway(c, &s, m));
+    /* plants sway and the camera swims through them; everything else is solid */
+    m->solid = m->sway_amplitude == 0.0;
+    TRY(wwc_get_word(c, &s, "solid", BOOL_WORDS, &m->solid));
 
-    /* bounds: given, or the transformed mesh's once the world matrix is known */
+    /* bounds: given, or the transformed mesh's once the world matrix is known; a node without
+     * a mesh that is not solid only places its children (a group) */
     *given = 0;
-    if (!ww_node_find(s.map, "min") && !ww_node_find(s.map, "max") && m->mesh != WW_MESH_NONE)
-        return WW_OK;
+    int bounded = ww_node_find(s.map, "min") || ww_node_find(s.map, "max");
+    if (!bounded && (m->mesh != WW_MESH_NONE || !m->solid)) return WW_OK;
     TRY(wwc_get_vec(c, &s, "min", 3, &R_PLACE, REQUIRED, m->min));
     TRY(wwc_get_vec(c, &s, "max", 3, &R_PLACE, REQUIRED, m->max));
     for (int a = 0; a < 3; a++)
@@ -312,6 +372,63 @@ static void transformed_bounds(const ww_scene *sc, ww_model_desc *m) {
             if (v > m->max[a]) m->max[a] = v;
         }
     }
+}
+
+/* the solid of a turned model: the mesh's own box turned with it (its axis-aligned bounds
+ * would hold empty corners the camera could not enter). A world matrix without a turn keeps
+ * the axis-aligned box (oriented stays 0), bit for bit the bounds it always had. */
+static void oriented_bounds(const ww_scene *sc, ww_model_desc *m) {
+    const double *w = m->world;
+    if (w[1] == 0.0 && w[2] == 0.0 && w[4] == 0.0 && w[6] == 0.0 && w[8] == 0.0 && w[9] == 0.0)
+        return;
+    double lo[3] = {-0.5, -0.5, -0.5}, hi[3] = {0.5, 0.5, 0.5}, r[3][3], len[3];
+    if (m->mesh == WW_MESH_OBJ)
+        for (int a = 0; a < 3; a++) {
+            lo[a] = sc->assets->mesh[m->asset].min[a];
+            hi[a] = sc->assets->mesh[m->asset].max[a];
+        }
+    /* the world matrix is R S: its columns' lengths are the scale, their directions R's */
+    for (int col = 0; col < 3; col++) {
+        len[col] = sqrt(w[4 * col] * w[4 * col] + w[4 * col + 1] * w[4 * col + 1] +
+                        w[4 * col + 2] * w[4 * col + 2]);
+        for (int row = 0; row < 3; row++) r[row][col] = w[4 * col + row] / len[col];
+    }
+    for (int a = 0; a < 3; a++) {
+        double mid = 0.5 * (lo[0] + hi[0]) * w[a] + 0.5 * (lo[1] + hi[1]) * w[4 + a] +
+                     0.5 * (lo[2] + hi[2]) * w[8 + a];
+        m->obb_c[a] = mid + w[12 + a];
+        m->obb_h[a] = 0.5 * (hi[a] - lo[a]) * len[a];
+    }
+    /* rotation matrix -> quaternion (Shepperd's method: the largest of the four first) */
+    double tr = r[0][0] + r[1][1] + r[2][2], q[4];
+    if (tr > 0.0) {
+        double s = 2.0 * sqrt(1.0 + tr);
+        q[0] = 0.25 * s;
+        q[1] = (r[2][1] - r[1][2]) / s;
+        q[2] = (r[0][2] - r[2][0]) / s;
+        q[3] = (r[1][0] - r[0][1]) / s;
+    } else if (r[0][0] > r[1][1] && r[0][0] > r[2][2]) {
+        double s = 2.0 * sqrt(1.0 + r[0][0] - r[1][1] - r[2][2]);
+        q[0] = (r[2][1] - r[1][2]) / s;
+        q[1] = 0.25 * s;
+        q[2] = (r[0][1] + r[1][0]) / s;
+        q[3] = (r[0][2] + r[2][0]) / s;
+    } else if (r[1][1] > r[2][2]) {
+        double s = 2.0 * sqrt(1.0 + r[1][1] - r[0][0] - r[2][2]);
+        q[0] = (r[0][2] - r[2][0]) / s;
+        q[1] = (r[0][1] + r[1][0]) / s;
+        q[2] = 0.25 * s;
+        q[3] = (r[1][2] + r[2][1]) / s;
+    } else {
+        double s = 2.0 * sqrt(1.0 + r[2][2] - r[0][0] - r[1][1]);
+        q[0] = (r[1][0] - r[0][1]) / s;
+        q[1] = (r[0][2] + r[2][0]) / s;
+        q[2] = (r[1][2] + r[2][1]) / s;
+        q[3] = 0.25 * s;
+    }
+    double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (int k = 0; k < 4; k++) m->obb_q[k] = q[k] / n;
+    m->oriented = 1;
 }
 
 /* parents by name (written before or after their children), cycles refused, world matrices
@@ -381,7 +498,10 @@ static ww_result resolve_graph(ctx *c, const ww_node *list, const ww_node *const
                 memcpy(m->world, m->local, sizeof m->world);
                 memcpy(m->frame, rigid, sizeof m->frame);
             }
-            if (!given[i]) transformed_bounds(c->sc, m);
+            if (!given[i] && (m->mesh != WW_MESH_NONE || m->solid)) {
+                transformed_bounds(c->sc, m);
+                oriented_bounds(c->sc, m);
+            }
             done[i] = 1;
             left--;
         }

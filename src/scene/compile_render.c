@@ -49,6 +49,7 @@ static const rule R_RANGE = OPEN_LO(0, 1e5, "m");
 static const rule R_CONE = OPEN_LO(0, 89, "deg");
 static const rule R_RATE = CLOSED(0, 100, "Hz");
 static const rule R_FOAM_LIFE = CLOSED(0, 30, "s");
+static const rule R_SCATTER = CLOSED(0, 20, "");
 
 static const char *const TONEMAP_WORDS[] = {[WW_TONEMAP_EXP] = "exp", [WW_TONEMAP_ACES] = "aces",
                                             NULL};
@@ -57,6 +58,8 @@ static const char *const SKY_WORDS[] = {[WW_SKY_GRADIENT] = "gradient",
                                         [WW_SKY_PREETHAM] = "preetham", NULL};
 static const char *const FRESNEL_WORDS[] = {[WW_FRESNEL_BIAS_SCALE] = "bias_scale",
                                             [WW_FRESNEL_SCHLICK] = "schlick", NULL};
+static const char *const CAUSTICS_WORDS[] = {[WW_CAUSTICS_ANALYTIC] = "analytic",
+                                             [WW_CAUSTICS_TEXTURE] = "texture", NULL};
 static const char *const LIGHT_WORDS[] = {[WW_LIGHT_POINT] = "point", [WW_LIGHT_SPOT] = "spot",
                                           NULL};
 static const char *const BOOL_WORDS[] = {"false", "true", NULL};
@@ -93,6 +96,7 @@ void ww_render_defaults(ww_render_desc *d) {
     d->grid = 1.0;
     d->sky = WW_SKY_PREETHAM;
     for (int i = 0; i < 6; i++) d->cubemap_image[i] = -1;
+    d->dome_image = -1;
     d->sky_intensity = 1.0;
     d->sky_turbidity = 2.5;
     d->cloud_cover = 0.0;
@@ -305,9 +309,29 @@ static ww_result compile_cubemap(ctx *c, const section *s) {
     return WW_OK;
 }
 
+/* sky.image: a picture of the sky mapped on the dome (sky.model dome only), resolved against the
+ * scene file's folder and read (its size checked) now, decoded when the sky is drawn */
+static ww_result compile_dome_image(ctx *c, const section *s) {
+    ww_render_desc *d = &c->sc->render;
+    const ww_node *n;
+    TRY(wwc_lookup(c, s, "image", OPTIONAL, &n));
+    if (!n) return WW_OK;
+    if (n->kind != WW_NODE_SCALAR || ww_node_is_null(n) || n->len == 0)
+        return wwc_fail(c, WW_E_TYPE, n, "sky.image: expected an image file name");
+    if (d->sky != WW_SKY_DOME)
+        return wwc_fail(c, WW_E_INCONSISTENT, n,
+                        "sky.image is a picture for the dome: it needs sky.model dome");
+    TRY(wwc_resolve_path(c, n, d->dome_image_path, sizeof d->dome_image_path));
+    if (!c->sc->assets && !(c->sc->assets = calloc(1, sizeof *c->sc->assets)))
+        return wwc_fail(c, WW_E_NOMEM, n, "out of memory for the scene's assets");
+    return ww_assets_image(c->sc->assets, d->dome_image_path, n->mark.file ? n->mark.file : c->file,
+                           n->mark.line, n->mark.column, &d->dome_image, c->err);
+}
+
 ww_result wwc_sky(ctx *c, const section *top) {
     static const char *const keys[] = {"model",     "time_of_day", "day_length", "sun_max_elevation",
-                                       "cubemap",   "intensity",   "turbidity",  "clouds", NULL};
+                                       "cubemap",   "intensity",   "turbidity",  "clouds",
+                                       "image",     NULL};
     static const char *const cloud_keys[] = {"cover", "speed", "seed", NULL};
     ww_scene *sc = c->sc;
     section s, cl;
@@ -328,6 +352,7 @@ ww_result wwc_sky(ctx *c, const section *top) {
         TRY(wwc_get_number(c, &cl, "seed", &R_CLOUD_SEED, OPTIONAL, &seed));
         sc->render.cloud_seed = (int)seed;
     }
+    TRY(compile_dome_image(c, &s));
     return compile_cubemap(c, &s);
 }
 
@@ -352,7 +377,7 @@ ww_result wwc_water_look(ctx *c, const section *water) {
                                        "distortion_speed", "specular", "foam", "murk",
                                        "caustics", "alpha_blend", NULL};
     static const char *const foam_keys[] = {"on", "amount", "life", NULL};
-    static const char *const caustic_keys[] = {"on", "strength", NULL};
+    static const char *const caustic_keys[] = {"on", "strength", "method", NULL};
     static const char *const alpha_keys[] = {"on", "alpha", NULL};
     ww_water_look *w = &c->sc->render.water;
     section s, f;
@@ -373,6 +398,9 @@ ww_result wwc_water_look(ctx *c, const section *water) {
     TRY(wwc_get_number(c, &f, "life", &R_FOAM_LIFE, OPTIONAL, &w->foam_life));
     TRY(get_feature(c, &s, "caustics", caustic_keys, &w->caustics, &f));
     TRY(wwc_get_number(c, &f, "strength", &R_STRENGTH, OPTIONAL, &w->caustics_strength));
+    int method = (int)w->caustics_method;
+    TRY(wwc_get_word(c, &f, "method", CAUSTICS_WORDS, &method));
+    w->caustics_method = (ww_caustics_method)method;
     TRY(get_feature(c, &s, "alpha_blend", alpha_keys, &w->alpha_blend, &f));
     return wwc_get_number(c, &f, "alpha", &R_UNIT, OPTIONAL, &w->alpha);
 }
@@ -380,7 +408,7 @@ ww_result wwc_water_look(ctx *c, const section *water) {
 static ww_result compile_light(ctx *c, const ww_node *item, int i, ww_light_desc *l) {
     static const char *const keys[] = {"type", "position", "direction", "color", "intensity",
                                        "range", "angle", "softness", "flicker", "flicker_rate",
-                                       "parent", NULL};
+                                       "parent", "scatter", NULL};
     section s;
     TRY(wwc_open_item(c, item, "lights", i, keys, &s));
     *l = (ww_light_desc){.kind = WW_LIGHT_POINT,
@@ -392,6 +420,7 @@ static ww_result compile_light(ctx *c, const ww_node *item, int i, ww_light_desc
                          .softness = 0.25,
                          .flicker = 0.0,
                          .flicker_rate = 6.0,
+                         .scatter = 1.0,
                          .line = s.map->mark.line,
                          .column = s.map->mark.column};
     int kind = (int)l->kind;
@@ -412,6 +441,7 @@ static ww_result compile_light(ctx *c, const ww_node *item, int i, ww_light_desc
     TRY(wwc_get_number(c, &s, "softness", &R_UNIT, OPTIONAL, &l->softness));
     TRY(wwc_get_number(c, &s, "flicker", &R_UNIT, OPTIONAL, &l->flicker));
     TRY(wwc_get_number(c, &s, "flicker_rate", &R_RATE, OPTIONAL, &l->flicker_rate));
+    TRY(wwc_get_number(c, &s, "scatter", &R_SCATTER, OPTIONAL, &l->scatter));
     const ww_node *parent;
     TRY(wwc_lookup(c, &s, "parent", OPTIONAL, &parent));
     if (parent) {

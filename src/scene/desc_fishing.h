@@ -5,6 +5,8 @@
 #ifndef WW_DESC_FISHING_H
 #define WW_DESC_FISHING_H
 
+#include "scene/desc_fish_species.h"
+
 #define WW_MAX_FISH 128
 
 /* ww_event.flags of a cast (WW_EV_CAST; the whole payload is in sim/rod.h) */
@@ -56,6 +58,9 @@ typedef struct ww_fish_desc {
     double wiggle[2];    /* while fighting: yaw amplitude rad, frequency Hz */
     double respawn;      /* a caught fish reappears after this, s */
     double reach;        /* targets: a target within this is reached, m */
+    int nspecies;        /* species (desc_fish_species.h); 0: every fish alike, as without */
+    ww_fish_species species[WW_MAX_SPECIES];
+    unsigned char species_of[WW_MAX_FISH]; /* each fish's species (with nspecies > 0) */
 } ww_fish_desc;
 
 /* the file format's defaults (on stays 0); compile_fishing.c */

@@ -5,7 +5,8 @@
  *   objects:
  *     chest: {first: 20, every: 300, ttl: 15, radius: 12, near: boat, reach: 2, size: [0.9, 0.6, 0.6]}
  *     bubbles: [{at: [3, -6, 2], rate: 2, speed: 0.25, wobble: 0.03, frequency: 2, size: 0.01, count: 16}]
- *     models: [{name: rock, min: [-1, -8, -1], max: [1, -6, 1]}]
+ *     models: [{name: rock, min: [-1, -8, -1], max: [1, -6, 1]},
+ *              {name: kelp, obj: models/kelp.obj, sway: {amplitude: 0.3, frequency: 0.2}}]
  */
 #ifndef WW_DESC_REEF_H
 #define WW_DESC_REEF_H
@@ -86,13 +87,24 @@ typedef struct ww_model_desc {
                             * the parent's frame times local, column-major; relative to the
                             * boat's frame when the chain ends at the boat (the renderer composes
                             * it with the boat's pose per frame) */
+    int solid;             /* the camera cannot enter its bounds (default: unless it sways) */
+    int oriented;          /* solid is the box obb_c, obb_h turned by obb_q (a turned mesh's own
+                            * bounds), not the axis-aligned min/max */
+    double obb_c[3];       /* its centre in the world (or the boat's frame), m */
+    double obb_h[3];       /* its half extents along its own axes, m */
+    double obb_q[4];       /* its turn, unit quaternion w x y z */
+    /* sway (plants): the mesh bends with the water above its base, the tip most; drawn only */
+    double sway_amplitude; /* sideways reach of the top, m (0: rigid) */
+    double sway_frequency; /* Hz */
+    double sway_wavelength;/* m: phase travels across a bed at this wavelength */
+    double sway_dir[2];    /* unit (x, z) of the motion: the dominant wave's heading by default */
     int line, column;      /* where it was written */
 } ww_model_desc;
 
 #define WW_PARENT_BOAT (-2)
 
 typedef struct ww_models_desc {
-    int count;       /* static models (their bounds are solid to the camera) */
+    int count;       /* static models (the solid ones' bounds stop the camera) */
     ww_model_desc model[WW_MAX_MODELS];
 } ww_models_desc;
 

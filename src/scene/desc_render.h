@@ -68,6 +68,10 @@ typedef struct ww_shafts_desc {
     double scale;      /* target size as a fraction of the frame's */
 } ww_shafts_desc;
 
+/* how caustics are drawn: the focusing of the wave field's curvature per pixel, or seed 003's
+ * looped set of caustic textures computed from the wave field when the renderer is made */
+typedef enum ww_caustics_method { WW_CAUSTICS_ANALYTIC = 0, WW_CAUSTICS_TEXTURE } ww_caustics_method;
+
 /* the water's optics (seeds 000, 002, 004) */
 typedef struct ww_water_look {
     ww_fresnel fresnel;          /* bias + scale (1 - v.n)^power, or Schlick with F0 */
@@ -82,6 +86,7 @@ typedef struct ww_water_look {
     double murk;                 /* extinction under water for refraction, 1/m */
     int caustics;                /* animated caustics on surfaces under water */
     double caustics_strength;
+    ww_caustics_method caustics_method; /* focused per pixel, or a looped set of textures */
     int alpha_blend;             /* seed 004: the surface alpha-blended over what lies below */
     double alpha;                /* its opacity at normal incidence */
 } ww_water_look;
@@ -98,6 +103,7 @@ typedef struct ww_light_desc {
     double softness;             /* spot: fraction of the cone that fades out */
     double flicker;              /* 0..1: depth of the flicker */
     double flicker_rate;         /* Hz */
+    double scatter;              /* its glow in the water (in-scattering), x fog.below.density; 0 off */
     char parent[32];             /* "" world; "boat"; or a model's name */
     int line, column;            /* where it was written */
 } ww_light_desc;
@@ -124,6 +130,8 @@ typedef struct ww_render_desc {
     ww_sky_model sky;
     char cubemap[6][WW_PATH_MAX];/* +x, -x, +y, -y, +z, -z image files, resolved from the scene */
     int cubemap_image[6];        /* index in the scene's assets (scene/assets.h), -1 none */
+    char dome_image_path[WW_PATH_MAX]; /* sky.image: the dome's picture, resolved; "" none */
+    int dome_image;              /* its index in the scene's assets, -1 none (procedural dome) */
     double sky_intensity;        /* cubemap and dome radiance scale */
     double sky_turbidity;        /* Preetham's turbidity T (haze: 2 clear .. 10 hazy) */
     double cloud_cover;          /* share of the sky the clouds cover, 0: none (preetham) */

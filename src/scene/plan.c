@@ -184,9 +184,10 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     *p = (ww_plan){0};
     for (int s = 0; s < WW_SYS_COUNT; s++) p->system_on[s] = sc->system_on[s];
 
-    /* solid geometry: what casts shadows and what refraction and shafts see under the water */
+    /* solid geometry: what casts shadows and what refraction and shafts see under the water;
+     * it also holds the frame's lights, which the water and the sky take from it */
     const ww_render_desc *rd = &sc->render;
-    p->geometry = ww_scene_has_objects(sc) || rd->seabed;
+    p->geometry = ww_scene_has_objects(sc) || rd->seabed || rd->nlights > 0;
     int casters = ww_scene_has_objects(sc);
 
     /* stencilled shadows (projected, volumes) need a stencil wherever they are drawn; every
@@ -328,9 +329,12 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
         if (s == WW_SYS_CLOCK) fprintf(to, " %.2f h, day length %g s", sc->time_of_day, sc->day_length);
         if (s == WW_SYS_RIPPLES) fprintf(to, " pool of %d, lifetime %g s", sc->ripples.max, sc->ripples.lifetime);
         if (s == WW_SYS_CUBES) fprintf(to, " %d cubes", sc->cubes.count);
+        if (s == WW_SYS_FLOATERS) fprintf(to, " %d floating models", sc->floaters.count);
         if (s == WW_SYS_FISH)
             fprintf(to, " %d fish, %s", sc->fish.count,
                     sc->fish.mode == WW_FISH_TARGETS ? "swimming to targets" : "wandering");
+        if (s == WW_SYS_FISH && sc->fish.nspecies > 0)
+            fprintf(to, ", %d species in their own schools", sc->fish.nspecies);
         if (s == WW_SYS_STONES) fprintf(to, " up to %d in flight", WW_MAX_STONES);
         if (s == WW_SYS_ROD) fprintf(to, " lure active %g s after landing", sc->rod.window);
         if (s == WW_SYS_CHEST)
@@ -338,9 +342,14 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
                     sc->chest.ttl);
         if (s == WW_SYS_BUBBLES) fprintf(to, " %d emitters", sc->bubbles.count);
         if (s == WW_SYS_BOAT) fprintf(to, " radius %g m", sc->boat.radius);
-        if (s == WW_SYS_COLLIDE)
+        if (s == WW_SYS_COLLIDE) {
+            int solid = 0;
+            for (int i = 0; i < sc->models.count; i++) solid += sc->models.model[i].solid;
             fprintf(to, " boat %d, cubes %d, chest %d, models %d", sc->boat.on,
-                    sc->cubes.on ? sc->cubes.count : 0, sc->chest.on, sc->models.count);
+                    sc->cubes.on ? sc->cubes.count : 0, sc->chest.on, solid);
+            if (solid < sc->models.count)
+                fprintf(to, " (%d not solid)", sc->models.count - solid);
+        }
         fputc('\n', to);
     }
     print_water(sc, &p->water, to);

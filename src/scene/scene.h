@@ -20,6 +20,7 @@
 #include "scene/desc_boat.h"
 #include "scene/desc_cubes.h"
 #include "scene/desc_fishing.h"
+#include "scene/desc_floaters.h"
 #include "scene/desc_reef.h"
 #include "scene/desc_audio.h"
 #include "scene/desc_golden.h"
@@ -182,6 +183,7 @@ typedef enum ww_tonemap_op { WW_TONEMAP_EXP = 0, WW_TONEMAP_ACES } ww_tonemap_op
     X(SCRIPT, "script", sc->nevents > 0, 0)      /* script events */                             \
     X(RIPPLES, "ripples", sc->ripples_on, 0)     /* the ripple pool */                           \
     X(CUBES, "cubes", sc->cubes.on, 1)           /* floating cubes */                            \
+    X(FLOATERS, "floaters", sc->floaters.on, 1)  /* floating models */                           \
     X(STONES, "stones", sc->stones.on, 1)        /* thrown stones */                             \
     X(ROD, "rod", sc->rod.on, 1)                 /* rod and lure */                              \
     X(FISH, "fish", sc->fish.on, 1)              /* fish */                                      \
@@ -268,6 +270,7 @@ typedef struct ww_scene {
     ww_chest_desc chest;
     ww_bubbles_desc bubbles;
     ww_models_desc models;
+    ww_floaters_desc floaters; /* objects.models[].float (compile_floaters.c) */
     int camera_collide;        /* camera.collide: the camera stops at solid objects */
 
     /* what comes out besides the frames */

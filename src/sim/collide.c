@@ -7,6 +7,7 @@
 #include "core/mathx.h"
 #include "sim/camera.h"
 #include "sim/events.h"
+#include "sim/floaters.h"
 
 #define COLLIDE_SKIN 1e-6  /* m: a stopped camera is put this far outside the grown surface, so
                             * the next sweep starts outside it */
@@ -79,7 +80,20 @@ static int get_solid(const ww_scene *sc, const ww_state *st, int k, double m, so
     }
     if (rides_boat(sc, k)) return 0;
     const ww_model_desc *md = &sc->models.model[k];
-    double c[3], half[3];
+    if (!md->solid) return 0; /* plants, groups: the camera passes */
+    double c[3], half[3], fq[4];
+    int floating = ww_floater_box(sc, st, k, c, half, fq); /* sim/floaters.h */
+    if (floating < 0) return 0;
+    if (floating > 0) {
+        box(s, WW_SOLID_MODEL, k, c, half, m);
+        for (int a = 0; a < 4; a++) s->q[a] = fq[a];
+        return 1;
+    }
+    if (md->oriented) {
+        box(s, WW_SOLID_MODEL, k, md->obb_c, md->obb_h, m);
+        for (int a = 0; a < 4; a++) s->q[a] = md->obb_q[a];
+        return 1;
+    }
     for (int a = 0; a < 3; a++) {
         c[a] = 0.5 * (md->min[a] + md->max[a]);
         half[a] = 0.5 * (md->max[a] - md->min[a]);

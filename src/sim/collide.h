@@ -8,7 +8,10 @@
  * Solids, each grown by the margin m = the camera's near clip (so the near plane never cuts into
  * an object): the boat, a sphere (boat_pos, objects.boat.radius); the cubes, oriented boxes
  * (cube_pos, cube_rot, edge objects.cubes[i].size); the chest while present, its box
- * (chest.h); each model's bounds (objects.models). Bubbles and fish are not solid.
+ * (chest.h); each solid model's bounds (objects.models): given min/max, or its mesh's own box
+ * turned with it (an oriented box, so a tilted wreck has no invisible corners), the axis-aligned
+ * box where it is not turned. Bubbles, fish and models with solid: false (swaying plants by
+ * default) are not solid.
  *
  * Model. Let p0 be the camera's position after collision at the previous step (collide_prev)
  * and p1 the position the path (or seat) asks for now.

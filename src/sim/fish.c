@@ -49,16 +49,40 @@ static double surface(const ww_scene *sc, const ww_state *st, double x, double z
     return w.height;
 }
 
-/* the band where fish cruise and targets lie: center.y +- spread, under the highest crest */
-static void cruise_band(const ww_scene *sc, double *lo, double *hi) {
+/* fish i's school (objects.fish.species): its species' region, cruising speed and body length,
+ * or objects.fish's when the scene has no species */
+static const ww_fish_species *species_of(const ww_fish_desc *f, int i) {
+    return f->nspecies > 0 ? &f->species[f->species_of[i]] : NULL;
+}
+static const double *school_center(const ww_fish_desc *f, int i) {
+    const ww_fish_species *sp = species_of(f, i);
+    return sp ? sp->center : f->center;
+}
+static double school_radius(const ww_fish_desc *f, int i) {
+    const ww_fish_species *sp = species_of(f, i);
+    return sp ? sp->radius : f->radius;
+}
+static double cruise_speed(const ww_fish_desc *f, int i) {
+    const ww_fish_species *sp = species_of(f, i);
+    return sp ? sp->speed : f->speed;
+}
+static double body_length(const ww_fish_desc *f, int i) {
+    const ww_fish_species *sp = species_of(f, i);
+    return sp ? sp->length : f->length;
+}
+
+/* the band where fish i cruises and its targets lie: its school's centre.y +- spread, under
+ * the highest crest */
+static void cruise_band(const ww_scene *sc, int i, double *lo, double *hi) {
     const ww_fish_desc *f = &sc->fish;
+    const double *center = school_center(f, i);
     double crest = 0.0;
     for (int w = 0; w < sc->nwaves; w++) crest += 2.0 * fabs(sc->waves[w].amplitude);
     double bed = sc->water_level - sc->water_depth + f->margin;
     double top = sc->water_level - f->margin - crest;
-    *lo = fmax(bed, f->center[1] - f->spread);
-    *hi = fmin(top, f->center[1] + f->spread);
-    if (*hi < *lo) *lo = *hi = ww_m_clamp(f->center[1], bed, fmax(bed, top));
+    *lo = fmax(bed, center[1] - f->spread);
+    *hi = fmin(top, center[1] + f->spread);
+    if (*hi < *lo) *lo = *hi = ww_m_clamp(center[1], bed, fmax(bed, top));
 }
 
 /* a point of the region: uniform in the disc, height uniform in the band */
@@ -66,11 +90,12 @@ static void region_point(const ww_scene *sc, const ww_state *st, int i, uint64_t
                          uint64_t ky, double p[3]) {
     const ww_fish_desc *f = &sc->fish;
     double lo, hi;
-    cruise_band(sc, &lo, &hi);
-    double a = WW_TAU * draw(sc, st, i, ka), r = f->radius * sqrt(draw(sc, st, i, kr));
-    p[0] = f->center[0] + r * cos(a);
+    cruise_band(sc, i, &lo, &hi);
+    const double *center = school_center(f, i);
+    double a = WW_TAU * draw(sc, st, i, ka), r = school_radius(f, i) * sqrt(draw(sc, st, i, kr));
+    p[0] = center[0] + r * cos(a);
     p[1] = lo + (hi - lo) * draw(sc, st, i, ky);
-    p[2] = f->center[2] + r * sin(a);
+    p[2] = center[2] + r * sin(a);
 }
 
 static void new_target(const ww_scene *sc, const ww_state *st, int i) {
@@ -105,9 +130,9 @@ static void spawn(const ww_scene *sc, ww_state *st, int i, int others, int first
     st->fish_goal[i] = yaw;
     st->fish_yaw_rate[i] = 0.0;
     st->fish_bank[i] = 0.0;
-    st->fish_vel[3 * i] = f->speed * cos(yaw);
+    st->fish_vel[3 * i] = cruise_speed(f, i) * cos(yaw);
     st->fish_vel[3 * i + 1] = 0.0;
-    st->fish_vel[3 * i + 2] = f->speed * sin(yaw);
+    st->fish_vel[3 * i + 2] = cruise_speed(f, i) * sin(yaw);
     st->fish_mode[i] = WW_FISH_SWIMMING;
     st->fish_timer[i] = 0.0;
     st->fish_reached[i] = 0.0;
@@ -195,9 +220,10 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
     g[1] += AVOID_WEIGHT * fl[2];
 
     /* back into the region near its edge */
-    double cx = f->center[0] - p[0], cz = f->center[2] - p[2], r = hypot(cx, cz);
-    if (r > HOME_START * f->radius) {
-        double w = HOME_WEIGHT * (r - HOME_START * f->radius) / ((1.0 - HOME_START) * f->radius);
+    const double *center = school_center(f, i);
+    double cx = center[0] - p[0], cz = center[2] - p[2], r = hypot(cx, cz), R = school_radius(f, i);
+    if (r > HOME_START * R) {
+        double w = HOME_WEIGHT * (r - HOME_START * R) / ((1.0 - HOME_START) * R);
         g[0] += w * cx / r;
         g[1] += w * cz / r;
     }
@@ -277,7 +303,8 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
     /* desired velocity: along the heading (a burst toward max_speed when frightened, not
      * slowed by a turn then), toward the wanted depth, apart from the others, away from the
      * threats */
-    double speed = f->speed + (f->max_speed - f->speed) * alarm;
+    double cruise = cruise_speed(f, i);
+    double speed = cruise + (f->max_speed - cruise) * alarm;
     double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cos(wrap_pi(want - yaw)));
     speed *= slow + (1.0 - slow) * alarm;
     double y_want;
@@ -288,7 +315,7 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
         y_want = st->fish_cruise[2 * i] +
                  f->swim[0] * sin(WW_TAU * st->t / T + st->fish_cruise[2 * i + 1]);
     }
-    double vy_max = VERTICAL_MAX * f->speed;
+    double vy_max = VERTICAL_MAX * cruise;
     double want_v[3] = {speed * cos(yaw), ww_m_clamp(VERTICAL_GAIN * (y_want - p[1]), -vy_max, vy_max),
                         speed * sin(yaw)};
     double push[3];
@@ -325,7 +352,7 @@ static void anchor(const ww_scene *sc, ww_state *st, int i, double tau) {
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i;
     double yaw0 = st->fish_yaw[i];
     double yaw = wrap_pi(st->fish_goal[i] + f->wiggle[0] * sin(WW_TAU * f->wiggle[1] * tau));
-    double half = 0.5 * f->length;
+    double half = 0.5 * body_length(f, i);
     double q[3] = {st->lure_pos[0] - half * cos(yaw), st->lure_pos[1] - sc->rod.hook_depth,
                    st->lure_pos[2] - half * sin(yaw)};
     double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, dn = ww_m_len3(d);

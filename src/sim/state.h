@@ -25,6 +25,7 @@
 #include "sim/fields_boat.h"
 #include "sim/fields_cubes.h"
 #include "sim/fields_fishing.h"
+#include "sim/fields_floaters.h"
 #include "sim/fields_reef.h"
 #include "sim/fields_stones.h"
 
@@ -51,7 +52,8 @@
     WW_FIELDS_STONES(X)                                                                          \
     WW_FIELDS_FISHING(X)                                                                         \
     WW_FIELDS_REEF(X)                                                                            \
-    WW_FIELDS_BOAT(X)
+    WW_FIELDS_BOAT(X)                                                                            \
+    WW_FIELDS_FLOATERS(X)
 
 typedef struct ww_state {
     int64_t step;          /* steps taken since t = start */

@@ -9,6 +9,7 @@
 #include "sim/cubes.h"
 #include "sim/events.h"
 #include "sim/fish.h"
+#include "sim/floaters.h"
 #include "sim/ripples.h"
 #include "sim/rod.h"
 #include "sim/sky.h"
@@ -43,6 +44,7 @@ static const ww_system_row ROWS[] = {
     {.id = WW_SYS_CAMERA, .always = 1, .reset = ww_camera_update, .view = ww_camera_update},
     {.id = WW_SYS_CUBES, .reset = ww_cubes_reset, .step = ww_cubes_step, .event = ww_cubes_event,
      .takes = TAKES(WW_EV_PRESS), .emits = EMITS(WW_SE_CUBE_PRESS) | EMITS(WW_SE_CUBE_RELEASE)},
+    {.id = WW_SYS_FLOATERS, .reset = ww_floaters_reset, .step = ww_floaters_step},
     {.id = WW_SYS_STONES, .reset = ww_stones_reset, .step = ww_stones_step,
      .event = ww_stones_event, .takes = TAKES(WW_EV_THROW),
      .emits = EMITS(WW_SE_STONE_THROW) | EMITS(WW_SE_STONE_SKIP) | EMITS(WW_SE_STONE_SINK) |

@@ -1,0 +1,347 @@
+/* floaters.c - floating models (model in floaters.h): the cubes' Archimedes buoyancy
+ * (sim/cubes.c has the derivations and sources) for a box with edges e = (e0, e1, e2) along the
+ * model's axes instead of a cube.
+ *
+ * What changes from a cube of edge s:
+ *   columns   the box is cut into n x n prisms along its axis U nearest the vertical; a prism's
+ *             cross-section is (e_P / n)(e_Q / n) and its length e_U (P, Q the other two axes).
+ *   mass      m = rho V, V = e0 e1 e2.
+ *   inertia   principal I_k = m (e_k+1^2 + e_k+2^2) / 12 about the body axes (a cube's m s^2 / 6);
+ *             the buoyancy's torque turns the body by w' = R I^-1 R^T tau. The gyroscopic term
+ *             w x I w is left out, as the angular drag damps any spin long before it matters.
+ *   tilt      linearly implicit with the stiffness bound rho g I_wp / I_min (the smallest
+ *             principal inertia: the stiffest axis), unconditionally stable.
+ *   drag      quadratic on the area V^(2/3) (a cube's s^2).
+ *   seabed    the centre stays half the box's vertical extent above the bottom.
+ * For e0 = e1 = e2 every formula is the cube's; tests/test_floaters.c runs the cubes' draft and
+ * heave oracles on a floating `mesh: box` and on a cube of the same size and density.
+ *
+ * The surface is the exact one (ww_water_at: waves, then ripples), the same query as the cubes'
+ * and the boat's: a model sits at the height of the water under it and tilts with its slope
+ * (seed 001 set the height and the normal directly; here they come out of the buoyancy).
+ */
+#include "sim/floaters.h"
+
+#include <math.h>
+
+#include "core/mathx.h"
+#include "sim/cubes.h"
+#include "sim/ripples.h"
+#include "sim/water.h"
+
+/* ---- pure helpers (the cubes' own, for a box) ---------------------------------------------- */
+
+/* unit quaternion q (w x y z) to the rotated local axes: ax[k] = R e_k */
+static void quat_axes(const double q[4], double ax[3][3]) {
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    ax[0][0] = 1 - 2 * (y * y + z * z), ax[0][1] = 2 * (x * y + w * z), ax[0][2] = 2 * (x * z - w * y);
+    ax[1][0] = 2 * (x * y - w * z), ax[1][1] = 1 - 2 * (x * x + z * z), ax[1][2] = 2 * (y * z + w * x);
+    ax[2][0] = 2 * (x * z + w * y), ax[2][1] = 2 * (y * z - w * x), ax[2][2] = 1 - 2 * (x * x + y * y);
+}
+
+/* q <- exp(w dt / 2) q: the exact rotation by the world angular velocity w over dt */
+static void quat_turn(double q[4], const double w[3], double dt) {
+    double ang = ww_m_len3(w) * dt;
+    if (!(ang > 0.0)) return;
+    double h = 0.5 * ang, s = sin(h) / ww_m_len3(w), e[4] = {cos(h), w[0] * s, w[1] * s, w[2] * s};
+    double r[4] = {e[0] * q[0] - e[1] * q[1] - e[2] * q[2] - e[3] * q[3],
+                   e[0] * q[1] + e[1] * q[0] + e[2] * q[3] - e[3] * q[2],
+                   e[0] * q[2] - e[1] * q[3] + e[2] * q[0] + e[3] * q[1],
+                   e[0] * q[3] + e[1] * q[2] - e[2] * q[1] + e[3] * q[0]};
+    double n = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+    for (int k = 0; k < 4; k++) q[k] = r[k] / n;
+}
+
+static int up_axis(double ax[3][3]) {
+    int best = 0;
+    for (int k = 1; k < 3; k++)
+        if (fabs(ax[k][1]) > fabs(ax[best][1])) best = k;
+    return best;
+}
+
+static double body_volume(const ww_floater_desc *d) {
+    return d->extent[0] * d->extent[1] * d->extent[2];
+}
+
+/* ---- water on a box ------------------------------------------------------------------------ */
+
+typedef struct box_water {
+    double volume, centre[3], waterplane, waterplane_moment, velocity[3];
+    int ncolumns;
+    double up_y, cell_area, length; /* length: the box along U, where a column's wet part ends */
+    double wet[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS];
+} box_water;
+
+/* the cubes' ww_cubes_water for a box: columns along U, volumes summed over point-mirrored pairs
+ * so that a symmetric box on flat water feels exactly no torque */
+static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_water *out) {
+    const ww_floater_desc *d = &sc->floaters.floater[j];
+    const double *c = st->floater_pos + 3 * j;
+    double ax[3][3];
+    quat_axes(st->floater_rot + 4 * j, ax);
+    int a = up_axis(ax), ap = (a + 1) % 3, aq = (a + 2) % 3;
+    double sg = ax[a][1] < 0.0 ? -1.0 : 1.0;
+    double U[3] = {sg * ax[a][0], sg * ax[a][1], sg * ax[a][2]};
+    const double *P = ax[ap], *Q = ax[aq];
+    double s = d->extent[a], h = 0.5 * s;
+    int n = d->columns;
+    double cp = d->extent[ap] / n, cq = d->extent[aq] / n, dA = cp * cq;
+
+    *out = (box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
+                       .cell_area = dA, .length = s};
+    enum { MAXC = WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS };
+    double vol[MAXC], off3[MAXC][3], vel3[MAXC][3];
+    for (int iu = 0; iu < n; iu++) {
+        for (int iv = 0; iv < n; iv++) {
+            int col = iu * n + iv;
+            double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq, r[3];
+            for (int k = 0; k < 3; k++) r[k] = u * P[k] + v * Q[k];
+            ww_water_sample ws;
+            ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
+            double wet = (ws.height - (c[1] + r[1])) / U[1] + h;
+            double L = ww_m_clamp(wet, 0.0, s);
+            out->wet[col] = wet;
+            if (wet > 0.0 && wet < s) {
+                double r2 = r[0] * r[0] + r[2] * r[2];
+                out->waterplane += dA / U[1];
+                out->waterplane_moment += dA / U[1] * r2;
+            }
+            double off = 0.5 * (L - s);
+            vol[col] = dA * L;
+            for (int k = 0; k < 3; k++) {
+                off3[col][k] = r[k] + off * U[k];
+                vel3[col][k] = ws.velocity[k];
+            }
+        }
+    }
+    double moment[3] = {0.0, 0.0, 0.0}, vel[3] = {0.0, 0.0, 0.0};
+    int nc = n * n;
+    for (int a0 = 0; a0 < (nc + 1) / 2; a0++) {
+        int a1 = nc - 1 - a0;
+        if (a1 == a0) {
+            out->volume += vol[a0];
+            for (int k = 0; k < 3; k++) {
+                moment[k] += vol[a0] * off3[a0][k];
+                vel[k] += vol[a0] * vel3[a0][k];
+            }
+            continue;
+        }
+        out->volume += vol[a0] + vol[a1];
+        for (int k = 0; k < 3; k++) {
+            moment[k] += vol[a0] * off3[a0][k] + vol[a1] * off3[a1][k];
+            vel[k] += vol[a0] * vel3[a0][k] + vol[a1] * vel3[a1][k];
+        }
+    }
+    if (out->volume > 0.0) {
+        for (int k = 0; k < 3; k++) {
+            out->centre[k] = c[k] + moment[k] / out->volume;
+            out->velocity[k] = vel[k] / out->volume;
+        }
+    }
+}
+
+/* int_0^x clamp(x', 0, s) dx' */
+static double clamp_integral(double x, double s) {
+    if (x <= 0.0) return 0.0;
+    if (x < s) return 0.5 * x * x;
+    return 0.5 * s * s + s * (x - s);
+}
+
+static double volume_raised(const box_water *w, double xi) {
+    double v = 0.0;
+    for (int c = 0; c < w->ncolumns; c++) v += ww_m_clamp(w->wet[c] - xi / w->up_y, 0.0, w->length);
+    return w->cell_area * v;
+}
+
+/* (1 / xi) int_0^xi V: the discrete gradient of the buoyancy's potential */
+static double volume_mean(const box_water *w, double xi) {
+    double s = w->length;
+    if (fabs(xi / w->up_y) < 1e-7 * s) return volume_raised(w, 0.5 * xi);
+    double acc = 0.0;
+    for (int c = 0; c < w->ncolumns; c++)
+        acc += clamp_integral(w->wet[c], s) - clamp_integral(w->wet[c] - xi / w->up_y, s);
+    return w->cell_area * w->up_y * acc / xi;
+}
+
+/* the heave over dt by the discrete-gradient midpoint rule (sim/cubes.c's heave_step);
+ * vmax the whole box's volume brackets the mean submerged volume */
+static double heave_step(const box_water *w, double vmax, double kb, double a, double gamma,
+                         double u, double dt, double *v) {
+    double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
+    double lo = base / den, hi = (base + dt * kb * vmax) / den;
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * (fabs(lo) + fabs(hi)) + 1e-300; it++) {
+        double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        double r = den * mid - base - dt * kb * volume_mean(w, mid);
+        if (r > 0.0)
+            hi = mid;
+        else
+            lo = mid;
+    }
+    double xi = 0.5 * (lo + hi);
+    *v = 2.0 * xi / dt - v0;
+    return xi;
+}
+
+/* ---- reset, pose --------------------------------------------------------------------------- */
+
+void ww_floaters_reset(const ww_scene *sc, ww_state *st) {
+    for (int j = 0; j < WW_N_FLOATERS(sc); j++) {
+        const ww_floater_desc *d = &sc->floaters.floater[j];
+        for (int k = 0; k < 3; k++) {
+            st->floater_pos[3 * j + k] = d->position[k];
+            st->floater_vel[3 * j + k] = 0.0;
+            st->floater_omega[3 * j + k] = 0.0;
+        }
+        for (int k = 0; k < 4; k++) st->floater_rot[4 * j + k] = d->rotation[k];
+        st->floater_submerged[j] = 0.0;
+    }
+}
+
+void ww_floater_pose(const ww_scene *sc, const ww_state *st, int j, double m[16]) {
+    const ww_floater_desc *d = &sc->floaters.floater[j];
+    double ax[3][3];
+    quat_axes(st->floater_rot + 4 * j, ax);
+    for (int col = 0; col < 3; col++) {
+        for (int row = 0; row < 3; row++) m[4 * col + row] = ax[col][row];
+        m[4 * col + 3] = 0.0;
+    }
+    for (int row = 0; row < 3; row++)
+        m[12 + row] = st->floater_pos[3 * j + row] - ax[0][row] * d->offset[0] -
+                      ax[1][row] * d->offset[1] - ax[2][row] * d->offset[2];
+    m[15] = 1.0;
+}
+
+int ww_floater_box(const ww_scene *sc, const ww_state *st, int k, double c[3], double half[3],
+                   double q[4]) {
+    if (!sc->floaters.on) return 0;
+    int root = k;
+    for (int guard = 0; sc->models.model[root].parent >= 0 && guard < WW_MAX_MODELS; guard++)
+        root = sc->models.model[root].parent;
+    int j = ww_floater_of_model(sc, root);
+    if (j < 0) return 0;
+    if (root != k) return -1;
+    const ww_floater_desc *d = &sc->floaters.floater[j];
+    for (int a = 0; a < 3; a++) {
+        c[a] = st->floater_pos[3 * j + a];
+        half[a] = 0.5 * d->extent[a];
+    }
+    for (int a = 0; a < 4; a++) q[a] = st->floater_rot[4 * j + a];
+    return 1;
+}
+
+/* ---- one step ------------------------------------------------------------------------------ */
+
+/* the water's pull on floater j at its start pose (sim/cubes.c's cube_forces, archimedes) */
+typedef struct box_forces {
+    double ay, gamma, f, u[3], ah[2], alpha[3], tilt_k, spin_damp, drag_q;
+    box_water water;
+} box_forces;
+
+static void forces(const ww_scene *sc, const ww_state *st, int j, box_forces *F) {
+    const ww_floater_desc *d = &sc->floaters.floater[j];
+    const double *c = st->floater_pos + 3 * j, *e = d->extent;
+    double vol = body_volume(d), m = d->density * vol;
+    const box_water *w = &F->water;
+    box_water_at(sc, st, j, &F->water);
+    double fb = WW_WATER_RHO * WW_G * w->volume;
+    F->f = w->volume / vol;
+    F->ay = fb / m - WW_G;
+    F->gamma = d->drag_linear * F->f;
+    for (int k = 0; k < 3; k++) F->u[k] = w->velocity[k];
+
+    /* torque of the buoyancy at the centre of buoyancy, through the inverse inertia in the
+     * body's axes: alpha = R I^-1 R^T tau */
+    double r[3] = {w->centre[0] - c[0], w->centre[1] - c[1], w->centre[2] - c[2]};
+    double tau[3] = {-r[2] * fb, 0.0, r[0] * fb}, ax[3][3], inertia[3];
+    for (int k = 0; k < 3; k++) {
+        double a = e[(k + 1) % 3], b = e[(k + 2) % 3];
+        inertia[k] = m * (a * a + b * b) / 12.0;
+    }
+    quat_axes(st->floater_rot + 4 * j, ax);
+    for (int i = 0; i < 3; i++) F->alpha[i] = 0.0;
+    for (int k = 0; k < 3; k++) {
+        double t = (ax[k][0] * tau[0] + ax[k][1] * tau[1] + ax[k][2] * tau[2]) / inertia[k];
+        for (int i = 0; i < 3; i++) F->alpha[i] += ax[k][i] * t;
+    }
+    double imin = fmin(inertia[0], fmin(inertia[1], inertia[2]));
+    F->tilt_k = WW_WATER_RHO * WW_G * w->waterplane_moment / imin;
+    F->spin_damp = d->drag_angular * F->f;
+    F->drag_q = 0.5 * WW_WATER_RHO * d->drag_quadratic * cbrt(vol * vol) * F->f / m;
+
+    double grad[2] = {0.0, 0.0};
+    if (sc->ripples_on && w->volume > 0.0)
+        ww_ripples_height(sc, st->ripple, st->t, c[0], c[2], grad, NULL);
+    double push = d->nudge * WW_WATER_RHO * WW_G * w->volume / m;
+    F->ah[0] = -push * grad[0];
+    F->ah[1] = -push * grad[1];
+}
+
+/* lowest centre height on the seabed: half the box's vertical extent above the bottom */
+static double seabed_floor(const ww_scene *sc, const ww_floater_desc *d, const double q[4]) {
+    double ax[3][3];
+    quat_axes(q, ax);
+    double ext = 0.5 * (d->extent[0] * fabs(ax[0][1]) + d->extent[1] * fabs(ax[1][1]) +
+                        d->extent[2] * fabs(ax[2][1]));
+    return sc->water_level - sc->water_depth + ext;
+}
+
+static void step_floater(const ww_scene *sc, ww_state *st, int j) {
+    const ww_floater_desc *d = &sc->floaters.floater[j];
+    double dt = sc->dt, *p = st->floater_pos + 3 * j, *v = st->floater_vel + 3 * j;
+    double *w = st->floater_omega + 3 * j, *q = st->floater_rot + 4 * j;
+    box_forces F = {0};
+    forces(sc, st, j, &F);
+    st->floater_submerged[j] = F.f;
+
+    /* heave: the discrete-gradient midpoint rule, or the seeds' Euler (time.integrator) */
+    double y = 0.0, vy = v[1], vol = body_volume(d), m = d->density * vol;
+    if (sc->integrator == WW_INTEGRATE_EULER) {
+        vy += dt * (F.ay - F.gamma * (vy - F.u[1]));
+        y = vy * dt;
+    } else {
+        double a = F.ay - WW_WATER_RHO * WW_G * F.water.volume / m; /* all but buoyancy */
+        y = heave_step(&F.water, vol, WW_WATER_RHO * WW_G / m, a, F.gamma, F.u[1], dt, &vy);
+    }
+    v[1] = vy;
+
+    double e = exp(-F.gamma * dt);
+    for (int k = 0; k < 3; k += 2) {
+        v[k] += F.ah[k / 2] * dt;
+        v[k] = F.u[k] + (v[k] - F.u[k]) * e;
+    }
+    if (F.drag_q > 0.0) {
+        double rel[3] = {v[0] - F.u[0], v[1] - F.u[1], v[2] - F.u[2]};
+        double shrink = 1.0 / (1.0 + dt * F.drag_q * ww_m_len3(rel));
+        for (int k = 0; k < 3; k++) v[k] = F.u[k] + rel[k] * shrink;
+    }
+    p[0] += v[0] * dt;
+    p[1] += y;
+    p[2] += v[2] * dt;
+
+    /* rotation: tilt linearly implicit with its stiffness bound, spin damped */
+    double tilt = 1.0 + dt * F.spin_damp + dt * dt * F.tilt_k;
+    w[0] = (w[0] + dt * F.alpha[0]) / tilt;
+    w[1] = (w[1] + dt * F.alpha[1]) / (1.0 + dt * F.spin_damp);
+    w[2] = (w[2] + dt * F.alpha[2]) / tilt;
+    quat_turn(q, w, dt);
+
+    double floor_y = seabed_floor(sc, d, q);
+    if (p[1] < floor_y) {
+        p[1] = floor_y;
+        if (v[1] < 0.0) v[1] = 0.0;
+    }
+}
+
+void ww_floaters_step(const ww_scene *sc, ww_state *st) {
+    /* step 0 is the described start: nothing has moved yet */
+    for (int j = 0; j < WW_N_FLOATERS(sc); j++) {
+        if (st->step == 0) {
+            box_forces F = {0};
+            forces(sc, st, j, &F);
+            st->floater_submerged[j] = F.f;
+        } else {
+            step_floater(sc, st, j);
+        }
+    }
+}
