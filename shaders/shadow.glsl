@@ -6,7 +6,7 @@
 // and set the rest from r->shared.sun_view_proj and the map's size.
 
 uniform sampler2DShadow u_shadow_map;
-uniform int u_shadow_on;          // 0: everything lit
+uniform int u_shadow_on;          // 0: everything lit; 2: in a stencilled shadow, nothing lit
 uniform mat4 u_sun_view_proj;     // camera-relative world -> the map's clip space
 uniform vec3 u_shadow_filter;     // (texel size in map uv, kernel radius in texels, texel in m)
 
@@ -19,7 +19,7 @@ const vec2 WW_POISSON[12] = vec2[](
 // The point moves 1.5 texels along its normal first (normal-offset shadows, Holbein 2011), so
 // lit faces do not shadow themselves; the map's polygon offset handles the rest.
 float ww_shadow(vec3 p, vec3 n) {
-    if (u_shadow_on == 0) return 1.0;
+    if (u_shadow_on != 1) return u_shadow_on == 0 ? 1.0 : 0.0;
     vec4 c = u_sun_view_proj * vec4(p + n * (1.5 * u_shadow_filter.z), 1.0);
     vec3 s = c.xyz / c.w * 0.5 + 0.5;
     if (any(lessThan(s, vec3(0.0))) || any(greaterThan(s, vec3(1.0)))) return 1.0;

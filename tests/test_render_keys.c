@@ -160,3 +160,55 @@ TEST(render_keys_plan_target_sizes) {
     }
     ww_scene_free(sc);
 }
+
+/* render.shadows: the word forms and the mapping's technique pick the technique; only the map
+ * has a shadow pass, and only the stencilled ones give the prepass and the main pass a stencil
+ * (every other scene keeps its plain depth targets) */
+static ww_format depth_format(const ww_plan *p, ww_pass_id id) {
+    const ww_pass_desc *d = ww_plan_pass(p, id);
+    for (int i = 0; d && i < d->ntargets; i++)
+        if (d->targets[i].format == WW_FMT_DEPTH24 || d->targets[i].format == WW_FMT_DEPTH24_STENCIL8)
+            return d->targets[i].format;
+    return WW_FMT_RGBA8; /* none */
+}
+
+TEST(render_keys_shadow_techniques) {
+    static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
+                               "render: {size: [320, 180], refraction: true}\n"
+                               "objects: {cubes: [{position: [0, 0, 0]}]}\n";
+    static const struct {
+        const char *set;
+        int on;
+        ww_shadow_technique technique;
+        int stencil;
+    } cases[] = {
+        {"render.shadows=true", 1, WW_SHADOW_MAP, 0},
+        {"render.shadows=false", 0, WW_SHADOW_MAP, 0},
+        {"render.shadows=map", 1, WW_SHADOW_MAP, 0},
+        {"render.shadows=off", 0, WW_SHADOW_MAP, 0},
+        {"render.shadows={size: 512}", 1, WW_SHADOW_MAP, 0},
+        {"render.shadows=projected", 1, WW_SHADOW_PROJECTED, 1},
+        {"render.shadows=volumes", 1, WW_SHADOW_VOLUMES, 1},
+        {"render.shadows=volumes_visible", 1, WW_SHADOW_VOLUMES_VISIBLE, 1},
+        {"render.shadows={technique: volumes}", 1, WW_SHADOW_VOLUMES, 1},
+        {"render.shadows={technique: projected, on: false}", 0, WW_SHADOW_PROJECTED, 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        ww_scene *sc = load(text, &cases[i].set, 1);
+        if (!sc) return;
+        ENSURE_MSG(sc->render.shadows.on == cases[i].on, "%s: on %d", cases[i].set,
+                   sc->render.shadows.on);
+        ENSURE_MSG(sc->render.shadows.technique == cases[i].technique, "%s: technique %d",
+                   cases[i].set, (int)sc->render.shadows.technique);
+        ww_plan p;
+        ww_plan_build(sc, 320, 180, &p);
+        int map = cases[i].on && cases[i].technique == WW_SHADOW_MAP;
+        ENSURE_MSG(has_pass(&p, WW_PASS_SHADOW) == map, "%s: shadow pass", cases[i].set);
+        ww_format want = cases[i].stencil ? WW_FMT_DEPTH24_STENCIL8 : WW_FMT_DEPTH24;
+        ENSURE_MSG(depth_format(&p, WW_PASS_MAIN) == want, "%s: main depth", cases[i].set);
+        ENSURE_MSG(depth_format(&p, WW_PASS_PREPASS) == want, "%s: prepass depth", cases[i].set);
+        ENSURE_MSG(depth_format(&p, WW_PASS_REFLECTION) == WW_FMT_DEPTH24, "%s: reflection",
+                   cases[i].set);
+        ww_scene_free(sc);
+    }
+}

@@ -52,8 +52,8 @@ typedef struct ww_quality_knob {
     double (*get)(const ww_scene *sc); /* its value in a scene as loaded: the default marked */
 } ww_quality_knob;
 
-/* the seven quality knobs: reflection.scale, shadows.size, bloom.passes, god_rays.samples,
- * msaa, grid, water.look.caustics.method */
+/* the eight quality knobs: reflection.scale, shadows.size, shadows.technique, bloom.passes,
+ * god_rays.samples, msaa, grid, water.look.caustics.method */
 const ww_quality_knob *ww_quality_knobs(int *n);
 
 typedef enum ww_quality_effect {

@@ -44,6 +44,19 @@ static void set_shadow_size(ww_scene *sc, double v, int on) {
 }
 static double get_shadow_size(const ww_scene *sc) { return sc->render.shadows.size; }
 
+/* the shadow technique as a number (ww_shadow_technique: 0 map, 1 projected, 2 volumes); the
+ * map is last, so with render.shadows.size at its best the reference is a 4096 map and the
+ * other rows are the stencilled techniques' cost and difference from it */
+static void set_shadow_technique(ww_scene *sc, double v, int on) {
+    sc->render.shadows.technique = (ww_shadow_technique)(int)v;
+    if (on) sc->render.shadows.on = 1;
+}
+static double get_shadow_technique(const ww_scene *sc) {
+    return sc->render.shadows.technique == WW_SHADOW_VOLUMES_VISIBLE
+               ? WW_SHADOW_VOLUMES
+               : (double)sc->render.shadows.technique;
+}
+
 static void set_bloom_passes(ww_scene *sc, double v, int on) {
     sc->render.bloom.passes = (int)v;
     if (on) sc->render.bloom.on = 1;
@@ -83,6 +96,9 @@ static const ww_quality_knob KNOBS[] = {
      set_reflection_scale, get_reflection_scale},
     {"render.shadows.size", WW_PASS_SHADOW, 5, {256, 512, 1024, 2048, 4096}, set_shadow_size,
      get_shadow_size},
+    {"render.shadows.technique", WW_PASS_MAIN, 3,
+     {WW_SHADOW_PROJECTED, WW_SHADOW_VOLUMES, WW_SHADOW_MAP}, set_shadow_technique,
+     get_shadow_technique},
     {"render.bloom.passes", WW_PASS_BLOOM, 6, {1, 2, 3, 4, 5, 6}, set_bloom_passes,
      get_bloom_passes},
     {"render.god_rays.samples", WW_PASS_SHAFTS, 6, {8, 16, 32, 48, 64, 128}, set_shaft_samples,
@@ -358,6 +374,8 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
                     r->front ? "on" : "off", r->knee ? ", at the knee" : "");
         }
     }
+    fputs("\nrender.shadows.technique: 0 map, 1 projected, 2 volumes (drawn in the main pass and "
+          "the prepass; the map's own pass is in the frame ms)", to);
     fprintf(to, "\nframe ms: render + glFinish of one frame; pass ms: the pass the knob tunes (GL timer "
                 "queries; 0: not planned);\nboth the least of the timed renders. PSNR and max diff: "
                 "the final RGB8 frame against the reference\n(inf: identical). front: no other value "

@@ -193,6 +193,10 @@ static void APIENTRY n_DeleteQueries(GLsizei n, const GLuint *ids) {}
 static void APIENTRY n_BeginQuery(GLenum target, GLuint id) {}
 static void APIENTRY n_EndQuery(GLenum target) {}
 static void APIENTRY n_QueryCounter(GLuint id, GLenum target) {}
+static void APIENTRY n_ClearStencil(GLint s) {}
+static void APIENTRY n_StencilFunc(GLenum func, GLint ref, GLuint mask) {}
+static void APIENTRY n_StencilOpSeparate(GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass) {}
+static void APIENTRY n_StencilMask(GLuint mask) {}
 
 static void null_close(ww_backend *b) { (void)b; }
 

@@ -82,6 +82,12 @@ static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
     [SLOT_FISH_LONG] = WW_MESHGEN_FISH_OF(WW_FISH_LONG),
 };
 
+/* the slots whose things cast shadow volumes: what casts into the shadow map (not the seabed,
+ * the see-through bubbles or the glow) */
+static int slot_casts(int s) {
+    return s != SLOT_SEABED && s != SLOT_BUBBLE && s != SLOT_COLUMN;
+}
+
 /* a bubble's squared distance from the camera and its index, for the back-to-front order */
 typedef struct bubble_order {
     double d2;
@@ -99,6 +105,7 @@ typedef struct gmesh {
     GLuint vao, vbo, ibo, inst;
     GLsizei nindex;
     int ninst, cap;
+    struct instance *copy; /* casters of stencil shadow volumes: this frame's instances; or NULL */
 } gmesh;
 
 typedef struct instance {
@@ -149,6 +156,11 @@ struct ww_geometry {
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
     GLint cset_loc, cset_at_loc, cset_frame_loc;
+    /* stencilled shadows (stencil_shadows.c): the casters' meshes kept on the CPU (slots that
+     * cast; OBJ models are the scene's), and how the next draws test depth and light */
+    int keep_casters;
+    ww_mesh_data caster_mesh[SLOT_COUNT];
+    ww_geom_stage stage;
     /* this frame's lights, camera-relative */
     int nlights;
     float light_pos[WW_MAX_LIGHTS][3], light_dir[WW_MAX_LIGHTS][3], light_color[WW_MAX_LIGHTS][3],
@@ -325,6 +337,7 @@ static void mesh_share_instances(const ww_gl *gl, gmesh *m, const gmesh *src) {
 }
 
 static void mesh_free(const ww_gl *gl, gmesh *m) {
+    free(m->copy);
     if (m->vao) gl->DeleteVertexArrays(1, &m->vao);
     GLuint b[3] = {m->vbo, m->ibo, m->inst};
     if (m->vbo) gl->DeleteBuffers(3, b);
@@ -395,7 +408,10 @@ static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     if (!g) return;
     if (g->prog) gl->DeleteProgram(g->prog);
-    for (int s = 0; s < SLOT_COUNT; s++) mesh_free(gl, &g->slot[s]);
+    for (int s = 0; s < SLOT_COUNT; s++) {
+        mesh_free(gl, &g->slot[s]);
+        ww_meshgen_free(&g->caster_mesh[s]);
+    }
     mesh_free(gl, &g->hull_cap);
     for (int i = 0; i < g->nobj; i++) mesh_free(gl, &g->obj[i]);
     for (int i = 0; i < g->nimage; i++)
@@ -506,6 +522,9 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
     for (int i = 0; i < sc->models.count; i++)
         if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
+    g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||
+                                                sc->render.shadows.technique ==
+                                                    WW_SHADOW_VOLUMES_VISIBLE);
     ww_result rc = make_program(g, gl, sc, err);
     if (rc == WW_OK && g->caustics == 1) {
         ww_water_waves_init(sc, &g->waves);
@@ -522,8 +541,15 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         rc = ww_meshgen(SLOT_KIND[s], &m, err);
         if (rc != WW_OK) break;
         mesh_upload(gl, &g->slot[s], m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
-        ww_meshgen_free(&m);
-        if (s != SLOT_HULL) continue;
+        if (g->keep_casters && slot_casts(s)) {
+            g->caster_mesh[s] = m; /* the stencil shadows' volumes are built from it */
+            g->slot[s].copy = malloc((size_t)cap[s] * sizeof(instance));
+            if (!g->slot[s].copy)
+                rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
+        } else {
+            ww_meshgen_free(&m);
+        }
+        if (s != SLOT_HULL || rc != WW_OK) continue;
         rc = ww_meshgen(WW_MESHGEN_HULL_CAP, &m, err);
         if (rc != WW_OK) break;
         mesh_upload(gl, &g->hull_cap, m.vertex, m.nvert, m.index, (int)m.nindex, 1);
@@ -537,6 +563,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
             continue;
         const ww_mesh_data *m = &sc->assets->mesh[d->asset];
         mesh_upload(gl, &g->obj[g->nobj], m->vertex, m->nvert, m->index, (int)m->nindex, 1);
+        if (g->keep_casters && !(g->obj[g->nobj].copy = malloc(sizeof(instance))))
+            rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
         g->obj_data[g->nobj] = m;
         g->obj_model[g->nobj++] = i;
         for (int k = 0; k < m->nmaterial && rc == WW_OK; k++)
@@ -647,6 +675,7 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     WW_ASSERT(n <= m->cap);
     m->ninst = n;
     if (n <= 0) return;
+    if (m->copy) memcpy(m->copy, in, (size_t)n * sizeof *in);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)n * (GLsizeiptr)sizeof *in, in);
 }
@@ -999,6 +1028,7 @@ static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode m
                                         ? &d->material[sub->material] : NULL;
             int blended = mt && mt->opacity < 1.0f;
             if (blended != pass || sub->count == 0) continue;
+            if (blended && g->stage != WW_GEOM_STAGE_NORMAL) continue; /* never blended twice */
             set_material(g, gl, mt);
             if (blended) {
                 gl->Enable(GL_BLEND);
@@ -1065,7 +1095,8 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
 
     /* the sun's shadow map, when the shadow pass drew one this frame */
     int shadowed = mode != WW_GEOM_SHADOW && r->shared.shadow_map != 0;
-    gl->Uniform1i(g->shadow_on, shadowed);
+    /* 2: in a stencilled shadow, no sunlight (shadow.glsl) */
+    gl->Uniform1i(g->shadow_on, g->stage == WW_GEOM_STAGE_SUNLESS ? 2 : shadowed);
     gl->Uniform1i(g->shadow_map, WW_TEX_SHADOW);
     if (shadowed) {
         int size = sc->render.shadows.size;
@@ -1105,8 +1136,12 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     }
 
     gl->Enable(GL_DEPTH_TEST);
-    gl->DepthFunc(GL_LESS);
-    gl->DepthMask(GL_TRUE);
+    /* stencilled shadows: the shadowed pixels drawn again where they lie (the same program and
+     * vertices give the same depth), or the casters' outlines tested against what is drawn */
+    gl->DepthFunc(g->stage == WW_GEOM_STAGE_SUNLESS ? GL_EQUAL
+                  : g->stage == WW_GEOM_STAGE_MARK  ? GL_LEQUAL
+                                                    : GL_LESS);
+    gl->DepthMask(g->stage == WW_GEOM_STAGE_NORMAL ? GL_TRUE : GL_FALSE);
     gl->Uniform1i(g->mat_map, WW_TEX_MATERIAL);
     set_material(g, gl, NULL);
     if (g->sway) gl->Uniform4f(g->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* the meshes are rigid */
@@ -1128,13 +1163,14 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied: rim light, then cover */
         gl->DepthMask(GL_FALSE);
         draws += draw_mesh(gl, &g->slot[SLOT_BUBBLE]);
-        gl->DepthMask(GL_TRUE);
         gl->Disable(GL_BLEND);
     }
 
     g->glow_clip = clip != NULL;
     /* a pass that draws its parts in several calls counts them from the one with the solids */
     g->draws = (parts & WW_GEOM_PART_SOLIDS) ? draws : g->draws + draws;
+    gl->DepthFunc(GL_LESS);
+    gl->DepthMask(GL_TRUE);
     gl->BindVertexArray(0);
     gl->Disable(GL_CLIP_DISTANCE0);
 }
@@ -1215,4 +1251,20 @@ void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *
     gl->Disable(GL_CULL_FACE);
     gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl->BindVertexArray(0);
+}
+
+void ww_geometry_set_stage(ww_geometry *g, ww_geom_stage stage) {
+    if (g) g->stage = stage;
+}
+
+void ww_geometry_each_caster(ww_geometry *g, ww_caster_fn fn, void *user) {
+    if (!g || !g->keep_casters) return;
+    for (int s = 0; s < SLOT_COUNT; s++) {
+        const gmesh *m = &g->slot[s];
+        if (!m->copy || !g->caster_mesh[s].vertex) continue;
+        for (int i = 0; i < m->ninst; i++) fn(user, s, &g->caster_mesh[s], m->copy[i].model);
+    }
+    for (int i = 0; i < g->nobj; i++)
+        if (g->obj[i].copy && g->obj[i].ninst > 0 && g->obj_data[i])
+            fn(user, SLOT_COUNT + i, g->obj_data[i], g->obj[i].copy[0].model);
 }

@@ -112,7 +112,11 @@
     X(PFNGLQUERYCOUNTERPROC, QueryCounter)                                                       \
     X(PFNGLGETQUERYOBJECTIVPROC, GetQueryObjectiv)                                               \
     X(PFNGLGETQUERYOBJECTUI64VPROC, GetQueryObjectui64v)                                         \
-    X(PFNGLGETQUERYIVPROC, GetQueryiv) /* rbench: the timer's counter bits */
+    X(PFNGLGETQUERYIVPROC, GetQueryiv) /* rbench: the timer's counter bits */                      \
+    X(PFNGLCLEARSTENCILPROC, ClearStencil) /* stencilled shadows (stencil_shadows.c) */            \
+    X(PFNGLSTENCILFUNCPROC, StencilFunc)                                                         \
+    X(PFNGLSTENCILOPSEPARATEPROC, StencilOpSeparate)                                             \
+    X(PFNGLSTENCILMASKPROC, StencilMask)
 
 typedef struct ww_gl {
 #define WW_GL_DECL(type, name) type name;

@@ -25,7 +25,7 @@ static void main_destroy(void *self, const ww_gl *gl) {
 
 static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
                              const ww_rt *rt, void **self, ww_error *err) {
-    if (!ww_gfx_rt_texture(rt, WW_FMT_RGBA16F) || !ww_gfx_rt_texture(rt, WW_FMT_DEPTH24))
+    if (!ww_gfx_rt_texture(rt, WW_FMT_RGBA16F) || !ww_gfx_rt_depth(rt))
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
                             "pass %s: needs an RGBA16F colour and a DEPTH24 target", d->name);
     main_pass *p = calloc(1, sizeof *p);
@@ -57,12 +57,19 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     gl->ClearDepth(1.0);
     gl->DepthMask(GL_TRUE);
-    gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (r->stencil) { /* stencilled shadows: only their scenes have a stencil to clear */
+        gl->ClearStencil(0);
+        gl->StencilMask(0xFF);
+        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    } else {
+        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
     if (f->sc->render.water.alpha_blend && !f->underwater) {
         /* seed 004: the water blends over whatever lies behind it, the sky included */
         if (r->geometry) {
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
             ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
+            ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         }
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
@@ -75,6 +82,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         ww_water_draw(p->water, r, f);
         if (r->geometry)
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
+        ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
@@ -91,11 +99,14 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         ww_water_draw(p->water, r, f);
         ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
                                WW_GEOM_PART_SEABED);
+        ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         draw_bubbles(r, f);
     }
+    /* volumes_visible: the volumes themselves, over everything opaque */
+    ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, NULL);
     if (p->rt->fbo_ms) {
         /* post: resolve the samples: colour averaged, depth one sample per pixel (NEAREST, the
          * only filter a depth blit allows) */

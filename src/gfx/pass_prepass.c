@@ -23,10 +23,10 @@ static void prepass_destroy(void *self, const ww_gl *gl) {
 
 static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
                                 const ww_rt *rt, void **self, ww_error *err) {
-    GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F), depth = ww_gfx_rt_texture(rt, WW_FMT_DEPTH24);
+    GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F), depth = ww_gfx_rt_depth(rt);
     if (!color || !depth)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
-                            "pass %s: needs an RGBA16F colour and a DEPTH24 target", d->name);
+                            "pass %s: needs an RGBA16F colour and a depth target", d->name);
     prepass *p = calloc(1, sizeof *p);
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "prepass: out of memory");
     p->rt = rt;
@@ -77,9 +77,18 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
     }
     gl->ClearDepth(1.0);
     gl->DepthMask(GL_TRUE);
-    gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (r->stencil) { /* stencilled shadows: only their scenes have a stencil to clear */
+        gl->ClearStencil(0);
+        gl->StencilMask(0xFF);
+        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    } else {
+        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
     if (r->geometry)
         ww_geometry_draw(r->geometry, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
+    /* the shadows seen through the surface from above (or the sky's side from below) */
+    ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
+    ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, plane);
     r->shared.scene_color = p->color;
     r->shared.scene_depth = p->depth;
     return WW_OK;

@@ -76,7 +76,7 @@ static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass
     const ww_gl *gl = r->gl;
     const ww_rt *in = ww_renderer_output(r, WW_PASS_MAIN);
     GLuint hdr = in ? ww_gfx_rt_texture(in, WW_FMT_RGBA16F) : 0;
-    GLuint depth = in ? ww_gfx_rt_texture(in, WW_FMT_DEPTH24) : 0;
+    GLuint depth = in ? ww_gfx_rt_depth(in) : 0;
     if (!hdr || !depth || rt->ntex != 2 || rt->fmt[0] != WW_FMT_RGBA16F ||
         rt->fmt[1] != WW_FMT_RGBA16F)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,

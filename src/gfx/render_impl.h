@@ -18,6 +18,7 @@
 #include <cglm/cglm.h>
 
 #include "gfx/renderer.h"
+#include "scene/assets.h"
 
 /* the framebuffer of one pass and its attachments, in the order of the pass's targets */
 typedef struct ww_rt {
@@ -122,6 +123,7 @@ struct ww_renderer {
     ww_shared shared; /* per frame, written by earlier passes for later ones */
     int64_t frames;   /* frames rendered so far */
     ww_pass_timer timer; /* off unless ww_renderer_time_passes */
+    struct ww_stencil_shadows *stencil; /* render.shadows projected or volumes; NULL otherwise */
 };
 
 /* geometry.c: the scene's solid geometry (seabed, objects, models), its meshes uploaded once and
@@ -167,9 +169,39 @@ void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *
 int ww_geometry_has_hulls(const ww_geometry *g);
 /* the scene has air bubbles to draw (WW_GEOM_PART_BUBBLES) */
 int ww_geometry_has_bubbles(const ww_geometry *g);
+/* how the next draws of the geometry test depth and light (stencilled shadows, stencil_shadows.c):
+ *   NORMAL   depth LESS and written, lit (every other draw)
+ *   SUNLESS  depth EQUAL, not written, no sunlight: what lies in a shadow drawn again over itself
+ *   MARK     depth LEQUAL, not written: casters' outlines tested against what is drawn */
+typedef enum ww_geom_stage {
+    WW_GEOM_STAGE_NORMAL = 0,
+    WW_GEOM_STAGE_SUNLESS,
+    WW_GEOM_STAGE_MARK
+} ww_geom_stage;
+void ww_geometry_set_stage(ww_geometry *g, ww_geom_stage stage);
+/* each caster of shadow volumes this frame (scenes with render.shadows volumes keep them): a
+ * mesh id stable over the renderer's life, its data (positions in vertex[8 k..8 k+2], CCW
+ * triangles) and its camera-relative model matrix (column-major) */
+typedef void (*ww_caster_fn)(void *user, int mesh_id, const ww_mesh_data *mesh,
+                             const float model[16]);
+void ww_geometry_each_caster(ww_geometry *g, ww_caster_fn fn, void *user);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */
 int ww_geometry_draw_count(const ww_geometry *g);
+
+/* stencil_shadows.c: seed 003's stencilled sun shadows (render.shadows projected, volumes,
+ * volumes_visible). The renderer makes one when the scene asks and has casters (its main pass
+ * and prepass then have a stencil); a pass calls apply after its opaque geometry, with the
+ * view_proj and clip it drew them with, and draw_visible after everything opaque (the main
+ * pass after its water). */
+typedef struct ww_stencil_shadows ww_stencil_shadows;
+ww_result ww_stencil_shadows_new(ww_renderer *r, const ww_scene *sc, ww_stencil_shadows **out,
+                                 ww_error *err);
+void ww_stencil_shadows_apply(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
+                              ww_geom_mode mode, mat4 view_proj, const float *clip);
+void ww_stencil_shadows_draw_visible(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
+                                     mat4 view_proj, const float *clip);
+void ww_stencil_shadows_free(ww_stencil_shadows *s, const ww_gl *gl);
 
 /* renderer.c: the targets of pass `id`, or NULL when the plan has no such pass */
 const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id);
@@ -186,6 +218,8 @@ ww_result ww_gfx_fbo_single(const ww_gl *gl, GLuint tex, const char *pass, int s
                             ww_error *err);
 /* the first attachment of format fmt, 0 when there is none */
 GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt);
+/* the depth attachment, with or without stencil; 0 when there is none */
+GLuint ww_gfx_rt_depth(const ww_rt *rt);
 
 /* program.c: vertex + fragment shader files with includes (NULL-terminated list, prepended in
  * order after #version; may be NULL); WW_E_GL names the file and carries the info log */

@@ -57,6 +57,7 @@ void ww_renderer_free(ww_renderer *r) {
         ww_gfx_rt_destroy(gl, &p->rt);
     }
     ww_renderer_time_passes(r, WW_TIMING_OFF);
+    ww_stencil_shadows_free(r->stencil, gl);
     ww_geometry_free(r->geometry, gl);
     if (r->empty_vao) gl->DeleteVertexArrays(1, &r->empty_vao);
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -86,6 +87,9 @@ ww_result ww_renderer_new(const ww_gl *gl, const ww_scene *sc, const ww_plan *pl
     /* every pass's targets first, so a pass can find the outputs it reads when created */
     ww_result rc = WW_OK;
     if (plan->geometry) rc = ww_geometry_new(r, sc, &r->geometry, err);
+    if (rc == WW_OK && r->geometry && sc->render.shadows.on &&
+        sc->render.shadows.technique != WW_SHADOW_MAP && ww_scene_has_objects(sc))
+        rc = ww_stencil_shadows_new(r, sc, &r->stencil, err);
     for (int i = 0; i < plan->npasses && rc == WW_OK; i++) {
         const ww_pass_desc *d = &plan->passes[i];
         WW_ASSERT(d->id >= 0 && d->id < WW_PASS_COUNT && pass_table[d->id] && d->name);
@@ -284,7 +288,7 @@ static ww_result read_target(ww_renderer *r, const ww_rt *rt, ww_format fmt, GLe
     int color = 0, found = -1;
     for (int i = 0; i < rt->ntex && found < 0; i++) {
         if (rt->fmt[i] == fmt) found = color;
-        if (rt->fmt[i] != WW_FMT_DEPTH24) color++;
+        if (rt->fmt[i] != WW_FMT_DEPTH24 && rt->fmt[i] != WW_FMT_DEPTH24_STENCIL8) color++;
     }
     WW_ASSERT(found >= 0);
     gl->BindFramebuffer(GL_READ_FRAMEBUFFER, rt->fbo);

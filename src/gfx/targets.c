@@ -10,7 +10,7 @@
 typedef struct tex_format {
     GLint internal;
     GLenum format, type;
-    int is_depth;
+    int is_depth; /* 1 depth, 2 depth and stencil */
 } tex_format;
 
 static tex_format format_of(ww_format f) {
@@ -19,6 +19,8 @@ static tex_format format_of(ww_format f) {
     case WW_FMT_DEPTH24:
         return (tex_format){GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, 1};
     case WW_FMT_RGBA8: return (tex_format){GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 0};
+    case WW_FMT_DEPTH24_STENCIL8:
+        return (tex_format){GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 2};
     }
     WW_ASSERT(!"unknown ww_format");
     return (tex_format){0, 0, 0, 0};
@@ -61,7 +63,9 @@ static GLenum create_ms(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt) {
         gl->BindRenderbuffer(GL_RENDERBUFFER, rb);
         gl->RenderbufferStorageMultisample(GL_RENDERBUFFER, rt->samples, (GLenum)tf.internal,
                                            t->width, t->height);
-        GLenum attach = tf.is_depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0 + (GLenum)ncolor;
+        GLenum attach = tf.is_depth == 2 ? GL_DEPTH_STENCIL_ATTACHMENT
+                        : tf.is_depth  ? GL_DEPTH_ATTACHMENT
+                                       : GL_COLOR_ATTACHMENT0 + (GLenum)ncolor;
         if (!tf.is_depth) draw[ncolor++] = attach;
         gl->FramebufferRenderbuffer(GL_FRAMEBUFFER, attach, GL_RENDERBUFFER, rb);
         rt->rb[rt->nrb++] = rb;
@@ -99,7 +103,9 @@ ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww
         gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        GLenum attach = tf.is_depth ? GL_DEPTH_ATTACHMENT : GL_COLOR_ATTACHMENT0 + (GLenum)ncolor;
+        GLenum attach = tf.is_depth == 2 ? GL_DEPTH_STENCIL_ATTACHMENT
+                        : tf.is_depth  ? GL_DEPTH_ATTACHMENT
+                                       : GL_COLOR_ATTACHMENT0 + (GLenum)ncolor;
         if (!tf.is_depth) draw[ncolor++] = attach;
         gl->FramebufferTexture2D(GL_FRAMEBUFFER, attach, GL_TEXTURE_2D, tex, 0);
         rt->tex[rt->ntex] = tex;
@@ -142,6 +148,11 @@ GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt) {
     for (int i = 0; i < rt->ntex; i++)
         if (rt->fmt[i] == fmt) return rt->tex[i];
     return 0;
+}
+
+GLuint ww_gfx_rt_depth(const ww_rt *rt) {
+    GLuint t = ww_gfx_rt_texture(rt, WW_FMT_DEPTH24);
+    return t ? t : ww_gfx_rt_texture(rt, WW_FMT_DEPTH24_STENCIL8);
 }
 
 ww_result ww_gfx_fbo_single(const ww_gl *gl, GLuint tex, const char *pass, int side, GLuint *fbo,

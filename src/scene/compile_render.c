@@ -63,7 +63,14 @@ static const char *const CAUSTICS_WORDS[] = {[WW_CAUSTICS_ANALYTIC] = "analytic"
 static const char *const LIGHT_WORDS[] = {[WW_LIGHT_POINT] = "point", [WW_LIGHT_SPOT] = "spot",
                                           NULL};
 static const char *const BOOL_WORDS[] = {"false", "true", NULL};
-static const char *const SHADOW_WORDS[] = {"off", "map", NULL};
+/* render.shadows as one word: off, or the technique (the order of ww_shadow_technique, plus 1) */
+static const char *const SHADOW_WORDS[] = {"off", "map", "projected", "volumes", "volumes_visible",
+                                           NULL};
+static const char *const TECHNIQUE_WORDS[] = {[WW_SHADOW_MAP] = "map",
+                                              [WW_SHADOW_PROJECTED] = "projected",
+                                              [WW_SHADOW_VOLUMES] = "volumes",
+                                              [WW_SHADOW_VOLUMES_VISIBLE] = "volumes_visible",
+                                              NULL};
 static const char *const HUD_WORDS[] = {"clock", "counters", "chest_marker", NULL};
 static const char *const FACE_NAMES[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
@@ -139,15 +146,25 @@ static ww_result get_feature(ctx *c, const section *s, const char *key, const ch
     return wwc_get_word(c, s, key, BOOL_WORDS, on);
 }
 
+/* render.shadows: true | false | off | map | projected | volumes | volumes_visible, or a
+ * mapping {on, technique, size, softness, distance} (size, softness and distance are the map's) */
 static ww_result compile_shadows(ctx *c, const section *s, ww_shadow_desc *d) {
-    static const char *const keys[] = {"on", "size", "softness", "distance", NULL};
+    static const char *const keys[] = {"on", "technique", "size", "softness", "distance", NULL};
     const ww_node *n;
     TRY(wwc_lookup(c, s, "shadows", OPTIONAL, &n));
-    if (n && n->kind == WW_NODE_SCALAR && !ww_node_is_null(n) &&
-        (strcmp(n->text, "map") == 0 || strcmp(n->text, "off") == 0))
-        return wwc_get_word(c, s, "shadows", SHADOW_WORDS, &d->on); /* the design's spelling */
+    if (n && n->kind == WW_NODE_SCALAR && !ww_node_is_null(n) && strcmp(n->text, "true") != 0 &&
+        strcmp(n->text, "false") != 0) {
+        int w = 0;
+        TRY(wwc_get_word(c, s, "shadows", SHADOW_WORDS, &w)); /* the design's spelling */
+        d->on = w > 0;
+        if (w > 0) d->technique = (ww_shadow_technique)(w - 1);
+        return WW_OK;
+    }
     section f;
     TRY(get_feature(c, s, "shadows", keys, &d->on, &f));
+    int t = (int)d->technique;
+    TRY(wwc_get_word(c, &f, "technique", TECHNIQUE_WORDS, &t));
+    d->technique = (ww_shadow_technique)t;
     double size = d->size;
     TRY(wwc_get_number(c, &f, "size", &R_SHADOW_SIZE, OPTIONAL, &size));
     d->size = (int)size;

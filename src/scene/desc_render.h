@@ -24,9 +24,20 @@ typedef enum ww_sky_model {
 typedef enum ww_fresnel { WW_FRESNEL_BIAS_SCALE = 0, WW_FRESNEL_SCHLICK } ww_fresnel;
 typedef enum ww_light_kind { WW_LIGHT_POINT = 0, WW_LIGHT_SPOT } ww_light_kind;
 
-/* directional shadow map from the sun (seed 000): orthographic, fitted to the visible scene */
+/* how the sun's shadows are made (docs/rendering.md "Shadows"): the shadow map (seed 000), or
+ * seed 003's planar projected shadows on the seabed, or its stencil shadow volumes (optionally
+ * drawn themselves, translucent) */
+typedef enum ww_shadow_technique {
+    WW_SHADOW_MAP = 0,
+    WW_SHADOW_PROJECTED,
+    WW_SHADOW_VOLUMES,
+    WW_SHADOW_VOLUMES_VISIBLE
+} ww_shadow_technique;
+
+/* directional shadows from the sun: by default a map, orthographic, fitted to the visible scene */
 typedef struct ww_shadow_desc {
     int on;
+    ww_shadow_technique technique;
     int size;          /* shadow map texels per side */
     double softness;   /* PCF kernel radius, texels (0: one hardware-filtered tap) */
     double distance;   /* the map covers what the camera sees up to this distance, m */

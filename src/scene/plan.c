@@ -26,6 +26,7 @@ size_t ww_format_bytes_per_pixel(ww_format f) {
     case WW_FMT_RGBA16F: return 8;
     case WW_FMT_DEPTH24: return 4; /* stored as 24+8 */
     case WW_FMT_RGBA8: return 4;
+    case WW_FMT_DEPTH24_STENCIL8: return 4;
     }
     return 0;
 }
@@ -35,6 +36,7 @@ const char *ww_format_name(ww_format f) {
     case WW_FMT_RGBA16F: return "rgba16f";
     case WW_FMT_DEPTH24: return "depth24";
     case WW_FMT_RGBA8: return "rgba8";
+    case WW_FMT_DEPTH24_STENCIL8: return "d24s8";
     }
     return "?";
 }
@@ -188,7 +190,11 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     p->geometry = ww_scene_has_objects(sc) || rd->seabed || rd->nlights > 0;
     int casters = ww_scene_has_objects(sc);
 
-    if (rd->shadows.on && casters) {
+    /* stencilled shadows (projected, volumes) need a stencil wherever they are drawn; every
+     * other scene keeps plain depth */
+    int stencil = rd->shadows.on && casters && rd->shadows.technique != WW_SHADOW_MAP;
+    ww_format depth_fmt = stencil ? WW_FMT_DEPTH24_STENCIL8 : WW_FMT_DEPTH24;
+    if (rd->shadows.on && casters && rd->shadows.technique == WW_SHADOW_MAP) {
         add_pass(p, WW_PASS_SHADOW, "shadow", "sun depth map, orthographic, fitted to the view; PCF");
         add_target(p, "depth", WW_FMT_DEPTH24, rd->shadows.size, rd->shadows.size);
     }
@@ -196,7 +202,7 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
         int pw = scaled(width, rd->refraction_scale), ph = scaled(height, rd->refraction_scale);
         add_pass(p, WW_PASS_PREPASS, "prepass", "solid geometry under the water: colour + depth");
         add_target(p, "color", WW_FMT_RGBA16F, pw, ph);
-        add_target(p, "depth", WW_FMT_DEPTH24, pw, ph);
+        add_target(p, "depth", depth_fmt, pw, ph);
     }
     if (rd->reflection.on) {
         int rw = scaled(width, rd->reflection.scale), rh = scaled(height, rd->reflection.scale);
@@ -206,13 +212,15 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
         add_target(p, "depth", WW_FMT_DEPTH24, rw, rh);
     }
     add_pass(p, WW_PASS_MAIN, "main",
-             p->geometry ? "HDR: sky, lit geometry, water" : "HDR: sky with sun disc, water");
+             !p->geometry ? "HDR: sky with sun disc, water"
+             : stencil    ? "HDR: sky, lit geometry, water; stencilled sun shadows"
+                          : "HDR: sky, lit geometry, water");
     add_target(p, "hdr", WW_FMT_RGBA16F, width, height);
-    add_target(p, "depth", WW_FMT_DEPTH24, width, height);
+    add_target(p, "depth", depth_fmt, width, height);
     if (rd->msaa > 1) {
         /* post: drawn multisampled, resolved into hdr and depth at the end of the pass */
         add_target_ms(p, "hdr_ms", WW_FMT_RGBA16F, width, height, rd->msaa);
-        add_target_ms(p, "depth_ms", WW_FMT_DEPTH24, width, height, rd->msaa);
+        add_target_ms(p, "depth_ms", depth_fmt, width, height, rd->msaa);
     }
     if (rd->bloom.on) {
         int bw = scaled(width, rd->bloom.scale), bh = scaled(height, rd->bloom.scale);

@@ -25,7 +25,14 @@ typedef enum ww_pass_id {
     WW_PASS_COUNT
 } ww_pass_id;
 
-typedef enum ww_format { WW_FMT_RGBA16F = 0, WW_FMT_DEPTH24, WW_FMT_RGBA8 } ww_format;
+/* DEPTH24_STENCIL8: the main pass and the prepass take it instead of DEPTH24 only when the sun's
+ * shadows are stencilled (render.shadows projected or volumes) */
+typedef enum ww_format {
+    WW_FMT_RGBA16F = 0,
+    WW_FMT_DEPTH24,
+    WW_FMT_RGBA8,
+    WW_FMT_DEPTH24_STENCIL8
+} ww_format;
 
 #define WW_PLAN_MAX_TARGETS 4
 

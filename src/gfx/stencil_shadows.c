@@ -1,0 +1,450 @@
+/* stencil_shadows.c - seed 003's two stencilled sun shadows (render.shadows projected | volumes |
+ * volumes_visible), drawn by the prepass and the main pass after their opaque geometry:
+ *
+ *   projected  the casters (the scene's solids) flattened onto the seabed plane along the sun by
+ *              Blinn's shadow matrix ("Me and My (Fake) Shadow", IEEE CG&A 1988) mark the stencil
+ *              with REPLACE 1 where they land on the visible seabed, so two overlapping shadows
+ *              mark a pixel once and never darken it twice;
+ *   volumes    stencil shadow volumes (Crow, "Shadow Algorithms for Computer Graphics", SIGGRAPH
+ *              1977) counted depth-fail ("Carmack's reverse"; Everitt and Kilgard, "Practical and
+ *              Robust Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002): each
+ *              caster's silhouette edges, found per frame in its model space from an edge
+ *              adjacency built once per mesh, extruded away from the sun to infinity (w = 0),
+ *              closed by a cap on the caster's faces turned from the sun; GL_DEPTH_CLAMP keeps
+ *              the near and far planes from cutting the volume, so the count stays right with
+ *              the camera inside a volume. A directional light's extruded points all meet at one
+ *              point at infinity, so the far cap has no area and is left out.
+ *
+ * Then the marked pixels are drawn again over themselves (depth EQUAL, the same program and
+ * vertices) without the sun's direct light: the ambient, the lamps, the emission and the fog
+ * stay as they were, so a fogged seabed far off barely changes. volumes_visible draws the
+ * volumes themselves translucent over the main pass and the prepass too (from above the water
+ * they are seen through it).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "gfx/render_impl.h"
+
+#define PLANE_LIFT 0.02f       /* m: the projected shadow lies this far above the seabed */
+#define PLANE_OFFSET_FACTOR -1.0f /* and is pulled toward the eye by this polygon offset */
+#define PLANE_OFFSET_UNITS -4.0f
+#define SUN_MIN_Y 0.02         /* below this sun height (sin of elevation) nothing is cast */
+#define MAX_MESHES 64          /* adjacencies kept (procedural slots and OBJ models) */
+/* m: each volume starts this far beyond its caster, away from the sun. On the cap, the faces
+ * turned from the sun, the count is otherwise a coin toss (the cap and the face have one depth,
+ * computed twice), speckling them, and a smooth-shaded face there, whose normals still see the
+ * sun near the terminator, went dark along its facets instead of fading as the map has it */
+#define VOLUME_START 0.03
+/* volumes_visible: the volume's faces, premultiplied HDR colour and cover (seed 003's "show the
+ * shadow volume": a violet glass) */
+static const float VOLUME_TINT[4] = {0.05f, 0.03f, 0.12f, 0.12f};
+
+/* one caster mesh's adjacency: positions welded, each triangle's welded corners and model-space
+ * normal, each edge's two triangles (the second -1 on an open edge) */
+typedef struct edge {
+    int v0, v1;   /* welded corners, in the order triangle t0 runs along the edge */
+    int t0, t1;
+} edge;
+
+typedef struct adjacency {
+    const ww_mesh_data *mesh; /* key */
+    int nvert, ntri, nedge;
+    int closed;               /* every edge has its two triangles */
+    float *pos;               /* welded positions, 3 per vertex */
+    int *tri;                 /* 3 welded corners per triangle */
+    float *normal;            /* 3 per triangle, unnormalised (b - a) x (c - a) */
+    edge *edges;
+} adjacency;
+
+struct ww_stencil_shadows {
+    ww_shadow_technique technique;
+    GLuint prog, vao, vbo;
+    GLint view_proj, tint, clip;
+    int nmesh;
+    adjacency mesh[MAX_MESHES];
+    float *verts; /* this frame's volume triangles, camera-relative, 4 floats per corner */
+    size_t nverts, cap;
+    int64_t built; /* frame whose volumes are in vbo; -1 none */
+    double sun[3]; /* toward the sun, world, unit: the direction they were built for */
+    int lost;      /* out of memory building a volume: casters left out */
+};
+
+/* ---- adjacency, once per mesh ---- */
+
+typedef struct weld_key {
+    float p[3];
+    int index;
+} weld_key;
+
+static int weld_cmp(const void *a, const void *b) {
+    const weld_key *p = a, *q = b;
+    for (int i = 0; i < 3; i++)
+        if (p->p[i] != q->p[i]) return p->p[i] < q->p[i] ? -1 : 1;
+    return p->index - q->index;
+}
+
+typedef struct half_edge {
+    int lo, hi; /* welded corners, sorted */
+    int tri;
+    int forward; /* the triangle runs lo -> hi */
+} half_edge;
+
+static int half_cmp(const void *a, const void *b) {
+    const half_edge *p = a, *q = b;
+    if (p->lo != q->lo) return p->lo - q->lo;
+    if (p->hi != q->hi) return p->hi - q->hi;
+    return p->tri - q->tri;
+}
+
+static void adjacency_free(adjacency *a) {
+    free(a->pos);
+    free(a->tri);
+    free(a->normal);
+    free(a->edges);
+    memset(a, 0, sizeof *a);
+}
+
+/* weld by exact position (meshes split vertices for normals and uvs), then pair the half edges:
+ * two triangles sharing an edge in opposite directions are neighbours; an edge with one
+ * triangle, or with more than two, is left open (each triangle's side of it stands alone) */
+static int adjacency_build(const ww_mesh_data *m, adjacency *a) {
+    memset(a, 0, sizeof *a);
+    a->mesh = m;
+    int nv = m->nvert, nt = (int)(m->nindex / 3);
+    weld_key *keys = malloc((size_t)nv * sizeof *keys);
+    int *remap = malloc((size_t)nv * sizeof *remap);
+    half_edge *he = malloc((size_t)nt * 3 * sizeof *he);
+    a->pos = malloc((size_t)nv * 3 * sizeof *a->pos);
+    a->tri = malloc((size_t)nt * 3 * sizeof *a->tri);
+    a->normal = malloc((size_t)nt * 3 * sizeof *a->normal);
+    a->edges = malloc((size_t)nt * 3 * sizeof *a->edges);
+    int ok = keys && remap && he && a->pos && a->tri && a->normal && a->edges;
+    if (ok) {
+        for (int i = 0; i < nv; i++) {
+            memcpy(keys[i].p, m->vertex + 8 * i, sizeof keys[i].p);
+            keys[i].index = i;
+        }
+        qsort(keys, (size_t)nv, sizeof *keys, weld_cmp);
+        for (int i = 0; i < nv; i++) {
+            if (i == 0 || memcmp(keys[i].p, keys[i - 1].p, sizeof keys[i].p) != 0) {
+                memcpy(a->pos + 3 * a->nvert, keys[i].p, sizeof keys[i].p);
+                a->nvert++;
+            }
+            remap[keys[i].index] = a->nvert - 1;
+        }
+        for (int t = 0; t < nt; t++) {
+            int *c = a->tri + 3 * t;
+            for (int k = 0; k < 3; k++) c[k] = remap[m->index[3 * t + k]];
+            const float *p0 = a->pos + 3 * c[0], *p1 = a->pos + 3 * c[1], *p2 = a->pos + 3 * c[2];
+            float u[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
+            float v[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+            float *n = a->normal + 3 * t;
+            n[0] = u[1] * v[2] - u[2] * v[1];
+            n[1] = u[2] * v[0] - u[0] * v[2];
+            n[2] = u[0] * v[1] - u[1] * v[0];
+            for (int k = 0; k < 3; k++) {
+                int x = c[k], y = c[(k + 1) % 3];
+                he[3 * t + k] = (half_edge){x < y ? x : y, x < y ? y : x, t, x < y};
+            }
+        }
+        a->ntri = nt;
+        qsort(he, (size_t)nt * 3, sizeof *he, half_cmp);
+        for (int i = 0; i < nt * 3;) {
+            int j = i + 1;
+            while (j < nt * 3 && he[j].lo == he[i].lo && he[j].hi == he[i].hi) j++;
+            int paired = j - i == 2 && he[i].forward != he[i + 1].forward;
+            for (int k = i; k < j; k++) {
+                if (he[k].lo == he[k].hi) continue; /* degenerate triangle */
+                edge e = {he[k].forward ? he[k].lo : he[k].hi, he[k].forward ? he[k].hi : he[k].lo,
+                          he[k].tri, paired ? he[i + (k == i)].tri : -1};
+                if (paired && k == i + 1) break; /* one record per shared edge */
+                a->edges[a->nedge++] = e;
+            }
+            i = j;
+        }
+        a->closed = 1;
+        for (int e = 0; e < a->nedge; e++)
+            if (a->edges[e].t1 < 0) a->closed = 0;
+    }
+    free(keys);
+    free(remap);
+    free(he);
+    if (!ok) adjacency_free(a);
+    return ok;
+}
+
+static adjacency *adjacency_of(ww_stencil_shadows *s, const ww_mesh_data *m) {
+    for (int i = 0; i < s->nmesh; i++)
+        if (s->mesh[i].mesh == m) return &s->mesh[i];
+    if (s->nmesh >= MAX_MESHES || !adjacency_build(m, &s->mesh[s->nmesh])) return NULL;
+    return &s->mesh[s->nmesh++];
+}
+
+/* ---- volumes, per frame ---- */
+
+static int reserve(ww_stencil_shadows *s, size_t more) {
+    if (s->nverts + more <= s->cap) return 1;
+    size_t cap = s->cap ? s->cap : 4096;
+    while (cap < s->nverts + more) cap *= 2;
+    float *v = realloc(s->verts, cap * 4 * sizeof *v);
+    if (!v) return 0;
+    s->verts = v;
+    s->cap = cap;
+    return 1;
+}
+
+static void put4(ww_stencil_shadows *s, const float p[4]) {
+    memcpy(s->verts + 4 * s->nverts++, p, 4 * sizeof *p);
+}
+
+/* a face turned from the sun (model space; side -1 under a mirroring matrix) */
+static int is_dark(const adjacency *a, int t, const vec3 Lm, float side) {
+    const float *n = a->normal + 3 * t;
+    return side * (n[0] * Lm[0] + n[1] * Lm[1] + n[2] * Lm[2]) < 0.0f;
+}
+
+/* welded corner v into the volumes, in camera-relative world, moved by `start` */
+static void put_corner(ww_stencil_shadows *s, const adjacency *a, int v, const float model[16],
+                       const float start[3]) {
+    const float *p = a->pos + 3 * v;
+    float w[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    for (int r = 0; r < 3; r++)
+        w[r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r] +
+               start[r];
+    put4(s, w);
+}
+
+/* the side of edge p -> q (reversed when `flip`) out to the point at infinity */
+static void put_side(ww_stencil_shadows *s, const adjacency *a, int p, int q, int flip,
+                     const float model[16], const float start[3], const float inf[4]) {
+    put_corner(s, a, flip ? q : p, model, start);
+    put_corner(s, a, flip ? p : q, model, start);
+    put4(s, inf);
+}
+
+/* one caster instance's volume: the faces turned from the sun (model space: n . L_m < 0, with
+ * L_m = A^-1 L, since n_world . L = n . A^-1 L for n_world = A^-T n) are the near cap, wound
+ * to face the sun; each edge between such a face and a face toward the sun (or none) is a
+ * silhouette edge, a triangle out to the point at infinity away from the sun. A mesh with open
+ * edges (a sheet, a leaf) may show the sun either side: each of its faces casts, a lit one
+ * turned over, so a sheet facing the sun casts as one facing away does (the count is then the
+ * number of faces above a point, never 0 in a shadow) */
+static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const float model[16]) {
+    (void)mesh_id;
+    ww_stencil_shadows *s = user;
+    adjacency *a = adjacency_of(s, m);
+    if (!a) {
+        s->lost = 1;
+        return;
+    }
+    mat3 A, Ai;
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++) A[c][r] = model[c * 4 + r];
+    float det = glm_mat3_det(A);
+    if (fabsf(det) < 1e-12f) return;
+    glm_mat3_inv(A, Ai);
+    vec3 L = {(float)s->sun[0], (float)s->sun[1], (float)s->sun[2]}, Lm;
+    glm_mat3_mulv(Ai, L, Lm);
+    float side = det > 0.0f ? 1.0f : -1.0f; /* a mirroring matrix turns the windings */
+    if (!reserve(s, (size_t)a->ntri * 3 + (size_t)a->nedge * 3)) {
+        s->lost = 1;
+        return;
+    }
+    /* world positions of the welded corners, computed as used, moved VOLUME_START from the sun */
+    float inf[4] = {-L[0], -L[1], -L[2], 0.0f};
+    float start[3] = {-(float)VOLUME_START * L[0], -(float)VOLUME_START * L[1],
+                      -(float)VOLUME_START * L[2]};
+    for (int t = 0; t < a->ntri; t++) {
+        int dark = is_dark(a, t, Lm, side);
+        if (!dark && a->closed) continue;
+        /* the cap faces the sun: a dark face reversed, an open mesh's lit face as it is (and a
+         * mirroring matrix has reversed both already) */
+        static const int order[2][3] = {{0, 2, 1}, {0, 1, 2}};
+        const int *o = order[!dark != (side < 0.0f)];
+        for (int k = 0; k < 3; k++) put_corner(s, a, a->tri[3 * t + o[k]], model, start);
+    }
+    for (int e = 0; e < a->nedge; e++) {
+        const edge *ed = &a->edges[e];
+        int dark0 = is_dark(a, ed->t0, Lm, side);
+        if (ed->t1 < 0) {
+            /* an open edge: its face's side (turned away from the sun when it is lit) */
+            if (dark0 || !a->closed) put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model,
+                                              start, inf);
+            continue;
+        }
+        int dark1 = is_dark(a, ed->t1, Lm, side);
+        if (dark0 == dark1) continue; /* not on the silhouette */
+        /* the side runs along the edge as the dark face does (v0 -> v1 in t0, v1 -> v0 in t1);
+         * an open mesh's lit face, turned away from the sun, gives a side of its own too */
+        if (dark0 || !a->closed) put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model,
+                                          start, inf);
+        if (dark1 || !a->closed) put_side(s, a, ed->v1, ed->v0, !dark1 != (side < 0.0f), model,
+                                          start, inf);
+    }
+}
+
+/* this frame's volumes into the vertex buffer (once per frame, whichever pass draws first) */
+static void build_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f) {
+    if (s->built == f->frame) return;
+    s->built = f->frame;
+    s->nverts = 0;
+    for (int i = 0; i < 3; i++) s->sun[i] = f->st->sun_dir[i];
+    ww_m_normalize3(s->sun);
+    ww_geometry_each_caster(r->geometry, add_caster, s);
+    const ww_gl *gl = r->gl;
+    gl->BindBuffer(GL_ARRAY_BUFFER, s->vbo);
+    gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(s->nverts * 4 * sizeof(float)), s->verts,
+                   GL_STREAM_DRAW);
+    gl->BindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+static void draw_volumes(const ww_stencil_shadows *s, const ww_gl *gl, mat4 view_proj,
+                         const float *clip) {
+    gl->UseProgram(s->prog);
+    gl->UniformMatrix4fv(s->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
+    if (clip) {
+        gl->Enable(GL_CLIP_DISTANCE0);
+        gl->Uniform4f(s->clip, clip[0], clip[1], clip[2], clip[3]);
+    } else {
+        gl->Uniform4f(s->clip, 0.0f, 0.0f, 0.0f, 1.0f);
+    }
+    gl->BindVertexArray(s->vao);
+    gl->DrawArrays(GL_TRIANGLES, 0, (GLsizei)s->nverts);
+    gl->BindVertexArray(0);
+    gl->Disable(GL_CLIP_DISTANCE0);
+}
+
+/* ---- the passes' side ---- */
+
+ww_result ww_stencil_shadows_new(ww_renderer *r, const ww_scene *sc, ww_stencil_shadows **out,
+                                 ww_error *err) {
+    const ww_gl *gl = r->gl;
+    ww_stencil_shadows *s = calloc(1, sizeof *s);
+    if (!s) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "stencil shadows: out of memory");
+    s->technique = sc->render.shadows.technique;
+    s->built = -1;
+    if (s->technique != WW_SHADOW_PROJECTED) {
+        ww_result rc = ww_gfx_program(gl, "shadow_volume.vert.glsl", "shadow_volume.frag.glsl",
+                                      NULL, &s->prog, err);
+        if (rc != WW_OK) {
+            free(s);
+            return rc;
+        }
+        s->view_proj = ww_gfx_uniform(gl, s->prog, "u_view_proj");
+        s->tint = ww_gfx_uniform(gl, s->prog, "u_tint");
+        s->clip = ww_gfx_uniform(gl, s->prog, "u_clip");
+        gl->GenVertexArrays(1, &s->vao);
+        gl->BindVertexArray(s->vao);
+        gl->GenBuffers(1, &s->vbo);
+        gl->BindBuffer(GL_ARRAY_BUFFER, s->vbo);
+        gl->EnableVertexAttribArray(0);
+        gl->VertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), (void *)0);
+        gl->BindVertexArray(0);
+        gl->BindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+    *out = s;
+    return WW_OK;
+}
+
+void ww_stencil_shadows_free(ww_stencil_shadows *s, const ww_gl *gl) {
+    if (!s) return;
+    if (s->prog) gl->DeleteProgram(s->prog);
+    if (s->vao) gl->DeleteVertexArrays(1, &s->vao);
+    if (s->vbo) gl->DeleteBuffers(1, &s->vbo);
+    for (int i = 0; i < s->nmesh; i++) adjacency_free(&s->mesh[i]);
+    free(s->verts);
+    free(s);
+}
+
+/* Blinn's shadow matrix onto the plane y = y0 (camera-relative) along the sun L (w = 0):
+ * S = (P . L) I - L P^T with P = (0, 1, 0, -y0); S x = x - L (y - y0) / L.y, on the plane */
+static void shadow_matrix(const double L[3], float y0, mat4 S) {
+    float l[4] = {(float)L[0], (float)L[1], (float)L[2], 0.0f}, P[4] = {0.0f, 1.0f, 0.0f, -y0};
+    float d = l[1];
+    for (int c = 0; c < 4; c++)
+        for (int r = 0; r < 4; r++) S[c][r] = (r == c ? d : 0.0f) - l[r] * P[c];
+}
+
+/* mark the stencil (1 in a shadow, 0 out) over what the pass has drawn */
+static void mark_projected(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
+                           mat4 view_proj) {
+    (void)s;
+    const ww_gl *gl = r->gl;
+    mat4 S, vps;
+    float y0 = (float)(f->sc->water_level - f->sc->water_depth - f->cam_pos[1]) + PLANE_LIFT;
+    shadow_matrix(f->st->sun_dir, y0, S);
+    glm_mat4_mul(view_proj, S, vps);
+    gl->StencilFunc(GL_ALWAYS, 1, 0xFF);
+    gl->StencilOpSeparate(GL_FRONT_AND_BACK, GL_KEEP, GL_KEEP, GL_REPLACE);
+    gl->Enable(GL_POLYGON_OFFSET_FILL);
+    gl->PolygonOffset(PLANE_OFFSET_FACTOR, PLANE_OFFSET_UNITS);
+    ww_geometry_set_stage(r->geometry, WW_GEOM_STAGE_MARK);
+    ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_SHADOW, vps, NULL, WW_GEOM_PART_SOLIDS);
+    ww_geometry_set_stage(r->geometry, WW_GEOM_STAGE_NORMAL);
+    gl->Disable(GL_POLYGON_OFFSET_FILL);
+}
+
+static void mark_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
+                         mat4 view_proj) {
+    const ww_gl *gl = r->gl;
+    build_volumes(s, r, f);
+    gl->StencilFunc(GL_ALWAYS, 0, 0xFF);
+    /* depth-fail: a volume face behind what is drawn counts +1 leaving (back), -1 entering */
+    gl->StencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    gl->StencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LESS);
+    gl->DepthMask(GL_FALSE);
+    gl->Disable(GL_CULL_FACE);
+    gl->Enable(GL_DEPTH_CLAMP);
+    draw_volumes(s, gl, view_proj, NULL);
+    gl->Disable(GL_DEPTH_CLAMP);
+    gl->DepthMask(GL_TRUE);
+}
+
+void ww_stencil_shadows_apply(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
+                              ww_geom_mode mode, mat4 view_proj, const float *clip) {
+    if (!s || !r->geometry || !(f->st->sun_dir[1] > SUN_MIN_Y)) return;
+    const ww_gl *gl = r->gl;
+    gl->Enable(GL_STENCIL_TEST);
+    gl->StencilMask(0xFF);
+    gl->ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    if (s->technique == WW_SHADOW_PROJECTED) mark_projected(s, r, f, view_proj);
+    else mark_volumes(s, r, f, view_proj);
+    gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    /* what is marked, drawn again without the sun: the projected shadows fall on the seabed
+     * alone, the volumes' on everything */
+    gl->StencilFunc(GL_NOTEQUAL, 0, 0xFF);
+    gl->StencilOpSeparate(GL_FRONT_AND_BACK, GL_KEEP, GL_KEEP, GL_KEEP);
+    gl->StencilMask(0x00);
+    ww_geometry_set_stage(r->geometry, WW_GEOM_STAGE_SUNLESS);
+    ww_geometry_draw_parts(r->geometry, r, f, mode, view_proj, clip,
+                           s->technique == WW_SHADOW_PROJECTED ? WW_GEOM_PART_SEABED
+                                                               : WW_GEOM_PART_ALL);
+    ww_geometry_set_stage(r->geometry, WW_GEOM_STAGE_NORMAL);
+    gl->StencilMask(0xFF);
+    gl->Disable(GL_STENCIL_TEST);
+}
+
+void ww_stencil_shadows_draw_visible(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f,
+                                     mat4 view_proj, const float *clip) {
+    if (!s || s->technique != WW_SHADOW_VOLUMES_VISIBLE || !(f->st->sun_dir[1] > SUN_MIN_Y))
+        return;
+    const ww_gl *gl = r->gl;
+    build_volumes(s, r, f);
+    gl->UseProgram(s->prog);
+    gl->Uniform4f(s->tint, VOLUME_TINT[0], VOLUME_TINT[1], VOLUME_TINT[2], VOLUME_TINT[3]);
+    gl->Enable(GL_DEPTH_TEST);
+    gl->DepthFunc(GL_LESS);
+    gl->DepthMask(GL_FALSE);
+    gl->Disable(GL_CULL_FACE);
+    gl->Enable(GL_DEPTH_CLAMP);
+    gl->Enable(GL_BLEND);
+    gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied */
+    draw_volumes(s, gl, view_proj, clip);
+    gl->Disable(GL_BLEND);
+    gl->Disable(GL_DEPTH_CLAMP);
+    gl->DepthMask(GL_TRUE);
+}
