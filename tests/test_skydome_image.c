@@ -143,6 +143,50 @@ TEST_IMAGE(skydome_image_reflected) {
                g_minus_r[0] - g_minus_r[1], DOME_REFLECT_MARGIN);
 }
 
+/* the far water fades into the picture's own horizon: the reef's first frame looks over the open
+ * sea at the dome's horizon. With the procedural sky's horizon as the fog colour the farthest
+ * water drew a grey line one pixel high under the picture's horizon (its row 31 levels darker
+ * than the rows 2 above and below, at 640x360) */
+#define HORIZON_LINE_DIP 4.0 /* 8-bit levels a row's mean luma may fall below both rows
+                              * HORIZON_LINE_SPAN away, at most */
+#define HORIZON_LINE_SPAN 2
+TEST_IMAGE(skydome_image_no_line_at_the_horizon) {
+    REQUIRE_GL();
+    const char *dir = ww_test_tmpdir("skydome_image_no_line");
+    ENSURE(dir != NULL);
+    if (!dir) return;
+    ENSURE_EQ_INT(ww_test_render("scenes/reef.yaml", "--size 640x360", dir), 0);
+    char png[800];
+    snprintf(png, sizeof png, "%s/frame_00000.png", dir);
+    ww_image im;
+    ww_error err = {0};
+    ENSURE_MSG(ww_read_png(png, &im, &err) == WW_OK, "%s", err.msg);
+    if (!im.u8) return;
+    double *row = calloc((size_t)im.height, sizeof *row);
+    ENSURE(row != NULL);
+    if (row) {
+        for (int y = 0; y < im.height; y++) {
+            for (int x = 0; x < im.width; x++) {
+                const unsigned char *p = ww_test_pixel(&im, x, y);
+                row[y] += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+            }
+            row[y] /= im.width;
+        }
+        double worst = 0.0;
+        int at = -1;
+        for (int y = HORIZON_LINE_SPAN; y < im.height - HORIZON_LINE_SPAN; y++) {
+            double up = row[y - HORIZON_LINE_SPAN], dn = row[y + HORIZON_LINE_SPAN];
+            double dip = (up < dn ? up : dn) - row[y];
+            if (dip > worst) worst = dip, at = y;
+        }
+        fprintf(stderr, "    deepest row dip %.1f levels (row %d)\n", worst, at);
+        ENSURE_MSG(worst <= HORIZON_LINE_DIP, "row %d is %.1f levels darker than its neighbours",
+                   at, worst);
+        free(row);
+    }
+    ww_image_free(&im);
+}
+
 /* bad input: file:line:column, exit 2 */
 static void bad_sky(const char *name, const char *sky_line, int column, const char *what) {
     const char *dir = ww_test_tmpdir(name);

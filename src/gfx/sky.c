@@ -141,6 +141,10 @@ static void horizon_colour(int physical, double turbidity, const ww_state *st, d
 
 void ww_sky_horizon(const ww_scene *sc, const ww_state *st, double out[3]) {
     const ww_render_desc *d = &sc->render;
+    if (ww_sky_dome_image_on(sc)) { /* the picture's own horizon (scene/compile_render.c) */
+        for (int c = 0; c < 3; c++) out[c] = d->dome_horizon[c] * d->sky_intensity;
+        return;
+    }
     horizon_colour(d->sky == WW_SKY_PREETHAM || d->sky == WW_SKY_DOME, d->sky_turbidity, st, out);
 }
 

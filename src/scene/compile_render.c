@@ -309,8 +309,39 @@ static ww_result compile_cubemap(ctx *c, const section *s) {
     return WW_OK;
 }
 
+/* the mean linear colour of the dome picture's outer ring, from DOME_RING_INNER of the inscribed
+ * circle's radius to its edge (the sky from about 5 deg above the horizon down to it): the
+ * colour far water and objects fade into, as Preetham's haze is for its sky. Without it the fog
+ * took the procedural sky's horizon, and the farthest water drew a grey line under the picture's
+ * horizon. */
+#define DOME_RING_INNER 0.94
+static double srgb_to_linear(double v) {
+    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+static ww_result dome_ring_mean(ctx *c, const ww_node *n, const ww_image_data *im, double out[3]) {
+    unsigned char *rgba = NULL;
+    ww_error e = {0};
+    if (ww_assets_decode(im, &rgba, &e) != WW_OK)
+        return wwc_fail(c, e.code ? e.code : WW_E_IO, n, "sky.image: %s", e.msg);
+    double sum[3] = {0.0, 0.0, 0.0}, half = 0.5 * (im->width < im->height ? im->width : im->height);
+    long count = 0;
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++) {
+            double dx = (x + 0.5 - 0.5 * im->width) / half, dy = (y + 0.5 - 0.5 * im->height) / half;
+            double r = sqrt(dx * dx + dy * dy);
+            if (r < DOME_RING_INNER || r > 1.0) continue;
+            const unsigned char *p = rgba + 4 * ((size_t)y * (size_t)im->width + (size_t)x);
+            for (int k = 0; k < 3; k++) sum[k] += srgb_to_linear(p[k] / 255.0);
+            count++;
+        }
+    ww_assets_pixels_free(rgba);
+    for (int k = 0; k < 3; k++) out[k] = count ? sum[k] / (double)count : 0.0;
+    return WW_OK;
+}
+
 /* sky.image: a picture of the sky mapped on the dome (sky.model dome only), resolved against the
- * scene file's folder and read (its size checked) now, decoded when the sky is drawn */
+ * scene file's folder and read (its size checked) now, decoded when the sky is drawn (and once
+ * here, for the colour of its horizon) */
 static ww_result compile_dome_image(ctx *c, const section *s) {
     ww_render_desc *d = &c->sc->render;
     const ww_node *n;
@@ -324,8 +355,9 @@ static ww_result compile_dome_image(ctx *c, const section *s) {
     TRY(wwc_resolve_path(c, n, d->dome_image_path, sizeof d->dome_image_path));
     if (!c->sc->assets && !(c->sc->assets = calloc(1, sizeof *c->sc->assets)))
         return wwc_fail(c, WW_E_NOMEM, n, "out of memory for the scene's assets");
-    return ww_assets_image(c->sc->assets, d->dome_image_path, n->mark.file ? n->mark.file : c->file,
-                           n->mark.line, n->mark.column, &d->dome_image, c->err);
+    TRY(ww_assets_image(c->sc->assets, d->dome_image_path, n->mark.file ? n->mark.file : c->file,
+                        n->mark.line, n->mark.column, &d->dome_image, c->err));
+    return dome_ring_mean(c, n, &c->sc->assets->image[d->dome_image], d->dome_horizon);
 }
 
 ww_result wwc_sky(ctx *c, const section *top) {

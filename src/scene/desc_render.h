@@ -132,6 +132,8 @@ typedef struct ww_render_desc {
     int cubemap_image[6];        /* index in the scene's assets (scene/assets.h), -1 none */
     char dome_image_path[WW_PATH_MAX]; /* sky.image: the dome's picture, resolved; "" none */
     int dome_image;              /* its index in the scene's assets, -1 none (procedural dome) */
+    double dome_horizon[3];      /* the picture's mean linear colour along its horizon ring
+                                  * (the fog's colour with this sky: far water fades into it) */
     double sky_intensity;        /* cubemap and dome radiance scale */
     double sky_turbidity;        /* Preetham's turbidity T (haze: 2 clear .. 10 hazy) */
     double cloud_cover;          /* share of the sky the clouds cover, 0: none (preetham) */
