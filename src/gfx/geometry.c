@@ -1264,7 +1264,11 @@ void ww_geometry_each_caster(ww_geometry *g, ww_caster_fn fn, void *user) {
         if (!m->copy || !g->caster_mesh[s].vertex) continue;
         for (int i = 0; i < m->ninst; i++) fn(user, s, &g->caster_mesh[s], m->copy[i].model);
     }
+    /* a swaying plant is bent in the vertex shader; a volume from its rigid mesh would stand
+     * still under it, so plants cast no stencilled shadow (the shadow map, drawn through the
+     * same vertex shader, sways with them) */
     for (int i = 0; i < g->nobj; i++)
-        if (g->obj[i].copy && g->obj[i].ninst > 0 && g->obj_data[i])
+        if (g->obj[i].copy && g->obj[i].ninst > 0 && g->obj_data[i] &&
+            !(g->sway && g->obj_sway[i][0] > 0.0f))
             fn(user, SLOT_COUNT + i, g->obj_data[i], g->obj[i].copy[0].model);
 }

@@ -86,9 +86,14 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
     }
     if (r->geometry)
         ww_geometry_draw(r->geometry, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
-    /* the shadows seen through the surface from above (or the sky's side from below) */
-    ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
-    ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, plane);
+    /* the shadows seen through the surface from above. From below, the prepass holds what
+     * rises above the water (a hull, a cube's top), whose sunlit faces cannot be seen through
+     * the surface from under it: the volumes there would cost as much as the main pass's and
+     * change nothing seen */
+    if (!f->underwater) {
+        ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
+        ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, plane);
+    }
     r->shared.scene_color = p->color;
     r->shared.scene_depth = p->depth;
     return WW_OK;
