@@ -212,3 +212,37 @@ TEST(render_keys_shadow_techniques) {
         ww_scene_free(sc);
     }
 }
+
+/* render.quality sets its knobs over the defaults; the scene's own keys override them, in any
+ * order in the file; final is the defaults themselves */
+TEST(render_keys_quality_presets) {
+    ww_scene *fin = load(BASE, NULL, 0);
+    const char *draft_sets[] = {"render.quality=draft"};
+    ww_scene *draft = load(BASE, draft_sets, 1);
+    const char *over_sets[] = {"render.reflection={scale: 1}", "render.quality=draft",
+                               "render.fxaa=true"};
+    ww_scene *over = load(BASE, over_sets, 3);
+    const char *prev_sets[] = {"render.quality=preview"};
+    ww_scene *prev = load(BASE, prev_sets, 1);
+    if (!fin || !draft || !over || !prev) goto done;
+    ENSURE_EQ_INT(fin->render.quality, WW_QUALITY_FINAL);
+    ENSURE_EQ_INT(draft->render.quality, WW_QUALITY_DRAFT);
+    ENSURE(draft->render.reflection.scale < fin->render.reflection.scale);
+    ENSURE(draft->render.refraction_scale < fin->render.refraction_scale);
+    ENSURE(draft->render.shadows.size < fin->render.shadows.size);
+    ENSURE(draft->render.shafts.samples < fin->render.shafts.samples);
+    ENSURE(draft->render.grid < fin->render.grid);
+    ENSURE_EQ_INT(draft->render.fxaa, 0);
+    ENSURE(prev->render.reflection.scale < fin->render.reflection.scale);
+    ENSURE(prev->render.reflection.scale > draft->render.reflection.scale);
+    ENSURE_NEAR(prev->render.grid, fin->render.grid, KNOB_TOL);
+    /* the scene's keys win over the preset */
+    ENSURE_NEAR(over->render.reflection.scale, 1.0, KNOB_TOL);
+    ENSURE_EQ_INT(over->render.fxaa, 1);
+    ENSURE_EQ_INT(over->render.shadows.size, draft->render.shadows.size);
+done:
+    ww_scene_free(fin);
+    ww_scene_free(draft);
+    ww_scene_free(over);
+    ww_scene_free(prev);
+}

@@ -72,6 +72,27 @@ static const char *const TECHNIQUE_WORDS[] = {[WW_SHADOW_MAP] = "map",
                                               [WW_SHADOW_VOLUMES_VISIBLE] = "volumes_visible",
                                               NULL};
 static const char *const HUD_WORDS[] = {"clock", "counters", "chest_marker", NULL};
+static const char *const QUALITY_WORDS[] = {[WW_QUALITY_FINAL] = "final",
+                                            [WW_QUALITY_PREVIEW] = "preview",
+                                            [WW_QUALITY_DRAFT] = "draft", NULL};
+
+/* render.quality's knob values over the defaults, each taken from `bench quality`'s
+ * speed/error front on the lake, demo and reef at 1280x720 (docs/speed.md, "Quality presets"):
+ * the knobs whose cheaper values cost the least picture per millisecond saved. The scene's own
+ * keys, read after, override any of them. Final is the defaults themselves. */
+static void apply_quality(ww_render_desc *d, ww_quality q) {
+    d->quality = q;
+    if (q == WW_QUALITY_FINAL) return;
+    int draft = q == WW_QUALITY_DRAFT;
+    d->reflection.scale = draft ? 0.125 : 0.25; /* the DuDv and the waves blur it anyway */
+    d->shafts.samples = draft ? 16 : 32;
+    if (draft) {
+        d->refraction_scale = 0.25;
+        d->grid = 0.75; /* coarser rings fade the short waves nearer: the largest error */
+        d->shadows.size = 512;
+        d->fxaa = 0;
+    }
+}
 static const char *const FACE_NAMES[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
 
 void ww_render_defaults(ww_render_desc *d) {
@@ -199,9 +220,9 @@ static ww_result compile_hud(ctx *c, const section *s, ww_hud_desc *d) {
 }
 
 ww_result wwc_render(ctx *c, const section *top) {
-    static const char *const keys[] = {"size", "tonemap", "shadows", "refraction", "reflection",
-                                       "bloom", "god_rays", "fxaa", "msaa", "grid", "hud",
-                                       "seabed", NULL};
+    static const char *const keys[] = {"size", "quality", "tonemap", "shadows", "refraction",
+                                       "reflection", "bloom", "god_rays", "fxaa", "msaa", "grid",
+                                       "hud", "seabed", NULL};
     static const char *const tonemap_keys[] = {"operator", "exposure", "gamma", NULL};
     static const char *const reflection_keys[] = {"on", "scale", NULL};
     static const char *const refraction_keys[] = {"on", "scale", NULL};
@@ -218,6 +239,9 @@ ww_result wwc_render(ctx *c, const section *top) {
     TRY(wwc_get_vec(c, &s, "size", 2, &R_SIZE, OPTIONAL, size));
     sc->width = (int)size[0];
     sc->height = (int)size[1];
+    int quality = (int)d->quality;
+    TRY(wwc_get_word(c, &s, "quality", QUALITY_WORDS, &quality));
+    apply_quality(d, (ww_quality)quality);
 
     TRY(wwc_open_section(c, &s, "tonemap", tonemap_keys, &tm));
     int op = (int)sc->tonemap;

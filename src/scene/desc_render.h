@@ -114,7 +114,15 @@ typedef struct ww_hud_desc {
     int chest_marker;            /* screen-space glow marker at the chest */
 } ww_hud_desc;
 
+/* render.quality: a set of knob values (compile_render.c), the scene's own keys applied over it */
+typedef enum ww_quality {
+    WW_QUALITY_FINAL = 0, /* the defaults: the best picture the renderer's defaults give */
+    WW_QUALITY_PREVIEW,   /* lighter reflection, shafts and water mesh: close to final */
+    WW_QUALITY_DRAFT      /* every knob at its cheapest useful value, FXAA off */
+} ww_quality;
+
 typedef struct ww_render_desc {
+    ww_quality quality;
     ww_shadow_desc shadows;
     int refraction;              /* scene prepass: colour + depth of what lies under the water */
     double refraction_scale;     /* its target size as a fraction of the frame's */

@@ -1,0 +1,65 @@
+/* test_quality.c - render.quality's presets measured on rendered frames: each preset's frame
+ * against final's, by PSNR, on the lake at the chest and the open sea. The presets trade the
+ * knobs whose cheaper values cost the least picture (docs/speed.md, "Quality presets"); these
+ * floors hold them to that. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "io/image.h"
+#include "io/writers.h"
+#include "test.h"
+
+/* dB of the preset's frame against final's at 320x180 (measured: lake 51.1 / 44.8, demo
+ * frame 150 41.7 / 36.7, reef frame 270 47.5 / 37.0) */
+#define PREVIEW_PSNR_MIN 38.0 /* preview: lighter reflection and shafts only */
+#define DRAFT_PSNR_MIN 32.0   /* draft: coarser water mesh and shadows, no FXAA too */
+
+static double psnr_of(const char *a_path, const char *b_path) {
+    ww_image a = {0}, b = {0};
+    ww_error err = {0};
+    double db = -1.0;
+    if (ww_read_png(a_path, &a, &err) != WW_OK || ww_read_png(b_path, &b, &err) != WW_OK ||
+        a.width != b.width || a.height != b.height || a.channels != b.channels)
+        goto done;
+    double se = 0.0;
+    size_t n = (size_t)a.width * (size_t)a.height * (size_t)a.channels;
+    for (size_t i = 0; i < n; i++) {
+        double d = (double)a.u8[i] - (double)b.u8[i];
+        se += d * d;
+    }
+    db = se > 0.0 ? 10.0 * log10(255.0 * 255.0 / (se / (double)n)) : INFINITY;
+done:
+    ww_image_free(&a);
+    ww_image_free(&b);
+    return db;
+}
+
+static void preset_psnr(const char *scene, int frame, const char *tag) {
+    static const char *const q[3] = {"final", "preview", "draft"};
+    char png[3][900];
+    for (int k = 0; k < 3; k++) {
+        const char *dir = ww_test_tmpdir(tag);
+        char args[200], out[800];
+        snprintf(out, sizeof out, "%s/%s", dir, q[k]);
+        snprintf(args, sizeof args, "--size 320x180 --set render.quality=%s", q[k]);
+        char cmd[1400];
+        snprintf(cmd, sizeof cmd, "render %s --frames %d:%d -o %s --quiet %s", scene, frame,
+                 frame + 1, out, args);
+        ENSURE_EQ_INT(ww_test_ww(cmd, NULL, NULL), 0);
+        snprintf(png[k], sizeof png[k], "%s/frame_%05d.png", out, frame);
+    }
+    double prev = psnr_of(png[0], png[1]), draft = psnr_of(png[0], png[2]);
+    fprintf(stderr, "    %s frame %d: preview %.1f dB, draft %.1f dB against final\n", scene,
+            frame, prev, draft);
+    ENSURE_MSG(prev >= PREVIEW_PSNR_MIN, "%s preview %.1f dB < %g", scene, prev, PREVIEW_PSNR_MIN);
+    ENSURE_MSG(draft >= DRAFT_PSNR_MIN, "%s draft %.1f dB < %g", scene, draft, DRAFT_PSNR_MIN);
+    ENSURE_MSG(prev > draft, "%s: preview %.1f dB is not closer to final than draft %.1f", scene,
+               prev, draft);
+}
+
+TEST_IMAGE(quality_presets_stay_close_to_final) {
+    REQUIRE_GL();
+    preset_psnr("scenes/lake.yaml", 300, "quality_lake");
+    preset_psnr("scenes/demo.yaml", 150, "quality_demo");
+}
