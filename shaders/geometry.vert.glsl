@@ -26,6 +26,9 @@ layout(location = 8) in vec4 a_extra;    // (wiggle phase rad, wiggle amplitude,
 
 uniform mat4 u_view_proj;  // camera-relative world -> clip
 uniform vec4 u_clip;       // keep a.x + b.y + c.z + d >= 0 (camera-relative), when enabled
+uniform int u_shadow_bend; // the sunlight's bend at the water (shadow.glsl): 1 the shadow
+                           // map's casters, warped as its receivers are; 2 the projected
+                           // shadows' casters; 0 none
 #if WW_SWAY
 uniform vec4 u_sway;       // (amplitude at the tip m (0: rigid), phase rad, lag rad, height m)
 uniform vec4 u_sway_axis;  // (mesh y of the base, 1 / mesh height, direction x, direction z)
@@ -79,5 +82,7 @@ void main() {
     v_pattern = a_extra.w;
 #endif
     gl_ClipDistance[0] = dot(vec4(p.xyz, 1.0), u_clip);
-    gl_Position = u_view_proj * p;
+    vec3 at = u_shadow_bend == 1 ? ww_shadow_warp(p.xyz)
+              : u_shadow_bend == 2 ? ww_shadow_unbend(p.xyz) : p.xyz;
+    gl_Position = u_view_proj * vec4(at, 1.0);
 }

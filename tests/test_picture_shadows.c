@@ -12,6 +12,7 @@
 
 #include "io/writers.h"
 #include "scene/scene.h"
+#include "sim/sky.h"
 #include "sim/state.h"
 #include "sim/step.h"
 #include "test.h"
@@ -368,3 +369,105 @@ static void golden_of(const char *name) {
 TEST_IMAGE(shadows_golden_projected) { golden_of("shadows_projected"); }
 TEST_IMAGE(shadows_golden_volumes) { golden_of("shadow_volumes"); }
 TEST_IMAGE(shadows_golden_volumes_visible) { golden_of("shadow_volumes_visible"); }
+
+/* ---- the sunlight bends at the water ------------------------------------------------------ */
+
+/* a 1 m box held 1.5 m above still water over an 8 m deep seabed at 13 h: the light reaching
+ * the seabed crosses the surface and bends (Snell, n 1.333), so the box's shadow lies at
+ * c - a 1.5 / a.y - u 8 / u.y (a toward the sun, u the refracted ray); a box 3 m under the
+ * water casts along u alone. The camera, under the box, looks straight down at that point; the
+ * shadow's centroid must lie within BEND_TOL of the frame's centre for the map, the projected
+ * shadows and the volumes alike. Along the sun's ray in air (before) the first fell 1.6 m
+ * further out (1.59 m for the map, 1.64 m projected and volumes). */
+#define BEND_TOL 0.25          /* m: the shadow's centroid from where the bent light puts it */
+#define BEND_SIZE 160          /* px, square */
+#define BEND_DROP 0.6          /* a pixel darker than this share of the frame's median: shadow */
+#define BEND_MIN_PX 200        /* the 1 m shadow covers about 28 px a side */
+static void bent_shadow(const char *technique, double lift) {
+    static const double level = 0.0, depth = 8.0, eta = 1.0 / 1.333, fov = 60.0;
+    char text[2048];
+    snprintf(text, sizeof text,
+             "time: {dt: 1/120, fps: 30, duration: 1}\n"
+             "sky: {time_of_day: 13, day_length: 0}\n");
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_MSG(ww_scene_load_string("bend.yaml", text, strlen(text), NULL, 0, &sc, &err) == WW_OK,
+               "%s", err.msg);
+    if (!sc) return;
+    double a[3];
+    ww_sky_sun_dir(13.0, sc->sun_max_elevation, a);
+    ww_scene_free(sc);
+    double n = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    for (int i = 0; i < 3; i++) a[i] /= n;
+    double u[3] = {eta * a[0], sqrt(1.0 - eta * eta * (1.0 - a[1] * a[1])), eta * a[2]};
+    /* from the box's centre down the sun's ray to the surface (when above it), then down the
+     * refracted ray to the seabed */
+    double air = lift > 0.0 ? lift : 0.0, water = depth + (lift < 0.0 ? lift : 0.0);
+    double x = -a[0] * air / a[1] - u[0] * water / u[1];
+    double z = -a[2] * air / a[1] - u[2] * water / u[1];
+    const double cam_y = lift > 0.0 ? -3.0 : lift - 1.0, over = cam_y - (level - depth);
+    const char *dir = ww_test_tmpdir("shadow_bend");
+    char scene[800], out[900], png[1000];
+    snprintf(scene, sizeof scene, "%s/bend_%s_%g.yaml", dir, technique, lift);
+    snprintf(text, sizeof text,
+             "time: {dt: 1/120, fps: 30, duration: 1}\n"
+             "render: {size: [%d, %d], shadows: {technique: %s, size: 2048, softness: 0},\n"
+             "         refraction: false, reflection: false, bloom: false, god_rays: false,\n"
+             "         fxaa: false, msaa: 0, seabed: true}\n"
+             "sky: {time_of_day: 13, day_length: 0}\n"
+             "fog: {below: {color: [0.03, 0.16, 0.2], density: 0.01}}\n"
+             "water: {level: %g, depth: %g, look: {caustics: false}, waves: {model: flat}}\n"
+             "objects:\n  models:\n    - {name: block, mesh: box, position: [0, %g, 0]}\n"
+             "camera:\n  fov: %g\n  collide: false\n"
+             "  path: [{t: 0, position: [%.6f, %g, %.6f], yaw: 0, pitch: -89.9}]\n",
+             BEND_SIZE, BEND_SIZE, technique, level, depth, level + lift, fov, x, cam_y, z);
+    ENSURE(ww_test_write_text(scene, text) == 0);
+    snprintf(out, sizeof out, "%s/%s_%g", dir, technique, lift);
+    ENSURE_EQ_INT(ww_test_render(scene, NULL, out), 0);
+    snprintf(png, sizeof png, "%s/frame_00000.png", out);
+    pic p;
+    if (!load(png, &p)) return;
+    double *l = malloc((size_t)p.w * (size_t)p.h * sizeof *l), med = 0.0;
+    ENSURE(l != NULL);
+    if (l) {
+        for (int y = 0; y < p.h; y++)
+            for (int x2 = 0; x2 < p.w; x2++) l[y * p.w + x2] = luma(&p, x2, y);
+        /* the median by counting: lumas are 0..255 */
+        long hist[256] = {0};
+        for (int i = 0; i < p.w * p.h; i++) hist[(int)fmin(fmax(l[i], 0.0), 255.0)]++;
+        long acc = 0;
+        for (int v = 0; v < 256; v++)
+            if ((acc += hist[v]) >= (long)p.w * p.h / 2) {
+                med = v;
+                break;
+            }
+        double sx = 0.0, sy = 0.0;
+        long cnt = 0;
+        for (int y = 0; y < p.h; y++)
+            for (int x2 = 0; x2 < p.w; x2++)
+                if (l[y * p.w + x2] < BEND_DROP * med) sx += x2 + 0.5, sy += y + 0.5, cnt++;
+        /* metres per pixel on the seabed `over` below the camera */
+        double m_px = 2.0 * over * tan(0.5 * fov * 3.14159265358979323846 / 180.0) / p.h;
+        double dx = cnt ? (sx / cnt - 0.5 * p.w) * m_px : INFINITY;
+        double dy = cnt ? (sy / cnt - 0.5 * p.h) * m_px : INFINITY;
+        double off = hypot(dx, dy);
+        fprintf(stderr,
+                "    %s, box at %+g m: shadow %ld px, its centroid %.3f m from the bent light's "
+                "point\n",
+                technique, lift, cnt, off);
+        ENSURE_MSG(cnt >= BEND_MIN_PX, "%s: %ld shadow pixels", technique, cnt);
+        ENSURE_MSG(off <= BEND_TOL, "%s: the shadow lies %.2f m from where the bent light puts it",
+                   technique, off);
+        free(l);
+    }
+    ww_image_free(&p.im);
+}
+
+TEST_IMAGE(shadows_bend_with_the_light_at_the_water) {
+    REQUIRE_GL();
+    static const char *const technique[3] = {"map", "projected", "volumes"};
+    for (int k = 0; k < 3; k++) {
+        bent_shadow(technique[k], 1.5);
+        bent_shadow(technique[k], -3.0);
+    }
+}

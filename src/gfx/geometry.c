@@ -124,7 +124,8 @@ struct ww_geometry {
     ww_sky_locs sky;
     GLint view_proj, clip, ambient, eye, mirrored, water_y, fog_color, fog_density,
         fog_below_color, fog_below_density, extinction, caustics_loc, mode, glow, glow_y;
-    GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, scatter_through;
+    GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
+    GLint scatter_through;
     light_locs lights;
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
     gmesh slot[SLOT_COUNT];
@@ -611,6 +612,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
     g->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
     g->shadow_filter = ww_gfx_uniform(gl, p, "u_shadow_filter");
+    g->shadow_water = ww_gfx_uniform(gl, p, "u_shadow_water");
+    g->shadow_bend = ww_gfx_uniform(gl, p, "u_shadow_bend");
     g->sway_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway") : -1;
     g->sway_axis_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway_axis") : -1;
     g->mat_kd = ww_gfx_uniform(gl, p, "u_mat_kd");
@@ -1098,6 +1101,17 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     /* 2: in a stencilled shadow, no sunlight (shadow.glsl) */
     gl->Uniform1i(g->shadow_on, g->stage == WW_GEOM_STAGE_SUNLESS ? 2 : shadowed);
     gl->Uniform1i(g->shadow_map, WW_TEX_SHADOW);
+    /* the sunlight's bend at the water (shadow.glsl): the map's casters and receivers, or the
+     * projected shadows' casters (their mark stage) */
+    gl->Uniform1i(g->shadow_bend, mode != WW_GEOM_SHADOW           ? 0
+                                  : g->stage == WW_GEOM_STAGE_MARK ? 2
+                                                                   : 1);
+    if (shadowed || mode == WW_GEOM_SHADOW) {
+        double u[3];
+        ww_sun_in_water(st->sun_dir, u);
+        gl->Uniform4f(g->shadow_water, (float)u[0], (float)u[1], (float)u[2],
+                      (float)(sc->water_level - f->cam_pos[1]));
+    }
     if (shadowed) {
         int size = sc->render.shadows.size;
         gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_SHADOW);

@@ -51,6 +51,21 @@ static ww_result shadow_create(ww_renderer *r, const ww_scene *sc, const ww_pass
     return WW_OK;
 }
 
+/* the sunlight's direction under a level surface (toward the sun, unit): Snell's refraction of
+ * the sun's ray into water; (0, 0, 0) when the sun is not above the horizon */
+#define WATER_IOR 1.333
+void ww_sun_in_water(const double sun[3], double out[3]) {
+    double a[3] = {sun[0], sun[1], sun[2]};
+    ww_m_normalize3(a);
+    out[0] = out[1] = out[2] = 0.0;
+    if (!(a[1] > 0.0)) return;
+    double eta = 1.0 / WATER_IOR, k = 1.0 - eta * eta * (1.0 - a[1] * a[1]);
+    /* the transmitted ray t = eta d + (eta cos_i - sqrt(k)) n, d = -a, n = +y; out = -t */
+    out[0] = eta * a[0];
+    out[1] = sqrt(k);
+    out[2] = eta * a[2];
+}
+
 /* the sun's view-projection for this frame, camera-relative; texel size in m */
 static void fit(const ww_frame *f, int size, double shadow_distance, mat4 out) {
     const ww_scene *sc = f->sc;

@@ -231,6 +231,10 @@ ww_result ww_gfx_program_defs(const ww_gl *gl, const char *vs, const char *fs,
                               ww_error *err);
 GLint ww_gfx_uniform(const ww_gl *gl, GLuint prog, const char *name);
 
+/* pass_shadow.c: the sunlight's direction under the water (toward the sun, unit, refracted at a
+ * level surface); (0, 0, 0) with the sun at or below the horizon */
+void ww_sun_in_water(const double sun[3], double out[3]);
+
 /* sky.c: the uniforms of common.glsl (sky gradient and sun), for any program that includes it */
 typedef struct ww_sky_locs {
     GLint zenith, horizon, sun_dir, sun_color;

@@ -15,6 +15,14 @@
  *              the camera inside a volume. A directional light's extruded points all meet at one
  *              point at infinity, so the far cap has no area and is left out.
  *
+ * Both follow the sunlight as it bends at the water (Snell): under the water it comes down the
+ * refracted ray, steeper than the sun's ray in air. The projected casters are flattened along
+ * the refracted ray, those above the water first moved to where their bent ray lands
+ * (shadow.glsl's ww_shadow_unbend); a volume's side runs down the sun's ray to the surface and
+ * then down the refracted ray to infinity, and a face above the water faces the sun while one
+ * below it faces the refracted light. The shadow map bends alike (shadow.glsl's ww_shadow_warp),
+ * so the three techniques agree 10 m down, where the sun's ray in air put a shadow 2 m out.
+ *
  * Then the marked pixels are drawn again over themselves (depth EQUAL, the same program and
  * vertices) without the sun's direct light: the ambient, the lamps, the emission and the fog
  * stay as they were, so a fogged seabed far off barely changes. volumes_visible draws the
@@ -32,7 +40,8 @@
 #define PLANE_OFFSET_UNITS -4.0f
 #define SUN_MIN_Y 0.02         /* below this sun height (sin of elevation) nothing is cast */
 #define MAX_MESHES 64          /* adjacencies kept (procedural slots and OBJ models) */
-/* m: each volume starts this far beyond its caster, away from the sun. On the cap, the faces
+/* m: each volume starts this far beyond its caster, away from the sun (along the light that
+ * reaches the corner). On the cap, the faces
  * turned from the sun, the count is otherwise a coin toss (the cap and the face have one depth,
  * computed twice), speckling them, and a smooth-shaded face there, whose normals still see the
  * sun near the terminator, went dark along its facets instead of fading as the map has it */
@@ -68,6 +77,8 @@ struct ww_stencil_shadows {
     size_t nverts, cap;
     int64_t built; /* frame whose volumes are in vbo; -1 none */
     double sun[3]; /* toward the sun, world, unit: the direction they were built for */
+    double under[3]; /* toward the sun under the water (refracted), world, unit */
+    float level;   /* the water's rest level, camera-relative y, this frame */
     int lost;      /* out of memory building a volume: casters left out */
 };
 
@@ -205,22 +216,64 @@ static int is_dark(const adjacency *a, int t, const vec3 Lm, float side) {
     return side * (n[0] * Lm[0] + n[1] * Lm[1] + n[2] * Lm[2]) < 0.0f;
 }
 
-/* welded corner v into the volumes, in camera-relative world, moved by `start` */
-static void put_corner(ww_stencil_shadows *s, const adjacency *a, int v, const float model[16],
-                       const float start[3]) {
+/* the same against the light that reaches the face: the sun's (Lm) above the water, the
+ * refracted (Um) below it, by the height of its centre (camera-relative) */
+static int face_dark(const ww_stencil_shadows *s, const adjacency *a, int t, const float model[16],
+                     const vec3 Lm, const vec3 Um, float side) {
+    float c[3] = {0.0f, 0.0f, 0.0f};
+    for (int k = 0; k < 3; k++)
+        for (int r = 0; r < 3; r++) c[r] += a->pos[3 * a->tri[3 * t + k] + r] / 3.0f;
+    float y = model[1] * c[0] + model[5] * c[1] + model[9] * c[2] + model[13];
+    return is_dark(a, t, y < s->level ? Um : Lm, side);
+}
+
+/* welded corner v in camera-relative world, moved VOLUME_START away from the sun along the
+ * light that reaches it (refracted under the water) */
+static void corner(const ww_stencil_shadows *s, const adjacency *a, int v, const float model[16],
+                   float w[4]) {
     const float *p = a->pos + 3 * v;
-    float w[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     for (int r = 0; r < 3; r++)
-        w[r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r] +
-               start[r];
+        w[r] = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r];
+    const double *l = w[1] < s->level ? s->under : s->sun;
+    for (int r = 0; r < 3; r++) w[r] -= (float)(VOLUME_START * l[r]);
+    w[3] = 1.0f;
+}
+
+static void put_corner(ww_stencil_shadows *s, const adjacency *a, int v, const float model[16]) {
+    float w[4];
+    corner(s, a, v, model, w);
     put4(s, w);
 }
 
-/* the side of edge p -> q (reversed when `flip`) out to the point at infinity */
+/* where the sun's ray through w (above the water) meets the surface; w itself under it */
+static void to_surface(const ww_stencil_shadows *s, const float w[4], float out[4]) {
+    memcpy(out, w, 4 * sizeof *out);
+    if (w[1] <= s->level) return;
+    float k = (w[1] - s->level) / (float)s->sun[1];
+    for (int r = 0; r < 3; r++) out[r] = w[r] - k * (float)s->sun[r];
+    out[1] = s->level;
+}
+
+/* the side of edge p -> q (reversed when `flip`) along the sunlight: above the water down the
+ * sun's ray to the surface, then (and under the water from the start) down the refracted ray to
+ * the point at infinity */
 static void put_side(ww_stencil_shadows *s, const adjacency *a, int p, int q, int flip,
-                     const float model[16], const float start[3], const float inf[4]) {
-    put_corner(s, a, flip ? q : p, model, start);
-    put_corner(s, a, flip ? p : q, model, start);
+                     const float model[16], const float inf[4]) {
+    float w0[4], w1[4], s0[4], s1[4];
+    corner(s, a, flip ? q : p, model, w0);
+    corner(s, a, flip ? p : q, model, w1);
+    to_surface(s, w0, s0);
+    to_surface(s, w1, s1);
+    if (w0[1] > s->level || w1[1] > s->level) { /* the stretch in the air, as two triangles */
+        put4(s, w0);
+        put4(s, w1);
+        put4(s, s1);
+        put4(s, w0);
+        put4(s, s1);
+        put4(s, s0);
+    }
+    put4(s, s0);
+    put4(s, s1);
     put4(s, inf);
 }
 
@@ -245,43 +298,44 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
     float det = glm_mat3_det(A);
     if (fabsf(det) < 1e-12f) return;
     glm_mat3_inv(A, Ai);
+    /* a face above the water is lit along the sun's ray, one under it along the refracted ray */
     vec3 L = {(float)s->sun[0], (float)s->sun[1], (float)s->sun[2]}, Lm;
+    vec3 U = {(float)s->under[0], (float)s->under[1], (float)s->under[2]}, Um;
     glm_mat3_mulv(Ai, L, Lm);
+    glm_mat3_mulv(Ai, U, Um);
     float side = det > 0.0f ? 1.0f : -1.0f; /* a mirroring matrix turns the windings */
-    if (!reserve(s, (size_t)a->ntri * 3 + (size_t)a->nedge * 3)) {
+    /* a cap corner per face, and per edge up to two sides of nine corners each */
+    if (!reserve(s, (size_t)a->ntri * 3 + (size_t)a->nedge * 18)) {
         s->lost = 1;
         return;
     }
-    /* world positions of the welded corners, computed as used, moved VOLUME_START from the sun */
-    float inf[4] = {-L[0], -L[1], -L[2], 0.0f};
-    float start[3] = {-(float)VOLUME_START * L[0], -(float)VOLUME_START * L[1],
-                      -(float)VOLUME_START * L[2]};
+    float inf[4] = {-U[0], -U[1], -U[2], 0.0f};
     for (int t = 0; t < a->ntri; t++) {
-        int dark = is_dark(a, t, Lm, side);
+        int dark = face_dark(s, a, t, model, Lm, Um, side);
         if (!dark && a->closed) continue;
         /* the cap faces the sun: a dark face reversed, an open mesh's lit face as it is (and a
          * mirroring matrix has reversed both already) */
         static const int order[2][3] = {{0, 2, 1}, {0, 1, 2}};
         const int *o = order[!dark != (side < 0.0f)];
-        for (int k = 0; k < 3; k++) put_corner(s, a, a->tri[3 * t + o[k]], model, start);
+        for (int k = 0; k < 3; k++) put_corner(s, a, a->tri[3 * t + o[k]], model);
     }
     for (int e = 0; e < a->nedge; e++) {
         const edge *ed = &a->edges[e];
-        int dark0 = is_dark(a, ed->t0, Lm, side);
+        int dark0 = face_dark(s, a, ed->t0, model, Lm, Um, side);
         if (ed->t1 < 0) {
             /* an open edge: its face's side (turned away from the sun when it is lit) */
-            if (dark0 || !a->closed) put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model,
-                                              start, inf);
+            if (dark0 || !a->closed)
+                put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model, inf);
             continue;
         }
-        int dark1 = is_dark(a, ed->t1, Lm, side);
+        int dark1 = face_dark(s, a, ed->t1, model, Lm, Um, side);
         if (dark0 == dark1) continue; /* not on the silhouette */
         /* the side runs along the edge as the dark face does (v0 -> v1 in t0, v1 -> v0 in t1);
          * an open mesh's lit face, turned away from the sun, gives a side of its own too */
-        if (dark0 || !a->closed) put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model,
-                                          start, inf);
-        if (dark1 || !a->closed) put_side(s, a, ed->v1, ed->v0, !dark1 != (side < 0.0f), model,
-                                          start, inf);
+        if (dark0 || !a->closed)
+            put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model, inf);
+        if (dark1 || !a->closed)
+            put_side(s, a, ed->v1, ed->v0, !dark1 != (side < 0.0f), model, inf);
     }
 }
 
@@ -292,6 +346,8 @@ static void build_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame 
     s->nverts = 0;
     for (int i = 0; i < 3; i++) s->sun[i] = f->st->sun_dir[i];
     ww_m_normalize3(s->sun);
+    ww_sun_in_water(s->sun, s->under);
+    s->level = (float)(f->sc->water_level - f->cam_pos[1]);
     ww_geometry_each_caster(r->geometry, add_caster, s);
     const ww_gl *gl = r->gl;
     gl->BindBuffer(GL_ARRAY_BUFFER, s->vbo);
@@ -374,7 +430,11 @@ static void mark_projected(ww_stencil_shadows *s, ww_renderer *r, const ww_frame
     const ww_gl *gl = r->gl;
     mat4 S, vps;
     float y0 = (float)(f->sc->water_level - f->sc->water_depth - f->cam_pos[1]) + PLANE_LIFT;
-    shadow_matrix(f->st->sun_dir, y0, S);
+    /* along the sunlight under the water; casters above it are first moved to where the bent
+     * ray lands (shadow.glsl's ww_shadow_unbend, the geometry's mark stage) */
+    double u[3];
+    ww_sun_in_water(f->st->sun_dir, u);
+    shadow_matrix(u, y0, S);
     glm_mat4_mul(view_proj, S, vps);
     gl->StencilFunc(GL_ALWAYS, 1, 0xFF);
     gl->StencilOpSeparate(GL_FRONT_AND_BACK, GL_KEEP, GL_KEEP, GL_REPLACE);
