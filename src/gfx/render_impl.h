@@ -72,6 +72,7 @@ typedef struct ww_pass_ops {
 
 extern const ww_pass_ops ww_pass_main_ops;    /* pass_main.c */
 extern const ww_pass_ops ww_pass_tonemap_ops; /* pass_tonemap.c */
+extern const ww_pass_ops ww_pass_skymap_ops;  /* pass_skymap.c */
 extern const ww_pass_ops ww_pass_shadow_ops;  /* pass_shadow.c */
 extern const ww_pass_ops ww_pass_prepass_ops; /* pass_prepass.c */
 extern const ww_pass_ops ww_pass_reflection_ops; /* pass_reflection.c */
@@ -235,10 +236,17 @@ GLint ww_gfx_uniform(const ww_gl *gl, GLuint prog, const char *name);
 typedef struct ww_sky_locs {
     GLint zenith, horizon, sun_dir, sun_color;
     GLint perez, zen, psun, mode, clouds; /* Preetham's sky and the clouds (common.glsl) */
+    GLint sky_map;                        /* u_sky_map (WW_SKY_MAP), -1 when not built */
     int physical;                         /* the sky is Preetham's (preetham, dome) */
     double turbidity, cover, speed;       /* the scene's sky.turbidity, sky.clouds */
     double origin[2];                     /* the clouds' start in the noise (sky.clouds.seed) */
 } ww_sky_locs;
+/* the texture unit the sky map (pass_skymap.c) stays bound to for the whole frame; no other
+ * program uses it */
+#define WW_TEX_SKY_MAP 15
+/* "#define WW_SKY_MAP 1\n" when the scene's sky is drawn from the map, "" otherwise: the
+ * programs that include common.glsl add it to their defines */
+const char *ww_sky_map_define(const ww_scene *sc);
 /* sc: the scene whose sky (model, turbidity, clouds) the program draws */
 void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l);
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);

@@ -15,6 +15,7 @@
 
 /* the passes a plan may name; a new pass is a pass_xxx.c and one line here */
 static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
+    [WW_PASS_SKYMAP] = &ww_pass_skymap_ops,
     [WW_PASS_SHADOW] = &ww_pass_shadow_ops,
     [WW_PASS_PREPASS] = &ww_pass_prepass_ops,
     [WW_PASS_REFLECTION] = &ww_pass_reflection_ops,
