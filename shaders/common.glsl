@@ -76,18 +76,18 @@ vec3 ww_sky_with_clouds(vec3 m, vec3 d, float a) {
 }
 
 // ---- the sky map (WW_SKY_MAP, gfx/pass_skymap.c) -------------------------------------------------
-// Preetham's sky costs an exp per Perez term and its clouds four octaves of hashed noise a pixel;
-// the sky pass, the reflection, the water's reflected and refracted rays and the objects' sky
-// reflections would each pay them. Instead the skymap pass evaluates the clear sky
-// (ww_sky_exact_clear) and the cloud cover (ww_sky_cloud) once a frame (the clouds drift) for every
-// direction of a WW_SKY_MAP_WIDTH x HEIGHT latitude-longitude map, which the pixels sample
-// bilinearly. The rows are spaced by the square root of the elevation, t = sign(e) sqrt(|e| /
-// (pi / 2)), so the haze band of the last degrees above the horizon (exp(-40 elevation)) gets a
-// row every few hundredths of a degree there; the columns wrap (GL_REPEAT) where the azimuth
-// does. The clear sky is smooth and loses nothing to the map; the clouds' edges are sharp (a
-// smoothstep of the noise) and a texel spans ~0.7 deg, so the sky pass, which shows them
-// directly, still evaluates the cover per pixel (ww_sky_sharp) and only the reflected and
-// refracted views take it from the map. The sun disc stays analytic (ww_sun_disc).
+// Preetham's sky costs an exp per Perez term and its clouds four octaves of hashed noise a
+// pixel; the sky pass, the reflection, the water's reflected and refracted rays and the objects'
+// sky reflections would each pay them. Instead the skymap pass evaluates the clear sky
+// (ww_sky_exact_clear) and the cloud cover (ww_sky_cloud) once a frame (the clouds drift) for
+// every direction of a latitude-longitude map (size: scene/plan.h, WW_SKY_MAP_WIDTH), which the
+// pixels sample bilinearly. The rows are spaced by the square root of the elevation,
+// t = sign(e) sqrt(|e| / (pi / 2)), so the haze band of the last degrees above the horizon
+// (exp(-40 elevation)) gets a row every few hundredths of a degree there; the columns wrap
+// (GL_REPEAT) where the azimuth does. The clear sky is smooth and loses nothing to the map; the
+// clouds' edges are sharp (a smoothstep of the noise) and a texel spans ~0.7 deg, so the sky
+// pass, which shows them directly, still evaluates the cover per pixel (ww_sky_sharp) and only
+// the reflected and refracted views take it from the map. The sun disc stays analytic.
 #ifndef WW_SKY_MAP
 #define WW_SKY_MAP 0
 #endif

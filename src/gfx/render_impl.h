@@ -82,11 +82,14 @@ extern const ww_pass_ops ww_pass_shafts_ops;  /* pass_shafts.c */
 extern const ww_pass_ops ww_pass_fxaa_ops;    /* pass_fxaa.c */
 extern const ww_pass_ops ww_pass_hud_ops;     /* pass_hud.c */
 
-/* pass_bloom.c: the blur's 9-tap binomial kernel as 5 bilinear fetches: the centre weight and
- * offset 0, then two (weight, offset in texels) each fetched on both sides; the 9 weights sum
- * to weight[0] + 2 (weight[1] + weight[2]) = 1 */
-#define WW_BLOOM_FETCHES 3
-void ww_bloom_kernel(float weight[WW_BLOOM_FETCHES], float offset[WW_BLOOM_FETCHES]);
+/* pass_bloom.c: the blur of `passes` (render.bloom.passes) rounds of the 9-tap binomial kernel,
+ * convolved into one kernel and read as bilinear fetches: the centre weight and offset 0, then
+ * (weight, offset in texels) pairs each fetched on both sides; returns how many entries (n) it
+ * filled, the weights summing to weight[0] + 2 (weight[1] + ... + weight[n - 1]) = 1. One pass
+ * gives Rakos's 5 fetches (n = 3). */
+#define WW_BLOOM_MAX_FETCHES 16
+int ww_bloom_kernel(int passes, float weight[WW_BLOOM_MAX_FETCHES],
+                    float offset[WW_BLOOM_MAX_FETCHES]);
 
 typedef struct ww_pass {
     ww_pass_id id;

@@ -205,7 +205,8 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     if (ww_sky_map_on(sc)) {
         add_pass(p, WW_PASS_SKYMAP, "skymap",
                  "Preetham's sky and clouds per direction, sampled by the sky, water, reflection");
-        add_target(p, "sky", WW_FMT_RGBA16F, WW_SKY_MAP_WIDTH, WW_SKY_MAP_HEIGHT);
+        int k = rd->sky == WW_SKY_PREETHAM && rd->cloud_cover > 0.0 ? WW_SKY_MAP_CLOUDS : 1;
+        add_target(p, "sky", WW_FMT_RGBA16F, k * WW_SKY_MAP_WIDTH, k * WW_SKY_MAP_HEIGHT);
     }
     if (rd->shadows.on && casters && rd->shadows.technique == WW_SHADOW_MAP) {
         add_pass(p, WW_PASS_SHADOW, "shadow", "sun depth map, orthographic, fitted to the view; PCF");
