@@ -45,5 +45,8 @@ void main() {
         c = vec3(1.0) - exp(-x); // exp: 1 - e^(-E c), seed 000
     }
     vec3 g = pow(c, vec3(1.0 / u_gamma));
-    o_color = vec4(g, u_luma_alpha != 0 ? dot(g, vec3(0.299, 0.587, 0.114)) : 1.0);
+    // the luma of the colour as the RGBA8 target will hold it (rounded to 8 bits), as FXAA
+    // computed it from the stored image before
+    vec3 g8 = floor(clamp(g, 0.0, 1.0) * 255.0 + 0.5) * (1.0 / 255.0);
+    o_color = vec4(g, u_luma_alpha != 0 ? dot(g8, vec3(0.299, 0.587, 0.114)) : 1.0);
 }
