@@ -1,9 +1,9 @@
 #version 330 core
 // bloom_blur.frag.glsl - one direction of the separable Gaussian: render.bloom.passes rounds of
-// a 9-tap binomial kernel merged into one, read with 2 WW_BLOOM_FETCHES - 1 bilinear fetches, each pair
-// of neighbouring taps merged into one fetch between them at the offset weighted by their
-// weights (Rakos, "Efficient Gaussian blur with linear sampling", 2010). Weights and offsets
-// come from pass_bloom.c (ww_bloom_kernel).
+// a 9-tap binomial kernel merged into one, read with 2 WW_BLOOM_FETCHES - 1 bilinear fetches,
+// each pair of neighbouring taps merged into one fetch between them at the offset weighted by
+// their weights (Rakos, "Efficient Gaussian blur with linear sampling", 2010). Weights and
+// offsets come from pass_bloom.c (ww_bloom_kernel).
 
 uniform sampler2D u_src;  // linear filtering on
 uniform vec2 u_dir;       // one texel along the blur direction, in texture coordinates

@@ -62,7 +62,8 @@ vec3 ww_sky_exact_clear(vec3 d) {
         c = mix(u_sky_horizon, u_sky_zenith, sqrt(d.y));
     else
         c = u_sky_horizon * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
-    if (u_sky_mode.x > 0.5 && u_sky_mode.y > 0.0) c = mix(c, ww_sky_physical_clear(d), u_sky_mode.y);
+    if (u_sky_mode.x > 0.5 && u_sky_mode.y > 0.0)
+        c = mix(c, ww_sky_physical_clear(d), u_sky_mode.y);
     return c + ww_sun_glow(d);
 }
 
@@ -75,7 +76,7 @@ vec3 ww_sky_with_clouds(vec3 m, vec3 d, float a) {
     return mix(c, ww_sky_clouds_over(c, d, a), min(u_sky_mode.y, 1.0)) + g;
 }
 
-// ---- the sky map (WW_SKY_MAP, gfx/pass_skymap.c) -------------------------------------------------
+// ---- the sky map (WW_SKY_MAP, gfx/pass_skymap.c) ---------------------------------------------
 // Preetham's sky costs an exp per Perez term and its clouds four octaves of hashed noise a
 // pixel; the sky pass, the reflection, the water's reflected and refracted rays and the objects'
 // sky reflections would each pay them. Instead the skymap pass evaluates the clear sky

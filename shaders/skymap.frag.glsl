@@ -1,8 +1,8 @@
 #version 330 core
 // skymap.frag.glsl - the sky map (gfx/pass_skymap.c; common.glsl's WW_SKY_MAP): each texel the
-// exact clear sky (ww_sky_exact_clear) and the cloud cover along the direction its centre stands for, the
-// inverse of common.glsl's ww_sky_map_uv: azimuth 2 pi (u - 1/2), elevation sign(t) t^2 pi / 2
-// with t = 2 v - 1.
+// exact clear sky (ww_sky_exact_clear) and the cloud cover along the direction its centre stands
+// for, the inverse of common.glsl's ww_sky_map_uv: azimuth 2 pi (u - 1/2), elevation
+// sign(t) t^2 pi / 2 with t = 2 v - 1.
 
 in vec2 v_ndc;
 out vec4 o_color;

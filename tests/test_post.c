@@ -190,8 +190,8 @@ TEST(post_bloom_rounds_merged) {
     double v1 = bloom_variance(1, &f1);
     for (int n = 2; n <= 16; n++) {
         double vn = bloom_variance(n, &fn);
-        ENSURE_MSG(fabs(vn / (n * v1) - 1.0) < BLOOM_MERGED_VAR_TOL, "%d rounds: variance %.4f, %d x %.4f",
-                   n, vn, n, v1);
+        ENSURE_MSG(fabs(vn / (n * v1) - 1.0) < BLOOM_MERGED_VAR_TOL,
+                   "%d rounds: variance %.4f, %d x %.4f", n, vn, n, v1);
         ENSURE_MSG(fn < n * f1, "%d rounds: %d fetches", n, fn);
     }
 }

@@ -228,7 +228,8 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     ww_water_waves_init(sc, &w->waves);
     char more[160];
     snprintf(more, sizeof more,
-             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n%s",
+             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_SKY_DOME_IMAGE %d\n%s",
              foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc),
              ww_sky_map_define(sc));
     ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
