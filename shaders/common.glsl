@@ -34,13 +34,16 @@ uniform vec2 u_sky_mode;      // (1: Preetham's sky, its share against the twili
 uniform vec4 u_sky_clouds;    // (cover 0..1, 0 none; drift x, z in noise units; -)
 
 vec3 ww_sky_physical(vec3 d); // below, after the noise it draws the clouds with
+vec3 ww_sky_physical_clear(vec3 d);
+vec3 ww_sky_clouds_over(vec3 c, vec3 d, float a);
 float ww_acos(float x);
 float ww_sky_cloud(vec3 d);
 
 // the sky seen along unit direction d, without the sun disc: a gradient from the horizon to the
 // zenith, the horizon colour slightly darkened below the horizon, and the glow; by day (the
-// preetham and dome models) Preetham's sky instead of the gradient
-vec3 ww_sky(vec3 d) {
+// preetham and dome models) Preetham's sky instead of the gradient. Evaluated per pixel; with
+// WW_SKY_MAP the pixels take it from the sky map instead (ww_sky below)
+vec3 ww_sky_exact(vec3 d) {
     if (u_sky_mode.x > 0.5 && u_sky_mode.y >= 1.0) return ww_sky_physical(d) + ww_sun_glow(d);
     vec3 c;
     if (d.y >= 0.0)
@@ -50,6 +53,66 @@ vec3 ww_sky(vec3 d) {
     if (u_sky_mode.x > 0.5 && u_sky_mode.y > 0.0) c = mix(c, ww_sky_physical(d), u_sky_mode.y);
     return c + ww_sun_glow(d);
 }
+
+// the same without the clouds (what the sky map holds)
+vec3 ww_sky_exact_clear(vec3 d) {
+    if (u_sky_mode.x > 0.5 && u_sky_mode.y >= 1.0) return ww_sky_physical_clear(d) + ww_sun_glow(d);
+    vec3 c;
+    if (d.y >= 0.0)
+        c = mix(u_sky_horizon, u_sky_zenith, sqrt(d.y));
+    else
+        c = u_sky_horizon * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
+    if (u_sky_mode.x > 0.5 && u_sky_mode.y > 0.0)
+        c = mix(c, ww_sky_physical_clear(d), u_sky_mode.y);
+    return c + ww_sun_glow(d);
+}
+
+// the clouds of cover a over the clear sky m along d, as ww_sky_exact draws them: over Preetham's
+// sky (its share u_sky_mode.y), under the glow. Exact by day (share 1); in the twilight fade the
+// clouds blend over the gradient's share too (the map keeps one clear colour)
+vec3 ww_sky_with_clouds(vec3 m, vec3 d, float a) {
+    if (a <= 0.0 || d.y <= 0.0 || u_sky_mode.x < 0.5) return m;
+    vec3 g = ww_sun_glow(d), c = m - g;
+    return mix(c, ww_sky_clouds_over(c, d, a), min(u_sky_mode.y, 1.0)) + g;
+}
+
+// ---- the sky map (WW_SKY_MAP, gfx/pass_skymap.c) ---------------------------------------------
+// Preetham's sky costs an exp per Perez term and its clouds four octaves of hashed noise a
+// pixel; the sky pass, the reflection, the water's reflected and refracted rays and the objects'
+// sky reflections would each pay them. Instead the skymap pass evaluates the clear sky
+// (ww_sky_exact_clear) and the cloud cover (ww_sky_cloud) once a frame (the clouds drift) for
+// every direction of a latitude-longitude map (size: scene/plan.h, WW_SKY_MAP_WIDTH), which the
+// pixels sample bilinearly. The rows are spaced by the square root of the elevation,
+// t = sign(e) sqrt(|e| / (pi / 2)), so the haze band of the last degrees above the horizon
+// (exp(-40 elevation)) gets a row every few hundredths of a degree there; the columns wrap
+// (GL_REPEAT) where the azimuth does. The clear sky is smooth and loses nothing to the map; the
+// clouds' edges are sharp (a smoothstep of the noise) and a texel spans ~0.7 deg, so the sky
+// pass, which shows them directly, still evaluates the cover per pixel (ww_sky_sharp) and only
+// the reflected and refracted views take it from the map. The sun disc stays analytic.
+#ifndef WW_SKY_MAP
+#define WW_SKY_MAP 0
+#endif
+#if WW_SKY_MAP
+uniform sampler2D u_sky_map; // RGBA16F: (clear sky radiance, cloud cover)
+
+vec2 ww_sky_map_uv(vec3 d) {
+    float e = 0.5 * WW_PI - ww_acos(clamp(d.y, -1.0, 1.0)); // elevation
+    float t = sqrt(abs(e) * (2.0 / WW_PI));
+    return vec2(atan(d.z, d.x) * (0.5 / WW_PI) + 0.5, 0.5 + 0.5 * (e < 0.0 ? -t : t));
+}
+
+vec3 ww_sky(vec3 d) {
+    vec4 m = texture(u_sky_map, ww_sky_map_uv(d));
+    return ww_sky_with_clouds(m.rgb, d, m.a);
+}
+// the sky seen directly: the clouds' edges per pixel
+vec3 ww_sky_sharp(vec3 d, float cover) {
+    return ww_sky_with_clouds(texture(u_sky_map, ww_sky_map_uv(d)).rgb, d, cover);
+}
+#else
+vec3 ww_sky(vec3 d) { return ww_sky_exact(d); }
+vec3 ww_sky_sharp(vec3 d, float cover) { return ww_sky_exact(d); }
+#endif
 
 // the sun disc with a smooth edge; |d - sun| is the angle between them for small angles
 vec3 ww_sun_disc(vec3 d) {
@@ -356,7 +419,17 @@ float ww_acos(float x) {
     return x < 0.0 ? WW_PI - r : r;
 }
 
-vec3 ww_sky_physical(vec3 d) {
+// the clouds of cover a (ww_sky_cloud) over the sky colour c along d (above the horizon): lit by
+// the sun (brighter toward it, the forward lobe) and by the sky; thick cores darker
+vec3 ww_sky_clouds_over(vec3 c, vec3 d, float a) {
+    if (a <= 0.0) return c;
+    float mu = dot(d, u_sun_dir);
+    vec3 light = u_sun_color * (0.35 + 0.25 * (1.0 + mu)) + 0.6 * (u_sky_zenith + u_sky_horizon);
+    return mix(c, light * (1.0 - 0.3 * a * a), a);
+}
+
+// Preetham's sky along d without its clouds
+vec3 ww_sky_physical_clear(vec3 d) {
     vec3 e = normalize(vec3(d.x, max(d.y, 0.0), d.z)); // below the horizon: the horizon's
     float cg = clamp(dot(e, u_perez_sun), -1.0, 1.0);
     vec3 yxy = u_perez_zenith * ww_perez(max(e.y, 0.02), ww_acos(cg), cg);
@@ -365,14 +438,10 @@ vec3 ww_sky_physical(vec3 d) {
     vec3 c = max(mat3(3.2406, -0.9689, 0.0557, -1.5372, 1.8758, -0.2040, -0.4986, 0.0415, 1.0570) *
                      xyz, vec3(0.0));
     c = mix(c, u_sky_horizon, exp(-WW_HAZE_BAND * max(d.y, 0.0)));
-    if (d.y < 0.0) return c * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y));
-    float a = ww_sky_cloud(d);
-    if (a > 0.0) {
-        // lit by the sun (brighter toward it, the forward lobe) and by the sky; thick cores
-        // darker
-        float mu = dot(d, u_sun_dir);
-        vec3 light = u_sun_color * (0.35 + 0.25 * (1.0 + mu)) + 0.6 * (u_sky_zenith + u_sky_horizon);
-        c = mix(c, light * (1.0 - 0.3 * a * a), a);
-    }
-    return c;
+    return d.y < 0.0 ? c * (1.0 - 0.25 * smoothstep(0.0, 0.3, -d.y)) : c;
+}
+
+vec3 ww_sky_physical(vec3 d) {
+    vec3 c = ww_sky_physical_clear(d);
+    return d.y < 0.0 ? c : ww_sky_clouds_over(c, d, ww_sky_cloud(d));
 }

@@ -6,7 +6,9 @@
 // edge both ways for its ends (luma leaving the edge's average by a quarter of the gradient),
 // in growing steps; (5) the pixel's offset across the edge from its place in the span, or the
 // subpixel amount when larger; one bilinear fetch at the offset position.
-// Luma is computed from the gamma-encoded RGB here (seed 000 reads the alpha-less LDR image).
+// Luma is the gamma-encoded RGB's, which the tone mapping writes into alpha (pass_tonemap.c):
+// each of the up to 19 taps fetches it instead of computing it (seed 000 reads the alpha-less
+// LDR image and computes it per tap).
 
 uniform sampler2D u_ldr;  // tone-mapped sRGB8 image, bilinear
 
@@ -22,10 +24,9 @@ const float SUBPIX = 0.75;              // amount of subpixel aliasing removal
 const int SEARCH_STEPS = 5;
 const float STEP[5] = float[5](1.0, 1.5, 2.0, 4.0, 12.0);
 
-float luma(vec3 c) { return dot(c, vec3(0.299, 0.587, 0.114)); }
-float luma_at(vec2 uv) { return luma(textureLod(u_ldr, uv, 0.0).rgb); }
+float luma_at(vec2 uv) { return textureLod(u_ldr, uv, 0.0).a; }
 float luma_px(ivec2 p) {
-    return luma(texelFetch(u_ldr, clamp(p, ivec2(0), textureSize(u_ldr, 0) - 1), 0).rgb);
+    return texelFetch(u_ldr, clamp(p, ivec2(0), textureSize(u_ldr, 0) - 1), 0).a;
 }
 
 void main() {
@@ -35,7 +36,7 @@ void main() {
     vec4 rgbM = texelFetch(u_ldr, px, 0);
 
     // (1) local contrast of the cross
-    float M = luma(rgbM.rgb);
+    float M = rgbM.a;
     float N = luma_px(px + ivec2(0, 1)), S = luma_px(px + ivec2(0, -1));
     float E = luma_px(px + ivec2(1, 0)), W = luma_px(px + ivec2(-1, 0));
     float hi = max(max(max(N, S), max(E, W)), M);

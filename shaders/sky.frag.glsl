@@ -44,6 +44,7 @@ void main() {
     vec4 dome = ww_sky_dome(d, u_drift);
     o_color = vec4(dome.rgb * u_intensity + ww_sun_disc(d) * (1.0 - dome.a), 1.0);
 #else
-    o_color = vec4(ww_sky(d) + ww_sun_disc(d) * (1.0 - ww_sky_cloud(d)), 1.0);
+    float cover = ww_sky_cloud(d);
+    o_color = vec4(ww_sky_sharp(d, cover) + ww_sun_disc(d) * (1.0 - cover), 1.0);
 #endif
 }

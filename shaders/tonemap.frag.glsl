@@ -1,7 +1,8 @@
 #version 330 core
 // tonemap.frag.glsl - HDR to display (seed 000's composite): the main pass's colour plus the
 // blurred bloom times its strength plus the light shafts, both upsampled bilinearly from their
-// smaller targets; then exposure, a tone curve and gamma encoding; alpha is 1.
+// smaller targets; then exposure, a tone curve and gamma encoding; alpha is 1, or with FXAA after
+// it (u_luma_alpha) the luma FXAA reads, so FXAA fetches it instead of computing it per tap.
 
 uniform sampler2D u_hdr;    // linear HDR colour, same size as the output
 uniform sampler2D u_bloom;  // blurred bright light (bilinear), when u_bloom_on
@@ -11,6 +12,7 @@ uniform float u_bloom_strength;
 uniform float u_exposure; // E
 uniform float u_gamma;    // display gamma
 uniform int u_op;         // 0: exponential, 1: ACES (Narkowicz fit), half hue-preserving
+uniform int u_luma_alpha; // 1: alpha = the gamma-encoded colour's luma (fxaa.frag.glsl's)
 
 out vec4 o_color;
 
@@ -42,5 +44,9 @@ void main() {
     } else {
         c = vec3(1.0) - exp(-x); // exp: 1 - e^(-E c), seed 000
     }
-    o_color = vec4(pow(c, vec3(1.0 / u_gamma)), 1.0);
+    vec3 g = pow(c, vec3(1.0 / u_gamma));
+    // the luma of the colour as the RGBA8 target will hold it (rounded to 8 bits), as FXAA
+    // computed it from the stored image before
+    vec3 g8 = floor(clamp(g, 0.0, 1.0) * 255.0 + 0.5) * (1.0 / 255.0);
+    o_color = vec4(g, u_luma_alpha != 0 ? dot(g8, vec3(0.299, 0.587, 0.114)) : 1.0);
 }

@@ -13,6 +13,9 @@
 #include "test.h"
 
 #define BLOOM_KERNEL_TOL 1e-6
+/* the merged kernel's variance against n rounds': its dropped tail (pass_bloom.c BLOOM_TAIL,
+ * 2e-3 of the weight beyond ~3.3 sigma) takes at most ~2.5% of it */
+#define BLOOM_MERGED_VAR_TOL 0.03
 /* what may bloom: pixels whose exposed luminance reaches the knee's start, threshold 1 - knee
  * 0.5, which the scene's exp curve and gamma 2.2 put at 255 (1 - e^-0.5)^(1 / 2.2) = 165 */
 #define BLOOM_BRIGHT_LUMA 165
@@ -152,8 +155,8 @@ static masked count_in_mask(const pic *a, const pic *b, const unsigned char *mas
 }
 
 TEST(post_bloom_kernel_sums_to_one) {
-    float w[WW_BLOOM_FETCHES], o[WW_BLOOM_FETCHES];
-    ww_bloom_kernel(w, o);
+    float w[WW_BLOOM_MAX_FETCHES], o[WW_BLOOM_MAX_FETCHES];
+    ENSURE_EQ_INT(ww_bloom_kernel(1, w, o), 3);
     ENSURE_NEAR(w[0] + 2.0 * (w[1] + w[2]), 1.0, BLOOM_KERNEL_TOL);
     /* Rakos 2010's published figures for the same kernel */
     ENSURE_NEAR(w[0], 0.2270270270, BLOOM_KERNEL_TOL);
@@ -161,6 +164,36 @@ TEST(post_bloom_kernel_sums_to_one) {
     ENSURE_NEAR(w[2], 0.0702702703, BLOOM_KERNEL_TOL);
     ENSURE_NEAR(o[1], 1.3846153846, BLOOM_KERNEL_TOL);
     ENSURE_NEAR(o[2], 3.2307692308, BLOOM_KERNEL_TOL);
+}
+
+/* rounds of the 9-tap kernel merged into one (one pass pair for render.bloom.passes rounds):
+ * the variances of convolved kernels add, so n rounds spread n times the one round's variance,
+ * less what the dropped faint taps held (BLOOM_TAIL); and it takes fewer fetches than the rounds */
+static double bloom_variance(int passes, int *fetches) {
+    float w[WW_BLOOM_MAX_FETCHES], o[WW_BLOOM_MAX_FETCHES];
+    int n = ww_bloom_kernel(passes, w, o);
+    *fetches = 2 * n - 1;
+    double v = 0.0, sum = w[0];
+    for (int i = 1; i < n; i++) {
+        /* the fetch between taps a and a + 1 at offset o splits back into its two taps */
+        int a = 2 * i - 1;
+        double wb = w[i] * (o[i] - a), wa = w[i] - wb;
+        v += 2.0 * (wa * a * a + wb * (a + 1) * (a + 1));
+        sum += 2.0 * w[i];
+    }
+    ENSURE_NEAR(sum, 1.0, BLOOM_KERNEL_TOL);
+    return v;
+}
+
+TEST(post_bloom_rounds_merged) {
+    int f1, fn;
+    double v1 = bloom_variance(1, &f1);
+    for (int n = 2; n <= 16; n++) {
+        double vn = bloom_variance(n, &fn);
+        ENSURE_MSG(fabs(vn / (n * v1) - 1.0) < BLOOM_MERGED_VAR_TOL,
+                   "%d rounds: variance %.4f, %d x %.4f", n, vn, n, v1);
+        ENSURE_MSG(fn < n * f1, "%d rounds: %d fetches", n, fn);
+    }
 }
 
 TEST_IMAGE(post_bloom_golden) {

@@ -90,7 +90,7 @@ TEST(render_keys_plan_follows_switches) {
         {"render.shadows=false", WW_PASS_SHADOW},   {"render.refraction=false", WW_PASS_PREPASS},
         {"render.reflection=false", WW_PASS_REFLECTION}, {"render.bloom=false", WW_PASS_BLOOM},
         {"render.god_rays=false", WW_PASS_SHAFTS},  {"render.fxaa=false", WW_PASS_FXAA},
-        {"render.hud=[]", WW_PASS_HUD},
+        {"render.hud=[]", WW_PASS_HUD},     {"sky.model=gradient", WW_PASS_SKYMAP},
     };
     ww_scene *sc = load(text, NULL, 0);
     if (!sc) return;

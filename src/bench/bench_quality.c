@@ -298,7 +298,7 @@ done:
 /* the plan's name of a pass id, for the table */
 static const char *pass_name(ww_pass_id id) {
     static const char *const names[WW_PASS_COUNT] = {
-        [WW_PASS_SHADOW] = "shadow", [WW_PASS_PREPASS] = "prepass",
+        [WW_PASS_SKYMAP] = "skymap", [WW_PASS_SHADOW] = "shadow", [WW_PASS_PREPASS] = "prepass",
         [WW_PASS_REFLECTION] = "reflection", [WW_PASS_MAIN] = "main", [WW_PASS_BLOOM] = "bloom",
         [WW_PASS_SHAFTS] = "shafts", [WW_PASS_TONEMAP] = "tonemap", [WW_PASS_FXAA] = "fxaa",
         [WW_PASS_HUD] = "hud"};

@@ -1,11 +1,15 @@
 /* pass_bloom.c - bloom (seed 000): a bright pass that also downsamples the main pass's HDR
- * colour into the half-resolution `ping` target (bloom_bright.frag.glsl), then render.bloom.passes
- * pairs of horizontal + vertical Gaussian blurs ping -> pong -> ping (bloom_blur.frag.glsl).
- * The blurred light ends in `ping`; the tone mapping pass adds it (pass_tonemap.c).
- * Seed 000 blurs at half resolution with a plain 9-tap kernel; here the kernel is merged into 5
- * bilinear fetches and ping and pong have a framebuffer each, so no pass reads a texture that is
- * attached to the framebuffer it draws into.
+ * colour into the half-resolution `ping` target (bloom_bright.frag.glsl), then one horizontal and
+ * one vertical Gaussian blur ping -> pong -> ping (bloom_blur.frag.glsl) whose kernel is
+ * render.bloom.passes rounds of the 9-tap binomial one convolved together. The blurred light
+ * ends in `ping`; the tone mapping pass adds it (pass_tonemap.c).
+ * Seed 000 blurs at half resolution with a plain 9-tap kernel, once per pass; rounds of a kernel
+ * are one wider kernel (a convolution of convolutions), so here the rounds are merged into one
+ * pass pair and the kernel's neighbouring taps into bilinear fetches: 3 rounds took 6 passes of
+ * 5 fetches, now 2 passes of 11, the same picture. ping and pong have a framebuffer each, so no
+ * pass reads a texture that is attached to the framebuffer it draws into.
  */
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "gfx/render_impl.h"
@@ -14,11 +18,16 @@
  * 9-tap kernel close to a Gaussian of sigma ~1.7 texels (Rakos 2010: 924 792 495 220 66) */
 #define BLOOM_BINOMIAL_ROW 12
 #define BLOOM_KNEE 0.5 /* soft knee half-width as a fraction of the threshold */
+/* the merged kernel's outer taps are dropped while the weight they hold together (both sides)
+ * stays below this share; the rest is renormalised */
+#define BLOOM_TAIL 2e-3
+#define BLOOM_MAX_TAPS (2 * (WW_BLOOM_MAX_FETCHES - 1)) /* taps each side the fetches can hold */
 
-void ww_bloom_kernel(float weight[WW_BLOOM_FETCHES], float offset[WW_BLOOM_FETCHES]) {
-    /* C(n, n/2 + i) for i = 0..4, normalised over the 9 taps -4..4 */
-    double c[5], sum = 0.0;
+/* the 9-tap kernel's five weights, centre first, normalised */
+static void bloom_taps(double c[5]) {
+    double sum = 0.0;
     for (int i = 0; i < 5; i++) {
+        /* C(n, n/2 + i) */
         int k = BLOOM_BINOMIAL_ROW / 2 + i;
         double b = 1.0;
         for (int j = 1; j <= BLOOM_BINOMIAL_ROW - k; j++) b = b * (double)(k + j) / (double)j;
@@ -26,15 +35,47 @@ void ww_bloom_kernel(float weight[WW_BLOOM_FETCHES], float offset[WW_BLOOM_FETCH
         sum += i == 0 ? b : 2.0 * b;
     }
     for (int i = 0; i < 5; i++) c[i] /= sum;
-    /* taps 1 and 2, 3 and 4 each become one bilinear fetch at their weighted mean offset */
-    weight[0] = (float)c[0];
-    offset[0] = 0.0f;
-    for (int m = 1; m < WW_BLOOM_FETCHES; m++) {
-        int a = 2 * m - 1, b = 2 * m;
-        double w = c[a] + c[b];
-        weight[m] = (float)w;
-        offset[m] = (float)((a * c[a] + b * c[b]) / w);
+}
+
+int ww_bloom_kernel(int passes, float weight[WW_BLOOM_MAX_FETCHES],
+                    float offset[WW_BLOOM_MAX_FETCHES]) {
+    enum { R_MAX = 4 * 16 }; /* render.bloom.passes at most 16 (compile_render.c) */
+    double c[5], k[2 * R_MAX + 1] = {0.0}, t[2 * R_MAX + 1];
+    bloom_taps(c);
+    if (passes < 1) passes = 1;
+    if (passes > R_MAX / 4) passes = R_MAX / 4;
+    /* the rounds convolved: k = c * c * ... (passes times), taps -4 passes .. 4 passes */
+    k[R_MAX] = 1.0;
+    for (int p = 0; p < passes; p++) {
+        for (int i = 0; i <= 2 * R_MAX; i++) {
+            double s = 0.0;
+            for (int j = -4; j <= 4; j++) {
+                int m = i - j;
+                if (m >= 0 && m <= 2 * R_MAX) s += c[j < 0 ? -j : j] * k[m];
+            }
+            t[i] = s;
+        }
+        for (int i = 0; i <= 2 * R_MAX; i++) k[i] = t[i];
     }
+    /* drop the faint outer taps (at most what the fetches hold), renormalise */
+    int r = 4 * passes;
+    double tail = 0.0;
+    while (r > 4 && (r > BLOOM_MAX_TAPS || tail + 2.0 * k[R_MAX + r] < BLOOM_TAIL)) {
+        tail += 2.0 * k[R_MAX + r];
+        r--;
+    }
+    double sum = 0.0;
+    for (int i = -r; i <= r; i++) sum += k[R_MAX + i];
+    /* taps 1 and 2, 3 and 4, ... each become one bilinear fetch at their weighted mean offset */
+    weight[0] = (float)(k[R_MAX] / sum);
+    offset[0] = 0.0f;
+    int n = 1;
+    for (int a = 1; a <= r; a += 2, n++) {
+        double wa = k[R_MAX + a], wb = a + 1 <= r ? k[R_MAX + a + 1] : 0.0, w = wa + wb;
+        weight[n] = (float)(w / sum);
+        offset[n] = (float)((a * wa + (a + 1) * wb) / w);
+    }
+    return n;
 }
 
 typedef struct bloom_pass {
@@ -46,7 +87,8 @@ typedef struct bloom_pass {
     GLuint bright, blur;
     GLint b_hdr, b_ratio, b_exposure, b_threshold, b_knee;
     GLint u_src, u_dir, u_weight, u_offset;
-    float weight[WW_BLOOM_FETCHES], offset[WW_BLOOM_FETCHES];
+    float weight[WW_BLOOM_MAX_FETCHES], offset[WW_BLOOM_MAX_FETCHES];
+    int fetches; /* entries of weight and offset in use */
 } bloom_pass;
 
 static void bloom_destroy(void *self, const ww_gl *gl) {
@@ -61,7 +103,6 @@ static void bloom_destroy(void *self, const ww_gl *gl) {
 
 static ww_result bloom_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
                               const ww_rt *rt, void **self, ww_error *err) {
-    (void)sc;
     const ww_gl *gl = r->gl;
     const ww_rt *in = ww_renderer_output(r, WW_PASS_MAIN);
     GLuint hdr = in ? ww_gfx_rt_texture(in, WW_FMT_RGBA16F) : 0;
@@ -88,9 +129,14 @@ static ww_result bloom_create(ww_renderer *r, const ww_scene *sc, const ww_pass_
 
     ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "bloom_bright.frag.glsl", NULL,
                                   &p->bright, err);
+    /* the fetch count is built in: llvmpipe unrolls a constant loop and indexes the weights
+     * directly, where a uniform count cost more than the six passes it replaces */
+    p->fetches = ww_bloom_kernel(sc->render.bloom.passes, p->weight, p->offset);
+    char defs[64];
+    snprintf(defs, sizeof defs, "#define WW_BLOOM_FETCHES %d\n", p->fetches);
     if (rc == WW_OK)
-        rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "bloom_blur.frag.glsl", NULL, &p->blur,
-                            err);
+        rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "bloom_blur.frag.glsl", NULL, defs,
+                                 &p->blur, err);
     if (rc != WW_OK) {
         bloom_destroy(p, gl);
         return rc;
@@ -104,7 +150,7 @@ static ww_result bloom_create(ww_renderer *r, const ww_scene *sc, const ww_pass_
     p->u_dir = ww_gfx_uniform(gl, p->blur, "u_dir");
     p->u_weight = ww_gfx_uniform(gl, p->blur, "u_weight");
     p->u_offset = ww_gfx_uniform(gl, p->blur, "u_offset");
-    ww_bloom_kernel(p->weight, p->offset);
+
     *self = p;
     return WW_OK;
 }
@@ -139,15 +185,13 @@ static ww_result bloom_run(void *self, ww_renderer *r, const ww_frame *f, ww_err
     gl->Uniform1f(p->b_knee, (float)(BLOOM_KNEE * b->threshold));
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
 
-    /* passes x (horizontal into pong, vertical back into ping) */
+    /* the merged rounds: horizontal into pong, vertical back into ping */
     gl->UseProgram(p->blur);
     gl->Uniform1i(p->u_src, 0);
-    gl->Uniform1fv(p->u_weight, WW_BLOOM_FETCHES, p->weight);
-    gl->Uniform1fv(p->u_offset, WW_BLOOM_FETCHES, p->offset);
-    for (int i = 0; i < b->passes; i++) {
-        bloom_blur(p, r, 1, 1.0f / (float)p->rt->width, 0.0f);
-        bloom_blur(p, r, 0, 0.0f, 1.0f / (float)p->rt->height);
-    }
+    gl->Uniform1fv(p->u_weight, p->fetches, p->weight);
+    gl->Uniform1fv(p->u_offset, p->fetches, p->offset);
+    bloom_blur(p, r, 1, 1.0f / (float)p->rt->width, 0.0f);
+    bloom_blur(p, r, 0, 0.0f, 1.0f / (float)p->rt->height);
     gl->BindTexture(GL_TEXTURE_2D, 0);
     return WW_OK;
 }

@@ -1,6 +1,7 @@
 /* pass_fxaa.c - FXAA (seed 000's last post pass; Lottes, FXAA 3.11 quality): reads the tone
  * mapping pass's RGBA8 image bilinearly and writes the anti-aliased image into its own RGBA8
- * target (fxaa.frag.glsl). Only pixels on luma edges change.
+ * target (fxaa.frag.glsl), its luma from the image's alpha (pass_tonemap.c writes it there).
+ * Only pixels on luma edges change.
  */
 #include <stdlib.h>
 

@@ -1,7 +1,8 @@
 /* pass_tonemap.c - HDR to display: reads the main pass's RGBA16F colour, adds the bloom
  * (pass_bloom.c's `ping`, times render.bloom.strength) and the light shafts (pass_shafts.c) when
  * those passes exist, applies exposure, the scene's tone curve (exp or ACES) and gamma, and
- * writes RGBA8 with alpha 1 (tonemap.frag.glsl). The smaller inputs are upsampled bilinearly.
+ * writes RGBA8 with alpha 1, or the luma FXAA reads when the FXAA pass follows
+ * (tonemap.frag.glsl). The smaller inputs are upsampled bilinearly.
  */
 #include <stdlib.h>
 
@@ -12,7 +13,8 @@ typedef struct tonemap_pass {
     GLuint hdr_tex;
     GLuint bloom_tex, shafts_tex; /* 0 when the pass is not planned */
     GLuint prog;
-    GLint hdr, exposure, gamma, op;
+    GLint hdr, exposure, gamma, op, luma_alpha;
+    int fxaa; /* the FXAA pass follows: alpha carries the luma it reads */
     GLint bloom, bloom_on, bloom_strength, shafts, shafts_on;
 } tonemap_pass;
 
@@ -25,7 +27,6 @@ static void tonemap_destroy(void *self, const ww_gl *gl) {
 
 static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
                                 const ww_rt *rt, void **self, ww_error *err) {
-    (void)sc;
     /* its input is the main pass's HDR colour, texel for texel */
     const ww_rt *in = ww_renderer_output(r, WW_PASS_MAIN);
     GLuint hdr = in ? ww_gfx_rt_texture(in, WW_FMT_RGBA16F) : 0;
@@ -56,6 +57,8 @@ static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     p->exposure = ww_gfx_uniform(r->gl, p->prog, "u_exposure");
     p->gamma = ww_gfx_uniform(r->gl, p->prog, "u_gamma");
     p->op = ww_gfx_uniform(r->gl, p->prog, "u_op");
+    p->luma_alpha = ww_gfx_uniform(r->gl, p->prog, "u_luma_alpha");
+    p->fxaa = sc->render.fxaa;
     p->bloom = ww_gfx_uniform(r->gl, p->prog, "u_bloom");
     p->bloom_on = ww_gfx_uniform(r->gl, p->prog, "u_bloom_on");
     p->bloom_strength = ww_gfx_uniform(r->gl, p->prog, "u_bloom_strength");
@@ -77,6 +80,7 @@ static ww_result tonemap_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
     gl->Uniform1f(p->exposure, (float)f->sc->exposure);
     gl->Uniform1f(p->gamma, (float)f->sc->gamma);
     gl->Uniform1i(p->op, f->sc->tonemap == WW_TONEMAP_ACES ? 1 : 0);
+    gl->Uniform1i(p->luma_alpha, p->fxaa);
     /* every sampler on its own unit, bound or not, so none aliases u_hdr's */
     gl->ActiveTexture(GL_TEXTURE1);
     gl->BindTexture(GL_TEXTURE_2D, p->bloom_tex);

@@ -72,6 +72,7 @@ typedef struct ww_pass_ops {
 
 extern const ww_pass_ops ww_pass_main_ops;    /* pass_main.c */
 extern const ww_pass_ops ww_pass_tonemap_ops; /* pass_tonemap.c */
+extern const ww_pass_ops ww_pass_skymap_ops;  /* pass_skymap.c */
 extern const ww_pass_ops ww_pass_shadow_ops;  /* pass_shadow.c */
 extern const ww_pass_ops ww_pass_prepass_ops; /* pass_prepass.c */
 extern const ww_pass_ops ww_pass_reflection_ops; /* pass_reflection.c */
@@ -81,11 +82,14 @@ extern const ww_pass_ops ww_pass_shafts_ops;  /* pass_shafts.c */
 extern const ww_pass_ops ww_pass_fxaa_ops;    /* pass_fxaa.c */
 extern const ww_pass_ops ww_pass_hud_ops;     /* pass_hud.c */
 
-/* pass_bloom.c: the blur's 9-tap binomial kernel as 5 bilinear fetches: the centre weight and
- * offset 0, then two (weight, offset in texels) each fetched on both sides; the 9 weights sum
- * to weight[0] + 2 (weight[1] + weight[2]) = 1 */
-#define WW_BLOOM_FETCHES 3
-void ww_bloom_kernel(float weight[WW_BLOOM_FETCHES], float offset[WW_BLOOM_FETCHES]);
+/* pass_bloom.c: the blur of `passes` (render.bloom.passes) rounds of the 9-tap binomial kernel,
+ * convolved into one kernel and read as bilinear fetches: the centre weight and offset 0, then
+ * (weight, offset in texels) pairs each fetched on both sides; returns how many entries (n) it
+ * filled, the weights summing to weight[0] + 2 (weight[1] + ... + weight[n - 1]) = 1. One pass
+ * gives Rakos's 5 fetches (n = 3). */
+#define WW_BLOOM_MAX_FETCHES 16
+int ww_bloom_kernel(int passes, float weight[WW_BLOOM_MAX_FETCHES],
+                    float offset[WW_BLOOM_MAX_FETCHES]);
 
 typedef struct ww_pass {
     ww_pass_id id;
@@ -239,10 +243,17 @@ void ww_sun_in_water(const double sun[3], double out[3]);
 typedef struct ww_sky_locs {
     GLint zenith, horizon, sun_dir, sun_color;
     GLint perez, zen, psun, mode, clouds; /* Preetham's sky and the clouds (common.glsl) */
+    GLint sky_map;                        /* u_sky_map (WW_SKY_MAP), -1 when not built */
     int physical;                         /* the sky is Preetham's (preetham, dome) */
     double turbidity, cover, speed;       /* the scene's sky.turbidity, sky.clouds */
     double origin[2];                     /* the clouds' start in the noise (sky.clouds.seed) */
 } ww_sky_locs;
+/* the texture unit the sky map (pass_skymap.c) stays bound to for the whole frame; no other
+ * program uses it */
+#define WW_TEX_SKY_MAP 15
+/* "#define WW_SKY_MAP 1\n" when the scene's sky is drawn from the map, "" otherwise: the
+ * programs that include common.glsl add it to their defines */
+const char *ww_sky_map_define(const ww_scene *sc);
 /* sc: the scene whose sky (model, turbidity, clouds) the program draws */
 void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l);
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);

@@ -15,6 +15,7 @@
 
 /* the passes a plan may name; a new pass is a pass_xxx.c and one line here */
 static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
+    [WW_PASS_SKYMAP] = &ww_pass_skymap_ops,
     [WW_PASS_SHADOW] = &ww_pass_shadow_ops,
     [WW_PASS_PREPASS] = &ww_pass_prepass_ops,
     [WW_PASS_REFLECTION] = &ww_pass_reflection_ops,
@@ -175,16 +176,27 @@ static void frame_camera(ww_frame *f, const ww_renderer *r) {
 
 /* ---- per-pass timing -------------------------------------------------------------------- */
 
+/* WW_PASS_CPU_TIME=1: the passes are timed by the process's CPU time (all of llvmpipe's threads)
+ * with glFinish between them, not by the wall clock or GL timers: on a machine shared with other
+ * work the wall time of a pass swells with whatever else runs, its CPU time much less (the
+ * before/after tables of docs/speed.md were measured so) */
+static int cpu_time_on(void) {
+    const char *e = getenv("WW_PASS_CPU_TIME");
+    return e && e[0] == '1';
+}
+
 static double now_ms(void) {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(cpu_time_on() ? CLOCK_PROCESS_CPUTIME_ID : CLOCK_MONOTONIC, &ts);
     return 1e3 * (double)ts.tv_sec + 1e-6 * (double)ts.tv_nsec;
 }
 
 const char *ww_timing_name(ww_timing mode) {
     switch (mode) {
     case WW_TIMING_GPU: return "gl timer queries";
-    case WW_TIMING_CPU: return "cpu wall time, glFinish between passes";
+    case WW_TIMING_CPU:
+        return cpu_time_on() ? "process cpu time (WW_PASS_CPU_TIME), glFinish between passes"
+                             : "cpu wall time, glFinish between passes";
     case WW_TIMING_AUTO: return "auto";
     case WW_TIMING_OFF: break;
     }
@@ -214,7 +226,7 @@ ww_timing ww_renderer_time_passes(ww_renderer *r, ww_timing mode) {
         /* GL 3.3 has ARB_timer_query in core, but a driver may give its counter no bits */
         GLint bits = 0;
         gl->GetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
-        mode = bits > 0 ? WW_TIMING_GPU : WW_TIMING_CPU;
+        mode = bits > 0 && !cpu_time_on() ? WW_TIMING_GPU : WW_TIMING_CPU;
     }
     if (mode == WW_TIMING_GPU)
         for (int s = 0; s < WW_TIMER_RING; s++) gl->GenQueries(WW_PASS_COUNT, tm->query[s]);

@@ -49,6 +49,7 @@ void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_l
     l->psun = ww_gfx_uniform(gl, prog, "u_perez_sun");
     l->mode = ww_gfx_uniform(gl, prog, "u_sky_mode");
     l->clouds = ww_gfx_uniform(gl, prog, "u_sky_clouds");
+    l->sky_map = ww_gfx_uniform(gl, prog, "u_sky_map");
     l->physical = d->sky == WW_SKY_PREETHAM || d->sky == WW_SKY_DOME;
     l->turbidity = d->sky_turbidity;
     /* the dome draws its own clouds over this sky */
@@ -169,7 +170,13 @@ void ww_fog_below_color(const ww_scene *sc, const ww_state *st, double out[3]) {
     for (int c = 0; c < 3; c++) out[c] = sc->render.fog_below_color[c] * k;
 }
 
+const char *ww_sky_map_define(const ww_scene *sc) {
+    return ww_sky_map_on(sc) ? "#define WW_SKY_MAP 1\n" : "";
+}
+
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st) {
+    /* the map itself stays bound to its unit from the skymap pass on */
+    if (l->sky_map >= 0) gl->Uniform1i(l->sky_map, WW_TEX_SKY_MAP);
     double hz[3];
     horizon_colour(l->physical, l->turbidity, st, hz);
     gl->Uniform3f(l->zenith, (float)st->sky_zenith[0], (float)st->sky_zenith[1],
@@ -286,9 +293,10 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     s->model = sc->render.sky;
     s->r = r;
     s->scatter = ww_lights_scatter_on(sc);
-    char defs[128];
-    snprintf(defs, sizeof defs, "%s#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n",
-             defines[s->model] ? defines[s->model] : "", s->scatter, ww_sky_dome_image_on(sc));
+    char defs[160];
+    snprintf(defs, sizeof defs, "%s#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n%s",
+             defines[s->model] ? defines[s->model] : "", s->scatter, ww_sky_dome_image_on(sc),
+             ww_sky_map_define(sc));
     ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes, defs,
                                        &s->prog, err);
     /* one cube texture per renderer: a second sky (the reflection's) draws the first one's */

@@ -226,10 +226,12 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
     w->cull = !(cull && strcmp(cull, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
-    char more[128];
+    char more[160];
     snprintf(more, sizeof more,
-             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n",
-             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc));
+             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_SKY_DOME_IMAGE %d\n%s",
+             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc),
+             ww_sky_map_define(sc));
     ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
                                     !(fade && strcmp(fade, "0") == 0), more, &w->prog, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);

@@ -6,6 +6,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const char *const system_names[WW_SYS_COUNT] = {
 #define WW_SYS_NAME(id, name, present, object) [WW_SYS_##id] = name,
@@ -180,6 +181,13 @@ static void plan_water(const ww_scene *sc, int height, ww_plan_water *w) {
     }
 }
 
+int ww_sky_map_on(const ww_scene *sc) {
+    const ww_render_desc *rd = &sc->render;
+    const char *exact = getenv("WW_SKY_EXACT");
+    if (exact && strcmp(exact, "1") == 0) return 0;
+    return rd->sky == WW_SKY_PREETHAM || (rd->sky == WW_SKY_DOME && rd->dome_image < 0);
+}
+
 void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     *p = (ww_plan){0};
     for (int s = 0; s < WW_SYS_COUNT; s++) p->system_on[s] = sc->system_on[s];
@@ -194,6 +202,12 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
      * other scene keeps plain depth */
     int stencil = rd->shadows.on && casters && rd->shadows.technique != WW_SHADOW_MAP;
     ww_format depth_fmt = stencil ? WW_FMT_DEPTH24_STENCIL8 : WW_FMT_DEPTH24;
+    if (ww_sky_map_on(sc)) {
+        add_pass(p, WW_PASS_SKYMAP, "skymap",
+                 "Preetham's sky and clouds per direction, sampled by the sky, water, reflection");
+        int k = rd->sky == WW_SKY_PREETHAM && rd->cloud_cover > 0.0 ? WW_SKY_MAP_CLOUDS : 1;
+        add_target(p, "sky", WW_FMT_RGBA16F, k * WW_SKY_MAP_WIDTH, k * WW_SKY_MAP_HEIGHT);
+    }
     if (rd->shadows.on && casters && rd->shadows.technique == WW_SHADOW_MAP) {
         add_pass(p, WW_PASS_SHADOW, "shadow", "sun depth map, orthographic, fitted to the view; PCF");
         add_target(p, "depth", WW_FMT_DEPTH24, rd->shadows.size, rd->shadows.size);
