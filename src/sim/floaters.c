@@ -74,7 +74,7 @@ typedef struct box_water {
 
 /* the cubes' ww_cubes_water for a box: columns along U, volumes summed over point-mirrored pairs
  * so that a symmetric box on flat water feels exactly no torque */
-static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_water *out) {
+static void box_water_at(const ww_scene *sc, ww_state *st, int j, box_water *out) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     const double *c = st->floater_pos + 3 * j;
     double ax[3][3];
@@ -85,6 +85,7 @@ static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_wate
     const double *P = ax[ap], *Q = ax[aq];
     double s = d->extent[a], h = 0.5 * s;
     int n = d->columns;
+    double *warm = st->floater_warm + WW_WARM_STRIDE * ww_floater_samples_before(sc, j);
     double cp = d->extent[ap] / n, cq = d->extent[aq] / n, dA = cp * cq;
 
     *out = (box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
@@ -97,7 +98,8 @@ static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_wate
             double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq, r[3];
             for (int k = 0; k < 3; k++) r[k] = u * P[k] + v * Q[k];
             ww_water_sample ws;
-            ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
+            ww_water_at_warm(sc, st, c[0] + r[0], c[2] + r[2], 0.0, warm + WW_WARM_STRIDE * col,
+                             &ws);
             double wet = (ws.height - (c[1] + r[1])) / U[1] + h;
             double L = ww_m_clamp(wet, 0.0, s);
             out->wet[col] = wet;
@@ -196,6 +198,9 @@ void ww_floaters_reset(const ww_scene *sc, ww_state *st) {
         for (int k = 0; k < 4; k++) st->floater_rot[4 * j + k] = d->rotation[k];
         st->floater_submerged[j] = 0.0;
     }
+    /* every query starts cold */
+    int nw = WW_WARM_STRIDE * ww_floater_samples_before(sc, WW_N_FLOATERS(sc));
+    for (int k = 0; k < nw; k++) st->floater_warm[k] = 0.0;
 }
 
 void ww_floater_pose(const ww_scene *sc, const ww_state *st, int j, double m[16]) {
@@ -238,7 +243,7 @@ typedef struct box_forces {
     box_water water;
 } box_forces;
 
-static void forces(const ww_scene *sc, const ww_state *st, int j, box_forces *F) {
+static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     const double *c = st->floater_pos + 3 * j, *e = d->extent;
     double vol = body_volume(d), m = d->density * vol;
