@@ -142,6 +142,10 @@ static void box_water_at(const ww_scene *sc, ww_state *st, int j, box_water *out
     }
 }
 
+/* the heave's root is found to this fraction of its bracket's size (rounding) */
+#define HEAVE_TOLERANCE 1e-15
+#define HEAVE_MAX_ITERATIONS 100
+
 /* int_0^x clamp(x', 0, s) dx' */
 static double clamp_integral(double x, double s) {
     if (x <= 0.0) return 0.0;
@@ -149,38 +153,55 @@ static double clamp_integral(double x, double s) {
     return 0.5 * s * s + s * (x - s);
 }
 
-static double volume_raised(const box_water *w, double xi) {
-    double v = 0.0;
-    for (int c = 0; c < w->ncolumns; c++) v += ww_m_clamp(w->wet[c] - xi / w->up_y, 0.0, w->length);
-    return w->cell_area * v;
+/* (1 / xi) int_0^xi V, the discrete gradient of the buoyancy's potential, and its derivative
+ * in xi (sim/cubes.c's volume_mean for a box of length w->length along U) */
+static double volume_mean(const box_water *w, double xi, double *slope) {
+    double s = w->length, lift = xi / w->up_y;
+    if (fabs(lift) < 1e-7 * s) {
+        double v = 0.0, wet = 0.0;
+        for (int c = 0; c < w->ncolumns; c++) {
+            double x = w->wet[c] - 0.5 * lift;
+            v += ww_m_clamp(x, 0.0, s);
+            wet += x > 0.0 && x < s;
+        }
+        *slope = -0.5 * w->cell_area * wet / w->up_y;
+        return w->cell_area * v;
+    }
+    double acc = 0.0, v = 0.0;
+    for (int c = 0; c < w->ncolumns; c++) {
+        double x = w->wet[c] - lift;
+        acc += clamp_integral(w->wet[c], s) - clamp_integral(x, s);
+        v += ww_m_clamp(x, 0.0, s);
+    }
+    double mean = w->cell_area * w->up_y * acc / xi;
+    *slope = (w->cell_area * v - mean) / xi;
+    return mean;
 }
 
-/* (1 / xi) int_0^xi V: the discrete gradient of the buoyancy's potential */
-static double volume_mean(const box_water *w, double xi) {
-    double s = w->length;
-    if (fabs(xi / w->up_y) < 1e-7 * s) return volume_raised(w, 0.5 * xi);
-    double acc = 0.0;
-    for (int c = 0; c < w->ncolumns; c++)
-        acc += clamp_integral(w->wet[c], s) - clamp_integral(w->wet[c] - xi / w->up_y, s);
-    return w->cell_area * w->up_y * acc / xi;
-}
-
-/* the heave over dt by the discrete-gradient midpoint rule (sim/cubes.c's heave_step);
- * vmax the whole box's volume brackets the mean submerged volume */
+/* the heave over dt by the discrete-gradient midpoint rule, solved by Newton's method kept
+ * inside the bracket (sim/cubes.c's heave_step); vmax the whole box's volume brackets the mean
+ * submerged volume */
 static double heave_step(const box_water *w, double vmax, double kb, double a, double gamma,
                          double u, double dt, double *v) {
     double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
     double lo = base / den, hi = (base + dt * kb * vmax) / den;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * (fabs(lo) + fabs(hi)) + 1e-300; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (mid <= lo || mid >= hi) break;
-        double r = den * mid - base - dt * kb * volume_mean(w, mid);
-        if (r > 0.0)
-            hi = mid;
-        else
-            lo = mid;
-    }
     double xi = 0.5 * (lo + hi);
+    for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
+        double slope, r = den * xi - base - dt * kb * volume_mean(w, xi, &slope);
+        if (r == 0.0) break;
+        if (r > 0.0)
+            hi = xi;
+        else
+            lo = xi;
+        double dr = den - dt * kb * slope, next = xi - r / dr;
+        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        double tol = HEAVE_TOLERANCE * (fabs(lo) + fabs(hi)) + 1e-300;
+        if (fabs(next - xi) <= tol || hi - lo <= tol || next <= lo || next >= hi) {
+            xi = next;
+            break;
+        }
+        xi = next;
+    }
     *v = 2.0 * xi / dt - v0;
     return xi;
 }
