@@ -238,7 +238,10 @@ static double heave_step(const ww_cube_water *w, double s, double kb, double a, 
                          double u, double dt, double *v) {
     double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
     double lo = base / den, hi = (base + dt * kb * s * s * s) / den;
-    double xi = 0.5 * (lo + hi);
+    /* first guess: the root with the buoyancy linear in xi, V = V0 - A_w xi (so Vbar = V0 -
+     * A_w xi / 2), which is the answer while no column's wet length reaches 0 or the box */
+    double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
+    if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
     for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
         double slope, r = den * xi - base - dt * kb * volume_mean(w, s, xi, &slope);
         if (r == 0.0) break;
