@@ -3,10 +3,11 @@
  *
  * Gerstner waves move water sideways, so the surface above a world point (x, z) is the displaced
  * image of some other rest point a: a + D(a) = (x, z). The query inverts D by damped Newton
- * iteration on F(a) = a + D(a) - x from a = x (the fixed-point iteration a <- x - D(a) is a
- * contraction with rate sum Q k A, too slow near the fold): each component's term of the
- * Jacobian is damped where the step would turn its phase by more than a radian, and a line search
- * on the potential whose gradient is F keeps every step a descent (sim/water.c). The residual |F|
+ * iteration on F(a) = a + D(a) - x from a = x or from a warm start (ww_water_at_warm); the
+ * fixed-point iteration a <- x - D(a) is a contraction with rate sum Q k A, too slow near the
+ * fold. Each component's term of the Jacobian is damped where the step would turn its phase by
+ * more than a radian, and a line search on the potential whose gradient is F keeps every step a
+ * descent (sim/water.c). The residual |F|
  * and the number of evaluations are reported. Sines and steep sines do not move water sideways:
  * a = x at once.
  *
