@@ -53,6 +53,11 @@
 #define RIPPLE_FD_TOL 1e-8
 /* a far query's surface point against long double evaluation from the raw parameters, m */
 #define QUERY_FAR_TOL 1e-9
+/* a warm-started query against the cold one on a steep sea (sim/water.h ww_water_at_warm): both
+ * stop within 1e-9 m of the rest point, so heights differ by at most the slope times 2e-9 m */
+#define WARM_COLD_HEIGHT_TOL 1e-8
+#define WARM_COLD_NORMAL_TOL 1e-7   /* |n_warm - n_cold| */
+#define WARM_COLD_VELOCITY_TOL 1e-7 /* m/s */
 
 /* statistics in closed form against the same numbers computed directly: rounding */
 #define STATS_EXACT_TOL 1e-12
@@ -472,6 +477,54 @@ TEST(water_inversion_converges_within_8_at_fold_margin_0_1) {
                "%.2g m\n", 1.0 - sums[si], queries, (double)total / (double)queries, worst_it,
                worst_res);
     }
+}
+
+TEST(water_warm_start_agrees_with_cold_query_over_many_steps) {
+    /* a 1 m box's 4 x 4 columns swept along a turning path over a steep sea (fold margin 0.1,
+     * eight components) for 1200 steps of 1/120 s: each column's warm-started query (its warm
+     * start carried from step to step as a system keeps it in its state) against the cold
+     * query of the same point: the same height, normal and velocity within the tolerances,
+     * converged, in fewer evaluations */
+    ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+    random_sea(sc, 8, 0.5, 40.0, 0.9, 1.0, 4242);
+    ww_state *st = ww_state_new(sc);
+    enum { SIDE = 4, NPTS = SIDE * SIDE, STEPS = 1200 };
+    double warm[NPTS][WW_WARM_STRIDE] = {{0.0}};
+    double dh = 0.0, dn = 0.0, dv = 0.0, worst_res = 0.0;
+    long ev_warm = 0, ev_cold = 0;
+    int all_converged = 1;
+    for (int n = 0; n < STEPS; n++) {
+        st->t = n / 120.0;
+        ww_waves_phases(sc, st->t, st->wave_phase);
+        double heading = 0.3 * st->t, cx = 2.0 + 1.5 * st->t, cz = -1.0 + sin(0.7 * st->t);
+        double cs = cos(heading), sn = sin(heading);
+        for (int p = 0; p < NPTS; p++) {
+            double u = (p / SIDE + 0.5) / SIDE - 0.5, v = (p % SIDE + 0.5) / SIDE - 0.5;
+            double x = cx + u * cs - v * sn, z = cz + u * sn + v * cs;
+            ww_water_sample w, c;
+            all_converged &= ww_water_at_warm(sc, st, x, z, 0.0, warm[p], &w);
+            all_converged &= ww_water_at(sc, st, x, z, 0.0, &c);
+            dh = fmax(dh, fabs(w.height - c.height));
+            for (int k = 0; k < 3; k++) {
+                dn = fmax(dn, fabs(w.normal[k] - c.normal[k]));
+                dv = fmax(dv, fabs(w.velocity[k] - c.velocity[k]));
+            }
+            worst_res = fmax(worst_res, w.residual);
+            ev_warm += w.iterations;
+            ev_cold += c.iterations;
+        }
+    }
+    printf("    %d queries: max |dh| %.2g m, |dn| %.2g, |dv| %.2g m/s; warm residual <= %.2g m; "
+           "evaluations warm %.2f, cold %.2f a query\n",
+           NPTS * STEPS, dh, dn, dv, worst_res, (double)ev_warm / (NPTS * STEPS),
+           (double)ev_cold / (NPTS * STEPS));
+    ENSURE(all_converged);
+    ENSURE_NEAR(dh, 0.0, WARM_COLD_HEIGHT_TOL);
+    ENSURE_NEAR(dn, 0.0, WARM_COLD_NORMAL_TOL);
+    ENSURE_NEAR(dv, 0.0, WARM_COLD_VELOCITY_TOL);
+    ENSURE(ev_warm < ev_cold);
+    ww_state_free(st);
+    free(sc);
 }
 
 TEST(water_steep_and_folding_seas_report_honestly) {

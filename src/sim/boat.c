@@ -58,17 +58,18 @@ void ww_boat_frame(double heading, double pitch, double roll, double fwd[3], dou
 
 /* what the hull follows at (x, z) with this heading: [0] the height of the hull centre, [1] pitch
  * from bow and stern, [2] roll from port and starboard (seed 001's sampling) */
-static void surface_targets(const ww_scene *sc, const ww_state *st, double x, double z,
+static void surface_targets(const ww_scene *sc, ww_state *st, double x, double z,
                             double heading, double out[3]) {
     const ww_boat_desc *b = &sc->boat;
     double fx = cos(heading), fz = sin(heading); /* starboard is (-fz, fx) */
     double hl = 0.5 * b->length, hb = 0.5 * b->beam, minL = b->length;
     ww_water_sample centre, bow, stern, port, stbd;
-    ww_water_at(sc, st, x, z, minL, &centre);
-    ww_water_at(sc, st, x + hl * fx, z + hl * fz, minL, &bow);
-    ww_water_at(sc, st, x - hl * fx, z - hl * fz, minL, &stern);
-    ww_water_at(sc, st, x + hb * fz, z - hb * fx, minL, &port);
-    ww_water_at(sc, st, x - hb * fz, z + hb * fx, minL, &stbd);
+    double *warm = st->boat_warm; /* one warm start per sample, in this order */
+    ww_water_at_warm(sc, st, x, z, minL, warm, &centre);
+    ww_water_at_warm(sc, st, x + hl * fx, z + hl * fz, minL, warm + WW_WARM_STRIDE, &bow);
+    ww_water_at_warm(sc, st, x - hl * fx, z - hl * fz, minL, warm + 2 * WW_WARM_STRIDE, &stern);
+    ww_water_at_warm(sc, st, x + hb * fz, z - hb * fx, minL, warm + 3 * WW_WARM_STRIDE, &port);
+    ww_water_at_warm(sc, st, x - hb * fz, z + hb * fx, minL, warm + 4 * WW_WARM_STRIDE, &stbd);
     out[0] = centre.height + b->ride_height;
     out[1] = atan2(bow.height - stern.height, b->length);
     out[2] = atan2(port.height - stbd.height, b->beam);
@@ -196,6 +197,7 @@ void ww_boat_reset(const ww_scene *sc, ww_state *st) {
     st->boat_heading[0] = wrap_pi(b->heading);
     st->boat_speed[0] = 0.0;
     st->boat_tilt[0] = st->boat_tilt[1] = 0.0;
+    for (int k = 0; k < WW_WARM_STRIDE * WW_BOAT_SAMPLES; k++) st->boat_warm[k] = 0.0; /* cold */
     surface_targets(sc, st, b->position[0], b->position[2], st->boat_heading[0], st->boat_follow);
     st->boat_input[0] = st->boat_input[1] = 0.0;
     st->boat_input[2] = UNTIL_NONE;

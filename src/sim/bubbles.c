@@ -24,16 +24,6 @@ double ww_bubble_wobble(double amplitude, double frequency, double phase, double
     return amplitude * (1.0 - exp(-w)) * sin(w + phase);
 }
 
-/* how low the surface can be anywhere: rest level minus every wave's and ripple's reach
- * (steep sines reach 2A below their mean, the others A) */
-static double surface_floor(const ww_scene *sc, const ww_state *st) {
-    double low = sc->water_level;
-    for (int i = 0; i < sc->nwaves; i++) low -= 2.0 * fabs(sc->waves[i].amplitude);
-    if (sc->ripples_on)
-        for (int i = 0; i < sc->ripples.max; i++) low -= fabs(st->ripple[4 * i + 3]);
-    return low;
-}
-
 /* place bubble b at age t - t0 */
 static void place(const ww_emitter_desc *e, ww_state *st, int b) {
     double age = st->t - st->bubble_t0[b];
@@ -77,7 +67,7 @@ static int free_slot(const ww_emitter_desc *e, const ww_state *st) {
 
 void ww_bubbles_reset(const ww_scene *sc, ww_state *st) {
     const ww_bubbles_desc *d = &sc->bubbles;
-    double floor_y = surface_floor(sc, st);
+    double floor_y = ww_water_lowest(sc, st);
     for (int i = 0; i < d->count; i++) {
         const ww_emitter_desc *e = &d->emitter[i];
         double u = draw(sc, 0, d->total + i, 0), period = 1.0 / e->rate;
@@ -96,7 +86,7 @@ void ww_bubbles_reset(const ww_scene *sc, ww_state *st) {
 
 void ww_bubbles_step(const ww_scene *sc, ww_state *st) {
     const ww_bubbles_desc *d = &sc->bubbles;
-    double floor_y = surface_floor(sc, st);
+    double floor_y = ww_water_lowest(sc, st);
     for (int i = 0; i < d->count; i++) {
         const ww_emitter_desc *e = &d->emitter[i];
 

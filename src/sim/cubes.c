@@ -104,7 +104,10 @@ static int up_axis(double ax[3][3]) {
 
 /* ---- water on a cube ----------------------------------------------------------------------- */
 
-void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water *out) {
+/* the columns of cube i against the surface; warm: the cube's warm starts (ww_cube_samples of
+ * them, sim/water.h), NULL for cold queries */
+static void cube_water(const ww_scene *sc, const ww_state *st, int i, double *warm,
+                       ww_cube_water *out) {
     const ww_cube_desc *d = &sc->cubes.cube[i];
     const double *c = st->cube_pos + 3 * i;
     double ax[3][3];
@@ -130,7 +133,11 @@ void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water
             double u = (iu + 0.5 - 0.5 * n) * cell, v = (iv + 0.5 - 0.5 * n) * cell, r[3];
             for (int k = 0; k < 3; k++) r[k] = u * P[k] + v * Q[k];
             ww_water_sample ws;
-            ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
+            if (warm)
+                ww_water_at_warm(sc, st, c[0] + r[0], c[2] + r[2], 0.0,
+                                 warm + WW_WARM_STRIDE * col, &ws);
+            else
+                ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
             double wet = (ws.height - (c[1] + r[1])) / U[1] + h; /* submerged length along U */
             double L = ww_m_clamp(wet, 0.0, s);
             out->wet[col] = wet;
@@ -173,6 +180,19 @@ void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water
     }
 }
 
+void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water *out) {
+    cube_water(sc, st, i, NULL, out);
+}
+
+/* cube i's warm starts in the state */
+static double *cube_warm(const ww_scene *sc, ww_state *st, int i) {
+    return st->cube_warm + WW_WARM_STRIDE * ww_cube_samples_before(sc, i);
+}
+
+/* the heave's root is found to this fraction of its bracket's size (rounding) */
+#define HEAVE_TOLERANCE 1e-15
+#define HEAVE_MAX_ITERATIONS 100
+
 /* int_0^x clamp(x', 0, s) dx' */
 static double clamp_integral(double x, double s) {
     if (x <= 0.0) return 0.0;
@@ -180,41 +200,64 @@ static double clamp_integral(double x, double s) {
     return 0.5 * s * s + s * (x - s);
 }
 
-/* submerged volume with the box raised by xi (surface and tilt held) */
-static double volume_raised(const ww_cube_water *w, double s, double xi) {
-    double v = 0.0;
-    for (int c = 0; c < w->ncolumns; c++) v += ww_m_clamp(w->wet[c] - xi / w->up_y, 0.0, s);
-    return w->cell_area * v;
-}
-
-/* the mean submerged volume over [0, xi]: (1 / xi) int_0^xi V, the discrete gradient */
-static double volume_mean(const ww_cube_water *w, double s, double xi) {
-    /* below a ten-millionth of the box the secant cancels: V at the midpoint is exact on a
-     * linear piece */
-    if (fabs(xi / w->up_y) < 1e-7 * s) return volume_raised(w, s, 0.5 * xi);
-    double acc = 0.0;
-    for (int c = 0; c < w->ncolumns; c++)
-        acc += clamp_integral(w->wet[c], s) - clamp_integral(w->wet[c] - xi / w->up_y, s);
-    return w->cell_area * w->up_y * acc / xi;
+/* the mean submerged volume over [0, xi], (1 / xi) int_0^xi V (the discrete gradient), and its
+ * derivative in xi. With V(xi) = dA sum clamp(w_c - xi / U.y, 0, s):
+ * int_0^xi V = dA U.y sum (C(w_c) - C(w_c - xi / U.y)), C = clamp_integral, and
+ * d Vbar / d xi = (V(xi) - Vbar) / xi. Below a ten-millionth of the box the secant cancels: there
+ * Vbar is V at the midpoint (exact on a linear piece) and its slope half of V's there. */
+static double volume_mean(const ww_cube_water *w, double s, double xi, double *slope) {
+    double lift = xi / w->up_y;
+    if (fabs(lift) < 1e-7 * s) {
+        double v = 0.0, wet = 0.0;
+        for (int c = 0; c < w->ncolumns; c++) {
+            double x = w->wet[c] - 0.5 * lift;
+            v += ww_m_clamp(x, 0.0, s);
+            wet += x > 0.0 && x < s;
+        }
+        *slope = -0.5 * w->cell_area * wet / w->up_y;
+        return w->cell_area * v;
+    }
+    double acc = 0.0, v = 0.0;
+    for (int c = 0; c < w->ncolumns; c++) {
+        double x = w->wet[c] - lift;
+        acc += clamp_integral(w->wet[c], s) - clamp_integral(x, s);
+        v += ww_m_clamp(x, 0.0, s);
+    }
+    double mean = w->cell_area * w->up_y * acc / xi;
+    *slope = (w->cell_area * v - mean) / xi;
+    return mean;
 }
 
 /* the heave over dt by the discrete-gradient midpoint rule: returns xi1, sets *v.
  * R(xi) = (2 / dt + gamma) xi - 2 v0 - dt (kb Vbar(xi) + a + gamma u) = 0, R increasing;
- * Vbar in [0, s^3] brackets the root. kb = rho_w g / m. */
+ * Vbar in [0, s^3] brackets the root. kb = rho_w g / m. Solved by Newton's method kept inside the
+ * bracket, bisecting where a step would leave it (Press et al., "Numerical Recipes", rtsafe):
+ * R is piecewise smooth (its pieces change where a column's wet length reaches 0 or s), so
+ * Newton converges in a few steps where bisection took 50 to reach the bracket's rounding. */
 static double heave_step(const ww_cube_water *w, double s, double kb, double a, double gamma,
                          double u, double dt, double *v) {
     double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
     double lo = base / den, hi = (base + dt * kb * s * s * s) / den;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * (fabs(lo) + fabs(hi)) + 1e-300; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (mid <= lo || mid >= hi) break;
-        double r = den * mid - base - dt * kb * volume_mean(w, s, mid);
+    /* first guess: the root with the buoyancy linear in xi, V = V0 - A_w xi (so Vbar = V0 -
+     * A_w xi / 2), which is the answer while no column's wet length reaches 0 or the box */
+    double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
+    if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
+    for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
+        double slope, r = den * xi - base - dt * kb * volume_mean(w, s, xi, &slope);
+        if (r == 0.0) break;
         if (r > 0.0)
-            hi = mid;
+            hi = xi;
         else
-            lo = mid;
+            lo = xi;
+        double dr = den - dt * kb * slope, next = xi - r / dr;
+        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        double tol = HEAVE_TOLERANCE * (fabs(lo) + fabs(hi)) + 1e-300;
+        if (fabs(next - xi) <= tol || hi - lo <= tol || next <= lo || next >= hi) {
+            xi = next;
+            break;
+        }
+        xi = next;
     }
-    double xi = 0.5 * (lo + hi);
     *v = 2.0 * xi / dt - v0;
     return xi;
 }
@@ -235,6 +278,9 @@ void ww_cubes_reset(const ww_scene *sc, ww_state *st) {
         st->cube_press[2 * i] = st->cube_press[2 * i + 1] = 0.0;
         st->cube_submerged[i] = 0.0;
     }
+    /* every query starts cold */
+    int nw = WW_WARM_STRIDE * ww_cube_samples_before(sc, WW_N_CUBES(sc));
+    for (int k = 0; k < nw; k++) st->cube_warm[k] = 0.0;
 }
 
 void ww_cubes_event(const ww_scene *sc, ww_state *st, const ww_event *ev) {
@@ -260,12 +306,12 @@ typedef struct cube_forces {
     ww_cube_water water; /* archimedes: the columns, for the heave */
 } cube_forces;
 
-static void forces_archimedes(const ww_scene *sc, const ww_state *st, int i, cube_forces *F) {
+static void forces_archimedes(const ww_scene *sc, ww_state *st, int i, cube_forces *F) {
     const ww_cube_desc *d = &sc->cubes.cube[i];
     const double *c = st->cube_pos + 3 * i;
     double s = d->size, vol = s * s * s, m = d->density * vol, inertia = m * s * s / 6.0;
     const ww_cube_water *w = &F->water;
-    ww_cubes_water(sc, st, i, &F->water);
+    cube_water(sc, st, i, cube_warm(sc, st, i), &F->water);
     F->archimedes = 1;
     double fb = WW_WATER_RHO * WW_G * w->volume;
     F->f = w->volume / vol;
@@ -292,11 +338,11 @@ static void forces_archimedes(const ww_scene *sc, const ww_state *st, int i, cub
     F->ah[1] = -push * grad[1];
 }
 
-static void forces_spring(const ww_scene *sc, const ww_state *st, int i, cube_forces *F) {
+static void forces_spring(const ww_scene *sc, ww_state *st, int i, cube_forces *F) {
     const ww_cube_desc *d = &sc->cubes.cube[i];
     const double *c = st->cube_pos + 3 * i;
     ww_water_sample ws;
-    ww_water_at(sc, st, c[0], c[2], 0.0, &ws);
+    ww_water_at_warm(sc, st, c[0], c[2], 0.0, cube_warm(sc, st, i), &ws);
     double target = ws.height + d->spring_offset;
     F->f = ww_m_clamp((ws.height - (c[1] - 0.5 * d->size)) / d->size, 0.0, 1.0);
     F->ay = d->spring_stiffness * (target - c[1]);

@@ -6,6 +6,7 @@
 #define WW_FIELDS_BOAT_H
 
 #define WW_N_BOAT(sc) ((sc)->boat.on ? 1 : 0)
+#define WW_BOAT_SAMPLES 5 /* surface sample points: centre, bow, stern, port, starboard */
 
 #define WW_FIELDS_BOAT(X)                                                                         \
     X(double, boat_pos, 3 * WW_N_BOAT(sc), "boat", "hull centre, m (3)")                            \
@@ -17,6 +18,7 @@
     X(double, boat_input, 3 * WW_N_BOAT(sc), "boat", "inputs in force: throttle, steer, until s (-1: none) (3)") \
     X(double, boat_command, 4 * WW_N_BOAT(sc), "boat", "inputs from this step's action: throttle, steer, until, 1 = pending (4)") \
     X(double, boat_look_yaw, WW_N_BOAT(sc), "boat", "seat view heading, rad (1)")                   \
+    X(double, boat_warm, WW_WARM_STRIDE * WW_BOAT_SAMPLES * WW_N_BOAT(sc), "boat", "warm starts of the surface queries (sim/water.h), m: last rest offset a - x and its change (4 per sample: centre, bow, stern, port, starboard)") \
     X(int32_t, boat_camera, WW_N_BOAT(sc), "boat", "camera mode: 0 free (the path), 1 the boat's seat (1)")
 
 #endif

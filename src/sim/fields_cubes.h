@@ -7,12 +7,26 @@
 
 #define WW_N_CUBES(sc) ((sc)->cubes.on ? (sc)->cubes.count : 0)
 
+/* the surface sample points of cube i: its columns^2 prisms (archimedes) or its centre (spring) */
+static inline int ww_cube_samples(const ww_scene *sc, int i) {
+    const ww_cube_desc *d = &sc->cubes.cube[i];
+    int n = d->columns > 0 ? d->columns : WW_CUBE_DEFAULT_COLUMNS;
+    return d->buoyancy == WW_CUBE_SPRING ? 1 : n * n;
+}
+/* the sample points of the cubes before cube i (i = WW_N_CUBES: of all) */
+static inline int ww_cube_samples_before(const ww_scene *sc, int i) {
+    int sum = 0;
+    for (int j = 0; j < i; j++) sum += ww_cube_samples(sc, j);
+    return sum;
+}
+
 #define WW_FIELDS_CUBES(X)                                                                        \
     X(double, cube_pos, 3 * WW_N_CUBES(sc), "cubes", "cube centres, m (3 per cube)")                \
     X(double, cube_vel, 3 * WW_N_CUBES(sc), "cubes", "cube velocities, m/s (3 per cube)")           \
     X(double, cube_rot, 4 * WW_N_CUBES(sc), "cubes", "cube orientations, unit quaternion w x y z (4 per cube)") \
     X(double, cube_omega, 3 * WW_N_CUBES(sc), "cubes", "cube angular velocities, world frame, rad/s (3 per cube)") \
     X(double, cube_press, 2 * WW_N_CUBES(sc), "cubes", "press: hold left, s (0: not pressed); held so far, s (2 per cube)") \
-    X(double, cube_submerged, WW_N_CUBES(sc), "cubes", "submerged fraction of the volume, 0..1 (1 per cube)")
+    X(double, cube_submerged, WW_N_CUBES(sc), "cubes", "submerged fraction of the volume, 0..1 (1 per cube)") \
+    X(double, cube_warm, WW_WARM_STRIDE * ww_cube_samples_before(sc, WW_N_CUBES(sc)), "cubes", "warm starts of the surface queries (sim/water.h), m: last rest offset a - x and its change (4 per sample point: columns^2 per archimedes cube, 1 per spring cube)")
 
 #endif

@@ -267,10 +267,14 @@ static void separation(const ww_scene *sc, const ww_state *st, int i, double pus
     }
 }
 
-/* y into the bounds at the fish's (x, z); the velocity into a bound is removed */
+/* y into the bounds at the fish's (x, z); the velocity into a bound is removed. A fish deeper
+ * than the margin below the lowest the surface reaches anywhere needs no query: the bound
+ * under the surface cannot act on it, nor can a trough squeeze the bounds (its lower bound is
+ * the seabed's, as ww_fish_depth_bounds gives it for any surface at or above that) */
 static void keep_in_water(const ww_scene *sc, const ww_state *st, double p[3], double v[3]) {
-    double lo, hi;
-    ww_fish_depth_bounds(sc, surface(sc, st, p[0], p[2]), &lo, &hi);
+    double lo, hi, low = ww_water_lowest(sc, st);
+    ww_fish_depth_bounds(sc, low, &lo, &hi);
+    if (!(p[1] <= hi && hi > lo)) ww_fish_depth_bounds(sc, surface(sc, st, p[0], p[2]), &lo, &hi);
     if (p[1] > hi) {
         p[1] = hi;
         if (v[1] > 0.0) v[1] = 0.0;

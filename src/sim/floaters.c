@@ -74,7 +74,7 @@ typedef struct box_water {
 
 /* the cubes' ww_cubes_water for a box: columns along U, volumes summed over point-mirrored pairs
  * so that a symmetric box on flat water feels exactly no torque */
-static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_water *out) {
+static void box_water_at(const ww_scene *sc, ww_state *st, int j, box_water *out) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     const double *c = st->floater_pos + 3 * j;
     double ax[3][3];
@@ -85,6 +85,7 @@ static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_wate
     const double *P = ax[ap], *Q = ax[aq];
     double s = d->extent[a], h = 0.5 * s;
     int n = d->columns;
+    double *warm = st->floater_warm + WW_WARM_STRIDE * ww_floater_samples_before(sc, j);
     double cp = d->extent[ap] / n, cq = d->extent[aq] / n, dA = cp * cq;
 
     *out = (box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
@@ -97,7 +98,8 @@ static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_wate
             double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq, r[3];
             for (int k = 0; k < 3; k++) r[k] = u * P[k] + v * Q[k];
             ww_water_sample ws;
-            ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
+            ww_water_at_warm(sc, st, c[0] + r[0], c[2] + r[2], 0.0, warm + WW_WARM_STRIDE * col,
+                             &ws);
             double wet = (ws.height - (c[1] + r[1])) / U[1] + h;
             double L = ww_m_clamp(wet, 0.0, s);
             out->wet[col] = wet;
@@ -140,6 +142,10 @@ static void box_water_at(const ww_scene *sc, const ww_state *st, int j, box_wate
     }
 }
 
+/* the heave's root is found to this fraction of its bracket's size (rounding) */
+#define HEAVE_TOLERANCE 1e-15
+#define HEAVE_MAX_ITERATIONS 100
+
 /* int_0^x clamp(x', 0, s) dx' */
 static double clamp_integral(double x, double s) {
     if (x <= 0.0) return 0.0;
@@ -147,38 +153,58 @@ static double clamp_integral(double x, double s) {
     return 0.5 * s * s + s * (x - s);
 }
 
-static double volume_raised(const box_water *w, double xi) {
-    double v = 0.0;
-    for (int c = 0; c < w->ncolumns; c++) v += ww_m_clamp(w->wet[c] - xi / w->up_y, 0.0, w->length);
-    return w->cell_area * v;
+/* (1 / xi) int_0^xi V, the discrete gradient of the buoyancy's potential, and its derivative
+ * in xi (sim/cubes.c's volume_mean for a box of length w->length along U) */
+static double volume_mean(const box_water *w, double xi, double *slope) {
+    double s = w->length, lift = xi / w->up_y;
+    if (fabs(lift) < 1e-7 * s) {
+        double v = 0.0, wet = 0.0;
+        for (int c = 0; c < w->ncolumns; c++) {
+            double x = w->wet[c] - 0.5 * lift;
+            v += ww_m_clamp(x, 0.0, s);
+            wet += x > 0.0 && x < s;
+        }
+        *slope = -0.5 * w->cell_area * wet / w->up_y;
+        return w->cell_area * v;
+    }
+    double acc = 0.0, v = 0.0;
+    for (int c = 0; c < w->ncolumns; c++) {
+        double x = w->wet[c] - lift;
+        acc += clamp_integral(w->wet[c], s) - clamp_integral(x, s);
+        v += ww_m_clamp(x, 0.0, s);
+    }
+    double mean = w->cell_area * w->up_y * acc / xi;
+    *slope = (w->cell_area * v - mean) / xi;
+    return mean;
 }
 
-/* (1 / xi) int_0^xi V: the discrete gradient of the buoyancy's potential */
-static double volume_mean(const box_water *w, double xi) {
-    double s = w->length;
-    if (fabs(xi / w->up_y) < 1e-7 * s) return volume_raised(w, 0.5 * xi);
-    double acc = 0.0;
-    for (int c = 0; c < w->ncolumns; c++)
-        acc += clamp_integral(w->wet[c], s) - clamp_integral(w->wet[c] - xi / w->up_y, s);
-    return w->cell_area * w->up_y * acc / xi;
-}
-
-/* the heave over dt by the discrete-gradient midpoint rule (sim/cubes.c's heave_step);
- * vmax the whole box's volume brackets the mean submerged volume */
+/* the heave over dt by the discrete-gradient midpoint rule, solved by Newton's method kept
+ * inside the bracket (sim/cubes.c's heave_step); vmax the whole box's volume brackets the mean
+ * submerged volume */
 static double heave_step(const box_water *w, double vmax, double kb, double a, double gamma,
                          double u, double dt, double *v) {
     double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
     double lo = base / den, hi = (base + dt * kb * vmax) / den;
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * (fabs(lo) + fabs(hi)) + 1e-300; it++) {
-        double mid = 0.5 * (lo + hi);
-        if (mid <= lo || mid >= hi) break;
-        double r = den * mid - base - dt * kb * volume_mean(w, mid);
+    /* first guess: the root with the buoyancy linear in xi, V = V0 - A_w xi (so Vbar = V0 -
+     * A_w xi / 2), which is the answer while no column's wet length reaches 0 or the box */
+    double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
+    if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
+    for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
+        double slope, r = den * xi - base - dt * kb * volume_mean(w, xi, &slope);
+        if (r == 0.0) break;
         if (r > 0.0)
-            hi = mid;
+            hi = xi;
         else
-            lo = mid;
+            lo = xi;
+        double dr = den - dt * kb * slope, next = xi - r / dr;
+        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        double tol = HEAVE_TOLERANCE * (fabs(lo) + fabs(hi)) + 1e-300;
+        if (fabs(next - xi) <= tol || hi - lo <= tol || next <= lo || next >= hi) {
+            xi = next;
+            break;
+        }
+        xi = next;
     }
-    double xi = 0.5 * (lo + hi);
     *v = 2.0 * xi / dt - v0;
     return xi;
 }
@@ -196,6 +222,9 @@ void ww_floaters_reset(const ww_scene *sc, ww_state *st) {
         for (int k = 0; k < 4; k++) st->floater_rot[4 * j + k] = d->rotation[k];
         st->floater_submerged[j] = 0.0;
     }
+    /* every query starts cold */
+    int nw = WW_WARM_STRIDE * ww_floater_samples_before(sc, WW_N_FLOATERS(sc));
+    for (int k = 0; k < nw; k++) st->floater_warm[k] = 0.0;
 }
 
 void ww_floater_pose(const ww_scene *sc, const ww_state *st, int j, double m[16]) {
@@ -238,7 +267,7 @@ typedef struct box_forces {
     box_water water;
 } box_forces;
 
-static void forces(const ww_scene *sc, const ww_state *st, int j, box_forces *F) {
+static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     const double *c = st->floater_pos + 3 * j, *e = d->extent;
     double vol = body_volume(d), m = d->density * vol;

@@ -7,6 +7,10 @@
 
 #include "core/mathx.h"
 
+/* a point whose squared distance exceeds the front's squared radius by this factor is beyond
+ * it whatever the rounding of the root (a few ulps), so W = 0 there without computing r */
+#define FRONT_MARGIN (1.0 + 1e-12)
+
 void ww_ripples_add(const ww_scene *sc, ww_state *st, double x, double z, double amplitude) {
     if (!sc->ripples_on || sc->ripples.max <= 0 || !(amplitude > 0.0)) return;
     double *pool = st->ripple;
@@ -20,6 +24,7 @@ void ww_ripples_add(const ww_scene *sc, ww_state *st, double x, double z, double
         if (e[2] < pool[slot * WW_RIPPLE_STRIDE + 2]) slot = i; /* else the oldest */
     }
     double *e = pool + slot * WW_RIPPLE_STRIDE;
+    if (slot >= st->ripple_slots[0]) st->ripple_slots[0] = slot + 1;
     e[0] = x;
     e[1] = z;
     e[2] = st->t;
@@ -28,11 +33,14 @@ void ww_ripples_add(const ww_scene *sc, ww_state *st, double x, double z, double
 
 void ww_ripples_prune(const ww_scene *sc, ww_state *st) {
     if (!sc->ripples_on) return;
+    int top = 0;
     for (int i = 0; i < sc->ripples.max; i++) {
         double *e = st->ripple + i * WW_RIPPLE_STRIDE;
         if (e[3] != 0.0 && st->t - e[2] > sc->ripples.lifetime)
             e[0] = e[1] = e[2] = e[3] = 0.0;
+        if (e[3] != 0.0) top = i + 1;
     }
+    st->ripple_slots[0] = top;
 }
 
 int ww_ripples_count(const ww_scene *sc, const ww_state *st) {
@@ -44,19 +52,28 @@ int ww_ripples_count(const ww_scene *sc, const ww_state *st) {
 
 double ww_ripples_height(const ww_scene *sc, const double *pool, double t, double x, double z,
                          double grad[2], double *dhdt) {
+    return ww_ripples_height_n(sc, pool, sc->ripples.max, t, x, z, grad, dhdt);
+}
+
+double ww_ripples_height_n(const ww_scene *sc, const double *pool, int nslots, double t, double x,
+                           double z, double grad[2], double *dhdt) {
     double h = 0.0, gx = 0.0, gz = 0.0, ht = 0.0;
     if (sc->ripples_on && pool) {
         const ww_ripple_desc *d = &sc->ripples;
         double kr = d->wavenumber, v = d->speed;
         double lambda = WW_TAU / kr;   /* width of the front, m */
         double r0 = 1.0 / kr;          /* softening of the distance at the centre, m */
-        for (int i = 0; i < d->max; i++) {
+        int n = nslots < d->max ? nslots : d->max;
+        for (int i = 0; i < n; i++) {
             const double *e = pool + i * WW_RIPPLE_STRIDE;
             double age = t - e[2];
             if (e[3] == 0.0 || age < 0.0) continue;
-            double dx = x - e[0], dz = z - e[1];
-            double r = sqrt(dx * dx + dz * dz + r0 * r0);
-            /* causal front: W = 1 behind r = v age, 0 one wavelength ahead, C1 between */
+            double dx = x - e[0], dz = z - e[1], r2 = dx * dx + dz * dz + r0 * r0;
+            /* causal front: W = 1 behind r = v age, 0 one wavelength ahead, C1 between. A point
+             * surely beyond the front (by far more than rounding) is passed without the root */
+            double front = v * age + lambda;
+            if (front <= 0.0 || r2 > FRONT_MARGIN * front * front) continue;
+            double r = sqrt(r2);
             double u = (v * age - r) / lambda + 1.0;
             if (u <= 0.0) continue;
             double w = 1.0, dw = 0.0;

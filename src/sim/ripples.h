@@ -26,5 +26,9 @@ int ww_ripples_count(const ww_scene *sc, const ww_state *st);
  * level), and when not NULL the gradient (dh/dx, dh/dz) and dh/dt (m/s) */
 double ww_ripples_height(const ww_scene *sc, const double *pool, double t, double x, double z,
                          double grad[2], double *dhdt);
+/* the same over the pool's first nslots entries only (st->ripple_slots: the later ones are free;
+ * a height query scans no more than that) */
+double ww_ripples_height_n(const ww_scene *sc, const double *pool, int nslots, double t, double x,
+                           double z, double grad[2], double *dhdt);
 
 #endif

@@ -100,11 +100,6 @@ static void put_int_array(FILE *to, const char *name, const int32_t *v, long lon
 #define PUT_FIELD(to, name, v, n)                                                                 \
     _Generic((v), double *: put_array, int32_t *: put_int_array)(to, name, v, n)
 
-/* an integer is always finite */
-static int finite_double(double v) { return isfinite(v); }
-static int finite_int(int32_t v) { return (void)v, 1; }
-#define FINITE(v) _Generic((v), double: finite_double, int32_t: finite_int)(v)
-
 void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
     fprintf(to, "{\"step\":%lld,\"t\":", (long long)st->step);
     ww_num_json(to, st->t);
@@ -115,14 +110,33 @@ void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
     fputc('}', to);
 }
 
+/* the index of the first non-finite value of a (n values), or -1. x * 0 is 0 for a finite x and
+ * NaN for an infinite or NaN one, so sums of it are NaN exactly when some value is not finite:
+ * four independent sums (pipelined, no branch per value) say whether to look, and only then is
+ * the index searched */
+static long long first_bad_double(const double *a, long long n) {
+    double acc[4] = {0.0, 0.0, 0.0, 0.0};
+    long long i = 0;
+    for (; i + 4 <= n; i += 4)
+        for (int j = 0; j < 4; j++) acc[j] += a[i + j] * 0.0;
+    for (; i < n; i++) acc[0] += a[i] * 0.0;
+    if (acc[0] + acc[1] + acc[2] + acc[3] == 0.0) return -1;
+    for (i = 0; i < n; i++)
+        if (!isfinite(a[i])) return i;
+    return -1;
+}
+/* an integer is always finite */
+static long long first_bad_int(const int32_t *a, long long n) { return (void)a, (void)n, -1; }
+#define FIRST_BAD(p, n) _Generic((p), double *: first_bad_double, int32_t *: first_bad_int)(p, n)
+
 ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err) {
+    long long i;
 #define WW_STATE_CHECK(type, name, count, sys, comment)                                           \
-    for (long long i = 0; i < (long long)(count); i++)                                           \
-        if (!FINITE(st->name[i]))                                                                 \
-            return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                   \
-                                "non-finite value in the %s system: %s[%lld] = %g at step %lld "  \
-                                "(t = %.6f s)",                                                   \
-                                sys, #name, i, (double)st->name[i], (long long)st->step, st->t);
+    if ((i = FIRST_BAD(st->name, (long long)(count))) >= 0)                                      \
+        return ww_error_set(err, WW_E_NAN, sc->path, 0, 0,                                       \
+                            "non-finite value in the %s system: %s[%lld] = %g at step %lld "      \
+                            "(t = %.6f s)",                                                       \
+                            sys, #name, i, (double)st->name[i], (long long)st->step, st->t);
     WW_STATE_FIELDS(WW_STATE_CHECK)
 #undef WW_STATE_CHECK
     return WW_OK;

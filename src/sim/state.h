@@ -22,6 +22,11 @@
 #include <stdio.h>
 
 #include "scene/scene.h"
+
+/* values per warm start of a surface query (ww_water_at_warm, sim/water.h): the fields of the
+ * systems that keep one per sample point are counted in these */
+#define WW_WARM_STRIDE 4
+
 #include "sim/fields_boat.h"
 #include "sim/fields_cubes.h"
 #include "sim/fields_fishing.h"
@@ -45,6 +50,7 @@
     X(double, cam_fov, 1, "camera", "camera vertical field of view, rad (1)")                       \
     X(double, wave_phase, sc->nwaves, "waves", "per-wave phase at the world origin, wrapped to [0, 2pi), rad (nwaves)") \
     X(double, ripple, sc->ripples_on ? 4 * sc->ripples.max : 0, "ripples", "ripple pool: x, z, t0, A0 per entry; A0 = 0 is free (4 max)") \
+    X(int32_t, ripple_slots, sc->ripples_on ? 1 : 0, "ripples", "slots of the pool in use: one past its last live entry, so a query reads no more (1)") \
     X(int32_t, event_count, ww_scene_has_objects(sc) ? 1 : 0, "events", "events in the step's outbox (1)") \
     X(int32_t, events_dropped, ww_scene_has_objects(sc) ? 1 : 0, "events", "events a full outbox could not hold, since step 0 (1)") \
     X(double, events, ww_scene_has_objects(sc) ? WW_MAX_STEP_EVENTS * WW_SIM_EVENT_STRIDE : 0, "events", "the step's outbox, sim/events.h") \

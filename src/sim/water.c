@@ -23,38 +23,63 @@
 #define LAMBDA_LO 0.1
 #define LAMBDA_HI 0.5
 
-/* one evaluation of the Gerstner sum at rest point a (relative to the reference) */
+/* one evaluation of the Gerstner sum at rest point a (relative to the reference): what the
+ * iteration needs (F, G and each component's sine); the height, slope, Jacobian and velocity
+ * are made once, at the answer (finish) */
 typedef struct probe {
     double a[2];       /* rest point, m */
     double F[2];       /* a + D(a) - x, m */
     double norm;       /* |F|, m */
     double G;          /* the potential whose gradient is F (see ww_water_height), m^2 */
+    double *sn, *cn;   /* sin(phi), cos(phi) per component (0 for the ignored ones) */
+} probe;
+
+/* what the answer reports at its rest point, from its sines and cosines */
+typedef struct answer {
     double J[3];       /* horizontal Jacobian d(a + D)/da: xx, xz (= zx), zz */
     double Y;          /* surface height above the rest level at a, m */
     double dY[2];      /* dY/da */
     double vel[3];     /* particle velocity, m/s */
-    double *sn;        /* sin(phi) per component, for the smoothed Jacobian */
-} probe;
+} answer;
 
 /* the Gerstner sum of waves.h at a, with G = |a - x|^2 / 2 + sum (Q A / k) sin(phi): its
  * gradient is F since d/da (Q A / k) sin(phi) = Q A D cos(phi) */
 static void evaluate(const ww_scene *sc, const double *phase, double minL, const double x[2],
                      const double a[2], probe *pr) {
-    double dx0 = 0.0, dz0 = 0.0, phi = 0.0, y = 0.0, yx = 0.0, yz = 0.0;
-    double jxx = 1.0, jxz = 0.0, jzz = 1.0, vx = 0.0, vy = 0.0, vz = 0.0;
+    double dx0 = 0.0, dz0 = 0.0, phi = 0.0;
     for (int i = 0; i < sc->nwaves; i++) {
         const ww_wave *w = &sc->waves[i];
-        pr->sn[i] = 0.0;
+        pr->sn[i] = pr->cn[i] = 0.0;
         if (w->wavelength < minL) continue;
         double dx = w->dir[0], dz = w->dir[1];
         double ph = w->k * (dx * a[0] + dz * a[1]) + phase[i];
         double s, c;
         ww_sincos(ph, &s, &c);
-        double A = w->amplitude, qa = w->steepness * A, qka = w->k * qa;
+        double qa = w->steepness * w->amplitude;
         pr->sn[i] = s;
+        pr->cn[i] = c;
         dx0 += qa * dx * c;
         dz0 += qa * dz * c;
         phi += qa / w->k * s;
+    }
+    pr->a[0] = a[0];
+    pr->a[1] = a[1];
+    pr->F[0] = a[0] + dx0 - x[0];
+    pr->F[1] = a[1] + dz0 - x[1];
+    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
+    double ex = a[0] - x[0], ez = a[1] - x[1];
+    pr->G = 0.5 * (ex * ex + ez * ez) + phi;
+}
+
+/* height, slope, Jacobian and particle velocity at the probe's rest point */
+static void finish(const ww_scene *sc, double minL, const probe *pr, answer *an) {
+    double y = 0.0, yx = 0.0, yz = 0.0;
+    double jxx = 1.0, jxz = 0.0, jzz = 1.0, vx = 0.0, vy = 0.0, vz = 0.0;
+    for (int i = 0; i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        if (w->wavelength < minL) continue;
+        double dx = w->dir[0], dz = w->dir[1], s = pr->sn[i], c = pr->cn[i];
+        double A = w->amplitude, qa = w->steepness * A, qka = w->k * qa;
         y += A * s;
         yx += w->k * dx * A * c;
         yz += w->k * dz * A * c;
@@ -65,22 +90,15 @@ static void evaluate(const ww_scene *sc, const double *phase, double minL, const
         vy -= w->omega * A * c;
         vz += qa * w->omega * dz * s;
     }
-    pr->a[0] = a[0];
-    pr->a[1] = a[1];
-    pr->F[0] = a[0] + dx0 - x[0];
-    pr->F[1] = a[1] + dz0 - x[1];
-    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
-    double ex = a[0] - x[0], ez = a[1] - x[1];
-    pr->G = 0.5 * (ex * ex + ez * ez) + phi;
-    pr->J[0] = jxx;
-    pr->J[1] = jxz;
-    pr->J[2] = jzz;
-    pr->Y = y;
-    pr->dY[0] = yx;
-    pr->dY[1] = yz;
-    pr->vel[0] = vx;
-    pr->vel[1] = vy;
-    pr->vel[2] = vz;
+    an->J[0] = jxx;
+    an->J[1] = jxz;
+    an->J[2] = jzz;
+    an->Y = y;
+    an->dY[0] = yx;
+    an->dY[1] = yz;
+    an->vel[0] = vx;
+    an->vel[1] = vy;
+    an->vel[2] = vz;
 }
 
 /* the step direction at pr. Newton's d = -J^-1 F, but with each component's term of J damped
@@ -112,30 +130,30 @@ static void direction(const ww_scene *sc, double minL, const probe *pr, double d
     }
 }
 
-static void swap_sn(probe *a, probe *b) {
-    double *t = a->sn;
-    a->sn = b->sn;
-    b->sn = t;
-}
-
-/* copies what the answer needs (not the sn buffer) */
-static void keep(probe *best, const probe *pr) {
-    double *sn = best->sn;
+/* copies pr into best, its sines and cosines into best's own buffers */
+static void keep(const ww_scene *sc, probe *best, const probe *pr) {
+    double *sn = best->sn, *cn = best->cn;
+    for (int i = 0; i < sc->nwaves; i++) {
+        sn[i] = pr->sn[i];
+        cn[i] = pr->cn[i];
+    }
     *best = *pr;
     best->sn = sn;
+    best->cn = cn;
 }
 
-/* damped Newton on F(a) = a + D(a) - x from a = x. F is the gradient of
+/* damped Newton on F(a) = a + D(a) - x from a = a0 (x for a cold start). F is the gradient of
  * G(a) = |a - x|^2 / 2 + sum (Q A / k) sin(phi), strongly convex while sum Q k A < 1 (its Hessian J
  * has eigenvalues in [1 - sum, 1 + sum]), so a descent direction with a backtracking line search
  * on G converges from any start (Nocedal and Wright, "Numerical Optimization", 2nd ed., ch. 3:
  * Armijo condition, quadratic interpolation of the step). Returns the evaluations taken. */
 static int invert(const ww_scene *sc, const double *phase, double minL, const double x[2],
-                  double tol, int maxit, probe *best, double *sn0, double *sn1) {
-    probe cur = {.sn = sn0}, trial = {.sn = sn1};
-    evaluate(sc, phase, minL, x, x, &cur);
+                  const double a0[2], double tol, int maxit, probe *best) {
+    double buf[4][WW_MAX_WAVES];
+    probe cur = {.sn = buf[0], .cn = buf[1]}, trial = {.sn = buf[2], .cn = buf[3]};
+    evaluate(sc, phase, minL, x, a0, &cur);
     int it = 1;
-    keep(best, &cur);
+    keep(sc, best, &cur);
     while (cur.norm > tol && it < maxit) {
         double d[2];
         direction(sc, minL, &cur, d);
@@ -146,7 +164,7 @@ static int invert(const ww_scene *sc, const double *phase, double minL, const do
             double a[2] = {cur.a[0] + lam * d[0], cur.a[1] + lam * d[1]};
             evaluate(sc, phase, minL, x, a, &trial);
             it++;
-            if (trial.norm < best->norm) keep(best, &trial);
+            if (trial.norm < best->norm) keep(sc, best, &trial);
             if (trial.G <= cur.G + ARMIJO * lam * slope || trial.norm <= RESIDUAL_CUT * cur.norm) {
                 accepted = 1;
                 break;
@@ -156,8 +174,9 @@ static int invert(const ww_scene *sc, const double *phase, double minL, const do
             lam = fmin(fmax(next, LAMBDA_LO * lam), LAMBDA_HI * lam);
         }
         if (!accepted) break;
-        keep(&cur, &trial);
-        swap_sn(&cur, &trial);
+        probe t = cur; /* the trial becomes the current point, buffers and all */
+        cur = trial;
+        trial = t;
     }
     return it;
 }
@@ -186,15 +205,22 @@ int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *
     double y, dy[2], J[3], vel[3], rest[2], residual;
     int iterations;
     if (sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM) {
-        double sn0[WW_MAX_WAVES], sn1[WW_MAX_WAVES], snb[WW_MAX_WAVES];
-        probe best = {.sn = snb};
-        iterations = invert(sc, phase, minL, xr, tol, maxit, &best, sn0, sn1);
-        y = sc->water_level + best.Y;
-        dy[0] = best.dY[0];
-        dy[1] = best.dY[1];
+        double snb[WW_MAX_WAVES], cnb[WW_MAX_WAVES];
+        probe best = {.sn = snb, .cn = cnb};
+        answer an;
+        double a0[2] = {xr[0], xr[1]};
+        if (opts) {
+            a0[0] += opts->start[0];
+            a0[1] += opts->start[1];
+        }
+        iterations = invert(sc, phase, minL, xr, a0, tol, maxit, &best);
+        finish(sc, minL, &best, &an);
+        y = sc->water_level + an.Y;
+        dy[0] = an.dY[0];
+        dy[1] = an.dY[1];
         for (int c = 0; c < 3; c++) {
-            J[c] = best.J[c];
-            vel[c] = best.vel[c];
+            J[c] = an.J[c];
+            vel[c] = an.vel[c];
         }
         rest[0] = best.a[0];
         rest[1] = best.a[1];
@@ -218,7 +244,8 @@ int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *
 
     /* the ripples at the world point */
     double rg[2], rdt;
-    double rh = ww_ripples_height(sc, f->ripples, f->t, x, z, rg, &rdt);
+    int slots = f->ripple_slots > 0 ? f->ripple_slots : sc->ripples.max;
+    double rh = ww_ripples_height_n(sc, f->ripples, slots, f->t, x, z, rg, &rdt);
     out->height = y + rh;
 
     /* normal: grad h = J^-T grad_a Y + ripple gradient, n = normalize(-hx, 1, -hz). Multiplied
@@ -247,11 +274,42 @@ int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *
     return out->converged;
 }
 
+double ww_water_lowest(const ww_scene *sc, const ww_state *st) {
+    double low = sc->water_level;
+    for (int i = 0; i < sc->nwaves; i++) low -= 2.0 * fabs(sc->waves[i].amplitude);
+    if (sc->ripples_on)
+        for (int i = 0; i < st->ripple_slots[0]; i++) low -= fabs(st->ripple[4 * i + 3]);
+    return low;
+}
+
+/* the state's pool as a query reads it: NULL while every slot is free */
+static const double *ripples_in_use(const ww_scene *sc, const ww_state *st) {
+    return sc->ripples_on && st->ripple_slots[0] > 0 ? st->ripple : NULL;
+}
+
 int ww_water_at(const ww_scene *sc, const ww_state *st, double x, double z,
                 double min_wavelength, ww_water_sample *out) {
-    ww_field f = {.sc = sc, .phase = st->wave_phase, .t = st->t, .ripples = st->ripple};
+    ww_field f = {.sc = sc, .phase = st->wave_phase, .t = st->t, .ripples = ripples_in_use(sc, st),
+                  .ripple_slots = sc->ripples_on ? st->ripple_slots[0] : 0};
     ww_query_opts o = {.tolerance = WW_QUERY_TOLERANCE,
                        .max_iterations = WW_QUERY_MAX_ITERATIONS,
                        .min_wavelength = min_wavelength};
     return ww_water_height(&f, x, z, &o, out);
+}
+
+int ww_water_at_warm(const ww_scene *sc, const ww_state *st, double x, double z,
+                     double min_wavelength, double warm[WW_WARM_STRIDE], ww_water_sample *out) {
+    ww_field f = {.sc = sc, .phase = st->wave_phase, .t = st->t, .ripples = ripples_in_use(sc, st),
+                  .ripple_slots = sc->ripples_on ? st->ripple_slots[0] : 0};
+    ww_query_opts o = {.tolerance = WW_QUERY_TOLERANCE,
+                       .max_iterations = WW_QUERY_MAX_ITERATIONS,
+                       .min_wavelength = min_wavelength,
+                       .start = {warm[0] + warm[2], warm[1] + warm[3]}};
+    int ok = ww_water_height(&f, x, z, &o, out);
+    double off[2] = {out->rest[0] - x, out->rest[1] - z};
+    warm[2] = off[0] - warm[0];
+    warm[3] = off[1] - warm[1];
+    warm[0] = off[0];
+    warm[1] = off[1];
+    return ok;
 }

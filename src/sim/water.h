@@ -3,10 +3,11 @@
  *
  * Gerstner waves move water sideways, so the surface above a world point (x, z) is the displaced
  * image of some other rest point a: a + D(a) = (x, z). The query inverts D by damped Newton
- * iteration on F(a) = a + D(a) - x from a = x (the fixed-point iteration a <- x - D(a) is a
- * contraction with rate sum Q k A, too slow near the fold): each component's term of the
- * Jacobian is damped where the step would turn its phase by more than a radian, and a line search
- * on the potential whose gradient is F keeps every step a descent (sim/water.c). The residual |F|
+ * iteration on F(a) = a + D(a) - x from a = x or from a warm start (ww_water_at_warm); the
+ * fixed-point iteration a <- x - D(a) is a contraction with rate sum Q k A, too slow near the
+ * fold. Each component's term of the Jacobian is damped where the step would turn its phase by
+ * more than a radian, and a line search on the potential whose gradient is F keeps every step a
+ * descent (sim/water.c). The residual |F|
  * and the number of evaluations are reported. Sines and steep sines do not move water sideways:
  * a = x at once.
  *
@@ -26,12 +27,15 @@ typedef struct ww_field {
     const double *phase;   /* per-wave phases at the origin for time t (ww_waves_phases) */
     double t;              /* s, for the ripples' ages */
     const double *ripples; /* the state's pool (st->ripple), NULL for none */
+    int ripple_slots;      /* entries of the pool to read (st->ripple_slots); 0: all */
 } ww_field;
 
 typedef struct ww_query_opts {
     double tolerance;      /* m: stop when |F| is below; default 1e-9 */
     int max_iterations;    /* default 32 */
     double min_wavelength; /* m: ignore shorter components (0: all) */
+    double start[2];       /* m: the first guess's offset from the world point, a - x (0: the
+                            * cold start a = x) */
 } ww_query_opts;
 
 #define WW_QUERY_TOLERANCE 1e-9
@@ -57,5 +61,21 @@ int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *
  * Default tolerance and iteration cap. Returns out->converged. */
 int ww_water_at(const ww_scene *sc, const ww_state *st, double x, double z,
                 double min_wavelength, ww_water_sample *out);
+
+/* how low the surface can be anywhere now: the rest level less every wave's and live ripple's
+ * reach (steep sines reach 2 A below their mean, the others A), m. What lies lower is under
+ * water wherever it is, without a query. */
+double ww_water_lowest(const ww_scene *sc, const ww_state *st);
+
+/* the same query warm-started from the answer at this sample point one step before: the rest
+ * point's offset from the world point moves little between steps (the body and the waves move by
+ * a few mm), so the inversion starts at the offset extrapolated linearly from the last two steps
+ * and needs fewer evaluations than from a = x. warm (WW_WARM_STRIDE values, sim/state.h, kept in the owning
+ * system's state, one per sample point): [0, 1] the last answer's a - x, m; [2, 3] its change
+ * over the last step, m. All 0 is the cold start (reset); the query updates it. The answer is the
+ * cold query's within the tolerance (1e-9 m): only where a sea folds can the two find different
+ * rest points. */
+int ww_water_at_warm(const ww_scene *sc, const ww_state *st, double x, double z,
+                     double min_wavelength, double warm[WW_WARM_STRIDE], ww_water_sample *out);
 
 #endif
