@@ -49,8 +49,10 @@ static void evaluate(const ww_scene *sc, const double *phase, double minL, const
     double dx0 = 0.0, dz0 = 0.0, phi = 0.0;
     for (int i = 0; i < sc->nwaves; i++) {
         const ww_wave *w = &sc->waves[i];
-        pr->sn[i] = pr->cn[i] = 0.0;
-        if (w->wavelength < minL) continue;
+        if (w->wavelength < minL) {
+            pr->sn[i] = pr->cn[i] = 0.0;
+            continue;
+        }
         double dx = w->dir[0], dz = w->dir[1];
         double ph = w->k * (dx * a[0] + dz * a[1]) + phase[i];
         double s, c;
@@ -148,22 +150,21 @@ static void direction(const ww_scene *sc, double minL, const probe *pr, double d
  * would turn by more than NEAR_TURN. The residual is measured as in evaluate, not estimated. */
 static int evaluate_near(const ww_scene *sc, double minL, const double x[2], const probe *from,
                          const double a[2], probe *pr) {
-    double da0 = a[0] - from->a[0], da1 = a[1] - from->a[1], e[WW_MAX_WAVES];
-    for (int i = 0; i < sc->nwaves; i++) {
-        const ww_wave *w = &sc->waves[i];
-        e[i] = w->k * (w->dir[0] * da0 + w->dir[1] * da1);
-        if (w->wavelength >= minL && !(fabs(e[i]) <= NEAR_TURN)) return 0;
-    }
+    double da0 = a[0] - from->a[0], da1 = a[1] - from->a[1];
     double dx0 = 0.0, dz0 = 0.0, phi = 0.0;
     for (int i = 0; i < sc->nwaves; i++) {
         const ww_wave *w = &sc->waves[i];
-        pr->sn[i] = pr->cn[i] = 0.0;
-        if (w->wavelength < minL) continue;
-        double z = e[i] * e[i];
-        double se = e[i] * (1.0 + z * (SIN3 + z * (SIN5 + z * SIN7)));
+        if (w->wavelength < minL) {
+            pr->sn[i] = pr->cn[i] = 0.0;
+            continue;
+        }
+        double dx = w->dir[0], dz = w->dir[1], e = w->k * (dx * da0 + dz * da1);
+        if (!(fabs(e) <= NEAR_TURN)) return 0; /* pr is scratch until it is returned whole */
+        double z = e * e;
+        double se = e * (1.0 + z * (SIN3 + z * (SIN5 + z * SIN7)));
         double ce = 1.0 + z * (COS2 + z * (COS4 + z * COS6));
         double s = from->sn[i] * ce + from->cn[i] * se, c = from->cn[i] * ce - from->sn[i] * se;
-        double dx = w->dir[0], dz = w->dir[1], qa = w->steepness * w->amplitude;
+        double qa = w->steepness * w->amplitude;
         pr->sn[i] = s;
         pr->cn[i] = c;
         dx0 += qa * dx * c;
