@@ -30,7 +30,8 @@ typedef struct probe {
     double a[2];       /* rest point, m */
     double F[2];       /* a + D(a) - x, m */
     double norm;       /* |F|, m */
-    double G;          /* the potential whose gradient is F (see ww_water_height), m^2 */
+    double G;          /* the potential whose gradient is F (see ww_water_height), m^2; NaN until
+                        * potential() works it out */
     double *sn, *cn;   /* sin(phi), cos(phi) per component (0 for the ignored ones) */
 } probe;
 
@@ -46,7 +47,7 @@ typedef struct answer {
  * gradient is F since d/da (Q A / k) sin(phi) = Q A D cos(phi) */
 static void evaluate(const ww_scene *sc, const double *phase, double minL, const double x[2],
                      const double a[2], probe *pr) {
-    double dx0 = 0.0, dz0 = 0.0, phi = 0.0;
+    double dx0 = 0.0, dz0 = 0.0;
     for (int i = 0; i < sc->nwaves; i++) {
         const ww_wave *w = &sc->waves[i];
         if (w->wavelength < minL) {
@@ -62,15 +63,28 @@ static void evaluate(const ww_scene *sc, const double *phase, double minL, const
         pr->cn[i] = c;
         dx0 += qa * dx * c;
         dz0 += qa * dz * c;
-        phi += qa / w->k * s;
     }
     pr->a[0] = a[0];
     pr->a[1] = a[1];
     pr->F[0] = a[0] + dx0 - x[0];
     pr->F[1] = a[1] + dz0 - x[1];
     pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
-    double ex = a[0] - x[0], ez = a[1] - x[1];
-    pr->G = 0.5 * (ex * ex + ez * ez) + phi;
+    pr->G = NAN; /* potential(), where the line search needs it */
+}
+
+/* G at the probe, from its sines, once: only a trial that does not halve |F| needs it */
+static double potential(const ww_scene *sc, double minL, const double x[2], probe *pr) {
+    if (isnan(pr->G)) {
+        double phi = 0.0;
+        for (int i = 0; i < sc->nwaves; i++) {
+            const ww_wave *w = &sc->waves[i];
+            if (w->wavelength < minL) continue;
+            phi += w->steepness * w->amplitude / w->k * pr->sn[i];
+        }
+        double ex = pr->a[0] - x[0], ez = pr->a[1] - x[1];
+        pr->G = 0.5 * (ex * ex + ez * ez) + phi;
+    }
+    return pr->G;
 }
 
 /* height, slope, Jacobian and particle velocity at the probe's rest point */
@@ -151,7 +165,7 @@ static void direction(const ww_scene *sc, double minL, const probe *pr, double d
 static int evaluate_near(const ww_scene *sc, double minL, const double x[2], const probe *from,
                          const double a[2], probe *pr) {
     double da0 = a[0] - from->a[0], da1 = a[1] - from->a[1];
-    double dx0 = 0.0, dz0 = 0.0, phi = 0.0;
+    double dx0 = 0.0, dz0 = 0.0;
     for (int i = 0; i < sc->nwaves; i++) {
         const ww_wave *w = &sc->waves[i];
         if (w->wavelength < minL) {
@@ -169,15 +183,13 @@ static int evaluate_near(const ww_scene *sc, double minL, const double x[2], con
         pr->cn[i] = c;
         dx0 += qa * dx * c;
         dz0 += qa * dz * c;
-        phi += qa / w->k * s;
     }
     pr->a[0] = a[0];
     pr->a[1] = a[1];
     pr->F[0] = a[0] + dx0 - x[0];
     pr->F[1] = a[1] + dz0 - x[1];
     pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
-    double ex = a[0] - x[0], ez = a[1] - x[1];
-    pr->G = 0.5 * (ex * ex + ez * ez) + phi;
+    pr->G = NAN; /* potential(), where the line search needs it */
     return 1;
 }
 
@@ -211,8 +223,8 @@ static int invert(const ww_scene *sc, const double *phase, double minL, const do
             if (!evaluate_near(sc, minL, x, cur, a, trial)) evaluate(sc, phase, minL, x, a, trial);
             it++;
             if (trial->norm < top->norm) top = trial;
-            if (trial->G <= cur->G + ARMIJO * lam * slope ||
-                trial->norm <= RESIDUAL_CUT * cur->norm) {
+            if (trial->norm <= RESIDUAL_CUT * cur->norm ||
+                potential(sc, minL, x, trial) <= potential(sc, minL, x, cur) + ARMIJO * lam * slope) {
                 next = trial;
                 break;
             }
