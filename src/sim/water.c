@@ -30,7 +30,8 @@ typedef struct probe {
     double a[2];       /* rest point, m */
     double F[2];       /* a + D(a) - x, m */
     double norm;       /* |F|, m */
-    double G;          /* the potential whose gradient is F (see ww_water_height), m^2 */
+    double G;          /* the potential whose gradient is F (see ww_water_height), m^2; NaN until
+                        * potential() works it out */
     double *sn, *cn;   /* sin(phi), cos(phi) per component (0 for the ignored ones) */
 } probe;
 
@@ -46,11 +47,13 @@ typedef struct answer {
  * gradient is F since d/da (Q A / k) sin(phi) = Q A D cos(phi) */
 static void evaluate(const ww_scene *sc, const double *phase, double minL, const double x[2],
                      const double a[2], probe *pr) {
-    double dx0 = 0.0, dz0 = 0.0, phi = 0.0;
+    double dx0 = 0.0, dz0 = 0.0;
     for (int i = 0; i < sc->nwaves; i++) {
         const ww_wave *w = &sc->waves[i];
-        pr->sn[i] = pr->cn[i] = 0.0;
-        if (w->wavelength < minL) continue;
+        if (w->wavelength < minL) {
+            pr->sn[i] = pr->cn[i] = 0.0;
+            continue;
+        }
         double dx = w->dir[0], dz = w->dir[1];
         double ph = w->k * (dx * a[0] + dz * a[1]) + phase[i];
         double s, c;
@@ -60,15 +63,28 @@ static void evaluate(const ww_scene *sc, const double *phase, double minL, const
         pr->cn[i] = c;
         dx0 += qa * dx * c;
         dz0 += qa * dz * c;
-        phi += qa / w->k * s;
     }
     pr->a[0] = a[0];
     pr->a[1] = a[1];
     pr->F[0] = a[0] + dx0 - x[0];
     pr->F[1] = a[1] + dz0 - x[1];
     pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
-    double ex = a[0] - x[0], ez = a[1] - x[1];
-    pr->G = 0.5 * (ex * ex + ez * ez) + phi;
+    pr->G = NAN; /* potential(), where the line search needs it */
+}
+
+/* G at the probe, from its sines, once: only a trial that does not halve |F| needs it */
+static double potential(const ww_scene *sc, double minL, const double x[2], probe *pr) {
+    if (isnan(pr->G)) {
+        double phi = 0.0;
+        for (int i = 0; i < sc->nwaves; i++) {
+            const ww_wave *w = &sc->waves[i];
+            if (w->wavelength < minL) continue;
+            phi += w->steepness * w->amplitude / w->k * pr->sn[i];
+        }
+        double ex = pr->a[0] - x[0], ez = pr->a[1] - x[1];
+        pr->G = 0.5 * (ex * ex + ez * ez) + phi;
+    }
+    return pr->G;
 }
 
 /* height, slope, Jacobian and particle velocity at the probe's rest point */
@@ -130,16 +146,58 @@ static void direction(const ww_scene *sc, double minL, const probe *pr, double d
     }
 }
 
-/* copies pr into best, its sines and cosines into best's own buffers */
-static void keep(const ww_scene *sc, probe *best, const probe *pr) {
-    double *sn = best->sn, *cn = best->cn;
+/* a step that turns every phase by at most this (rad) makes its trial's sines and cosines from
+ * the current ones by angle addition (evaluate_near) instead of the sincos of each phase */
+#define NEAR_TURN 1e-2
+/* the Taylor coefficients of sin e / e and cos e in e^2: -1/3!, 1/5!, -1/7!; -1/2!, 1/4!, -1/6! */
+#define SIN3 (-1.0 / 6.0)
+#define SIN5 (1.0 / 120.0)
+#define SIN7 (-1.0 / 5040.0)
+#define COS2 (-0.5)
+#define COS4 (1.0 / 24.0)
+#define COS6 (-1.0 / 720.0)
+
+/* the trial at a from the probe from at a nearby point: each component's phase turns by
+ * e = k D.(a - from.a), and sin(phi + e) = sin phi cos e + cos phi sin e, with sin e and cos e
+ * from their Taylor series to e^7 and e^6 (truncation below 3e-21 for |e| <= NEAR_TURN, so the
+ * same to rounding as evaluate's sincos of the phase). Returns 0, leaving pr alone, where a phase
+ * would turn by more than NEAR_TURN. The residual is measured as in evaluate, not estimated. */
+static int evaluate_near(const ww_scene *sc, double minL, const double x[2], const probe *from,
+                         const double a[2], probe *pr) {
+    double da0 = a[0] - from->a[0], da1 = a[1] - from->a[1];
+    double dx0 = 0.0, dz0 = 0.0;
     for (int i = 0; i < sc->nwaves; i++) {
-        sn[i] = pr->sn[i];
-        cn[i] = pr->cn[i];
+        const ww_wave *w = &sc->waves[i];
+        if (w->wavelength < minL) {
+            pr->sn[i] = pr->cn[i] = 0.0;
+            continue;
+        }
+        double dx = w->dir[0], dz = w->dir[1], e = w->k * (dx * da0 + dz * da1);
+        if (!(fabs(e) <= NEAR_TURN)) return 0; /* pr is scratch until it is returned whole */
+        double z = e * e;
+        double se = e * (1.0 + z * (SIN3 + z * (SIN5 + z * SIN7)));
+        double ce = 1.0 + z * (COS2 + z * (COS4 + z * COS6));
+        double s = from->sn[i] * ce + from->cn[i] * se, c = from->cn[i] * ce - from->sn[i] * se;
+        double qa = w->steepness * w->amplitude;
+        pr->sn[i] = s;
+        pr->cn[i] = c;
+        dx0 += qa * dx * c;
+        dz0 += qa * dz * c;
     }
-    *best = *pr;
-    best->sn = sn;
-    best->cn = cn;
+    pr->a[0] = a[0];
+    pr->a[1] = a[1];
+    pr->F[0] = a[0] + dx0 - x[0];
+    pr->F[1] = a[1] + dz0 - x[1];
+    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
+    pr->G = NAN; /* potential(), where the line search needs it */
+    return 1;
+}
+
+/* the slot that is neither the current point nor the best so far */
+static probe *free_slot(probe slot[3], const probe *cur, const probe *top) {
+    for (int k = 0; k < 2; k++)
+        if (&slot[k] != cur && &slot[k] != top) return &slot[k];
+    return &slot[2];
 }
 
 /* damped Newton on F(a) = a + D(a) - x from a = a0 (x for a cold start). F is the gradient of
@@ -148,36 +206,36 @@ static void keep(const ww_scene *sc, probe *best, const probe *pr) {
  * on G converges from any start (Nocedal and Wright, "Numerical Optimization", 2nd ed., ch. 3:
  * Armijo condition, quadratic interpolation of the step). Returns the evaluations taken. */
 static int invert(const ww_scene *sc, const double *phase, double minL, const double x[2],
-                  const double a0[2], double tol, int maxit, probe *best) {
-    double buf[4][WW_MAX_WAVES];
-    probe cur = {.sn = buf[0], .cn = buf[1]}, trial = {.sn = buf[2], .cn = buf[3]};
-    evaluate(sc, phase, minL, x, a0, &cur);
+                  const double a0[2], double tol, int maxit, probe slot[3], const probe **best) {
+    /* the probes change roles (current point, trial, best so far) by pointer, not by copying */
+    probe *cur = &slot[0], *top = cur;
+    evaluate(sc, phase, minL, x, a0, cur);
     int it = 1;
-    keep(sc, best, &cur);
-    while (cur.norm > tol && it < maxit) {
+    while (cur->norm > tol && it < maxit) {
         double d[2];
-        direction(sc, minL, &cur, d);
-        double slope = cur.F[0] * d[0] + cur.F[1] * d[1]; /* dG/dlambda at 0 */
+        direction(sc, minL, cur, d);
+        double slope = cur->F[0] * d[0] + cur->F[1] * d[1]; /* dG/dlambda at 0 */
         double lam = 1.0;
-        int accepted = 0;
+        probe *next = NULL;
         while (it < maxit) {
-            double a[2] = {cur.a[0] + lam * d[0], cur.a[1] + lam * d[1]};
-            evaluate(sc, phase, minL, x, a, &trial);
+            probe *trial = free_slot(slot, cur, top);
+            double a[2] = {cur->a[0] + lam * d[0], cur->a[1] + lam * d[1]};
+            if (!evaluate_near(sc, minL, x, cur, a, trial)) evaluate(sc, phase, minL, x, a, trial);
             it++;
-            if (trial.norm < best->norm) keep(sc, best, &trial);
-            if (trial.G <= cur.G + ARMIJO * lam * slope || trial.norm <= RESIDUAL_CUT * cur.norm) {
-                accepted = 1;
+            if (trial->norm < top->norm) top = trial;
+            if (trial->norm <= RESIDUAL_CUT * cur->norm ||
+                potential(sc, minL, x, trial) <= potential(sc, minL, x, cur) + ARMIJO * lam * slope) {
+                next = trial;
                 break;
             }
             /* minimiser of the quadratic through G(0), G'(0) and G(lam) */
-            double next = -slope * lam * lam / (2.0 * (trial.G - cur.G - slope * lam));
-            lam = fmin(fmax(next, LAMBDA_LO * lam), LAMBDA_HI * lam);
+            double q = -slope * lam * lam / (2.0 * (trial->G - cur->G - slope * lam));
+            lam = fmin(fmax(q, LAMBDA_LO * lam), LAMBDA_HI * lam);
         }
-        if (!accepted) break;
-        probe t = cur; /* the trial becomes the current point, buffers and all */
-        cur = trial;
-        trial = t;
+        if (!next) break;
+        cur = next;
     }
+    *best = top;
     return it;
 }
 
@@ -205,16 +263,21 @@ int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *
     double y, dy[2], J[3], vel[3], rest[2], residual;
     int iterations;
     if (sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM) {
-        double snb[WW_MAX_WAVES], cnb[WW_MAX_WAVES];
-        probe best = {.sn = snb, .cn = cnb};
+        double buf[6][WW_MAX_WAVES];
+        probe slot[3]; /* evaluate fills every other field */
+        for (int k = 0; k < 3; k++) {
+            slot[k].sn = buf[2 * k];
+            slot[k].cn = buf[2 * k + 1];
+        }
+        const probe *best;
         answer an;
         double a0[2] = {xr[0], xr[1]};
         if (opts) {
             a0[0] += opts->start[0];
             a0[1] += opts->start[1];
         }
-        iterations = invert(sc, phase, minL, xr, a0, tol, maxit, &best);
-        finish(sc, minL, &best, &an);
+        iterations = invert(sc, phase, minL, xr, a0, tol, maxit, slot, &best);
+        finish(sc, minL, best, &an);
         y = sc->water_level + an.Y;
         dy[0] = an.dY[0];
         dy[1] = an.dY[1];
@@ -222,9 +285,9 @@ int ww_water_height(const ww_field *f, double x, double z, const ww_query_opts *
             J[c] = an.J[c];
             vel[c] = an.vel[c];
         }
-        rest[0] = best.a[0];
-        rest[1] = best.a[1];
-        residual = best.norm;
+        rest[0] = best->a[0];
+        rest[1] = best->a[1];
+        residual = best->norm;
     } else {
         /* no sideways motion: the rest point is the world point */
         ww_wave_point p;
