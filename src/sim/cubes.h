@@ -25,6 +25,7 @@
 #ifndef WW_CUBES_H
 #define WW_CUBES_H
 
+#include "sim/boxwater.h"
 #include "sim/state.h"
 
 #define WW_WATER_RHO 1000.0 /* kg/m^3 */
@@ -36,19 +37,8 @@ void ww_cubes_step(const ww_scene *sc, ww_state *st);
 /* WW_EV_PRESS */
 void ww_cubes_event(const ww_scene *sc, ww_state *st, const ww_event *ev);
 
-/* what the water does to cube i at its pose in st, at st->t (Archimedes columns) */
-typedef struct ww_cube_water {
-    double volume;      /* submerged volume, m^3 */
-    double centre[3];   /* centre of buoyancy, m (the cube's centre when volume is 0) */
-    double waterplane;  /* -dV/dy: the waterline area the heave sees, m^2 */
-    double waterplane_moment; /* sum over the waterline of area x horizontal offset^2, m^4 */
-    double velocity[3]; /* volume-weighted water velocity, m/s */
-    /* the heave's exact buoyancy law over the step (surface and tilt held): raising the box by
-     * xi makes column c's wet length clamp(wet[c] - xi / up_y, 0, size) */
-    int ncolumns;
-    double up_y, cell_area;
-    double wet[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS]; /* unclamped wet lengths, m */
-} ww_cube_water;
+/* what the water does to cube i at its pose in st, at st->t (Archimedes columns, sim/boxwater.h) */
+typedef ww_box_water ww_cube_water;
 
 void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water *out);
 

@@ -1,6 +1,6 @@
 /* floaters.c - floating models (model in floaters.h): the cubes' Archimedes buoyancy
- * (sim/cubes.c has the derivations and sources) for a box with edges e = (e0, e1, e2) along the
- * model's axes instead of a cube.
+ * (sim/cubes.c has the derivations and sources; sim/boxwater.c the columns and the heave both
+ * use) for a box with edges e = (e0, e1, e2) along the model's axes instead of a cube.
  *
  * What changes from a cube of edge s:
  *   columns   the box is cut into n x n prisms along its axis U nearest the vertical; a prism's
@@ -25,39 +25,12 @@
 #include <math.h>
 
 #include "core/mathx.h"
+#include "sim/boxwater.h"
 #include "sim/cubes.h"
 #include "sim/ripples.h"
 #include "sim/water.h"
 
-/* ---- pure helpers (the cubes' own, for a box) ---------------------------------------------- */
-
-/* unit quaternion q (w x y z) to the rotated local axes: ax[k] = R e_k */
-static void quat_axes(const double q[4], double ax[3][3]) {
-    double w = q[0], x = q[1], y = q[2], z = q[3];
-    ax[0][0] = 1 - 2 * (y * y + z * z), ax[0][1] = 2 * (x * y + w * z), ax[0][2] = 2 * (x * z - w * y);
-    ax[1][0] = 2 * (x * y - w * z), ax[1][1] = 1 - 2 * (x * x + z * z), ax[1][2] = 2 * (y * z + w * x);
-    ax[2][0] = 2 * (x * z + w * y), ax[2][1] = 2 * (y * z - w * x), ax[2][2] = 1 - 2 * (x * x + y * y);
-}
-
-/* q <- exp(w dt / 2) q: the exact rotation by the world angular velocity w over dt */
-static void quat_turn(double q[4], const double w[3], double dt) {
-    double ang = ww_m_len3(w) * dt;
-    if (!(ang > 0.0)) return;
-    double h = 0.5 * ang, s = sin(h) / ww_m_len3(w), e[4] = {cos(h), w[0] * s, w[1] * s, w[2] * s};
-    double r[4] = {e[0] * q[0] - e[1] * q[1] - e[2] * q[2] - e[3] * q[3],
-                   e[0] * q[1] + e[1] * q[0] + e[2] * q[3] - e[3] * q[2],
-                   e[0] * q[2] - e[1] * q[3] + e[2] * q[0] + e[3] * q[1],
-                   e[0] * q[3] + e[1] * q[2] - e[2] * q[1] + e[3] * q[0]};
-    double n = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
-    for (int k = 0; k < 4; k++) q[k] = r[k] / n;
-}
-
-static int up_axis(double ax[3][3]) {
-    int best = 0;
-    for (int k = 1; k < 3; k++)
-        if (fabs(ax[k][1]) > fabs(ax[best][1])) best = k;
-    return best;
-}
+/* ---- the body ------------------------------------------------------------------------------ */
 
 static double body_volume(const ww_floater_desc *d) {
     return d->extent[0] * d->extent[1] * d->extent[2];
@@ -65,148 +38,12 @@ static double body_volume(const ww_floater_desc *d) {
 
 /* ---- water on a box ------------------------------------------------------------------------ */
 
-typedef struct box_water {
-    double volume, centre[3], waterplane, waterplane_moment, velocity[3];
-    int ncolumns;
-    double up_y, cell_area, length; /* length: the box along U, where a column's wet part ends */
-    double wet[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS];
-} box_water;
-
-/* the cubes' ww_cubes_water for a box: columns along U, volumes summed over point-mirrored pairs
- * so that a symmetric box on flat water feels exactly no torque */
-static void box_water_at(const ww_scene *sc, ww_state *st, int j, box_water *out) {
+/* floater j's columns against the surface (sim/boxwater.h), warm-started from its state */
+static void box_water_at(const ww_scene *sc, ww_state *st, int j, ww_box_water *out) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
-    const double *c = st->floater_pos + 3 * j;
-    double ax[3][3];
-    quat_axes(st->floater_rot + 4 * j, ax);
-    int a = up_axis(ax), ap = (a + 1) % 3, aq = (a + 2) % 3;
-    double sg = ax[a][1] < 0.0 ? -1.0 : 1.0;
-    double U[3] = {sg * ax[a][0], sg * ax[a][1], sg * ax[a][2]};
-    const double *P = ax[ap], *Q = ax[aq];
-    double s = d->extent[a], h = 0.5 * s;
-    int n = d->columns;
     double *warm = st->floater_warm + WW_WARM_STRIDE * ww_floater_samples_before(sc, j);
-    double cp = d->extent[ap] / n, cq = d->extent[aq] / n, dA = cp * cq;
-
-    *out = (box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
-                       .cell_area = dA, .length = s};
-    enum { MAXC = WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS };
-    double vol[MAXC], off3[MAXC][3], vel3[MAXC][3];
-    for (int iu = 0; iu < n; iu++) {
-        for (int iv = 0; iv < n; iv++) {
-            int col = iu * n + iv;
-            double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq, r[3];
-            for (int k = 0; k < 3; k++) r[k] = u * P[k] + v * Q[k];
-            ww_water_sample ws;
-            ww_water_at_warm(sc, st, c[0] + r[0], c[2] + r[2], 0.0, warm + WW_WARM_STRIDE * col,
-                             &ws);
-            double wet = (ws.height - (c[1] + r[1])) / U[1] + h;
-            double L = ww_m_clamp(wet, 0.0, s);
-            out->wet[col] = wet;
-            if (wet > 0.0 && wet < s) {
-                double r2 = r[0] * r[0] + r[2] * r[2];
-                out->waterplane += dA / U[1];
-                out->waterplane_moment += dA / U[1] * r2;
-            }
-            double off = 0.5 * (L - s);
-            vol[col] = dA * L;
-            for (int k = 0; k < 3; k++) {
-                off3[col][k] = r[k] + off * U[k];
-                vel3[col][k] = ws.velocity[k];
-            }
-        }
-    }
-    double moment[3] = {0.0, 0.0, 0.0}, vel[3] = {0.0, 0.0, 0.0};
-    int nc = n * n;
-    for (int a0 = 0; a0 < (nc + 1) / 2; a0++) {
-        int a1 = nc - 1 - a0;
-        if (a1 == a0) {
-            out->volume += vol[a0];
-            for (int k = 0; k < 3; k++) {
-                moment[k] += vol[a0] * off3[a0][k];
-                vel[k] += vol[a0] * vel3[a0][k];
-            }
-            continue;
-        }
-        out->volume += vol[a0] + vol[a1];
-        for (int k = 0; k < 3; k++) {
-            moment[k] += vol[a0] * off3[a0][k] + vol[a1] * off3[a1][k];
-            vel[k] += vol[a0] * vel3[a0][k] + vol[a1] * vel3[a1][k];
-        }
-    }
-    if (out->volume > 0.0) {
-        for (int k = 0; k < 3; k++) {
-            out->centre[k] = c[k] + moment[k] / out->volume;
-            out->velocity[k] = vel[k] / out->volume;
-        }
-    }
-}
-
-/* the heave's root is found to this fraction of its bracket's size (rounding) */
-#define HEAVE_TOLERANCE 1e-15
-#define HEAVE_MAX_ITERATIONS 100
-
-/* int_0^x clamp(x', 0, s) dx' */
-static double clamp_integral(double x, double s) {
-    if (x <= 0.0) return 0.0;
-    if (x < s) return 0.5 * x * x;
-    return 0.5 * s * s + s * (x - s);
-}
-
-/* (1 / xi) int_0^xi V, the discrete gradient of the buoyancy's potential, and its derivative
- * in xi (sim/cubes.c's volume_mean for a box of length w->length along U) */
-static double volume_mean(const box_water *w, double xi, double *slope) {
-    double s = w->length, lift = xi / w->up_y;
-    if (fabs(lift) < 1e-7 * s) {
-        double v = 0.0, wet = 0.0;
-        for (int c = 0; c < w->ncolumns; c++) {
-            double x = w->wet[c] - 0.5 * lift;
-            v += ww_m_clamp(x, 0.0, s);
-            wet += x > 0.0 && x < s;
-        }
-        *slope = -0.5 * w->cell_area * wet / w->up_y;
-        return w->cell_area * v;
-    }
-    double acc = 0.0, v = 0.0;
-    for (int c = 0; c < w->ncolumns; c++) {
-        double x = w->wet[c] - lift;
-        acc += clamp_integral(w->wet[c], s) - clamp_integral(x, s);
-        v += ww_m_clamp(x, 0.0, s);
-    }
-    double mean = w->cell_area * w->up_y * acc / xi;
-    *slope = (w->cell_area * v - mean) / xi;
-    return mean;
-}
-
-/* the heave over dt by the discrete-gradient midpoint rule, solved by Newton's method kept
- * inside the bracket (sim/cubes.c's heave_step); vmax the whole box's volume brackets the mean
- * submerged volume */
-static double heave_step(const box_water *w, double vmax, double kb, double a, double gamma,
-                         double u, double dt, double *v) {
-    double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
-    double lo = base / den, hi = (base + dt * kb * vmax) / den;
-    /* first guess: the root with the buoyancy linear in xi, V = V0 - A_w xi (so Vbar = V0 -
-     * A_w xi / 2), which is the answer while no column's wet length reaches 0 or the box */
-    double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
-    if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
-    for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
-        double slope, r = den * xi - base - dt * kb * volume_mean(w, xi, &slope);
-        if (r == 0.0) break;
-        if (r > 0.0)
-            hi = xi;
-        else
-            lo = xi;
-        double dr = den - dt * kb * slope, next = xi - r / dr;
-        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        double tol = HEAVE_TOLERANCE * (fabs(lo) + fabs(hi)) + 1e-300;
-        if (fabs(next - xi) <= tol || hi - lo <= tol || next <= lo || next >= hi) {
-            xi = next;
-            break;
-        }
-        xi = next;
-    }
-    *v = 2.0 * xi / dt - v0;
-    return xi;
+    ww_box_water_at(sc, st, st->floater_pos + 3 * j, st->floater_rot + 4 * j, d->extent,
+                    d->columns, warm, out);
 }
 
 /* ---- reset, pose --------------------------------------------------------------------------- */
@@ -230,7 +67,7 @@ void ww_floaters_reset(const ww_scene *sc, ww_state *st) {
 void ww_floater_pose(const ww_scene *sc, const ww_state *st, int j, double m[16]) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     double ax[3][3];
-    quat_axes(st->floater_rot + 4 * j, ax);
+    ww_box_axes(st->floater_rot + 4 * j, ax);
     for (int col = 0; col < 3; col++) {
         for (int row = 0; row < 3; row++) m[4 * col + row] = ax[col][row];
         m[4 * col + 3] = 0.0;
@@ -264,14 +101,14 @@ int ww_floater_box(const ww_scene *sc, const ww_state *st, int k, double c[3], d
 /* the water's pull on floater j at its start pose (sim/cubes.c's cube_forces, archimedes) */
 typedef struct box_forces {
     double ay, gamma, f, u[3], ah[2], alpha[3], tilt_k, spin_damp, drag_q;
-    box_water water;
+    ww_box_water water;
 } box_forces;
 
 static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     const double *c = st->floater_pos + 3 * j, *e = d->extent;
     double vol = body_volume(d), m = d->density * vol;
-    const box_water *w = &F->water;
+    const ww_box_water *w = &F->water;
     box_water_at(sc, st, j, &F->water);
     double fb = WW_WATER_RHO * WW_G * w->volume;
     F->f = w->volume / vol;
@@ -287,7 +124,7 @@ static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
         double a = e[(k + 1) % 3], b = e[(k + 2) % 3];
         inertia[k] = m * (a * a + b * b) / 12.0;
     }
-    quat_axes(st->floater_rot + 4 * j, ax);
+    ww_box_axes(st->floater_rot + 4 * j, ax);
     for (int i = 0; i < 3; i++) F->alpha[i] = 0.0;
     for (int k = 0; k < 3; k++) {
         double t = (ax[k][0] * tau[0] + ax[k][1] * tau[1] + ax[k][2] * tau[2]) / inertia[k];
@@ -309,7 +146,7 @@ static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
 /* lowest centre height on the seabed: half the box's vertical extent above the bottom */
 static double seabed_floor(const ww_scene *sc, const ww_floater_desc *d, const double q[4]) {
     double ax[3][3];
-    quat_axes(q, ax);
+    ww_box_axes(q, ax);
     double ext = 0.5 * (d->extent[0] * fabs(ax[0][1]) + d->extent[1] * fabs(ax[1][1]) +
                         d->extent[2] * fabs(ax[2][1]));
     return sc->water_level - sc->water_depth + ext;
@@ -330,7 +167,8 @@ static void step_floater(const ww_scene *sc, ww_state *st, int j) {
         y = vy * dt;
     } else {
         double a = F.ay - WW_WATER_RHO * WW_G * F.water.volume / m; /* all but buoyancy */
-        y = heave_step(&F.water, vol, WW_WATER_RHO * WW_G / m, a, F.gamma, F.u[1], dt, &vy);
+        y = ww_box_heave_step(&F.water, d->extent, WW_WATER_RHO * WW_G / m, a, F.gamma, F.u[1], dt,
+                               &vy);
     }
     v[1] = vy;
 
@@ -353,7 +191,7 @@ static void step_floater(const ww_scene *sc, ww_state *st, int j) {
     w[0] = (w[0] + dt * F.alpha[0]) / tilt;
     w[1] = (w[1] + dt * F.alpha[1]) / (1.0 + dt * F.spin_damp);
     w[2] = (w[2] + dt * F.alpha[2]) / tilt;
-    quat_turn(q, w, dt);
+    ww_box_turn(q, w, dt);
 
     double floor_y = seabed_floor(sc, d, q);
     if (p[1] < floor_y) {

@@ -1,0 +1,185 @@
+/* boxwater.c - a rigid box against the exact water surface (model in boxwater.h) */
+#include "sim/boxwater.h"
+
+#include <math.h>
+
+#include "core/mathx.h"
+#include "sim/water.h"
+
+/* unit quaternion q (w x y z) to the rotated local axes: ax[k] = R e_k */
+void ww_box_axes(const double q[4], double ax[3][3]) {
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    ax[0][0] = 1 - 2 * (y * y + z * z), ax[0][1] = 2 * (x * y + w * z), ax[0][2] = 2 * (x * z - w * y);
+    ax[1][0] = 2 * (x * y - w * z), ax[1][1] = 1 - 2 * (x * x + z * z), ax[1][2] = 2 * (y * z + w * x);
+    ax[2][0] = 2 * (x * z + w * y), ax[2][1] = 2 * (y * z - w * x), ax[2][2] = 1 - 2 * (x * x + y * y);
+}
+
+/* q <- exp(w dt / 2) q: the exact rotation by the world angular velocity w over dt */
+void ww_box_turn(double q[4], const double w[3], double dt) {
+    double ang = ww_m_len3(w) * dt;
+    if (!(ang > 0.0)) return;
+    double h = 0.5 * ang, s = sin(h) / ww_m_len3(w), e[4] = {cos(h), w[0] * s, w[1] * s, w[2] * s};
+    double r[4] = {e[0] * q[0] - e[1] * q[1] - e[2] * q[2] - e[3] * q[3],
+                   e[0] * q[1] + e[1] * q[0] + e[2] * q[3] - e[3] * q[2],
+                   e[0] * q[2] - e[1] * q[3] + e[2] * q[0] + e[3] * q[1],
+                   e[0] * q[3] + e[1] * q[2] - e[2] * q[1] + e[3] * q[0]};
+    double n = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+    for (int k = 0; k < 4; k++) q[k] = r[k] / n;
+}
+
+/* index of the local axis nearest the vertical */
+int ww_box_up_axis(double ax[3][3]) {
+    int best = 0;
+    for (int k = 1; k < 3; k++)
+        if (fabs(ax[k][1]) > fabs(ax[best][1])) best = k;
+    return best;
+}
+
+/* ---- the columns ---------------------------------------------------------------------------- */
+
+void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
+                     const double q[4], const double extent[3], int n, double *warm,
+                     ww_box_water *out) {
+    double ax[3][3];
+    ww_box_axes(q, ax);
+    int a = ww_box_up_axis(ax), ap = (a + 1) % 3, aq = (a + 2) % 3;
+    double sg = ax[a][1] < 0.0 ? -1.0 : 1.0;
+    double U[3] = {sg * ax[a][0], sg * ax[a][1], sg * ax[a][2]};
+    const double *P = ax[ap], *Q = ax[aq];
+    double s = extent[a], h = 0.5 * s;
+    double cp = extent[ap] / n, cq = extent[aq] / n, dA = cp * cq;
+
+    *out = (ww_box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
+                          .cell_area = dA, .length = s};
+    /* each column's volume and centroid offset from the centre, then sums over point-mirrored
+     * pairs, so that a symmetric box on flat water feels exactly no torque (rounding would
+     * otherwise seed a tilt that an unstable box amplifies) */
+    enum { MAXC = WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS };
+    double vol[MAXC], off3[MAXC][3], vel3[MAXC][3];
+    for (int iu = 0; iu < n; iu++) {
+        for (int iv = 0; iv < n; iv++) {
+            int col = iu * n + iv;
+            double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq, r[3];
+            for (int k = 0; k < 3; k++) r[k] = u * P[k] + v * Q[k];
+            ww_water_sample ws;
+            if (warm)
+                ww_water_at_warm(sc, st, c[0] + r[0], c[2] + r[2], 0.0,
+                                 warm + WW_WARM_STRIDE * col, &ws);
+            else
+                ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
+            double wet = (ws.height - (c[1] + r[1])) / U[1] + h; /* submerged length along U */
+            double L = ww_m_clamp(wet, 0.0, s);
+            out->wet[col] = wet;
+            if (wet > 0.0 && wet < s) {
+                double r2 = r[0] * r[0] + r[2] * r[2];
+                out->waterplane += dA / U[1];
+                out->waterplane_moment += dA / U[1] * r2;
+            }
+            double off = 0.5 * (L - s);
+            vol[col] = dA * L;
+            for (int k = 0; k < 3; k++) {
+                off3[col][k] = r[k] + off * U[k];
+                vel3[col][k] = ws.velocity[k];
+            }
+        }
+    }
+    double moment[3] = {0.0, 0.0, 0.0}, vel[3] = {0.0, 0.0, 0.0};
+    int nc = n * n;
+    for (int a0 = 0; a0 < (nc + 1) / 2; a0++) {
+        int a1 = nc - 1 - a0;
+        if (a1 == a0) {
+            out->volume += vol[a0];
+            for (int k = 0; k < 3; k++) {
+                moment[k] += vol[a0] * off3[a0][k];
+                vel[k] += vol[a0] * vel3[a0][k];
+            }
+            continue;
+        }
+        out->volume += vol[a0] + vol[a1];
+        for (int k = 0; k < 3; k++) {
+            moment[k] += vol[a0] * off3[a0][k] + vol[a1] * off3[a1][k];
+            vel[k] += vol[a0] * vel3[a0][k] + vol[a1] * vel3[a1][k];
+        }
+    }
+    if (out->volume > 0.0) {
+        for (int k = 0; k < 3; k++) {
+            out->centre[k] = c[k] + moment[k] / out->volume;
+            out->velocity[k] = vel[k] / out->volume;
+        }
+    }
+}
+
+/* ---- the heave ------------------------------------------------------------------------------ */
+
+/* the heave's root is found to this fraction of its bracket's size (rounding) */
+#define HEAVE_TOLERANCE 1e-15
+#define HEAVE_MAX_ITERATIONS 100
+
+/* int_0^x clamp(x', 0, s) dx' */
+static double clamp_integral(double x, double s) {
+    if (x <= 0.0) return 0.0;
+    if (x < s) return 0.5 * x * x;
+    return 0.5 * s * s + s * (x - s);
+}
+
+/* the mean submerged volume over [0, xi], (1 / xi) int_0^xi V (the discrete gradient), and its
+ * derivative in xi. With V(xi) = dA sum clamp(w_c - xi / U.y, 0, s):
+ * int_0^xi V = dA U.y sum (C(w_c) - C(w_c - xi / U.y)), C = clamp_integral, and
+ * d Vbar / d xi = (V(xi) - Vbar) / xi. Below a ten-millionth of the box the secant cancels: there
+ * Vbar is V at the midpoint (exact on a linear piece) and its slope half of V's there. */
+static double volume_mean(const ww_box_water *w, double xi, double *slope) {
+    double s = w->length, lift = xi / w->up_y;
+    if (fabs(lift) < 1e-7 * s) {
+        double v = 0.0, wet = 0.0;
+        for (int c = 0; c < w->ncolumns; c++) {
+            double x = w->wet[c] - 0.5 * lift;
+            v += ww_m_clamp(x, 0.0, s);
+            wet += x > 0.0 && x < s;
+        }
+        *slope = -0.5 * w->cell_area * wet / w->up_y;
+        return w->cell_area * v;
+    }
+    double acc = 0.0, v = 0.0;
+    for (int c = 0; c < w->ncolumns; c++) {
+        double x = w->wet[c] - lift;
+        acc += clamp_integral(w->wet[c], s) - clamp_integral(x, s);
+        v += ww_m_clamp(x, 0.0, s);
+    }
+    double mean = w->cell_area * w->up_y * acc / xi;
+    *slope = (w->cell_area * v - mean) / xi;
+    return mean;
+}
+
+/* the heave over dt by the discrete-gradient midpoint rule: returns xi1, sets *v.
+ * R(xi) = (2 / dt + gamma) xi - 2 v0 - dt (kb Vbar(xi) + a + gamma u) = 0, R increasing;
+ * Vbar in [0, the box's volume] brackets the root. kb = rho_w g / m. Solved by Newton's method kept inside the
+ * bracket, bisecting where a step would leave it (Press et al., "Numerical Recipes", rtsafe):
+ * R is piecewise smooth (its pieces change where a column's wet length reaches 0 or s), so
+ * Newton converges in a few steps where bisection took 50 to reach the bracket's rounding. */
+double ww_box_heave_step(const ww_box_water *w, const double extent[3], double kb, double a,
+                         double gamma, double u, double dt, double *v) {
+    double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
+    double lo = base / den, hi = (base + dt * kb * extent[0] * extent[1] * extent[2]) / den;
+    /* first guess: the root with the buoyancy linear in xi, V = V0 - A_w xi (so Vbar = V0 -
+     * A_w xi / 2), which is the answer while no column's wet length reaches 0 or the box */
+    double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
+    if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
+    for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
+        double slope, r = den * xi - base - dt * kb * volume_mean(w, xi, &slope);
+        if (r == 0.0) break;
+        if (r > 0.0)
+            hi = xi;
+        else
+            lo = xi;
+        double dr = den - dt * kb * slope, next = xi - r / dr;
+        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        double tol = HEAVE_TOLERANCE * (fabs(lo) + fabs(hi)) + 1e-300;
+        if (fabs(next - xi) <= tol || hi - lo <= tol || next <= lo || next >= hi) {
+            xi = next;
+            break;
+        }
+        xi = next;
+    }
+    *v = 2.0 * xi / dt - v0;
+    return xi;
+}

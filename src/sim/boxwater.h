@@ -1,0 +1,51 @@
+/* boxwater.h - a rigid box against the exact water surface, shared by the floating cubes
+ * (sim/cubes.c) and floating models (sim/floaters.c): the rotation helpers, the submerged volume
+ * by Archimedes columns, and the heave's implicit step.
+ *
+ * The box is cut into n x n columns along its axis nearest the vertical (U); each column's wet
+ * length comes from one exact surface query at its centre line, so the volume, the centre of
+ * buoyancy, the waterline's area and moment and the water's velocity follow. The heave is
+ * integrated by the discrete-gradient midpoint rule with the surface and the tilt held over the
+ * step (docs/simulation.md, "Cubes").
+ */
+#ifndef WW_BOXWATER_H
+#define WW_BOXWATER_H
+
+#include "scene/scene.h"
+#include "sim/state.h"
+
+/* what the water does to a box at its pose, at st->t */
+typedef struct ww_box_water {
+    double volume;      /* submerged volume, m^3 */
+    double centre[3];   /* centre of buoyancy, m (the box's centre when volume is 0) */
+    double waterplane;  /* -dV/dy: the waterline area the heave sees, m^2 */
+    double waterplane_moment; /* sum over the waterline of area x horizontal offset^2, m^4 */
+    double velocity[3]; /* volume-weighted water velocity, m/s */
+    /* the heave's exact buoyancy law over the step (surface and tilt held): raising the box by
+     * xi makes column c's wet length clamp(wet[c] - xi / up_y, 0, length) */
+    int ncolumns;
+    double up_y, cell_area;
+    double length;      /* the box along U, where a column's wet part ends, m */
+    double wet[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS]; /* unclamped wet lengths, m */
+} ww_box_water;
+
+/* unit quaternion q (w x y z) to the rotated local axes: ax[k] = R e_k */
+void ww_box_axes(const double q[4], double ax[3][3]);
+/* q <- exp(w dt / 2) q: the exact rotation by the world angular velocity w over dt */
+void ww_box_turn(double q[4], const double w[3], double dt);
+/* index of the local axis nearest the vertical */
+int ww_box_up_axis(double ax[3][3]);
+
+/* the box centred at c, turned by q, of edge lengths extent (local x, y, z), in n x n columns;
+ * warm: its n^2 columns' warm starts (sim/water.h), NULL for cold queries */
+void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
+                     const double q[4], const double extent[3], int n, double *warm,
+                     ww_box_water *out);
+
+/* the heave over dt: returns the rise xi over the step and sets *v, the new vertical velocity.
+ * extent: the box's edges (its volume brackets the mean submerged volume); kb = rho_w g / m; a:
+ * the other vertical accelerations; gamma, u: the linear drag and the water's vertical velocity */
+double ww_box_heave_step(const ww_box_water *w, const double extent[3], double kb, double a,
+                         double gamma, double u, double dt, double *v);
+
+#endif
