@@ -80,7 +80,9 @@ const int NDETAIL = 6; // water.c: WATER_NDETAIL
 // normal-only detail (water.c): short sines of a light breeze that only the shading sees (the
 // physics never feels them): (k Dx, k Dz 1/m, slope amplitude A k, phase at the mesh centre rad)
 uniform vec4 u_detail[NDETAIL];
-uniform float u_detail_len[NDETAIL]; // their wavelengths, m, longest first
+// their fixed part (water.c from waveblock.c's table): (direction x, z; wavelength m; slope
+// amplitude A k), constants the detail's loop folds in
+const vec4 DETAIL_WAVE[NDETAIL] = WW_DETAIL_WAVES;
 // foam's memory (water.c): the components that fold or steepen the surface most, re-evaluated
 // at FOAM_TAPS past instants. WW_FOAM_MEMORY 1 (water.c, per scene) builds it in: only where
 // the waves can fold enough for aged foam to show, since its code slows the whole shader on
@@ -297,16 +299,14 @@ void main() {
     if (u_distort.z > 0.5) {
         ww_footprint fp = ww_footprint_make(along, across, stretch, pix);
         vec2 g = vec2(0.0);
-        // a fixed count and no early exit, with each wavelength given: the loop unrolls and
-        // reads its uniforms at fixed places (llvmpipe gathers indexed loads lane by lane),
-        // which costs less than stopping at the first one faded out (ww_wave_fade is 0 there)
+        // a fixed count and no early exit, the wavelengths and directions constants: the loop
+        // unrolls and folds them in, which costs less on llvmpipe than working out 2 pi / |k|
+        // per pixel and stopping at the first one faded out (whose fade is 0 anyway)
         for (int j = 0; j < NDETAIL; j++) {
-            vec4 d = u_detail[j];
-            float L = u_detail_len[j];
-            vec2 dir = d.xy * (L / (2.0 * WW_PI));
-            float f = ww_wave_fade_along(L, dir, fp);
-            removed += 0.5 * (1.0 - f * f) * d.z * d.z;
-            g += (f * d.z * cos(d.w + dot(d.xy, v_local))) * dir;
+            vec4 w = DETAIL_WAVE[j];
+            float f = ww_wave_fade_along(w.z, w.xy, fp);
+            removed += 0.5 * (1.0 - f * f) * w.w * w.w;
+            g += (f * w.w * cos(u_detail[j].w + dot(u_detail[j].xy, v_local))) * w.xy;
         }
         n = normalize(n - vec3(g.x, 0.0, g.y));
     }

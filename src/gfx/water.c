@@ -37,7 +37,7 @@ struct ww_water {
     GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
     GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube, sky_dome;
     GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
-    GLint detail, detail_len, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
+    GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
     GLuint dudv_tex; /* water.look.detail: texture: the DuDv noise's gradient, tiled; 0: exact */
     int foam_n;                      /* components foam's memory re-evaluates, 0: none */
     int foam_slot[WATER_FOAM_WAVES]; /* their upload slots */
@@ -280,12 +280,13 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->cull = !(cull && strcmp(cull, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
     int dudv_tex = sc->render.water.detail == WW_DETAIL_TEXTURE;
-    char more[200];
+    char detail[400], more[600];
+    ww_water_detail_define(detail, sizeof detail);
     snprintf(more, sizeof more,
              "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
-             "#define WW_SKY_DOME_IMAGE %d\n#define WW_DUDV_TEXTURE %d\n%s",
+             "#define WW_SKY_DOME_IMAGE %d\n#define WW_DUDV_TEXTURE %d\n%s%s",
              foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc), dudv_tex,
-             ww_sky_map_define(sc));
+             detail, ww_sky_map_define(sc));
     ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
                                     !(fade && strcmp(fade, "0") == 0), more, &w->prog, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);
@@ -328,7 +329,6 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->fog_below_density = ww_gfx_uniform(gl, w->prog, "u_fog_below_density");
     w->alpha = ww_gfx_uniform(gl, w->prog, "u_alpha");
     w->detail = ww_gfx_uniform(gl, w->prog, "u_detail");
-    w->detail_len = ww_gfx_uniform(gl, w->prog, "u_detail_len");
     w->skirt = ww_gfx_uniform(gl, w->prog, "u_skirt_r");
     w->foam_wave = ww_gfx_uniform(gl, w->prog, "u_foam_wave");
     w->foam_phase = ww_gfx_uniform(gl, w->prog, "u_foam_phase");
@@ -443,9 +443,6 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     float det[WW_WATER_NDETAIL][4];
     ww_water_detail(f->st, centre, det);
     gl->Uniform4fv(w->detail, WW_WATER_NDETAIL, &det[0][0]);
-    float len[WW_WATER_NDETAIL]; /* the shader's loop reads them, not 2 pi / |k| per pixel */
-    for (int j = 0; j < WW_WATER_NDETAIL; j++) len[j] = (float)(WW_TAU / hypot(det[j][0], det[j][1]));
-    gl->Uniform1fv(w->detail_len, WW_WATER_NDETAIL, len);
     if (w->foam_n > 0) set_foam_memory(w, gl, sc); /* else the shader has no memory built in */
     bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
