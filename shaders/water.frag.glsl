@@ -51,6 +51,14 @@ uniform float u_specular;   // sun highlight strength
 uniform vec3 u_distort;     // (strength, screen fraction; pattern cells per metre; 1: DuDv on)
 uniform vec4 u_dudv_m[2];   // per layer, the mat2 (column-major) from rest offset (m) to cells
 uniform vec2 u_dudv_o[2];   // per layer: the centre's cells plus the drift, wrapped (CPU, double)
+// WW_DUDV_TEXTURE 1 (water.look.detail: texture): the noise's gradient per cell over its whole
+// period, made once by water.c (tiled, mipmapped), read instead of evaluating ww_noise
+#ifndef WW_DUDV_TEXTURE
+#define WW_DUDV_TEXTURE 0
+#endif
+#if WW_DUDV_TEXTURE
+uniform sampler2D u_dudv_grad;
+#endif
 uniform vec4 u_cam_axes;    // camera right and forward, horizontal parts (x, z, x, z), unit
 uniform vec2 u_inv_size;    // 1 / the main target's size, 1/px
 uniform vec2 u_clip_range;  // near, far clip, m
@@ -72,6 +80,9 @@ const int NDETAIL = 6; // water.c: WATER_NDETAIL
 // normal-only detail (water.c): short sines of a light breeze that only the shading sees (the
 // physics never feels them): (k Dx, k Dz 1/m, slope amplitude A k, phase at the mesh centre rad)
 uniform vec4 u_detail[NDETAIL];
+// their fixed part (water.c from waveblock.c's table): (direction x, z; wavelength m; slope
+// amplitude A k), constants the detail's loop folds in
+const vec4 DETAIL_WAVE[NDETAIL] = WW_DETAIL_WAVES;
 // foam's memory (water.c): the components that fold or steepen the surface most, re-evaluated
 // at FOAM_TAPS past instants. WW_FOAM_MEMORY 1 (water.c, per scene) builds it in: only where
 // the waves can fold enough for aged foam to show, since its code slows the whole shader on
@@ -264,9 +275,13 @@ void main() {
             mat2 m = mat2(u_dudv_m[j].xy, u_dudv_m[j].zw);
             float fade = ww_wave_fade(1.0 / length(m[0]), inv_fp); // a cell, m
             if (fade == 0.0) continue;
-            vec3 nz = ww_noise(m * v_local + u_dudv_o[j]);
+#if WW_DUDV_TEXTURE
+            vec2 gn = texture(u_dudv_grad, (m * v_local + u_dudv_o[j]) * (1.0 / float(NOISE_MASK + 1))).xy;
+#else
+            vec2 gn = ww_noise(m * v_local + u_dudv_o[j]).yz;
+#endif
             // the chain rule: d noise(M p + o) / dp = M^T grad noise
-            g += (j == 0 ? LAYER_WEIGHT0 : LAYER_WEIGHT1) * fade * (transpose(m) * nz.yz);
+            g += (j == 0 ? LAYER_WEIGHT0 : LAYER_WEIGHT1) * fade * (transpose(m) * gn);
         }
         dudv = g * cell;
         // far off a cell spans few pixels: an offset larger than NO_FOLD of it turns faster
@@ -284,18 +299,14 @@ void main() {
     if (u_distort.z > 0.5) {
         ww_footprint fp = ww_footprint_make(along, across, stretch, pix);
         vec2 g = vec2(0.0);
+        // a fixed count and no early exit, the wavelengths and directions constants: the loop
+        // unrolls and folds them in, which costs less on llvmpipe than working out 2 pi / |k|
+        // per pixel and stopping at the first one faded out (whose fade is 0 anyway)
         for (int j = 0; j < NDETAIL; j++) {
-            vec4 d = u_detail[j];
-            float k = length(d.xy), L = 2.0 * WW_PI / k;
-            // longest first (water.c): faded out across the view, this one and the rest are
-            // gone in every direction; their slope variance goes to the highlight
-            if (ww_faded_out(L, fp.inv_pix)) {
-                for (int i = j; i < NDETAIL; i++) removed += 0.5 * u_detail[i].z * u_detail[i].z;
-                break;
-            }
-            float f = ww_wave_fade_along(L, d.xy / k, fp);
-            removed += 0.5 * (1.0 - f * f) * d.z * d.z;
-            g += (f * d.z * cos(d.w + dot(d.xy, v_local)) / k) * d.xy;
+            vec4 w = DETAIL_WAVE[j];
+            float f = ww_wave_fade_along(w.z, w.xy, fp);
+            removed += 0.5 * (1.0 - f * f) * w.w * w.w;
+            g += (f * w.w * cos(u_detail[j].w + dot(u_detail[j].xy, v_local))) * w.xy;
         }
         n = normalize(n - vec3(g.x, 0.0, g.y));
     }

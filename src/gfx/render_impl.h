@@ -334,6 +334,7 @@ int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double c
  * centre (world x, z) in double */
 #define WW_WATER_NDETAIL 6 /* water.frag.glsl: NDETAIL; geometry.frag.glsl: WW_NDETAIL */
 void ww_water_detail(const ww_state *st, const double centre[2], float d[WW_WATER_NDETAIL][4]);
+void ww_water_detail_define(char *buf, size_t n);
 /* the water's DuDv pattern (waveblock.c): per layer the mat2 (column-major) from metres
  * relative to `centre` to lattice cells, and the offset there (water.frag.glsl, and the
  * caustics of geometry.frag.glsl, which see it as the surface's small irregular ripples) */

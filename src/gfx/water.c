@@ -6,6 +6,7 @@
  * the frame left (reflection, prepass) and foam's memory where the scene can fold.
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,7 +37,8 @@ struct ww_water {
     GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
     GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube, sky_dome;
     GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
-    GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory;
+    GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
+    GLuint dudv_tex; /* water.look.detail: texture: the DuDv noise's gradient, tiled; 0: exact */
     int foam_n;                      /* components foam's memory re-evaluates, 0: none */
     int foam_slot[WATER_FOAM_WAVES]; /* their upload slots */
     float skirt_r; /* rest radius from which vertices belong to the skirt, m (huge: none) */
@@ -98,6 +100,57 @@ static void foam_components(const ww_scene *sc, ww_water *w) {
         w->foam_slot[n] = best;
         w->foam_n = n + 1;
     }
+}
+
+/* water.look.detail: texture. The DuDv noise (water.frag.glsl: ww_noise, value noise on a
+ * lattice that repeats every DUDV_CELLS cells) is a fixed pattern in its cells; only the layers'
+ * maps from the water to the cells move. So its gradient is computed once, DUDV_TEXELS texels per
+ * cell over the whole period, and read per pixel with repeat wrapping (the tiling is exact) and
+ * trilinear mipmaps (the box filter of the gradient, which the shader's fade by the footprint
+ * completes), instead of four hashes and the interpolation per layer and pixel. */
+#define DUDV_CELLS 256  /* water.frag.glsl: NOISE_MASK + 1 */
+#define DUDV_TEXELS 4   /* texels per lattice cell: the gradient is a quadratic in a cell */
+
+/* water.frag.glsl: ww_hash, the same integer hash of a lattice point, in [0, 1] */
+static float dudv_hash(unsigned x, unsigned y) {
+    uint32_t h = (x & 255u) + (y & 255u) * 256u;
+    h = h * 747796405u + 2891336453u;
+    h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+    h = (h >> 22u) ^ h;
+    return (float)h * (1.0f / 4294967295.0f);
+}
+
+/* water.frag.glsl: ww_noise's gradient (per cell) at lattice coordinates (x, y) */
+static void dudv_gradient(double x, double y, float g[2]) {
+    double ix = floor(x), iy = floor(y), fx = x - ix, fy = y - iy;
+    double ux = fx * fx * (3.0 - 2.0 * fx), uy = fy * fy * (3.0 - 2.0 * fy);
+    double dx = 6.0 * fx * (1.0 - fx), dy = 6.0 * fy * (1.0 - fy);
+    unsigned cx = (unsigned)ix, cy = (unsigned)iy;
+    double a = dudv_hash(cx, cy), b = dudv_hash(cx + 1u, cy);
+    double d = dudv_hash(cx, cy + 1u), e = dudv_hash(cx + 1u, cy + 1u);
+    double k = a - b - d + e;
+    g[0] = (float)(2.0 * dx * (b - a + k * uy));
+    g[1] = (float)(2.0 * dy * (d - a + k * ux));
+}
+
+static ww_result dudv_texture(ww_water *w, const ww_gl *gl, ww_error *err) {
+    const int n = DUDV_CELLS * DUDV_TEXELS;
+    float *t = malloc((size_t)n * (size_t)n * 2 * sizeof *t);
+    if (!t) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory for the DuDv texture");
+    for (int j = 0; j < n; j++)
+        for (int i = 0; i < n; i++) /* texel centres, in cells */
+            dudv_gradient((i + 0.5) / DUDV_TEXELS, (j + 0.5) / DUDV_TEXELS, &t[2 * ((size_t)j * n + i)]);
+    gl->GenTextures(1, &w->dudv_tex);
+    gl->BindTexture(GL_TEXTURE_2D, w->dudv_tex);
+    gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RG16F, n, n, 0, GL_RG, GL_FLOAT, t);
+    gl->GenerateMipmap(GL_TEXTURE_2D);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    free(t);
+    return WW_OK;
 }
 
 /* the two triangles between rings j and j + 1 in segment i */
@@ -226,16 +279,19 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
     w->cull = !(cull && strcmp(cull, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
-    char more[160];
+    int dudv_tex = sc->render.water.detail == WW_DETAIL_TEXTURE;
+    char detail[400], more[600];
+    ww_water_detail_define(detail, sizeof detail);
     snprintf(more, sizeof more,
              "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
-             "#define WW_SKY_DOME_IMAGE %d\n%s",
-             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc),
-             ww_sky_map_define(sc));
+             "#define WW_SKY_DOME_IMAGE %d\n#define WW_DUDV_TEXTURE %d\n%s%s",
+             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc), dudv_tex,
+             detail, ww_sky_map_define(sc));
     ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
                                     !(fade && strcmp(fade, "0") == 0), more, &w->prog, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
+    if (rc == WW_OK && dudv_tex) rc = dudv_texture(w, gl, err);
     if (rc != WW_OK) {
         ww_water_free(w, gl);
         return rc;
@@ -278,6 +334,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->foam_phase = ww_gfx_uniform(gl, w->prog, "u_foam_phase");
     w->foam_step = ww_gfx_uniform(gl, w->prog, "u_foam_step");
     w->foam_memory = ww_gfx_uniform(gl, w->prog, "u_foam_memory");
+    w->dudv_grad = ww_gfx_uniform(gl, w->prog, "u_dudv_grad");
     foam_components(sc, w);
     *out = w;
     return WW_OK;
@@ -327,7 +384,8 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
 }
 
 /* texture units of the water program */
-enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SKY_CUBE, UNIT_SKY_DOME };
+enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SKY_CUBE, UNIT_SKY_DOME,
+       UNIT_DUDV };
 
 static void bind_unit(const ww_gl *gl, int unit, GLenum target, GLuint tex) {
     gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
@@ -391,10 +449,15 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
     if (r->sky_dome_image) bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, r->sky_dome_image);
+    if (w->dudv_tex) {
+        gl->Uniform1i(w->dudv_grad, UNIT_DUDV);
+        bind_unit(gl, UNIT_DUDV, GL_TEXTURE_2D, w->dudv_tex);
+    }
     gl->ActiveTexture(GL_TEXTURE0);
 }
 
 static void unbind_optics(const ww_gl *gl) {
+    bind_unit(gl, UNIT_DUDV, GL_TEXTURE_2D, 0);
     bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, 0);
     for (int u = UNIT_SCENE_DEPTH; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
@@ -460,6 +523,7 @@ void ww_water_free(ww_water *w, const ww_gl *gl) {
     if (w->vao) gl->DeleteVertexArrays(1, &w->vao);
     if (w->vbo) gl->DeleteBuffers(1, &w->vbo);
     if (w->ibo) gl->DeleteBuffers(1, &w->ibo);
+    if (w->dudv_tex) gl->DeleteTextures(1, &w->dudv_tex);
     ww_water_ubos_free(gl, &w->ubos);
     free(w);
 }

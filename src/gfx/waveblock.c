@@ -132,7 +132,7 @@ static ww_result bind_block(const ww_gl *gl, GLuint prog, const char *name, GLui
 ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, const char *fs,
                            int fade, const char *more, GLuint *prog, ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", NULL};
-    char defines[400];
+    char defines[1024];
     snprintf(defines, sizeof defines, "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES %d\n#define WW_FADE %d\n%s",
              ww_water_shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0,
              more ? more : "");
@@ -219,6 +219,18 @@ void ww_water_detail(const ww_state *st, const double centre[2], float d[WW_WATE
         /* as the wave phases: the wrap of omega t alone keeps it exact at large t */
         d[j][3] = (float)ww_m_wrap_tau(kx * centre[0] + kz * centre[1] - ww_m_wrap_tau(omega * st->t));
     }
+}
+
+/* the detail's fixed part as a GLSL constant (water.frag.glsl: WW_DETAIL_WAVES): per sine its
+ * unit direction, wavelength m and slope amplitude, so the shader's loop folds them in */
+void ww_water_detail_define(char *buf, size_t n) {
+    size_t at = (size_t)snprintf(buf, n, "#define WW_DETAIL_WAVES vec4[%d](", WW_WATER_NDETAIL);
+    for (int j = 0; j < WW_WATER_NDETAIL && at < n; j++) {
+        double a = detail_wave[j][1] * (WW_PI / 180.0);
+        at += (size_t)snprintf(buf + at, n - at, "%svec4(%.9g, %.9g, %.9g, %.9g)", j ? ", " : "",
+                               cos(a), sin(a), detail_wave[j][0], detail_wave[j][2]);
+    }
+    if (at < n) snprintf(buf + at, n - at, ")\n");
 }
 
 /* the DuDv pattern's two layers (water.frag.glsl): layer j maps a rest offset p (m) to lattice

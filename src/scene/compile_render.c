@@ -60,6 +60,8 @@ static const char *const FRESNEL_WORDS[] = {[WW_FRESNEL_BIAS_SCALE] = "bias_scal
                                             [WW_FRESNEL_SCHLICK] = "schlick", NULL};
 static const char *const CAUSTICS_WORDS[] = {[WW_CAUSTICS_ANALYTIC] = "analytic",
                                              [WW_CAUSTICS_TEXTURE] = "texture", NULL};
+static const char *const DETAIL_WORDS[] = {[WW_DETAIL_EXACT] = "exact",
+                                           [WW_DETAIL_TEXTURE] = "texture", NULL};
 static const char *const LIGHT_WORDS[] = {[WW_LIGHT_POINT] = "point", [WW_LIGHT_SPOT] = "spot",
                                           NULL};
 static const char *const BOOL_WORDS[] = {"false", "true", NULL};
@@ -431,7 +433,7 @@ ww_result wwc_water_look(ctx *c, const section *water) {
     static const char *const keys[] = {"fresnel", "fresnel_bias", "fresnel_scale",
                                        "fresnel_power", "distortion", "distortion_scale",
                                        "distortion_speed", "specular", "foam", "murk",
-                                       "caustics", "alpha_blend", NULL};
+                                       "caustics", "alpha_blend", "detail", NULL};
     static const char *const foam_keys[] = {"on", "amount", "life", NULL};
     static const char *const caustic_keys[] = {"on", "strength", "method", NULL};
     static const char *const alpha_keys[] = {"on", "alpha", NULL};
@@ -449,6 +451,9 @@ ww_result wwc_water_look(ctx *c, const section *water) {
     TRY(wwc_get_number(c, &s, "distortion_speed", &R_DRIFT, OPTIONAL, &w->distortion_speed));
     TRY(wwc_get_number(c, &s, "specular", &R_STRENGTH, OPTIONAL, &w->specular));
     TRY(wwc_get_number(c, &s, "murk", &R_MURK, OPTIONAL, &w->murk));
+    int detail = (int)w->detail;
+    TRY(wwc_get_word(c, &s, "detail", DETAIL_WORDS, &detail));
+    w->detail = (ww_water_detail_method)detail;
     TRY(get_feature(c, &s, "foam", foam_keys, &w->foam, &f));
     TRY(wwc_get_number(c, &f, "amount", &R_UNIT, OPTIONAL, &w->foam_amount));
     TRY(wwc_get_number(c, &f, "life", &R_FOAM_LIFE, OPTIONAL, &w->foam_life));

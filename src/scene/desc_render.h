@@ -72,6 +72,10 @@ typedef struct ww_shafts_desc {
  * looped set of caustic textures computed from the wave field when the renderer is made */
 typedef enum ww_caustics_method { WW_CAUSTICS_ANALYTIC = 0, WW_CAUSTICS_TEXTURE } ww_caustics_method;
 
+/* how the water's DuDv ripples are evaluated per pixel: the value noise's gradient computed
+ * exactly, or read from a tiled, mipmapped texture of it made once (gfx/water.c) */
+typedef enum ww_water_detail_method { WW_DETAIL_EXACT = 0, WW_DETAIL_TEXTURE } ww_water_detail_method;
+
 /* the water's optics (seeds 000, 002, 004) */
 typedef struct ww_water_look {
     ww_fresnel fresnel;          /* bias + scale (1 - v.n)^power, or Schlick with F0 */
@@ -89,6 +93,7 @@ typedef struct ww_water_look {
     ww_caustics_method caustics_method; /* focused per pixel, or a looped set of textures */
     int alpha_blend;             /* seed 004: the surface alpha-blended over what lies below */
     double alpha;                /* its opacity at normal incidence */
+    ww_water_detail_method detail; /* the DuDv ripples: exact per pixel, or a texture */
 } ww_water_look;
 
 /* a point light or a spot (seed 003's lantern); position is world, or relative to the parent */
