@@ -183,3 +183,27 @@ double ww_box_heave_step(const ww_box_water *w, const double extent[3], double k
     *v = 2.0 * xi / dt - v0;
     return xi;
 }
+
+/* ---- the rest of the step ------------------------------------------------------------------ */
+
+void ww_box_move(const ww_box_motion *m, double y, double dt, double p[3], double v[3],
+                 double w[3], double q[4]) {
+    double e = exp(-m->gamma * dt);
+    for (int k = 0; k < 3; k += 2) {
+        v[k] += m->ah[k / 2] * dt;
+        v[k] = m->u[k] + (v[k] - m->u[k]) * e;
+    }
+    if (m->drag_q > 0.0) {
+        double rel[3] = {v[0] - m->u[0], v[1] - m->u[1], v[2] - m->u[2]};
+        double shrink = 1.0 / (1.0 + dt * m->drag_q * ww_m_len3(rel));
+        for (int k = 0; k < 3; k++) v[k] = m->u[k] + rel[k] * shrink;
+    }
+    p[0] += v[0] * dt;
+    p[1] += y;
+    p[2] += v[2] * dt;
+    double tilt = 1.0 + dt * m->spin_damp + dt * dt * m->tilt_k;
+    w[0] = (w[0] + dt * m->alpha[0]) / tilt;
+    w[1] = (w[1] + dt * m->alpha[1]) / (1.0 + dt * m->spin_damp);
+    w[2] = (w[2] + dt * m->alpha[2]) / tilt;
+    ww_box_turn(q, w, dt);
+}

@@ -48,4 +48,23 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
 double ww_box_heave_step(const ww_box_water *w, const double extent[3], double kb, double a,
                          double gamma, double u, double dt, double *v);
 
+/* what moves a box over a step besides its heave (the body's own forces, sim/cubes.c and
+ * sim/floaters.c) */
+typedef struct ww_box_motion {
+    double gamma;     /* linear drag toward the water's velocity, 1/s */
+    double u[3];      /* the water's velocity at the box, m/s */
+    double ah[2];     /* horizontal accelerations (x, z): the slope's push, m/s^2 */
+    double drag_q;    /* quadratic drag: 1/2 rho_w Cd A f / m, 1/m */
+    double alpha[3];  /* angular acceleration, world, rad/s^2 */
+    double tilt_k;    /* the tilt's stiffness bound, 1/s^2 */
+    double spin_damp; /* angular drag, 1/s */
+} ww_box_motion;
+
+/* the rest of a step once the heave has given the rise y and v[1]: the horizontal velocity (the
+ * slope's push, then linear drag toward the water exactly), the quadratic drag implicitly (the
+ * relative velocity shrinks, never reverses), the position, and the rotation (tilt linearly
+ * implicit with its stiffness bound, spin damped) */
+void ww_box_move(const ww_box_motion *m, double y, double dt, double p[3], double v[3],
+                 double w[3], double q[4]);
+
 #endif

@@ -130,11 +130,8 @@ void ww_cubes_event(const ww_scene *sc, ww_state *st, const ww_event *ev) {
  * heave stiffness w2 (1/s^2) and damping gamma (1/s), the water velocity, horizontal
  * acceleration, angular acceleration, tilt stiffness (1/s^2) and angular damping (1/s) */
 typedef struct cube_forces {
-    double ay, w2, gamma, f;
-    double u[3];
-    double ah[2];
-    double alpha[3], tilt_k, spin_damp;
-    double drag_q; /* quadratic drag: 1/2 rho_w Cd s^2 f / m, 1/m */
+    double ay, w2, f;
+    ww_box_motion m; /* quadratic drag on the area s^2 */
     int archimedes;
     ww_cube_water water; /* archimedes: the columns, for the heave */
 } cube_forces;
@@ -150,25 +147,25 @@ static void forces_archimedes(const ww_scene *sc, ww_state *st, int i, cube_forc
     F->f = w->volume / vol;
     F->ay = fb / m - WW_G;
     F->w2 = WW_WATER_RHO * WW_G * w->waterplane / m;
-    F->gamma = d->drag_linear * F->f;
-    for (int k = 0; k < 3; k++) F->u[k] = w->velocity[k];
+    F->m.gamma = d->drag_linear * F->f;
+    for (int k = 0; k < 3; k++) F->m.u[k] = w->velocity[k];
 
     /* torque of the buoyancy at the centre of buoyancy: (c_b - c) x (0, fb, 0) */
     double r[3] = {w->centre[0] - c[0], w->centre[1] - c[1], w->centre[2] - c[2]};
-    F->alpha[0] = -r[2] * fb / inertia;
-    F->alpha[1] = 0.0;
-    F->alpha[2] = r[0] * fb / inertia;
-    F->tilt_k = WW_WATER_RHO * WW_G * w->waterplane_moment / inertia;
-    F->spin_damp = d->drag_angular * F->f;
-    F->drag_q = 0.5 * WW_WATER_RHO * d->drag_quadratic * s * s * F->f / m;
+    F->m.alpha[0] = -r[2] * fb / inertia;
+    F->m.alpha[1] = 0.0;
+    F->m.alpha[2] = r[0] * fb / inertia;
+    F->m.tilt_k = WW_WATER_RHO * WW_G * w->waterplane_moment / inertia;
+    F->m.spin_damp = d->drag_angular * F->f;
+    F->m.drag_q = 0.5 * WW_WATER_RHO * d->drag_quadratic * s * s * F->f / m;
 
     /* the ripples' slope force */
     double grad[2] = {0.0, 0.0};
     if (sc->ripples_on && w->volume > 0.0)
         ww_ripples_height(sc, st->ripple, st->t, c[0], c[2], grad, NULL);
     double push = d->nudge * WW_WATER_RHO * WW_G * w->volume / m;
-    F->ah[0] = -push * grad[0];
-    F->ah[1] = -push * grad[1];
+    F->m.ah[0] = -push * grad[0];
+    F->m.ah[1] = -push * grad[1];
 }
 
 static void forces_spring(const ww_scene *sc, ww_state *st, int i, cube_forces *F) {
@@ -180,9 +177,9 @@ static void forces_spring(const ww_scene *sc, ww_state *st, int i, cube_forces *
     F->f = ww_m_clamp((ws.height - (c[1] - 0.5 * d->size)) / d->size, 0.0, 1.0);
     F->ay = d->spring_stiffness * (target - c[1]);
     F->w2 = d->spring_stiffness;
-    F->gamma = d->spring_damping;
+    F->m.gamma = d->spring_damping;
     /* seed 000 damps v itself, not v relative to the water */
-    F->u[0] = F->u[1] = F->u[2] = 0.0;
+    F->m.u[0] = F->m.u[1] = F->m.u[2] = 0.0;
 
     /* the up axis springs toward the surface normal: alpha = k (U x n) */
     double ax[3][3], U[3];
@@ -190,16 +187,16 @@ static void forces_spring(const ww_scene *sc, ww_state *st, int i, cube_forces *
     int a = ww_box_up_axis(ax);
     double sg = ax[a][1] < 0.0 ? -1.0 : 1.0;
     for (int k = 0; k < 3; k++) U[k] = sg * ax[a][k];
-    cross3(U, ws.normal, F->alpha);
-    for (int k = 0; k < 3; k++) F->alpha[k] *= d->spring_stiffness;
-    F->tilt_k = d->spring_stiffness;
-    F->spin_damp = d->spring_damping;
-    F->drag_q = 0.0;
+    cross3(U, ws.normal, F->m.alpha);
+    for (int k = 0; k < 3; k++) F->m.alpha[k] *= d->spring_stiffness;
+    F->m.tilt_k = d->spring_stiffness;
+    F->m.spin_damp = d->spring_damping;
+    F->m.drag_q = 0.0;
 
     double grad[2] = {0.0, 0.0};
     if (sc->ripples_on) ww_ripples_height(sc, st->ripple, st->t, c[0], c[2], grad, NULL);
-    F->ah[0] = -d->nudge * WW_G * grad[0];
-    F->ah[1] = -d->nudge * WW_G * grad[1];
+    F->m.ah[0] = -d->nudge * WW_G * grad[0];
+    F->m.ah[1] = -d->nudge * WW_G * grad[1];
 }
 
 /* lowest centre height on the seabed: half the box's vertical extent above the bottom */
@@ -233,41 +230,19 @@ static void step_cube(const ww_scene *sc, ww_state *st, int i) {
     /* heave: the discrete-gradient midpoint rule (archimedes), the exact oscillator (spring) */
     double y = 0.0, vy = v[1];
     if (sc->integrator == WW_INTEGRATE_EULER) { /* the seeds' baseline (time.integrator) */
-        vy += dt * (F.ay - F.gamma * (vy - F.u[1]));
+        vy += dt * (F.ay - F.m.gamma * (vy - F.m.u[1]));
         y = vy * dt;
     } else if (F.archimedes) {
         double m = d->density * d->size * d->size * d->size;
         double a = F.ay - WW_WATER_RHO * WW_G * F.water.volume / m; /* all but buoyancy */
         double e[3] = {d->size, d->size, d->size};
-        y = ww_box_heave_step(&F.water, e, WW_WATER_RHO * WW_G / m, a, F.gamma, F.u[1], dt, &vy);
+        y = ww_box_heave_step(&F.water, e, WW_WATER_RHO * WW_G / m, a, F.m.gamma, F.m.u[1], dt, &vy);
     } else {
-        ww_m_damped_oscillator(F.w2, F.gamma, F.ay + F.gamma * F.u[1], dt, &y, &vy);
+        ww_m_damped_oscillator(F.w2, F.m.gamma, F.ay + F.m.gamma * F.m.u[1], dt, &y, &vy);
     }
     v[1] = vy;
 
-    /* horizontal: slope force, then linear drag toward the water exactly */
-    double e = exp(-F.gamma * dt);
-    for (int k = 0; k < 3; k += 2) {
-        v[k] += F.ah[k / 2] * dt;
-        v[k] = F.u[k] + (v[k] - F.u[k]) * e;
-    }
-
-    /* quadratic drag, implicitly: the relative velocity shrinks, never reverses */
-    if (F.drag_q > 0.0) {
-        double rel[3] = {v[0] - F.u[0], v[1] - F.u[1], v[2] - F.u[2]};
-        double shrink = 1.0 / (1.0 + dt * F.drag_q * ww_m_len3(rel));
-        for (int k = 0; k < 3; k++) v[k] = F.u[k] + rel[k] * shrink;
-    }
-    p[0] += v[0] * dt;
-    p[1] += y;
-    p[2] += v[2] * dt;
-
-    /* rotation: tilt linearly implicit with its stiffness bound, spin damped */
-    double tilt = 1.0 + dt * F.spin_damp + dt * dt * F.tilt_k;
-    w[0] = (w[0] + dt * F.alpha[0]) / tilt;
-    w[1] = (w[1] + dt * F.alpha[1]) / (1.0 + dt * F.spin_damp);
-    w[2] = (w[2] + dt * F.alpha[2]) / tilt;
-    ww_box_turn(q, w, dt);
+    ww_box_move(&F.m, y, dt, p, v, w, q);
 
     /* the seabed stops a sinking box */
     double floor_y = seabed_floor(sc, q, d->size);

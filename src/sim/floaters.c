@@ -100,7 +100,8 @@ int ww_floater_box(const ww_scene *sc, const ww_state *st, int k, double c[3], d
 
 /* the water's pull on floater j at its start pose (sim/cubes.c's cube_forces, archimedes) */
 typedef struct box_forces {
-    double ay, gamma, f, u[3], ah[2], alpha[3], tilt_k, spin_damp, drag_q;
+    double ay, f;
+    ww_box_motion m; /* quadratic drag on the area V^(2/3) */
     ww_box_water water;
 } box_forces;
 
@@ -113,8 +114,8 @@ static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
     double fb = WW_WATER_RHO * WW_G * w->volume;
     F->f = w->volume / vol;
     F->ay = fb / m - WW_G;
-    F->gamma = d->drag_linear * F->f;
-    for (int k = 0; k < 3; k++) F->u[k] = w->velocity[k];
+    F->m.gamma = d->drag_linear * F->f;
+    for (int k = 0; k < 3; k++) F->m.u[k] = w->velocity[k];
 
     /* torque of the buoyancy at the centre of buoyancy, through the inverse inertia in the
      * body's axes: alpha = R I^-1 R^T tau */
@@ -125,22 +126,22 @@ static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
         inertia[k] = m * (a * a + b * b) / 12.0;
     }
     ww_box_axes(st->floater_rot + 4 * j, ax);
-    for (int i = 0; i < 3; i++) F->alpha[i] = 0.0;
+    for (int i = 0; i < 3; i++) F->m.alpha[i] = 0.0;
     for (int k = 0; k < 3; k++) {
         double t = (ax[k][0] * tau[0] + ax[k][1] * tau[1] + ax[k][2] * tau[2]) / inertia[k];
-        for (int i = 0; i < 3; i++) F->alpha[i] += ax[k][i] * t;
+        for (int i = 0; i < 3; i++) F->m.alpha[i] += ax[k][i] * t;
     }
     double imin = fmin(inertia[0], fmin(inertia[1], inertia[2]));
-    F->tilt_k = WW_WATER_RHO * WW_G * w->waterplane_moment / imin;
-    F->spin_damp = d->drag_angular * F->f;
-    F->drag_q = 0.5 * WW_WATER_RHO * d->drag_quadratic * cbrt(vol * vol) * F->f / m;
+    F->m.tilt_k = WW_WATER_RHO * WW_G * w->waterplane_moment / imin;
+    F->m.spin_damp = d->drag_angular * F->f;
+    F->m.drag_q = 0.5 * WW_WATER_RHO * d->drag_quadratic * cbrt(vol * vol) * F->f / m;
 
     double grad[2] = {0.0, 0.0};
     if (sc->ripples_on && w->volume > 0.0)
         ww_ripples_height(sc, st->ripple, st->t, c[0], c[2], grad, NULL);
     double push = d->nudge * WW_WATER_RHO * WW_G * w->volume / m;
-    F->ah[0] = -push * grad[0];
-    F->ah[1] = -push * grad[1];
+    F->m.ah[0] = -push * grad[0];
+    F->m.ah[1] = -push * grad[1];
 }
 
 /* lowest centre height on the seabed: half the box's vertical extent above the bottom */
@@ -163,35 +164,16 @@ static void step_floater(const ww_scene *sc, ww_state *st, int j) {
     /* heave: the discrete-gradient midpoint rule, or the seeds' Euler (time.integrator) */
     double y = 0.0, vy = v[1], vol = body_volume(d), m = d->density * vol;
     if (sc->integrator == WW_INTEGRATE_EULER) {
-        vy += dt * (F.ay - F.gamma * (vy - F.u[1]));
+        vy += dt * (F.ay - F.m.gamma * (vy - F.m.u[1]));
         y = vy * dt;
     } else {
         double a = F.ay - WW_WATER_RHO * WW_G * F.water.volume / m; /* all but buoyancy */
-        y = ww_box_heave_step(&F.water, d->extent, WW_WATER_RHO * WW_G / m, a, F.gamma, F.u[1], dt,
+        y = ww_box_heave_step(&F.water, d->extent, WW_WATER_RHO * WW_G / m, a, F.m.gamma, F.m.u[1], dt,
                                &vy);
     }
     v[1] = vy;
 
-    double e = exp(-F.gamma * dt);
-    for (int k = 0; k < 3; k += 2) {
-        v[k] += F.ah[k / 2] * dt;
-        v[k] = F.u[k] + (v[k] - F.u[k]) * e;
-    }
-    if (F.drag_q > 0.0) {
-        double rel[3] = {v[0] - F.u[0], v[1] - F.u[1], v[2] - F.u[2]};
-        double shrink = 1.0 / (1.0 + dt * F.drag_q * ww_m_len3(rel));
-        for (int k = 0; k < 3; k++) v[k] = F.u[k] + rel[k] * shrink;
-    }
-    p[0] += v[0] * dt;
-    p[1] += y;
-    p[2] += v[2] * dt;
-
-    /* rotation: tilt linearly implicit with its stiffness bound, spin damped */
-    double tilt = 1.0 + dt * F.spin_damp + dt * dt * F.tilt_k;
-    w[0] = (w[0] + dt * F.alpha[0]) / tilt;
-    w[1] = (w[1] + dt * F.alpha[1]) / (1.0 + dt * F.spin_damp);
-    w[2] = (w[2] + dt * F.alpha[2]) / tilt;
-    ww_box_turn(q, w, dt);
+    ww_box_move(&F.m, y, dt, p, v, w, q);
 
     double floor_y = seabed_floor(sc, d, q);
     if (p[1] < floor_y) {

@@ -43,6 +43,16 @@ typedef struct answer {
     double vel[3];     /* particle velocity, m/s */
 } answer;
 
+/* a probe at rest point a whose waves displace it by (dx0, dz0): its residual against x */
+static void close_probe(probe *pr, const double a[2], const double x[2], double dx0, double dz0) {
+    pr->a[0] = a[0];
+    pr->a[1] = a[1];
+    pr->F[0] = a[0] + dx0 - x[0];
+    pr->F[1] = a[1] + dz0 - x[1];
+    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
+    pr->G = NAN; /* potential(), where the line search needs it */
+}
+
 /* the Gerstner sum of waves.h at a, with G = |a - x|^2 / 2 + sum (Q A / k) sin(phi): its
  * gradient is F since d/da (Q A / k) sin(phi) = Q A D cos(phi) */
 static void evaluate(const ww_scene *sc, const double *phase, double minL, const double x[2],
@@ -64,12 +74,7 @@ static void evaluate(const ww_scene *sc, const double *phase, double minL, const
         dx0 += qa * dx * c;
         dz0 += qa * dz * c;
     }
-    pr->a[0] = a[0];
-    pr->a[1] = a[1];
-    pr->F[0] = a[0] + dx0 - x[0];
-    pr->F[1] = a[1] + dz0 - x[1];
-    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
-    pr->G = NAN; /* potential(), where the line search needs it */
+    close_probe(pr, a, x, dx0, dz0);
 }
 
 /* G at the probe, from its sines, once: only a trial that does not halve |F| needs it */
@@ -184,12 +189,7 @@ static int evaluate_near(const ww_scene *sc, double minL, const double x[2], con
         dx0 += qa * dx * c;
         dz0 += qa * dz * c;
     }
-    pr->a[0] = a[0];
-    pr->a[1] = a[1];
-    pr->F[0] = a[0] + dx0 - x[0];
-    pr->F[1] = a[1] + dz0 - x[1];
-    pr->norm = sqrt(pr->F[0] * pr->F[0] + pr->F[1] * pr->F[1]);
-    pr->G = NAN; /* potential(), where the line search needs it */
+    close_probe(pr, a, x, dx0, dz0);
     return 1;
 }
 
