@@ -140,6 +140,22 @@ const unsigned char *ww_test_pixel(const ww_image *im, int x, int y) {
     return im->u8 + ((size_t)y * (size_t)im->width + (size_t)x) * (size_t)im->channels;
 }
 
+int ww_test_pic_load(const char *path, ww_test_pic *p) {
+    ww_error err = {0};
+    *p = (ww_test_pic){0};
+    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
+    p->w = p->im.width;
+    p->h = p->im.height;
+    return p->im.u8 != NULL;
+}
+
+double ww_test_pic_luma(const ww_test_pic *p, int x, int y) {
+    x = x < 0 ? 0 : x >= p->w ? p->w - 1 : x;
+    y = y < 0 ? 0 : y >= p->h ? p->h - 1 : y;
+    const uint8_t *c = ww_test_pixel(&p->im, x, y);
+    return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+}
+
 int ww_test_region_diff(const char *a_path, const char *b_path, const double rect[4], int thresh,
                         ww_test_region *d) {
     ww_image a = {0}, b = {0};

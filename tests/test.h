@@ -28,6 +28,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "io/image.h"
+
 typedef void (*ww_test_fn)(void);
 enum { WW_TIER_UNIT = 0, WW_TIER_PROC = 1, WW_TIER_IMAGE = 2, WW_TIER_LONG = 3 };
 void ww_test_register(const char *name, ww_test_fn fn, int tier);
@@ -169,9 +171,17 @@ const char *ww_test_build_dir(void);
 int ww_test_have_tool(const char *cmd);
 
 /* tests/golden.c: images */
-struct ww_image;
 /* the 8-bit pixel at (x, y) of an image read with ww_read_png (y from the top row) */
-const unsigned char *ww_test_pixel(const struct ww_image *im, int x, int y);
+const unsigned char *ww_test_pixel(const ww_image *im, int x, int y);
+/* an 8-bit PNG read back for measuring, with its size */
+typedef struct ww_test_pic {
+    ww_image im;
+    int w, h;
+} ww_test_pic;
+/* read path into p (a failed check names the file); 1 when it holds pixels */
+int ww_test_pic_load(const char *path, ww_test_pic *p);
+/* Rec. 601 luma of pixel (x, y), the coordinates clamped to the image, 8-bit levels */
+double ww_test_pic_luma(const ww_test_pic *p, int x, int y);
 /* this machine's GL renderer is the one that blessed golden/ (golden/RENDERER) */
 int ww_test_renderer_is_blessed(void);
 /* actual (PNG) against golden (PNG), e.g. golden/features/fog.png: exact on the blessing renderer

@@ -31,19 +31,7 @@ static const double HULL_PATCH[4] = {0.52, 0.52, 0.56, 0.64};
 #define FLICKER_FRAMES 15       /* frames measured (half a second at 30 fps) */
 #define FLICKER_MIN_VARIATION 0.08 /* (max - min) / mean of the hull's lit luma over them */
 
-typedef struct pic {
-    ww_image im;
-    int w, h;
-} pic;
-
-static int load(const char *path, pic *p) {
-    ww_error err = {0};
-    *p = (pic){0};
-    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
-    p->w = p->im.width;
-    p->h = p->im.height;
-    return p->im.u8 != NULL;
-}
+typedef ww_test_pic pic;
 
 /* render frame `frame` of scene at 256x144 with extra args into tmp dir `name`; loads it */
 static int render_frame(const char *scene, int frame, const char *args, const char *name, pic *p) {
@@ -55,7 +43,7 @@ static int render_frame(const char *scene, int frame, const char *args, const ch
     ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
     if (rc != 0) return 0;
     snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
-    return load(path, p);
+    return ww_test_pic_load(path, p);
 }
 
 /* mean of channel ch (0..2; 3: luma) over a patch of image fractions */
@@ -164,7 +152,7 @@ TEST_IMAGE(lantern_flicker_visible_and_deterministic) {
     for (int k = 0; k < FLICKER_FRAMES; k++) {
         pic p;
         snprintf(path, sizeof path, "%s/frame_%05d.png", dir, k);
-        if (!load(path, &p)) return;
+        if (!ww_test_pic_load(path, &p)) return;
         double l = mean_of(&p, HULL_PATCH, 3);
         lo = l < lo ? l : lo;
         hi = l > hi ? l : hi;

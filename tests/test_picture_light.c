@@ -28,26 +28,9 @@
 #define GLOW_MIN_LIFT 20.0        /* mean luma the glow adds to its columns, seabed or not */
 #define GLOW_HALF_SHARE 0.25      /* glow 0.5 lifts the column by at least this share of glow 1's */
 
-typedef struct pic {
-    ww_image im;
-    int w, h;
-} pic;
-
-static int load(const char *path, pic *p) {
-    ww_error err = {0};
-    *p = (pic){0};
-    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
-    p->w = p->im.width;
-    p->h = p->im.height;
-    return p->im.u8 != NULL;
-}
+typedef ww_test_pic pic;
 
 static const uint8_t *px(const pic *p, int x, int y) { return ww_test_pixel(&p->im, x, y); }
-
-static double luma(const pic *p, int x, int y) {
-    const uint8_t *c = px(p, x, y);
-    return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
-}
 
 /* render frame `frame` of scene at size with extra args into tmp dir `name`; loads it into p */
 static int render_frame(const char *scene, int frame, const char *size, const char *args,
@@ -60,7 +43,7 @@ static int render_frame(const char *scene, int frame, const char *size, const ch
     ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
     if (rc != 0) return 0;
     snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
-    return load(path, p);
+    return ww_test_pic_load(path, p);
 }
 
 /* mean luma over a rectangle of image fractions (x0, y0, x1, y1; y from the top) */
@@ -68,7 +51,7 @@ static double mean_luma(const pic *p, double x0, double y0, double x1, double y1
     double s = 0.0;
     long n = 0;
     for (int y = (int)(y0 * p->h); y < (int)(y1 * p->h); y++)
-        for (int x = (int)(x0 * p->w); x < (int)(x1 * p->w); x++, n++) s += luma(p, x, y);
+        for (int x = (int)(x0 * p->w); x < (int)(x1 * p->w); x++, n++) s += ww_test_pic_luma(p, x, y);
     return n ? s / (double)n : 0.0;
 }
 
@@ -91,9 +74,9 @@ static int dark_rows(const pic *p) {
     for (int y = DARK_ROW_SPAN; y + DARK_ROW_SPAN < p->h; y++) {
         int dark = 0;
         for (int x = 0; x < x1; x++) {
-            double l = luma(p, x, y);
-            if (l < luma(p, x, y - DARK_ROW_SPAN) - DARK_ROW_DROP &&
-                l < luma(p, x, y + DARK_ROW_SPAN) - DARK_ROW_DROP)
+            double l = ww_test_pic_luma(p, x, y);
+            if (l < ww_test_pic_luma(p, x, y - DARK_ROW_SPAN) - DARK_ROW_DROP &&
+                l < ww_test_pic_luma(p, x, y + DARK_ROW_SPAN) - DARK_ROW_DROP)
                 dark++;
         }
         if (dark > DARK_ROW_SHARE * x1) rows++;
@@ -236,7 +219,7 @@ static double row_banding(const pic *p, const double r[4]) {
     int n = 0;
     for (int y = y0; y < y1 && n < 1024; y++, n++) {
         double s = 0.0;
-        for (int x = x0; x < x1; x++) s += luma(p, x, y);
+        for (int x = x0; x < x1; x++) s += ww_test_pic_luma(p, x, y);
         m[n] = s / (double)(x1 - x0);
     }
     double e = 0.0;
@@ -279,7 +262,7 @@ TEST_IMAGE(light_shafts_rays_past_occluder) {
         int n = 0;
         for (int r = STREAK_R0; r < STREAK_R1; r += 4, n++) {
             int x = (int)(cx + r * cos(th)), y = (int)(cy + r * sin(th));
-            s += luma(&on, x, y) - luma(&off, x, y);
+            s += ww_test_pic_luma(&on, x, y) - ww_test_pic_luma(&off, x, y);
         }
         s /= n;
         lo = s < lo ? s : lo;
@@ -325,7 +308,7 @@ TEST_IMAGE(light_point_lights_water) {
     double peak = 0.0;
     for (int y = on.h / 2; y < on.h; y++)
         for (int x = 0; x < on.w; x++) {
-            double e = luma(&on, x, y) - luma(&off, x, y);
+            double e = ww_test_pic_luma(&on, x, y) - ww_test_pic_luma(&off, x, y);
             peak = e > peak ? e : peak;
         }
     fprintf(stderr, "    the light adds %.1f levels to the water on average, %.0f at most\n", d,
@@ -663,7 +646,7 @@ TEST_IMAGE(light_demo_contrast_saturation) {
     for (int y = 0; y < a.h; y++)
         for (int x = 0; x < a.w; x++) {
             const uint8_t *c = px(&a, x, y);
-            double l = luma(&a, x, y);
+            double l = ww_test_pic_luma(&a, x, y);
             int mx = c[0] > c[1] ? c[0] : c[1], mn = c[0] < c[1] ? c[0] : c[1];
             mx = c[2] > mx ? c[2] : mx;
             mn = c[2] < mn ? c[2] : mn;
@@ -700,9 +683,9 @@ TEST_IMAGE(light_clouds_drift) {
     long moved = 0, same = 0, reseeded = 0, n = 0;
     for (int y = 0; y < f0.h / 2; y++)
         for (int x = 0; x < f0.w; x++, n++) {
-            moved += fabs(luma(&f0, x, y) - luma(&f60, x, y)) > 2.0;
+            moved += fabs(ww_test_pic_luma(&f0, x, y) - ww_test_pic_luma(&f60, x, y)) > 2.0;
             same += memcmp(px(&f60, x, y), px(&again, x, y), 3) != 0;
-            reseeded += fabs(luma(&seeded, x, y) - luma(&f60, x, y)) > 2.0;
+            reseeded += fabs(ww_test_pic_luma(&seeded, x, y) - ww_test_pic_luma(&f60, x, y)) > 2.0;
         }
     fprintf(stderr, "    over 2 s %.3f of the sky moved; rerun differs in %ld px; seed 4 %.3f\n",
             (double)moved / n, same, (double)reseeded / n);

@@ -37,24 +37,7 @@
 #define FOG_NAIVE_MIN 12.0    /* a final-colour darkening by the near ratio would move it this */
 #define TINT_TOP 0.08         /* rows above this fraction: water surface, no volume reaches */
 
-typedef struct pic {
-    ww_image im;
-    int w, h;
-} pic;
-
-static int load(const char *path, pic *p) {
-    ww_error err = {0};
-    *p = (pic){0};
-    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
-    p->w = p->im.width;
-    p->h = p->im.height;
-    return p->im.u8 != NULL;
-}
-
-static double luma(const pic *p, int x, int y) {
-    const uint8_t *c = ww_test_pixel(&p->im, x, y);
-    return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
-}
+typedef ww_test_pic pic;
 
 /* frame 0 of scene with args into tmp dir `name`, loaded into p */
 static int render(const char *scene, const char *args, const char *name, pic *p) {
@@ -64,7 +47,7 @@ static int render(const char *scene, const char *args, const char *name, pic *p)
     ENSURE_MSG(rc == 0, "%s %s: exit %d", scene, args ? args : "", rc);
     if (rc != 0) return 0;
     snprintf(path, sizeof path, "%s/frame_00000.png", dir);
-    return load(path, p);
+    return ww_test_pic_load(path, p);
 }
 
 /* m[i] = 1 where `lit` is darker than `shadowed` by SHADOW_DROP, below SEABED_TOP */
@@ -73,7 +56,7 @@ static long shadow_mask(const pic *lit, const pic *shadowed, unsigned char *m) {
     for (int y = 0; y < lit->h; y++)
         for (int x = 0; x < lit->w; x++) {
             int in = y >= SEABED_TOP * lit->h &&
-                     luma(lit, x, y) - luma(shadowed, x, y) > SHADOW_DROP;
+                     ww_test_pic_luma(lit, x, y) - ww_test_pic_luma(shadowed, x, y) > SHADOW_DROP;
             m[y * lit->w + x] = (unsigned char)in;
             n += in;
         }
@@ -111,8 +94,8 @@ static double ratio_on(const pic *p, const pic *off, const unsigned char *m,
         for (int x = 0; x < p->w; x++) {
             int i = y * p->w + x;
             if (!m[i] || (m2 && !m2[i])) continue;
-            a += luma(p, x, y);
-            b += luma(off, x, y);
+            a += ww_test_pic_luma(p, x, y);
+            b += ww_test_pic_luma(off, x, y);
         }
     return b > 0.0 ? a / b : 1.0;
 }
@@ -181,10 +164,10 @@ TEST_IMAGE(shadows_projected_overlap_darkens_once) {
             int i = y * f[0].w + x;
             if (!ma[i] || !mb[i]) continue;
             overlap++;
-            double d = fabs(luma(&f[1], x, y) - luma(&f[2], x, y));
+            double d = fabs(ww_test_pic_luma(&f[1], x, y) - ww_test_pic_luma(&f[2], x, y));
             if (d > worst) worst = d;
             /* twice darkened: the single shadow's ratio applied again */
-            double one = luma(&f[2], x, y), off = luma(&f[0], x, y);
+            double one = ww_test_pic_luma(&f[2], x, y), off = ww_test_pic_luma(&f[0], x, y);
             naive += one - one * one / off;
         }
     ENSURE_MSG(overlap >= MIN_OVERLAP_PX, "the boxes' shadows overlap on %ld pixels only", overlap);
@@ -225,9 +208,9 @@ TEST_IMAGE(shadows_projected_leave_the_fog_alone) {
         for (int x = 0; x < f[0].w; x++) {
             if (!m[y * f[0].w + x]) continue;
             count++;
-            double d = fabs(luma(&f[3], x, y) - luma(&f[2], x, y));
+            double d = fabs(ww_test_pic_luma(&f[3], x, y) - ww_test_pic_luma(&f[2], x, y));
             if (d > worst) worst = d;
-            naive += (1.0 - ratio) * luma(&f[2], x, y);
+            naive += (1.0 - ratio) * ww_test_pic_luma(&f[2], x, y);
         }
     ENSURE_MSG(count >= MIN_SHADOW_PX, "the shadows cover %ld pixels", count);
     if (count > 0) naive /= (double)count;
@@ -426,12 +409,12 @@ static void bent_shadow(const char *technique, double lift) {
     ENSURE_EQ_INT(ww_test_render(scene, NULL, out), 0);
     snprintf(png, sizeof png, "%s/frame_00000.png", out);
     pic p;
-    if (!load(png, &p)) return;
+    if (!ww_test_pic_load(png, &p)) return;
     double *l = malloc((size_t)p.w * (size_t)p.h * sizeof *l), med = 0.0;
     ENSURE(l != NULL);
     if (l) {
         for (int y = 0; y < p.h; y++)
-            for (int x2 = 0; x2 < p.w; x2++) l[y * p.w + x2] = luma(&p, x2, y);
+            for (int x2 = 0; x2 < p.w; x2++) l[y * p.w + x2] = ww_test_pic_luma(&p, x2, y);
         /* the median by counting: lumas are 0..255 */
         long hist[256] = {0};
         for (int i = 0; i < p.w * p.h; i++) hist[(int)fmin(fmax(l[i], 0.0), 255.0)]++;

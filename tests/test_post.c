@@ -66,26 +66,7 @@ static void golden(const char *name) {
     ww_test_check_golden(gold, got);
 }
 
-typedef struct pic {
-    ww_image im;
-    int w, h;
-} pic;
-
-static int load(const char *path, pic *p) {
-    ww_error err = {0};
-    *p = (pic){0};
-    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
-    p->w = p->im.width;
-    p->h = p->im.height;
-    return p->im.u8 != NULL;
-}
-
-static double luma(const pic *p, int x, int y) {
-    x = x < 0 ? 0 : x >= p->w ? p->w - 1 : x;
-    y = y < 0 ? 0 : y >= p->h ? p->h - 1 : y;
-    const uint8_t *c = ww_test_pixel(&p->im, x, y);
-    return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
-}
+typedef ww_test_pic pic;
 
 /* largest channel difference of pixel (x, y) */
 static int pixel_diff(const pic *a, const pic *b, int x, int y) {
@@ -123,10 +104,10 @@ static unsigned char *edge_mask(const pic *p) {
     }
     for (int y = 0; y < p->h; y++)
         for (int x = 0; x < p->w; x++) {
-            double gx = luma(p, x + 1, y - 1) + 2 * luma(p, x + 1, y) + luma(p, x + 1, y + 1) -
-                        luma(p, x - 1, y - 1) - 2 * luma(p, x - 1, y) - luma(p, x - 1, y + 1);
-            double gy = luma(p, x - 1, y + 1) + 2 * luma(p, x, y + 1) + luma(p, x + 1, y + 1) -
-                        luma(p, x - 1, y - 1) - 2 * luma(p, x, y - 1) - luma(p, x + 1, y - 1);
+            double gx = ww_test_pic_luma(p, x + 1, y - 1) + 2 * ww_test_pic_luma(p, x + 1, y) + ww_test_pic_luma(p, x + 1, y + 1) -
+                        ww_test_pic_luma(p, x - 1, y - 1) - 2 * ww_test_pic_luma(p, x - 1, y) - ww_test_pic_luma(p, x - 1, y + 1);
+            double gy = ww_test_pic_luma(p, x - 1, y + 1) + 2 * ww_test_pic_luma(p, x, y + 1) + ww_test_pic_luma(p, x + 1, y + 1) -
+                        ww_test_pic_luma(p, x - 1, y - 1) - 2 * ww_test_pic_luma(p, x, y - 1) - ww_test_pic_luma(p, x + 1, y - 1);
             /* /4: the kernel's gain, so the threshold is in luma levels per pixel */
             e[(size_t)y * p->w + x] = sqrt(gx * gx + gy * gy) / 4.0 >= EDGE_SOBEL_MIN;
         }
@@ -210,12 +191,12 @@ TEST_IMAGE(post_bloom_toggle) {
         render_to(scene, "--set render.bloom=false", "post_bloom_off", off, sizeof off))
         return;
     pic a, b;
-    if (!load(on, &a) || !load(off, &b)) goto done;
+    if (!ww_test_pic_load(on, &a) || !ww_test_pic_load(off, &b)) goto done;
     size_t n = (size_t)a.w * (size_t)a.h;
     unsigned char *bright = calloc(n, 1), *near = calloc(n, 1);
     if (bright && near) {
         for (int y = 0; y < b.h; y++)
-            for (int x = 0; x < b.w; x++) bright[(size_t)y * b.w + x] = luma(&b, x, y) >= BLOOM_BRIGHT_LUMA;
+            for (int x = 0; x < b.w; x++) bright[(size_t)y * b.w + x] = ww_test_pic_luma(&b, x, y) >= BLOOM_BRIGHT_LUMA;
         dilate(bright, near, b.w, b.h, BLOOM_REACH_PX);
         masked m = count_in_mask(&a, &b, near, 0);
         fprintf(stderr, "(%ld changed, %ld near bright of %ld px) ", m.changed, m.in_mask, (long)n);
@@ -248,12 +229,12 @@ TEST_IMAGE(post_shafts_toggle) {
         render_to(scene, "--set render.god_rays=false", "post_shafts_off", off, sizeof off))
         return;
     pic a, b;
-    if (!load(on, &a) || !load(off, &b)) goto done;
+    if (!ww_test_pic_load(on, &a) || !ww_test_pic_load(off, &b)) goto done;
     long changed = 0, darker = 0, n = (long)a.w * a.h;
     for (int y = 0; y < a.h; y++)
         for (int x = 0; x < a.w; x++) {
             changed += pixel_diff(&a, &b, x, y) > 0;
-            darker += luma(&a, x, y) < luma(&b, x, y);
+            darker += ww_test_pic_luma(&a, x, y) < ww_test_pic_luma(&b, x, y);
         }
     fprintf(stderr, "(%ld of %ld px lit by shafts) ", changed, n);
     ENSURE_MSG(changed >= SHAFTS_MIN_CHANGED * (double)n, "shafts changed only %ld px", changed);
@@ -279,7 +260,7 @@ TEST_IMAGE(post_fxaa_toggle) {
         render_to(scene, "--set render.fxaa=false", "post_fxaa_off", off, sizeof off))
         return;
     pic a, b;
-    if (!load(on, &a) || !load(off, &b)) goto done;
+    if (!ww_test_pic_load(on, &a) || !ww_test_pic_load(off, &b)) goto done;
     unsigned char *edges = edge_mask(&b);
     if (edges) {
         long n = (long)a.w * a.h;
@@ -314,7 +295,7 @@ TEST_IMAGE(post_hud_toggle) {
         render_to(scene, "--set render.hud=[]", "post_hud_off", off, sizeof off))
         return;
     pic a, b;
-    if (!load(on, &a) || !load(off, &b)) goto done;
+    if (!ww_test_pic_load(on, &a) || !ww_test_pic_load(off, &b)) goto done;
     double box[4] = {0.0, 0.0, (double)HUD_BOX_RECT_PX / a.w, (double)HUD_BOX_RECT_PY / a.h};
     ww_test_region d;
     ENSURE(ww_test_region_diff(on, off, box, 0, &d) == 0);
@@ -349,7 +330,7 @@ TEST_PROC(post_msaa_toggle) {
                   sizeof off))
         return;
     pic a, b;
-    if (!load(on, &a) || !load(off, &b)) goto done;
+    if (!ww_test_pic_load(on, &a) || !ww_test_pic_load(off, &b)) goto done;
     unsigned char *edges = edge_mask(&b);
     if (edges) {
         long n = (long)a.w * a.h;
