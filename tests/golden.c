@@ -4,6 +4,7 @@
  * rectangle (the toggle tests).
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -154,6 +155,34 @@ double ww_test_pic_luma(const ww_test_pic *p, int x, int y) {
     y = y < 0 ? 0 : y >= p->h ? p->h - 1 : y;
     const uint8_t *c = ww_test_pixel(&p->im, x, y);
     return 0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2];
+}
+
+int ww_test_render_pic(const char *scene, int frame, const char *size, const char *args,
+                       const char *name, ww_test_pic *p) {
+    char dir[768], c[2048], path[1024];
+    *p = (ww_test_pic){0};
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(name));
+    snprintf(c, sizeof c, "render %s --frames %d:%d --size %s -o %s --quiet %s", scene, frame,
+             frame + 1, size, dir, args ? args : "");
+    int rc = ww_test_ww(c, NULL, NULL);
+    ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
+    if (rc != 0) return 0;
+    snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
+    return ww_test_pic_load(path, p);
+}
+
+double ww_test_pic_psnr(const ww_test_pic *a, const ww_test_pic *b, int *max_diff) {
+    double se = 0.0;
+    *max_diff = 0;
+    for (int y = 0; y < a->h; y++)
+        for (int x = 0; x < a->w; x++)
+            for (int c = 0; c < 3; c++) {
+                int d = abs((int)ww_test_pixel(&a->im, x, y)[c] - (int)ww_test_pixel(&b->im, x, y)[c]);
+                se += (double)d * d;
+                if (d > *max_diff) *max_diff = d;
+            }
+    double mse = se / (3.0 * a->w * a->h);
+    return mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
 }
 
 int ww_test_region_diff(const char *a_path, const char *b_path, const double rect[4], int thresh,

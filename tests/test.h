@@ -182,6 +182,12 @@ typedef struct ww_test_pic {
 int ww_test_pic_load(const char *path, ww_test_pic *p);
 /* Rec. 601 luma of pixel (x, y), the coordinates clamped to the image, 8-bit levels */
 double ww_test_pic_luma(const ww_test_pic *p, int x, int y);
+/* frame `frame` of scene rendered at size (WxH) with extra args (NULL: none) into the test's
+ * folder `name`, read into p; 0 (a failed check) when the render or the read fails */
+int ww_test_render_pic(const char *scene, int frame, const char *size, const char *args,
+                       const char *name, ww_test_pic *p);
+/* PSNR of b against a over RGB (8-bit; INFINITY when equal) and the largest channel difference */
+double ww_test_pic_psnr(const ww_test_pic *a, const ww_test_pic *b, int *max_diff);
 /* this machine's GL renderer is the one that blessed golden/ (golden/RENDERER) */
 int ww_test_renderer_is_blessed(void);
 /* actual (PNG) against golden (PNG), e.g. golden/features/fog.png: exact on the blessing renderer

@@ -108,28 +108,7 @@ TEST(models_files_load_with_sane_counts_and_bounds) {
 
 /* ---- rendered frames ---------------------------------------------------------------------- */
 
-typedef struct pic {
-    ww_image im;
-    int w, h;
-} pic;
-
-static int render(const char *scene, int frame, const char *size, const char *args,
-                  const char *name, pic *p) {
-    char dir[768], c[2048], path[1024];
-    ww_error err = {0};
-    *p = (pic){0};
-    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(name));
-    snprintf(c, sizeof c, "render %s --frames %d:%d --size %s -o %s --quiet %s", scene, frame,
-             frame + 1, size, dir, args ? args : "");
-    int rc = ww_test_ww(c, NULL, NULL);
-    ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
-    if (rc != 0) return 0;
-    snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
-    ENSURE_MSG(ww_read_png(path, &p->im, &err) == WW_OK, "%s: %s", path, err.msg);
-    p->w = p->im.width;
-    p->h = p->im.height;
-    return p->im.u8 != NULL;
-}
+typedef ww_test_pic pic;
 
 static const uint8_t *px(const pic *p, int x, int y) { return ww_test_pixel(&p->im, x, y); }
 
@@ -189,9 +168,9 @@ static cover measure(const pic *with, const pic *without) {
 TEST_IMAGE(models_wreck_covers_the_frame_and_the_starfish_is_redder_than_the_sand) {
     REQUIRE_GL();
     pic all, wreckless, starless;
-    if (!render(WRECK_SCENE, 0, "320x180", NULL, "wreck_all", &all)) return;
-    if (!render(WRECK_SCENE, 0, "320x180", NO_WRECK, "wreck_none", &wreckless)) return;
-    if (!render(WRECK_SCENE, 0, "320x180", NO_STAR, "wreck_nostar", &starless)) return;
+    if (!ww_test_render_pic(WRECK_SCENE, 0, "320x180", NULL, "wreck_all", &all)) return;
+    if (!ww_test_render_pic(WRECK_SCENE, 0, "320x180", NO_WRECK, "wreck_none", &wreckless)) return;
+    if (!ww_test_render_pic(WRECK_SCENE, 0, "320x180", NO_STAR, "wreck_nostar", &starless)) return;
     cover w = measure(&all, &wreckless), s = measure(&all, &starless);
     fprintf(stderr, "    wreck: %.3f of the frame (rgb %.0f %.0f %.0f); starfish: %.4f, redness "
             "%.3f over %.3f (rgb %.0f %.0f %.0f)\n", w.share, w.rgb_with[0], w.rgb_with[1],
@@ -261,8 +240,9 @@ static int render_air(const char *file, double scale, const double eye[3], doubl
     snprintf(scene, sizeof scene, "%s/%s.yaml", ww_test_tmpdir(name), name);
     ENSURE(ww_test_write_text(scene, text) == 0);
     snprintf(dir, sizeof dir, "%s_bare", name);
-    return render(scene, 0, "240x160", NULL, name, with) &&
-           render(scene, 0, "240x160", "--set 'objects.models[0].position=[0, -500, 0]'", dir, bare);
+    return ww_test_render_pic(scene, 0, "240x160", NULL, name, with) &&
+           ww_test_render_pic(scene, 0, "240x160",
+                              "--set 'objects.models[0].position=[0, -500, 0]'", dir, bare);
 }
 
 TEST_IMAGE(models_wood_is_brown_and_the_starfish_orange_in_daylight) {
@@ -336,9 +316,9 @@ TEST_IMAGE(models_kelp_sways_at_its_tip_not_its_base_and_repeats) {
     const int frames[3] = {0, 15, 30};
     const char *names[3] = {"sway0", "sway15", "sway30"};
     for (int i = 0; i < 3; i++)
-        if (!render(scene, frames[i], "240x240", NULL, names[i], &f[i])) return;
-    if (!render(scene, 15, "240x240", NULL, "sway15b", &again)) return;
-    if (!render(scene, 0, "240x240", bare_args, "sway_bare", &bare)) return;
+        if (!ww_test_render_pic(scene, frames[i], "240x240", NULL, names[i], &f[i])) return;
+    if (!ww_test_render_pic(scene, 15, "240x240", NULL, "sway15b", &again)) return;
+    if (!ww_test_render_pic(scene, 0, "240x240", bare_args, "sway_bare", &bare)) return;
 
     /* the kelp's rows: where any frame differs from the bare seabed */
     int top = f[0].h, bottom = -1;

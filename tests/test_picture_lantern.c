@@ -33,19 +33,6 @@ static const double HULL_PATCH[4] = {0.52, 0.52, 0.56, 0.64};
 
 typedef ww_test_pic pic;
 
-/* render frame `frame` of scene at 256x144 with extra args into tmp dir `name`; loads it */
-static int render_frame(const char *scene, int frame, const char *args, const char *name, pic *p) {
-    char dir[768], c[2048], path[1024];
-    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(name));
-    snprintf(c, sizeof c, "render %s --frames %d:%d --size 256x144 -o %s --quiet %s", scene,
-             frame, frame + 1, dir, args ? args : "");
-    int rc = ww_test_ww(c, NULL, NULL);
-    ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
-    if (rc != 0) return 0;
-    snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
-    return ww_test_pic_load(path, p);
-}
-
 /* mean of channel ch (0..2; 3: luma) over a patch of image fractions */
 static double mean_of(const pic *p, const double r[4], int ch) {
     double s = 0.0;
@@ -74,8 +61,9 @@ static double mean_change(const pic *a, const pic *b, const double r[4]) {
 TEST_IMAGE(lantern_cone_glows_in_the_water) {
     REQUIRE_GL();
     pic on, off;
-    if (!render_frame(LANTERN_SCENE, 0, NULL, "lantern_on", &on)) return;
-    if (!render_frame(LANTERN_SCENE, 0, "--set lights[0].scatter=0", "lantern_off", &off)) return;
+    if (!ww_test_render_pic(LANTERN_SCENE, 0, "256x144", NULL, "lantern_on", &on)) return;
+    if (!ww_test_render_pic(LANTERN_SCENE, 0, "256x144", "--set lights[0].scatter=0",
+                            "lantern_off", &off)) return;
     double red = mean_of(&on, CONE_PATCH, 0) - mean_of(&off, CONE_PATCH, 0);
     double blue = mean_of(&on, CONE_PATCH, 2) - mean_of(&off, CONE_PATCH, 2);
     double out0 = mean_change(&on, &off, OUTSIDE_PATCH[0]);
@@ -119,8 +107,9 @@ static void surface_lift(const char *name, const char *camera, double *lift) {
     snprintf(off_dir, sizeof off_dir, "%s_off", name);
     pic on, off;
     *lift = 0.0;
-    if (!render_frame(path, 0, NULL, on_dir, &on)) return;
-    if (!render_frame(path, 0, "--set lights[0].intensity=0", off_dir, &off)) return;
+    if (!ww_test_render_pic(path, 0, "256x144", NULL, on_dir, &on)) return;
+    if (!ww_test_render_pic(path, 0, "256x144", "--set lights[0].intensity=0", off_dir,
+                            &off)) return;
     static const double centre[4] = {0.4, 0.35, 0.6, 0.65};
     *lift = mean_of(&on, centre, 3) - mean_of(&off, centre, 3);
     ww_image_free(&on.im);
@@ -162,7 +151,7 @@ TEST_IMAGE(lantern_flicker_visible_and_deterministic) {
     }
     double mean = sum / FLICKER_FRAMES, var = (hi - lo) / mean;
     pic again;
-    if (!render_frame(LANTERN_SCENE, 7, NULL, "flicker_again", &again)) return;
+    if (!ww_test_render_pic(LANTERN_SCENE, 7, "256x144", NULL, "flicker_again", &again)) return;
     double l7 = mean_of(&again, HULL_PATCH, 3);
     fprintf(stderr, "    hull luma %.1f..%.1f (variation %.2f of its mean); frame 7 alone %.3f, "
                     "in the run %.3f\n", lo, hi, var, l7, at7);

@@ -32,26 +32,13 @@ typedef ww_test_pic pic;
 
 static const uint8_t *px(const pic *p, int x, int y) { return ww_test_pixel(&p->im, x, y); }
 
-/* render frame `frame` of scene at size with extra args into tmp dir `name`; loads it into p */
-static int render_frame(const char *scene, int frame, const char *size, const char *args,
-                        const char *name, pic *p) {
-    char dir[768], c[2048], path[1024];
-    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir(name));
-    snprintf(c, sizeof c, "render %s --frames %d:%d --size %s -o %s --quiet %s", scene, frame,
-             frame + 1, size, dir, args ? args : "");
-    int rc = ww_test_ww(c, NULL, NULL);
-    ENSURE_MSG(rc == 0, "%s: exit %d", c, rc);
-    if (rc != 0) return 0;
-    snprintf(path, sizeof path, "%s/frame_%05d.png", dir, frame);
-    return ww_test_pic_load(path, p);
-}
-
 /* mean luma over a rectangle of image fractions (x0, y0, x1, y1; y from the top) */
 static double mean_luma(const pic *p, double x0, double y0, double x1, double y1) {
     double s = 0.0;
     long n = 0;
     for (int y = (int)(y0 * p->h); y < (int)(y1 * p->h); y++)
-        for (int x = (int)(x0 * p->w); x < (int)(x1 * p->w); x++, n++) s += ww_test_pic_luma(p, x, y);
+        for (int x = (int)(x0 * p->w); x < (int)(x1 * p->w); x++, n++) s += ww_test_pic_luma(p, x,
+                                                                                             y);
     return n ? s / (double)n : 0.0;
 }
 
@@ -87,7 +74,8 @@ static int dark_rows(const pic *p) {
 TEST_IMAGE(light_glow_no_dark_row) {
     REQUIRE_GL();
     pic a;
-    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_row", &a)) return;
+    if (!ww_test_render_pic("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_row",
+                            &a)) return;
     int rows = dark_rows(&a);
     fprintf(stderr, "    dark rows across the column: %d\n", rows);
     ENSURE_MSG(rows == 0, "%d dark rows across the glow column", rows);
@@ -100,8 +88,9 @@ TEST_IMAGE(light_glow_without_seabed) {
     REQUIRE_GL();
     pic on, off;
     const char *ns = "--set render.seabed=false";
-    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", ns, "glow_ns_on", &on)) return;
-    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360",
+    if (!ww_test_render_pic("tests/data/reef_chest.yaml", 480, "640x360", ns, "glow_ns_on",
+                            &on)) return;
+    if (!ww_test_render_pic("tests/data/reef_chest.yaml", 480, "640x360",
                       "--set render.seabed=false --set objects.chest.glow=0", "glow_ns_off", &off))
         return;
     /* below eye level (the lower half), above the chest */
@@ -118,8 +107,9 @@ TEST_IMAGE(light_glow_without_seabed) {
 TEST_IMAGE(light_glow_pickup_bounded) {
     REQUIRE_GL();
     pic a, b;
-    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_sat_reef", &a)) return;
-    if (!render_frame("scenes/lake.yaml", 300, "640x360", NULL, "glow_sat_lake", &b)) return;
+    if (!ww_test_render_pic("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_sat_reef",
+                            &a)) return;
+    if (!ww_test_render_pic("scenes/lake.yaml", 300, "640x360", NULL, "glow_sat_lake", &b)) return;
     double sa = saturated_share(&a), sb = saturated_share(&b);
     fprintf(stderr, "    saturated share: reef 480 %.4f, lake 300 %.4f\n", sa, sb);
     ENSURE_MSG(sa <= GLOW_SATURATED_MAX, "reef frame 480: %.3f of the frame saturated", sa);
@@ -132,11 +122,14 @@ TEST_IMAGE(light_glow_pickup_bounded) {
 TEST_IMAGE(light_glow_key) {
     REQUIRE_GL();
     pic on, half, off;
-    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_k1", &on)) return;
-    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", "--set objects.chest.glow=0.5",
+    if (!ww_test_render_pic("tests/data/reef_chest.yaml", 480, "640x360", NULL, "glow_k1",
+                            &on)) return;
+    if (!ww_test_render_pic("tests/data/reef_chest.yaml", 480, "640x360",
+                            "--set objects.chest.glow=0.5",
                       "glow_k05", &half))
         return;
-    if (!render_frame("tests/data/reef_chest.yaml", 480, "640x360", "--set objects.chest.glow=0",
+    if (!ww_test_render_pic("tests/data/reef_chest.yaml", 480, "640x360",
+                            "--set objects.chest.glow=0",
                       "glow_k0", &off))
         return;
     double l1 = mean_luma(&on, 0.0, 0.0, GLOW_COLS, 0.7);
@@ -162,8 +155,9 @@ TEST_IMAGE(light_glow_key) {
 TEST_IMAGE(light_glow_dims_beside_the_camera) {
     REQUIRE_GL();
     pic on, off;
-    if (!render_frame("scenes/lake.yaml", 320, "320x180", NULL, "near_on", &on)) return;
-    if (!render_frame("scenes/lake.yaml", 320, "320x180", "--set objects.chest.glow=0", "near_off",
+    if (!ww_test_render_pic("scenes/lake.yaml", 320, "320x180", NULL, "near_on", &on)) return;
+    if (!ww_test_render_pic("scenes/lake.yaml", 320, "320x180", "--set objects.chest.glow=0",
+                            "near_off",
                       &off))
         return;
     double worst = 0.0;
@@ -233,7 +227,7 @@ static double row_banding(const pic *p, const double r[4]) {
 TEST_IMAGE(light_shafts_no_banding) {
     REQUIRE_GL();
     pic a;
-    if (!render_frame("scenes/features/shafts.yaml", 0, "640x360", NULL, "shafts_band", &a))
+    if (!ww_test_render_pic("scenes/features/shafts.yaml", 0, "640x360", NULL, "shafts_band", &a))
         return;
     double b = row_banding(&a, SHAFT_REGION);
     fprintf(stderr, "    row banding in the shafts: %.3f levels RMS\n", b);
@@ -254,8 +248,9 @@ TEST_IMAGE(light_shafts_rays_past_occluder) {
     REQUIRE_GL();
     pic on, off;
     const char *sc = "scenes/features/shafts_above.yaml";
-    if (!render_frame(sc, 0, "640x360", NULL, "streak_on", &on)) return;
-    if (!render_frame(sc, 0, "640x360", "--set render.god_rays=false", "streak_off", &off)) return;
+    if (!ww_test_render_pic(sc, 0, "640x360", NULL, "streak_on", &on)) return;
+    if (!ww_test_render_pic(sc, 0, "640x360", "--set render.god_rays=false", "streak_off",
+                            &off)) return;
     double lo = 1e9, hi = -1e9, cx = 0.5 * on.w, cy = 0.5 * on.h;
     for (int k = 0; k < 36; k++) {
         double th = WW_TEST_PI * (1.0 + k / 36.0), s = 0.0; /* the upper half, y down */
@@ -302,8 +297,8 @@ TEST_IMAGE(light_point_lights_water) {
     char scene[1024];
     write_scene("lamp", text, scene, sizeof scene);
     pic on, off;
-    if (!render_frame(scene, 0, "640x360", NULL, "lamp_on", &on)) return;
-    if (!render_frame(scene, 0, "640x360", "--set lights=[]", "lamp_off", &off)) return;
+    if (!ww_test_render_pic(scene, 0, "640x360", NULL, "lamp_on", &on)) return;
+    if (!ww_test_render_pic(scene, 0, "640x360", "--set lights=[]", "lamp_off", &off)) return;
     double d = mean_luma(&on, 0.0, 0.5, 1.0, 1.0) - mean_luma(&off, 0.0, 0.5, 1.0, 1.0);
     double peak = 0.0;
     for (int y = on.h / 2; y < on.h; y++)
@@ -340,13 +335,13 @@ TEST_IMAGE(light_parented_to_a_scaled_model_in_metres) {
     char scene[1024];
     write_scene("beam", text, scene, sizeof scene);
     pic child, world, off;
-    if (!render_frame(scene, 0, "320x180", NULL, "beam_child", &child)) return;
-    if (!render_frame(scene, 0, "320x180",
+    if (!ww_test_render_pic(scene, 0, "320x180", NULL, "beam_child", &child)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180",
                       "--set \"lights=[{type: point, position: [0, 1, -6], color: [1, 0.7, 0.4], "
                       "intensity: 6, range: 10}]\"",
                       "beam_world", &world))
         return;
-    if (!render_frame(scene, 0, "320x180", "--set lights=[]", "beam_off", &off)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180", "--set lights=[]", "beam_off", &off)) return;
     double same = fabs(mean_luma(&child, 0.0, 0.5, 1.0, 1.0) - mean_luma(&world, 0.0, 0.5, 1.0, 1.0));
     double lit = mean_luma(&world, 0.0, 0.5, 1.0, 1.0) - mean_luma(&off, 0.0, 0.5, 1.0, 1.0);
     fprintf(stderr, "    parented and world light differ by %.2f levels; the light adds %.1f\n", same,
@@ -375,8 +370,9 @@ TEST_IMAGE(light_emissive_model) {
     char scene[1024];
     write_scene("lantern", text, scene, sizeof scene);
     pic lit, glow;
-    if (!render_frame(scene, 0, "320x180", NULL, "emis_off", &lit)) return;
-    if (!render_frame(scene, 0, "320x180", "--set objects.models[0].emissive=2", "emis_on", &glow))
+    if (!ww_test_render_pic(scene, 0, "320x180", NULL, "emis_off", &lit)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180", "--set objects.models[0].emissive=2", "emis_on",
+                            &glow))
         return;
     /* the sphere covers the centre; the bloom shows in a band just outside it */
     double in = mean_luma(&glow, 0.45, 0.42, 0.55, 0.58) - mean_luma(&lit, 0.45, 0.42, 0.55, 0.58);
@@ -456,8 +452,8 @@ TEST_IMAGE(light_obj_materials_drawn) {
              "camera: {fov: 60, path: [{t: 0, position: [0, 1, -6], look_at: [0, 1, 0]}]}\n");
     write_scene("materials", text, scene, sizeof scene);
     pic day, night;
-    if (!render_frame(scene, 0, "320x180", NULL, "mat_day", &day)) return;
-    if (!render_frame(scene, 0, "320x180", "--set sky.time_of_day=23", "mat_night", &night)) {
+    if (!ww_test_render_pic(scene, 0, "320x180", NULL, "mat_day", &day)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180", "--set sky.time_of_day=23", "mat_night", &night)) {
         ww_image_free(&day.im);
         return;
     }
@@ -533,7 +529,8 @@ TEST_IMAGE(light_bubbles_show_the_seabed_through) {
     static const char *const tags[4] = {"bub_red", "bub_green", "none_red", "none_green"};
     pic p[4];
     int ok = 1;
-    for (int i = 0; i < 4 && ok; i++) ok = render_frame(scene, 90, "320x180", args[i], tags[i], &p[i]);
+    for (int i = 0; i < 4 && ok; i++) ok = ww_test_render_pic(scene, 90, "320x180", args[i],
+                                                              tags[i], &p[i]);
     if (ok) {
         /* the footprint: the bubbles' axis (the mean column of the pixels they move), in the
          * rows where they move pixels beside it, the strip of +-3 px along that axis: the
@@ -611,8 +608,9 @@ TEST_IMAGE(light_sky_preetham_gradients) {
     char scene[1024];
     write_scene("noon", NOON_SKY, scene, sizeof scene);
     pic a, hazy;
-    if (!render_frame(scene, 0, "320x180", NULL, "noon_sky", &a)) return;
-    if (!render_frame(scene, 0, "320x180", "--set sky.turbidity=8", "noon_hazy", &hazy)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180", NULL, "noon_sky", &a)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180", "--set sky.turbidity=8", "noon_hazy",
+                            &hazy)) return;
     double lo[3], hi[3], hz[3];
     row_colour(&a, SKY_LOW_ROW, lo);
     row_colour(&a, SKY_HIGH_ROW, hi);
@@ -641,7 +639,7 @@ TEST_IMAGE(light_sky_preetham_gradients) {
 TEST_IMAGE(light_demo_contrast_saturation) {
     REQUIRE_GL();
     pic a;
-    if (!render_frame("scenes/demo.yaml", 0, "640x360", NULL, "demo0", &a)) return;
+    if (!ww_test_render_pic("scenes/demo.yaml", 0, "640x360", NULL, "demo0", &a)) return;
     double s = 0.0, s2 = 0.0, sat = 0.0, n = (double)a.w * a.h;
     for (int y = 0; y < a.h; y++)
         for (int x = 0; x < a.w; x++) {
@@ -676,10 +674,11 @@ TEST_IMAGE(light_clouds_drift) {
     char scene[1024];
     write_scene("clouds", text, scene, sizeof scene);
     pic f0, f60, again, seeded;
-    if (!render_frame(scene, 0, "320x180", NULL, "cl0", &f0)) return;
-    if (!render_frame(scene, 60, "320x180", NULL, "cl60", &f60)) return;
-    if (!render_frame(scene, 60, "320x180", NULL, "cl60b", &again)) return;
-    if (!render_frame(scene, 60, "320x180", "--set sky.clouds.seed=4", "cl60s", &seeded)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180", NULL, "cl0", &f0)) return;
+    if (!ww_test_render_pic(scene, 60, "320x180", NULL, "cl60", &f60)) return;
+    if (!ww_test_render_pic(scene, 60, "320x180", NULL, "cl60b", &again)) return;
+    if (!ww_test_render_pic(scene, 60, "320x180", "--set sky.clouds.seed=4", "cl60s",
+                            &seeded)) return;
     long moved = 0, same = 0, reseeded = 0, n = 0;
     for (int y = 0; y < f0.h / 2; y++)
         for (int x = 0; x < f0.w; x++, n++) {
@@ -708,9 +707,9 @@ TEST_IMAGE(light_clouds_drift) {
 TEST_IMAGE(light_sky_map_matches_exact) {
     REQUIRE_GL();
     pic map, exact;
-    if (!render_frame("scenes/demo.yaml", 0, "640x360", NULL, "skymap", &map)) return;
+    if (!ww_test_render_pic("scenes/demo.yaml", 0, "640x360", NULL, "skymap", &map)) return;
     setenv("WW_SKY_EXACT", "1", 1);
-    int ok = render_frame("scenes/demo.yaml", 0, "640x360", NULL, "skyexact", &exact);
+    int ok = ww_test_render_pic("scenes/demo.yaml", 0, "640x360", NULL, "skyexact", &exact);
     unsetenv("WW_SKY_EXACT");
     if (!ok) return;
     double se = 0.0;

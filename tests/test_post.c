@@ -104,10 +104,14 @@ static unsigned char *edge_mask(const pic *p) {
     }
     for (int y = 0; y < p->h; y++)
         for (int x = 0; x < p->w; x++) {
-            double gx = ww_test_pic_luma(p, x + 1, y - 1) + 2 * ww_test_pic_luma(p, x + 1, y) + ww_test_pic_luma(p, x + 1, y + 1) -
-                        ww_test_pic_luma(p, x - 1, y - 1) - 2 * ww_test_pic_luma(p, x - 1, y) - ww_test_pic_luma(p, x - 1, y + 1);
-            double gy = ww_test_pic_luma(p, x - 1, y + 1) + 2 * ww_test_pic_luma(p, x, y + 1) + ww_test_pic_luma(p, x + 1, y + 1) -
-                        ww_test_pic_luma(p, x - 1, y - 1) - 2 * ww_test_pic_luma(p, x, y - 1) - ww_test_pic_luma(p, x + 1, y - 1);
+            double gx = ww_test_pic_luma(p, x + 1, y - 1) + 2 * ww_test_pic_luma(p, x + 1,
+                                         y) + ww_test_pic_luma(p, x + 1, y + 1) -
+                        ww_test_pic_luma(p, x - 1, y - 1) - 2 * ww_test_pic_luma(p, x - 1,
+                                         y) - ww_test_pic_luma(p, x - 1, y + 1);
+            double gy = ww_test_pic_luma(p, x - 1, y + 1) + 2 * ww_test_pic_luma(p, x,
+                                         y + 1) + ww_test_pic_luma(p, x + 1, y + 1) -
+                        ww_test_pic_luma(p, x - 1, y - 1) - 2 * ww_test_pic_luma(p, x,
+                                         y - 1) - ww_test_pic_luma(p, x + 1, y - 1);
             /* /4: the kernel's gain, so the threshold is in luma levels per pixel */
             e[(size_t)y * p->w + x] = sqrt(gx * gx + gy * gy) / 4.0 >= EDGE_SOBEL_MIN;
         }
@@ -196,7 +200,8 @@ TEST_IMAGE(post_bloom_toggle) {
     unsigned char *bright = calloc(n, 1), *near = calloc(n, 1);
     if (bright && near) {
         for (int y = 0; y < b.h; y++)
-            for (int x = 0; x < b.w; x++) bright[(size_t)y * b.w + x] = ww_test_pic_luma(&b, x, y) >= BLOOM_BRIGHT_LUMA;
+            for (int x = 0; x < b.w; x++) bright[(size_t)y * b.w + x] = ww_test_pic_luma(&b, x,
+                                                                                         y) >= BLOOM_BRIGHT_LUMA;
         dilate(bright, near, b.w, b.h, BLOOM_REACH_PX);
         masked m = count_in_mask(&a, &b, near, 0);
         fprintf(stderr, "(%ld changed, %ld near bright of %ld px) ", m.changed, m.in_mask, (long)n);
