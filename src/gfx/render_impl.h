@@ -361,7 +361,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
 /* uploads the frame's phases and ripples, then draws, reading what earlier passes left in
  * r->shared (reflection, prepass) and r->sky_cubemap; alpha-blended over what the target holds
  * when render.water.alpha_blend */
-void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f);
+ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww_error *err);
 void ww_water_free(ww_water *w, const ww_gl *gl);
 
 #endif
