@@ -372,6 +372,7 @@ void main() {
     vec3 spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), shininess) * ks : vec3(0.0);
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
 
+#if WW_LIGHTS
     for (int i = 0; i < u_nlights; i++) {
         vec3 l;
         float att = ww_light_att(i, p, l);
@@ -380,6 +381,7 @@ void main() {
         vec3 sl = nl > 0.0 ? pow(max(dot(n, hl), 0.0), shininess) * ks : vec3(0.0);
         c += u_light_color[i] * att * (albedo * nl + sl);
     }
+#endif
     c += albedo * v_color.a + u_mat_ke.rgb; // emission: the instance's factor, the material's Ke
     c = ww_fog_segment(c, p) + ww_lights_scatter_segment(u_eye, p, u_water_y, u_mirrored,
                                                          u_fog_below_density, gl_FragCoord.xy);

@@ -446,10 +446,10 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
              "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n"
-             "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n%s",
+             "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n%s",
              ww_water_shader_model(sc->wave_model), g->caustics,
              sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc), g->sway, kind,
-             ww_sky_map_define(sc));
+             sc->render.nlights > 0, ww_sky_map_define(sc));
     geom_prog *v = &g->var[kind];
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &v->prog, err);
