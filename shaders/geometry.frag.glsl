@@ -119,7 +119,7 @@ float ww_caustic(vec2 q, float depth) {
     float kappa = 1.0 - 1.0 / WW_ETA_WATER;
     float blur = depth * 2.0 * WW_SUN_RADIUS + 0.05;
     mat2 H = mat2(0.0);
-    for (int i = 0; i < u_nwaves; i++) {
+    for (int i = 0; i < WW_NWAVES; i++) {
         vec4 w = u_wave[i];
         float k = length(w.xy), L = 2.0 * WW_PI / k;
         float f = smoothstep(2.0 * blur, 6.0 * blur, L);

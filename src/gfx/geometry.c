@@ -444,10 +444,11 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
     char defs[320];
     snprintf(defs, sizeof defs,
-             "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
+             "#define WW_WAVE_MODEL %d\n#define WW_NWAVES %d\n#define WW_RIPPLES 0\n"
+             "#define WW_FADE 1\n"
              "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n"
              "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n%s",
-             ww_water_shader_model(sc->wave_model), g->caustics,
+             ww_water_shader_model(sc->wave_model), ww_water_wave_count(sc), g->caustics,
              sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc), g->sway, kind,
              sc->render.nlights > 0, ww_sky_map_define(sc));
     geom_prog *v = &g->var[kind];

@@ -319,6 +319,9 @@ typedef struct ww_water_ubos {
 } ww_water_ubos;
 
 void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w);
+/* the components the shaders draw (k > 0, at most WW_MAX_WAVES; 0 for flat water): the block's n,
+ * built into the programs as WW_NWAVES */
+int ww_water_wave_count(const ww_scene *sc);
 /* the WW_WAVE_MODEL gerstner.glsl is built with for a scene's family (0 flat, 1 Gerstner and
  * spectrum, 2 sines, 3 steep sines) */
 int ww_water_shader_model(ww_wave_model m);
