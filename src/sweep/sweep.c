@@ -18,6 +18,7 @@
 #include "core/numfmt.h"
 #include "core/readfile.h"
 #include "core/rng.h"
+#include "core/shword.h"
 #include "io/image.h"
 #include "io/json.h"
 #include "io/stream.h"
@@ -856,69 +857,50 @@ ww_result ww_sweep_run(ww_sweep *s, FILE *to, ww_error *err) {
 
 /* ---- job lines ----------------------------------------------------------------------------- */
 
-/* one word for sh, after a space unless it is the first: as it is when it holds only safe
- * characters, else in single quotes (a quote inside becomes '\'') */
-static void sh_word(FILE *f, const char *w, int first) {
-    static const char safe[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_@%+=:,./-";
-    if (!first) fputc(' ', f);
-    if (w[0] && strspn(w, safe) == strlen(w)) {
-        fputs(w, f);
-        return;
-    }
-    fputc('\'', f);
-    for (; *w; w++) {
-        if (*w == '\'')
-            fputs("'\\''", f);
-        else
-            fputc(*w, f);
-    }
-    fputc('\'', f);
-}
-
 ww_result ww_sweep_emit_jobs(const ww_sweep *s, FILE *to, ww_error *err) {
     const ww_sweep_opts *o = &s->o;
     static const char *const backend_name[] = {"auto", "egl", "osmesa", "null"};
     char num[64];
     for (long long i = 0; i < s->npoints; i++) {
-        sh_word(to, o->exe ? o->exe : "waterworld", 1);
-        sh_word(to, "sweep", 0);
-        sh_word(to, o->scene_path, 0);
+        ww_sh_word(to, o->exe ? o->exe : "waterworld", 1);
+        ww_sh_word(to, "sweep", 0);
+        ww_sh_word(to, o->scene_path, 0);
         for (int a = 0; a < s->naxes; a++) {
-            sh_word(to, "--vary", 0);
-            sh_word(to, s->ax[a].spec, 0);
+            ww_sh_word(to, "--vary", 0);
+            ww_sh_word(to, s->ax[a].spec, 0);
         }
         if (o->random > 0) {
             snprintf(num, sizeof num, "%lld", o->random);
-            sh_word(to, "--random", 0);
-            sh_word(to, num, 0);
+            ww_sh_word(to, "--random", 0);
+            ww_sh_word(to, num, 0);
             snprintf(num, sizeof num, "%llu", (unsigned long long)o->seed);
-            sh_word(to, "--seed", 0);
-            sh_word(to, num, 0);
+            ww_sh_word(to, "--seed", 0);
+            ww_sh_word(to, num, 0);
         }
         for (int k = 0; k < o->nsets; k++) {
-            sh_word(to, "--set", 0);
-            sh_word(to, o->sets[k].text, 0);
+            ww_sh_word(to, "--set", 0);
+            ww_sh_word(to, o->sets[k].text, 0);
         }
         if (o->thumbs) {
-            sh_word(to, "--thumbs", 0);
+            ww_sh_word(to, "--thumbs", 0);
             snprintf(num, sizeof num, "%dx%d", o->thumb_w, o->thumb_h);
-            sh_word(to, "--thumb-size", 0);
-            sh_word(to, num, 0);
+            ww_sh_word(to, "--thumb-size", 0);
+            ww_sh_word(to, num, 0);
             snprintf(num, sizeof num, "%lld", (long long)o->thumb_frame);
-            sh_word(to, "--thumb-frame", 0);
-            sh_word(to, num, 0);
+            ww_sh_word(to, "--thumb-frame", 0);
+            ww_sh_word(to, num, 0);
         }
         if (o->backend != WW_BACKEND_AUTO) {
-            sh_word(to, "--backend", 0);
-            sh_word(to, backend_name[o->backend], 0);
+            ww_sh_word(to, "--backend", 0);
+            ww_sh_word(to, backend_name[o->backend], 0);
         }
         if (o->out_dir) {
-            sh_word(to, "-o", 0);
-            sh_word(to, o->out_dir, 0);
+            ww_sh_word(to, "-o", 0);
+            ww_sh_word(to, o->out_dir, 0);
         }
         snprintf(num, sizeof num, "%lld", i);
-        sh_word(to, "--point", 0);
-        sh_word(to, num, 0);
+        ww_sh_word(to, "--point", 0);
+        ww_sh_word(to, num, 0);
         fputc('\n', to);
     }
     if (!o->quiet) {
