@@ -11,11 +11,12 @@
 #include "core/hash.h"
 #include "core/readfile.h"
 #include "core/shword.h"
+#include "io/wav.h"
+#include "render/audio_synth.h"
 #include "io/writers.h"
 #include "sim/state.h"
 #include "sim/step.h"
 
-#define AUDIO_RATE 44100.0          /* render/audio.h's grid */
 #define RECORD_MAX_BYTES (64 * 1024)
 #define SCENE_MAX_BYTES (64u << 20) /* the scene and script files hashed, as the loader caps */
 
@@ -61,7 +62,7 @@ void ww_slice_range(int64_t first, int64_t last, int64_t i, int64_t n, int64_t *
 
 int64_t ww_slice_sample(const ww_scene *sc, int64_t step) {
     /* the same expression as audio.c's grid(): samples_per_step = dt * rate, then the product */
-    double per_step = sc->dt * AUDIO_RATE;
+    double per_step = sc->dt * WW_AUDIO_RATE;
     return llround((double)step * per_step);
 }
 
@@ -229,6 +230,40 @@ static int file_exists(const char *path) {
     return stat(path, &st) == 0 && S_ISREG(st.st_mode);
 }
 
+void ww_slice_part_path(const char *dir, int64_t index, const char *ext, char *out, size_t cap) {
+    snprintf(out, cap, "%s/slices/slice_%05lld.%s", dir, (long long)index, ext);
+}
+
+int ww_slice_check(const char *dir, const ww_slice_record *rec, char *why, size_t cap) {
+    char path[1200];
+    struct stat st;
+    if (strcmp(rec->audio, "-") != 0) {
+        ww_slice_part_path(dir, rec->index, "wav", path, sizeof path);
+        long long want = WW_WAV_HEADER_BYTES + 4 * (rec->sample1 - rec->sample0);
+        if (stat(path, &st) != 0 || (long long)st.st_size != want) {
+            snprintf(why, cap, "its sound track %s is %s", path,
+                     stat(path, &st) != 0 ? "missing" : "not the length of its frames");
+            return 0;
+        }
+    }
+    if (strcmp(rec->stats, "-") != 0) {
+        ww_slice_part_path(dir, rec->index, "stats.jsonl", path, sizeof path);
+        if (!file_exists(path)) {
+            snprintf(why, cap, "its stats %s are missing", path);
+            return 0;
+        }
+    }
+    if (strcmp(rec->format, "none") == 0) return 1;
+    for (int64_t f = rec->first; f < rec->last; f++) {
+        snprintf(path, sizeof path, "%s/frame_%05lld.%s", dir, (long long)f, rec->format);
+        if (!file_exists(path)) {
+            snprintf(why, cap, "frame %lld (%s) is missing", (long long)f, path);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 /* a name for a joined file in DIR: a plain file name */
 static ww_result check_name(const char *opt, const char *name, ww_error *err) {
     if (!name || (name[0] && !strchr(name, '/') && strcmp(name, ".") != 0 && strcmp(name, "..") != 0))
@@ -251,20 +286,19 @@ ww_result ww_slice_begin(ww_slice_opts *so, const ww_scene *sc, ww_job_opts *jo,
     ww_slice_range(so->run_first, so->run_last, so->index, so->count, &jo->first, &jo->last);
     run_line(so, sc, jo);
 
-    char dir[1000];
+    char dir[1100];
     snprintf(dir, sizeof dir, "%s/slices", jo->out_dir);
-    snprintf(so->record, sizeof so->record, "%s/slice_%05lld.record", dir, (long long)so->index);
-    snprintf(so->audio_part, sizeof so->audio_part, "%s/slice_%05lld.wav", dir, (long long)so->index);
-    snprintf(so->stats_part, sizeof so->stats_part, "%s/slice_%05lld.stats.jsonl", dir,
-             (long long)so->index);
+    ww_slice_part_path(jo->out_dir, so->index, "record", so->record, sizeof so->record);
+    ww_slice_part_path(jo->out_dir, so->index, "wav", so->audio_part, sizeof so->audio_part);
+    ww_slice_part_path(jo->out_dir, so->index, "stats.jsonl", so->stats_part, sizeof so->stats_part);
 
     if (jo->resume) {
         ww_slice_record rec;
         ww_error e = {0};
         if (!ww_slice_record_read(so->record, &rec, &e)) {
             int same = strcmp(rec.run, so->run) == 0 && rec.index == so->index;
-            if (same && rec.done && (!so->audio_name || file_exists(so->audio_part)) &&
-                (!so->stats_name || file_exists(so->stats_part))) {
+            char why[256];
+            if (same && rec.done && ww_slice_check(jo->out_dir, &rec, why, sizeof why)) {
                 *skip = 1;
                 return WW_OK;
             }

@@ -51,7 +51,7 @@ typedef struct ww_slice_opts {
     const char *checkpoints;
     /* filled by ww_slice_begin */
     int64_t run_first, run_last;          /* the whole run's frames */
-    char audio_part[1100], stats_part[1100], record[1100];
+    char audio_part[1200], stats_part[1200], record[1200];
     char run[512];                         /* the run's identity line */
 } ww_slice_opts;
 
@@ -90,6 +90,11 @@ typedef struct ww_slice_record {
     char command[WW_SLICE_LINE_MAX]; /* sh line without --slice */
 } ww_slice_record;
 
+/* DIR/slices/slice_IIIII.EXT (EXT: record, wav, stats.jsonl) */
+void ww_slice_part_path(const char *dir, int64_t index, const char *ext, char *out, size_t cap);
+/* the parts and frames a record names are on disk (the sound track at its length); 0 and why
+ * otherwise */
+int ww_slice_check(const char *dir, const ww_slice_record *rec, char *why, size_t cap);
 /* a record file: WW_E_NOFILE when absent, WW_E_SYNTAX when it is not one */
 ww_result ww_slice_record_read(const char *path, ww_slice_record *rec, ww_error *err);
 

@@ -666,8 +666,17 @@ static ww_result sink_open(sink *k, const ww_sweep *s, FILE *to, ww_error *err) 
             k->jsonl = to;
             return WW_OK;
         }
+        /* and its CSV row beside it, for `join` to make sweep.csv (committed first: the JSON
+         * line is the point's mark of completion) */
+        snprintf(path, sizeof path, "%s/points/point_%0*lld.csv", s->o.out_dir, s->digits, s->o.point);
+        if ((r = ww_stream_open(&k->csv_file, path, err))) return r;
+        k->csv_open = 1;
+        k->csv = k->csv_file.f;
         snprintf(path, sizeof path, "%s/points/point_%0*lld.jsonl", s->o.out_dir, s->digits, s->o.point);
-        if ((r = ww_stream_open(&k->jsonl_file, path, err))) return r;
+        if ((r = ww_stream_open(&k->jsonl_file, path, err))) {
+            sink_abort(k);
+            return r;
+        }
         k->jsonl_open = 1;
         k->jsonl = k->jsonl_file.f;
         return WW_OK;
@@ -802,6 +811,28 @@ static ww_result run_workers(const ww_sweep *s, int jobs, sink *k, ww_error *err
     return r;
 }
 
+static void point_command(const ww_sweep *s, FILE *to);
+
+/* OUT/points/sweep.job, what `join` needs to gather the points: their count, the file names'
+ * width, the CSV header and the command of every point (without its --point I). Every point
+ * writes the same bytes, atomically, before its own files. */
+static ww_result write_job(const ww_sweep *s, ww_error *err) {
+    char *buf = NULL, path[1100];
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    if (!f) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sweep's job file");
+    fprintf(f, "%s\npoints %lld\ndigits %d\ncsv ", WW_SWEEP_JOB_MAGIC, s->npoints, s->digits);
+    csv_header(s, f); /* ends the line */
+    fputs("command ", f);
+    point_command(s, f);
+    fputc('\n', f);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/points/sweep.job", s->o.out_dir);
+    ww_result r = ww_write_file_atomic(path, buf, len, err);
+    free(buf);
+    return r;
+}
+
 ww_result ww_sweep_run(ww_sweep *s, FILE *to, ww_error *err) {
     const ww_sweep_opts *o = &s->o;
     ww_result r;
@@ -825,6 +856,7 @@ ww_result ww_sweep_run(ww_sweep *s, FILE *to, ww_error *err) {
         snprintf(path, sizeof path, "%s/thumbs", o->out_dir);
         if (o->thumbs && (r = ww_make_dirs(path, err))) return r;
     }
+    if (o->out_dir && o->point >= 0 && (r = write_job(s, err))) return r;
     sink k;
     if ((r = sink_open(&k, s, to, err))) return r;
 
@@ -857,11 +889,12 @@ ww_result ww_sweep_run(ww_sweep *s, FILE *to, ww_error *err) {
 
 /* ---- job lines ----------------------------------------------------------------------------- */
 
-ww_result ww_sweep_emit_jobs(const ww_sweep *s, FILE *to, ww_error *err) {
+/* the command of every point, up to its --point I */
+static void point_command(const ww_sweep *s, FILE *to) {
     const ww_sweep_opts *o = &s->o;
     static const char *const backend_name[] = {"auto", "egl", "osmesa", "null"};
     char num[64];
-    for (long long i = 0; i < s->npoints; i++) {
+    {
         ww_sh_word(to, o->exe ? o->exe : "waterworld", 1);
         ww_sh_word(to, "sweep", 0);
         ww_sh_word(to, o->scene_path, 0);
@@ -898,6 +931,14 @@ ww_result ww_sweep_emit_jobs(const ww_sweep *s, FILE *to, ww_error *err) {
             ww_sh_word(to, "-o", 0);
             ww_sh_word(to, o->out_dir, 0);
         }
+    }
+}
+
+ww_result ww_sweep_emit_jobs(const ww_sweep *s, FILE *to, ww_error *err) {
+    const ww_sweep_opts *o = &s->o;
+    char num[64];
+    for (long long i = 0; i < s->npoints; i++) {
+        point_command(s, to);
         snprintf(num, sizeof num, "%lld", i);
         ww_sh_word(to, "--point", 0);
         ww_sh_word(to, num, 0);
@@ -906,8 +947,8 @@ ww_result ww_sweep_emit_jobs(const ww_sweep *s, FILE *to, ww_error *err) {
     if (!o->quiet) {
         if (o->out_dir)
             fprintf(stderr, "sweep: %lld job lines; each writes %s/points/point_N.jsonl; merge them with\n"
-                            "  cat %s/points/point_*.jsonl > %s/sweep.jsonl\n",
-                    s->npoints, o->out_dir, o->out_dir, o->out_dir);
+                            "  waterworld join %s\n",
+                    s->npoints, o->out_dir, o->out_dir);
         else
             fprintf(stderr, "sweep: %lld job lines; each prints its point's JSON line: keep their output\n"
                             "  in point order (e.g. parallel -k) to get sweep.jsonl\n", s->npoints);
