@@ -110,6 +110,25 @@ static const ww_slice_record *find(const slices *s, int64_t i, const ww_slice_re
     return NULL;
 }
 
+/* the fields of run line a that differ from b's: "scene 4b20... (this set: 181c...), size ..." */
+static void run_diff(const char *a, const char *b, char *out, size_t cap) {
+    size_t n = 0;
+    out[0] = 0;
+    while (*a && n + 1 < cap) {
+        size_t la = strcspn(a, " "), key = strcspn(a, "=");
+        const char *m = b;
+        while (*m && !(strncmp(m, a, key + 1) == 0)) m += strcspn(m, " ") + (m[strcspn(m, " ")] == ' ');
+        size_t lm = strcspn(m, " ");
+        if (key < la && (lm != la || strncmp(m, a, la) != 0)) {
+            int k = snprintf(out + n, cap - n, "%s%.*s %.*s (this set: %.*s)", n ? ", " : "",
+                             (int)key, a, (int)(la - key - 1), a + key + 1,
+                             *m ? (int)(lm - key - 1) : 4, *m ? m + key + 1 : "none");
+            n += k > 0 ? (size_t)k : 0;
+        }
+        a += la + (a[la] == ' ');
+    }
+}
+
 /* every slice of the run complete? else each listed on stderr and its command on stdout */
 static long long check_slices(const slices *s, int quiet) {
     const ww_slice_record *ref = s->ref;
@@ -120,7 +139,9 @@ static long long check_slices(const slices *s, int quiet) {
         int resume = 1;
         if (rec && rec->done && ww_slice_check(s->dir, rec, why, sizeof why)) continue;
         if (!rec && other) {
-            snprintf(why, sizeof why, "of another run (%s; this set is %s)", other->run, ref->run);
+            char diff[1000];
+            run_diff(other->run, ref->run, diff, sizeof diff);
+            snprintf(why, sizeof why, "of another run: %s", diff);
             resume = 0; /* its frames are the other run's: all rendered again */
         } else if (!rec) {
             snprintf(why, sizeof why, "missing (no record in %s/slices)", s->dir);
