@@ -160,16 +160,16 @@ static ww_result write_record(const ww_slice_opts *so, const ww_job_opts *jo, co
     FILE *f = open_memstream(&buf, &len);
     if (!f) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for a slice record");
     int64_t s0 = 0, s1 = 0;
-    if (so->audio_name && sc) {
+    if (so->audio_name) {
         s0 = ww_slice_sample(sc, jo->first * sc->steps_per_frame);
         s1 = ww_slice_sample(sc, jo->last * sc->steps_per_frame);
     }
     fprintf(f, "%s\nstate %s\nslice %lld/%lld\nframes %lld:%lld\n", WW_SLICE_RECORD_MAGIC,
             renderer ? "done" : "started", (long long)so->index, (long long)so->count,
             (long long)jo->first, (long long)jo->last);
-    fprintf(f, "samples %lld:%lld\nformat %s\naudio %s\nstats %s\nrun %s\n", (long long)s0,
-            (long long)s1, format_name(jo), so->audio_name ? so->audio_name : "-",
-            so->stats_name ? so->stats_name : "-", so->run);
+    fprintf(f, "samples %lld:%lld\nformat %s\naudio %s\nstats %s\nrun %s\nfps %.17g\n",
+            (long long)s0, (long long)s1, format_name(jo), so->audio_name ? so->audio_name : "-",
+            so->stats_name ? so->stats_name : "-", so->run, sc->fps);
     if (renderer) fprintf(f, "renderer %s\n", renderer);
     fputs("command ", f);
     command_words(so, f);
