@@ -1,7 +1,8 @@
 /* test_slices.c - a render cut into slices and joined back (render --slices N --emit-jobs,
  * render --slice I/N, join): frames, sound track and stats equal to one process; missing,
  * unfinished and other-run slices listed with their commands; --resume completing the set; bad
- * --slice values exit 2; a sweep's points joined into the one-process sweep.jsonl and sweep.csv.
+ * --slice values exit 2; a sweep's points joined into the one-process sweep.jsonl, sweep.csv and
+ * contact sheet.
  * Renders are tiny (64x36, null backend unless said, LP_NUM_THREADS=1) so that these run in the
  * proc tier.
  */
@@ -266,8 +267,10 @@ TEST_PROC(sweep_points_joined_equal_one_process) {
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("sweep_join"));
     snprintf(errf, sizeof errf, "%s/err.txt", dir);
     snprintf(outf, sizeof outf, "%s/rerun.sh", dir);
+    /* thumbnails on the null backend: black, but the contact sheet's labels are drawn */
     const char *sweep = "sweep scenes/demo.yaml --vary water.waves.list[0].amplitude=0.1:0.5:3 "
-                        "--vary water.waves.model=gerstner,sines --quiet";
+                        "--vary water.waves.model=gerstner,sines --quiet --thumbs --thumb-size 48x27 "
+                        "--backend null";
     char args[1024];
     snprintf(args, sizeof args, "%s -o %s/one", sweep, dir);
     ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
@@ -282,8 +285,8 @@ TEST_PROC(sweep_points_joined_equal_one_process) {
     ENSURE(ww_test_file_contains(outf, " --point 4\n"));
     ENSURE_EQ_INT(ww_test_run(ww("sh %s", outf, NULL), NULL, NULL), 0);
     ENSURE_EQ_INT(ww_test_ww(ww("join %s/pts", dir, NULL), NULL, NULL), 0);
-    const char *names[] = {"sweep.jsonl", "sweep.csv"};
-    for (int k = 0; k < 2; k++) {
+    const char *names[] = {"sweep.jsonl", "sweep.csv", "contact_sheet.png"};
+    for (int k = 0; k < 3; k++) {
         snprintf(a, sizeof a, "%s/one/%s", dir, names[k]);
         snprintf(b, sizeof b, "%s/pts/%s", dir, names[k]);
         ENSURE_MSG(ww_test_files_equal(a, b), "joined %s differs from one process's", names[k]);

@@ -20,7 +20,10 @@
 #include "cli/cli.h"
 #include "core/readfile.h"
 #include "core/shword.h"
+#include "io/image.h"
 #include "io/stream.h"
+#include "io/writers.h"
+#include "render/contact.h"
 #include "io/wav.h"
 #include "render/audio_synth.h"
 #include "render/slices.h"
@@ -39,7 +42,7 @@ static const char usage[] =
     "          the bytes of one process's --audio) and DIR/stats.jsonl (the frames' lines in\n"
     "          order, then each slice's summary line); names as given to --audio / --stats\n"
     "  points: DIR/points/point_*.jsonl and *.csv -> DIR/sweep.jsonl and DIR/sweep.csv (the bytes\n"
-    "          of a one-process sweep); the thumbnails are already in DIR/thumbs/\n"
+    "          of a one-process sweep); with --thumbs, DIR/contact_sheet.png from DIR/thumbs/\n"
     "A slice or point that is missing, unfinished or of another run (another --set, size,\n"
     "format, ...) is listed on stderr, one a line, and the commands that complete the set are\n"
     "printed on stdout (waterworld join DIR | sh runs them); nothing is written.\n"
@@ -284,6 +287,7 @@ static ww_result join_slices(const char *dir, int quiet, ww_error *err) {
 typedef struct sweep_job {
     long long points;
     int digits;
+    int sheet, cols, thumb_w, thumb_h, lines; /* a contact sheet of thumbnails */
     char *csv_header;          /* with its newline */
     char *command;
 } sweep_job;
@@ -302,6 +306,9 @@ static ww_result read_job(const char *dir, unsigned char **data, sweep_job *j, w
         sscanf(t + strlen(WW_SWEEP_JOB_MAGIC), "\npoints %lld\ndigits %d", &j->points, &j->digits) != 2 ||
         j->points < 1 || j->digits < 1 || j->digits > 20)
         return ww_error_set(err, WW_E_SYNTAX, path, 0, 0, "not a sweep job file");
+    const char *sheet = strstr(t, "\nsheet ");
+    j->sheet = sheet && sheet < csv &&
+               sscanf(sheet, "\nsheet %d %d %d %d", &j->cols, &j->thumb_w, &j->thumb_h, &j->lines) == 4;
     j->csv_header = csv + 5;
     cmd[1] = 0;                /* the header keeps its newline */
     j->command = cmd + 9;
@@ -349,6 +356,42 @@ static ww_result join_file(const char *dir, const sweep_job *j, const char *name
     return ww_stream_commit(&out, err);
 }
 
+/* DIR/contact_sheet.png from the thumbnails and the points' labels, as a one-process sweep
+ * composes it */
+static ww_result join_sheet(const char *dir, const sweep_job *j, ww_error *err) {
+    ww_contact_layout L;
+    ww_image sheet = {0};
+    char path[1200];
+    if (j->points > WW_SWEEP_MAX_POINTS ||
+        ww_contact_plan((int)j->points, j->cols, j->thumb_w, j->thumb_h, j->lines, &L) != 0)
+        return WW_OK; /* too large for a sheet: the sweep itself would refuse to make one */
+    if (ww_contact_new(&L, &sheet) != 0)
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for a %dx%d contact sheet",
+                            L.width, L.height);
+    ww_result r = WW_OK;
+    for (long long i = 0; i < j->points && !r; i++) {
+        unsigned char *text = NULL;
+        size_t len = 0;
+        point_path(dir, j, i, "label", path, sizeof path);
+        if ((r = ww_file_read_max(path, JOB_MAX_BYTES, JOB_MAX_BYTES, &text, &len, err))) break;
+        int has = strncmp((char *)text, "thumb 1\n", 8) == 0;
+        if (len > 8 && text[len - 1] == '\n') text[len - 1] = 0;
+        ww_image thumb = {0};
+        snprintf(path, sizeof path, "%s/thumbs/point_%0*lld.png", dir, j->digits, i);
+        if (has && !(r = ww_read_png(path, &thumb, err)) &&
+            (thumb.width != j->thumb_w || thumb.height != j->thumb_h || thumb.channels < 3))
+            r = ww_error_set(err, WW_E_IO, path, 0, 0, "thumbnail is %dx%d, expected %dx%d",
+                             thumb.width, thumb.height, j->thumb_w, j->thumb_h);
+        if (!r) ww_contact_put(&sheet, &L, (int)i, has ? &thumb : NULL, len > 8 ? (char *)text + 8 : "");
+        ww_image_free(&thumb);
+        free(text);
+    }
+    snprintf(path, sizeof path, "%s/contact_sheet.png", dir);
+    if (!r) r = ww_write_png(path, &sheet, err);
+    ww_image_free(&sheet);
+    return r;
+}
+
 static ww_result join_points(const char *dir, int quiet, ww_error *err) {
     unsigned char *data = NULL;
     sweep_job j;
@@ -358,7 +401,9 @@ static ww_result join_points(const char *dir, int quiet, ww_error *err) {
         char jsonl[1200], csv[1200];
         point_path(dir, &j, i, "jsonl", jsonl, sizeof jsonl);
         point_path(dir, &j, i, "csv", csv, sizeof csv);
-        if (part_complete(jsonl) && part_complete(csv)) continue;
+        char label[1200];
+        point_path(dir, &j, i, "label", label, sizeof label);
+        if (part_complete(jsonl) && part_complete(csv) && (!j.sheet || part_complete(label))) continue;
         if (!quiet) fprintf(stderr, "point %lld: missing (%s)\n", i, jsonl);
         printf("%s --point %lld\n", j.command, i);
         bad++;
@@ -370,8 +415,10 @@ static ww_result join_points(const char *dir, int quiet, ww_error *err) {
                          dir, bad, j.points);
     if (!r) r = join_file(dir, &j, "sweep.jsonl", "jsonl", NULL, err);
     if (!r) r = join_file(dir, &j, "sweep.csv", "csv", j.csv_header, err);
+    if (!r && j.sheet) r = join_sheet(dir, &j, err);
     if (!r && !quiet)
-        fprintf(stderr, "joined %lld points of %s: %s/sweep.jsonl, %s/sweep.csv\n", j.points, dir, dir, dir);
+        fprintf(stderr, "joined %lld points of %s: %s/sweep.jsonl, %s/sweep.csv%s\n", j.points, dir, dir,
+                dir, j.sheet ? ", contact_sheet.png" : "");
     free(data);
     return r;
 }

@@ -603,6 +603,11 @@ typedef struct sink {
     long long rows, warned, failed;
 } sink;
 
+/* a grid's rows are its last axis; random points make a square */
+static int sheet_cols(const ww_sweep *s) {
+    return s->o.random > 0 ? (int)ceil(sqrt((double)s->npoints)) : s->ax[s->naxes - 1].count;
+}
+
 static void point_label(const ww_sweep *s, const row *rw, char vals[][WW_SWEEP_VALUE_MAX],
                         char *out, size_t cap) {
     size_t n = 0;
@@ -627,6 +632,17 @@ static ww_result sink_row(sink *k, const row *rw, ww_error *err) {
     k->rows++;
     k->warned += rw->status == ROW_WARN;
     k->failed += rw->status == ROW_ERROR;
+    if (s->o.point >= 0 && s->o.out_dir && s->o.thumbs) {
+        /* the point's cell of the contact sheet, for `join`: whether it has a thumbnail, then
+         * its label */
+        char path[1100], text[2100];
+        point_label(s, rw, vals, text + 8, sizeof text - 9);
+        memcpy(text, rw->thumb == THUMB_OK ? "thumb 1\n" : "thumb 0\n", 8);
+        strcat(text, "\n");
+        snprintf(path, sizeof path, "%s/points/point_%0*lld.label", s->o.out_dir, s->digits, rw->point);
+        ww_result r = ww_write_file_atomic(path, text, strlen(text), err);
+        if (r) return r;
+    }
 
     if (k->sheet_on) {
         ww_image thumb = {0};
@@ -698,9 +714,7 @@ static ww_result sink_open(sink *k, const ww_sweep *s, FILE *to, ww_error *err) 
     }
     csv_header(s, k->csv);
     if (s->o.thumbs) {
-        /* a grid's rows are its last axis; random points make a square */
-        int cols = s->o.random > 0 ? (int)ceil(sqrt((double)s->npoints)) : s->ax[s->naxes - 1].count;
-        ww_contact_plan((int)s->npoints, cols, s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &k->L);
+        ww_contact_plan((int)s->npoints, sheet_cols(s), s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &k->L);
         if (ww_contact_new(&k->L, &k->sheet) != 0) {
             sink_abort(k);
             return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for a %dx%d contact sheet",
@@ -815,13 +829,17 @@ static void point_command(const ww_sweep *s, FILE *to);
 
 /* OUT/points/sweep.job, what `join` needs to gather the points: their count, the file names'
  * width, the CSV header and the command of every point (without its --point I). Every point
- * writes the same bytes, atomically, before its own files. */
+ * writes the same bytes, atomically, before its own files. With thumbnails, the contact sheet's
+ * layout too (each point's label goes in its point_NNNNN.label). */
 static ww_result write_job(const ww_sweep *s, ww_error *err) {
     char *buf = NULL, path[1100];
     size_t len = 0;
     FILE *f = open_memstream(&buf, &len);
     if (!f) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sweep's job file");
-    fprintf(f, "%s\npoints %lld\ndigits %d\ncsv ", WW_SWEEP_JOB_MAGIC, s->npoints, s->digits);
+    fprintf(f, "%s\npoints %lld\ndigits %d\n", WW_SWEEP_JOB_MAGIC, s->npoints, s->digits);
+    /* the contact sheet's layout: columns, thumbnail size, label lines */
+    if (s->o.thumbs) fprintf(f, "sheet %d %d %d %d\n", sheet_cols(s), s->o.thumb_w, s->o.thumb_h, s->naxes + 1);
+    fputs("csv ", f);
     csv_header(s, f); /* ends the line */
     fputs("command ", f);
     point_command(s, f);
@@ -1040,8 +1058,7 @@ ww_result ww_sweep_new(const ww_sweep_opts *o, ww_sweep **out, ww_error *err) {
     }
     if (o->thumbs && o->point < 0) {
         ww_contact_layout L;
-        int cols = o->random > 0 ? (int)ceil(sqrt((double)s->npoints)) : s->ax[s->naxes - 1].count;
-        if (ww_contact_plan((int)s->npoints, cols, s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &L) != 0) {
+        if (ww_contact_plan((int)s->npoints, sheet_cols(s), s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &L) != 0) {
             r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                              "--thumbs: %lld points make a contact sheet over %d px on a side; use a smaller "
                              "--thumb-size or fewer points", s->npoints, WW_CONTACT_MAX_SIDE);
