@@ -141,9 +141,14 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
             fputs(usage, stdout);
             return WW_OK;
         }
-        int at = i;
-        if (ww_cli_opt(argc, argv, &i, "--slice", &slice, &r, err) ||
-            ww_cli_opt(argc, argv, &i, "--slices", &slices, &r, err)) {
+        /* the slicing options with a value: not repeated by the slices' commands */
+        const struct { const char *name; const char **val; } slicing_opts[] = {
+            {"--slice", &slice}, {"--slices", &slices},
+        };
+        int at = i, sliced = 0;
+        for (size_t k = 0; k < sizeof slicing_opts / sizeof slicing_opts[0] && !sliced; k++)
+            sliced = ww_cli_opt(argc, argv, &i, slicing_opts[k].name, slicing_opts[k].val, &r, err);
+        if (sliced) {
             for (int k = at; k <= i && k < argc; k++) drop[k] = 1;
             continue;
         }

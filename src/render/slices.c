@@ -143,7 +143,11 @@ ww_result ww_slices_emit(ww_slice_opts *so, const ww_scene *sc, const ww_job_opt
         snprintf(word, sizeof word, "%lld/%lld", (long long)i, (long long)so->count);
         ww_sh_word(to, "--slice", 0);
         ww_sh_word(to, word, 0);
-        /* with checkpoints, each line adds its --from-checkpoint here */
+        /* with checkpoints, each slice starts from the latest one before its first frame */
+        if (so->checkpoints) {
+            ww_sh_word(to, "--from-checkpoint", 0);
+            ww_sh_word(to, so->checkpoints, 0);
+        }
         fputc('\n', to);
     }
     if (fflush(to) != 0 || ferror(to))

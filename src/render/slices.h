@@ -46,8 +46,9 @@ typedef struct ww_slice_opts {
     int nsets;
     const char *audio_name;   /* joined track's name in DIR, NULL without --audio */
     const char *stats_name;   /* joined stats' name in DIR, NULL without --stats */
-    /* --checkpoints DIR for --emit-jobs: each line then starts its slice from a checkpoint
-     * (one line in ww_slices_emit adds its --from-checkpoint) */
+    /* --checkpoints DIR for --emit-jobs: each line then ends in --from-checkpoint DIR (render
+     * takes the latest checkpoint at or before the slice's first frame); cmd_render.c's table
+     * of slicing options sets it */
     const char *checkpoints;
     /* filled by ww_slice_begin */
     int64_t run_first, run_last;          /* the whole run's frames */
