@@ -56,6 +56,7 @@ typedef struct slices {
     ww_slice_record *rec;      /* by file, in the order read */
     int nrec, cap;
     const ww_slice_record *ref; /* the run the set belongs to */
+    const ww_slice_record **mine, **other; /* by slice: its record of that run, of another */
 } slices;
 
 /* every DIR/slices/slice_IIIII.record that reads as one */
@@ -88,29 +89,45 @@ static ww_result read_records(slices *s, ww_error *err) {
     return r;
 }
 
-/* the run of the set: the one most records belong to (ties: the one of the lowest slice) */
-static void pick_run(slices *s) {
+/* records by run line, then slice */
+static int by_run(const void *pa, const void *pb) {
+    const ww_slice_record *a = pa, *b = pb;
+    int c = strcmp(a->run, b->run);
+    return c ? c : (a->index > b->index) - (a->index < b->index);
+}
+
+/* the run of the set: the one most records belong to (ties: the one holding the lowest slice);
+ * then each slice's record of that run, or of another */
+static ww_result pick_run(slices *s, ww_error *err) {
+    qsort(s->rec, (size_t)s->nrec, sizeof *s->rec, by_run);
     int best = -1, best_n = 0;
-    for (int i = 0; i < s->nrec; i++) {
-        int n = 0;
-        for (int k = 0; k < s->nrec; k++) n += strcmp(s->rec[k].run, s->rec[i].run) == 0;
+    for (int i = 0, n; i < s->nrec; i += n) {
+        for (n = 1; i + n < s->nrec && strcmp(s->rec[i + n].run, s->rec[i].run) == 0;) n++;
         if (n > best_n || (n == best_n && s->rec[i].index < s->rec[best].index)) {
             best = i;
             best_n = n;
         }
     }
-    s->ref = best >= 0 ? &s->rec[best] : NULL;
+    if (best < 0) return WW_OK;
+    s->ref = &s->rec[best];
+    s->mine = calloc((size_t)s->ref->count, sizeof *s->mine);
+    s->other = calloc((size_t)s->ref->count, sizeof *s->other);
+    if (!s->mine || !s->other)
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for %lld slices",
+                            (long long)s->ref->count);
+    for (int k = 0; k < s->nrec; k++) {
+        const ww_slice_record *r = &s->rec[k];
+        if (r->index >= s->ref->count) continue;
+        if (strcmp(r->run, s->ref->run) == 0) s->mine[r->index] = r;
+        else s->other[r->index] = r;
+    }
+    return WW_OK;
 }
 
 /* this run's record of slice i; *other: a record of slice i from another run */
 static const ww_slice_record *find(const slices *s, int64_t i, const ww_slice_record **other) {
-    *other = NULL;
-    for (int k = 0; k < s->nrec; k++) {
-        if (s->rec[k].index != i) continue;
-        if (strcmp(s->rec[k].run, s->ref->run) == 0 && s->rec[k].count == s->ref->count) return &s->rec[k];
-        *other = &s->rec[k];
-    }
-    return NULL;
+    *other = s->other[i];
+    return s->mine[i];
 }
 
 /* the fields of run line a that differ from b's: "scene 4b20... (this set: 181c...), size ..." */
@@ -253,7 +270,7 @@ static ww_result join_stats(const slices *s, long long *lines, ww_error *err) {
 static ww_result join_slices(const char *dir, int quiet, ww_error *err) {
     slices s = {.dir = dir};
     ww_result r = read_records(&s, err);
-    if (!r) pick_run(&s);
+    if (!r) r = pick_run(&s, err);
     if (!r && !s.ref)
         r = ww_error_set(err, WW_E_MISMATCH, NULL, 0, 0,
                          "join %s: no slice record in %s/slices: render the slices first "
@@ -278,6 +295,8 @@ static ww_result join_slices(const char *dir, int quiet, ww_error *err) {
         if (strcmp(s.ref->stats, "-") != 0) fprintf(stderr, ", %s/%s (%lld frame lines)", dir, s.ref->stats, lines);
         fprintf(stderr, "\n");
     }
+    free(s.mine);
+    free(s.other);
     free(s.rec);
     return r;
 }
