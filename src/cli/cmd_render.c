@@ -153,7 +153,8 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
             continue;
         }
         if (strcmp(argv[i], "--emit-jobs") == 0 || strcmp(argv[i], "--resume") == 0) {
-            *(argv[i][2] == 'e' ? &emit : &jo.resume) = 1;
+            if (argv[i][2] == 'e') emit = 1;
+            else jo.resume = 1; /* join adds it to the commands it prints where it applies */
             drop[i] = 1;
             continue;
         }
