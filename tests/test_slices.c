@@ -250,6 +250,7 @@ TEST_PROC(slices_bad_values_exit_2) {
         {"--slices 3 --emit-jobs --slice 0/3", "one or the other"},
         {"--slice 0/3 --format y4m", "--format png, exr or none"},
         {"--slice 0/3 --audio=sub/x.wav", "plain file name"},
+        {"--slice 0/3 --stats=frame_00000.png", "ending in .jsonl"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         snprintf(args, sizeof args, "render scenes/lake.yaml --size 64x36 --backend null -o %s/o %s",

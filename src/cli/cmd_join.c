@@ -176,6 +176,18 @@ static long long check_slices(const slices *s, int quiet) {
     return bad;
 }
 
+/* slices drawn by different renderers (machines with another Mesa, --backend null) may differ
+ * in their pixels: said, not refused (a cluster's nodes are the user's to choose) */
+static void warn_renderers(const slices *s) {
+    const ww_slice_record *a = s->mine[0];
+    for (int64_t i = 1; i < s->ref->count; i++) {
+        if (strcmp(s->mine[i]->renderer, a->renderer) == 0) continue;
+        fprintf(stderr, "join: warning: slice %lld was drawn by '%s', slice 0 by '%s': their "
+                        "frames may differ where they meet\n",
+                (long long)i, s->mine[i]->renderer, a->renderer);
+    }
+}
+
 /* copy n bytes of f to out */
 static int copy_bytes(FILE *f, FILE *out, long long n) {
     static unsigned char block[COPY_BLOCK];
@@ -277,6 +289,7 @@ static ww_result join_slices(const char *dir, int quiet, ww_error *err) {
                          "(render SCENE --slices N --emit-jobs prints their commands)",
                          dir, dir);
     long long bad = r ? 0 : check_slices(&s, quiet);
+    if (!r && !bad && !quiet) warn_renderers(&s);
     if (!r && bad)
         r = ww_error_set(err, WW_E_MISMATCH, NULL, 0, 0,
                          "join %s: %lld of %lld slices are not complete; the commands that "

@@ -217,6 +217,7 @@ ww_result ww_slice_record_read(const char *path, ww_slice_record *rec, ww_error 
         else if ((v = field(line, "format"))) snprintf(rec->format, sizeof rec->format, "%s", v);
         else if ((v = field(line, "audio"))) snprintf(rec->audio, sizeof rec->audio, "%s", v);
         else if ((v = field(line, "stats"))) snprintf(rec->stats, sizeof rec->stats, "%s", v);
+        else if ((v = field(line, "renderer"))) snprintf(rec->renderer, sizeof rec->renderer, "%s", v);
         else if ((v = field(line, "run"))) snprintf(rec->run, sizeof rec->run, "%s", v), seen |= 8;
         else if ((v = field(line, "command")))
             snprintf(rec->command, sizeof rec->command, "%s", v), seen |= 16;
@@ -268,22 +269,22 @@ int ww_slice_check(const char *dir, const ww_slice_record *rec, char *why, size_
     return 1;
 }
 
-/* a name for a joined file in DIR: a plain file name */
-static ww_result check_name(const char *opt, const char *name, ww_error *err) {
-    if (!name || (name[0] && !strchr(name, '/') && strcmp(name, ".") != 0 && strcmp(name, "..") != 0))
-        return WW_OK;
+/* a name for a joined file in DIR: a plain file name ending in ext (never a frame's) */
+static ww_result check_name(const char *opt, const char *name, const char *ext, ww_error *err) {
+    size_t n = name ? strlen(name) : 0, e = strlen(ext);
+    if (!name || (n > e && !strchr(name, '/') && strcmp(name + n - e, ext) == 0)) return WW_OK;
     return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                         "%s with --slice names the joined file inside the output folder: a plain "
-                        "file name, got '%s'",
-                        opt, name);
+                        "file name ending in %s, got '%s'",
+                        opt, ext, name);
 }
 
 ww_result ww_slice_begin(ww_slice_opts *so, const ww_scene *sc, ww_job_opts *jo, int *skip,
                          ww_error *err) {
     *skip = 0;
     ww_result r = check_count(so, jo, err);
-    if (!r) r = check_name("--audio", so->audio_name, err);
-    if (!r) r = check_name("--stats", so->stats_name, err);
+    if (!r) r = check_name("--audio", so->audio_name, ".wav", err);
+    if (!r) r = check_name("--stats", so->stats_name, ".jsonl", err);
     if (r) return r;
     so->run_first = jo->first;
     so->run_last = jo->last;

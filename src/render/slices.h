@@ -87,6 +87,7 @@ typedef struct ww_slice_record {
     int64_t sample0, sample1;        /* its sound track's samples (0:0 without --audio) */
     char run[512];                   /* identity: scene hash and the shaping options */
     char format[8];                  /* png | exr | none */
+    char renderer[128];              /* GL_RENDERER of a done slice */
     char audio[256], stats[256];     /* joined names, "-" for none */
     char command[WW_SLICE_LINE_MAX]; /* sh line without --slice */
 } ww_slice_record;
