@@ -293,3 +293,35 @@ TEST_PROC(sweep_points_joined_equal_one_process) {
         ENSURE_MSG(ww_test_files_equal(a, b), "joined %s differs from one process's", names[k]);
     }
 }
+
+TEST_PROC(slices_make_video_from_dir) {
+    REQUIRE_TOOL("ffmpeg");
+    REQUIRE_TOOL("ffprobe");
+    char dir[512], line[4096], a[2048], outf[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("slices_video"));
+    snprintf(outf, sizeof outf, "%s/probe.txt", dir);
+    setenv("LP_NUM_THREADS", "1", 1);
+    emit(dir, "null");
+    for (int i = 0; i < NSLICES - 1; i++) {
+        job_line(dir, i, line, sizeof line);
+        ENSURE_EQ_INT(ww_test_run(line, NULL, NULL), 0);
+    }
+    /* a slice missing: join's exit 1, no video */
+    snprintf(a, sizeof a, "WW_BIN=%s MAKE_VIDEO_PRESET=ultrafast scripts/make-video.sh --from-dir %s/sl %s/v.mp4",
+             ww_test_bin(), dir, dir);
+    ENSURE_EQ_INT(ww_test_run(a, NULL, NULL), 1);
+    char mp4[700];
+    snprintf(mp4, sizeof mp4, "%s/v.mp4", dir);
+    FILE *f = fopen(mp4, "rb");
+    ENSURE_MSG(!f, "%s made from an incomplete set", mp4);
+    if (f) fclose(f);
+    job_line(dir, NSLICES - 1, line, sizeof line);
+    ENSURE_EQ_INT(ww_test_run(line, NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_run(a, NULL, NULL), 0);
+    snprintf(a, sizeof a, "ffprobe -v error -count_frames -show_streams -of flat %s/v.mp4", dir);
+    ENSURE_EQ_INT(ww_test_run(a, outf, NULL), 0);
+    const char *want[] = {"codec_name=\"h264\"", "nb_read_frames=\"25\"", "codec_type=\"audio\"",
+                          "color_space=\"bt709\"", "width=64"};
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++)
+        ENSURE_MSG(ww_test_file_contains(outf, want[i]), "video lacks %s", want[i]);
+}
