@@ -33,7 +33,7 @@ static const char usage[] =
     "  review   LIST [-o DIR] [--jobs N] [--size WxH] [--no-render]\n"
     "                                    one frame per shot of a review list, a labelled contact\n"
     "                                    sheet and an HTML page (make review)\n"
-    "  join     DIR                       put the slices of a render (render --slice) or the points\n"
+    "  join     DIR                      put the slices of a render (render --slice) or the points\n"
     "                                    of a sweep (sweep --point) back together; lists what is\n"
     "                                    missing and the commands that complete it\n"
     "  backends [--renderer] [--key]     which GL backends open here, on what; the golden key\n"
