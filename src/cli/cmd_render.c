@@ -8,6 +8,7 @@
 #include "check/golden.h"
 #include "cli/cli.h"
 #include "gfx/backend.h"
+#include "render/checkpoint.h"
 #include "render/job.h"
 
 static const char usage[] =
@@ -42,7 +43,11 @@ static const char usage[] =
     "                       golden: section, with these options over them:\n"
     "                       --threshold T --max M --fail-percent P --fail-pixels N --psnr-min DB\n"
     "                       --yiq Y --yiq-pixels N --ssim-min S --rel-max R --no-aa\n"
-    "  --progress           progress on stderr even when it is not a terminal\n"
+    "  --from-checkpoint F  start from a checkpoint (simulate --checkpoint-every) at or before\n"
+    "                       the first frame instead of simulating the prefix; one from another\n"
+    "                       scene, other --set/--script values or another build is refused\n"
+    "  --progress           progress on stderr even when it is not a terminal (the prefix's\n"
+    "                       steps, then the frames)\n"
     "  --quiet              no progress and no summary on stderr\n"
     "\n"
     "Exit: 0 done (and every frame matched), 1 a frame differs from its golden, 2 bad input\n"
@@ -77,7 +82,7 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     ww_cli_scene_opts so = {0};
     ww_job_opts jo = ww_default_job_opts();
     const char *out = NULL, *format = NULL, *backend = NULL, *threads = NULL, *compression = NULL;
-    const char *golden = NULL;
+    const char *golden = NULL, *from = NULL;
     int progress = 0;
     char *cmp_words[MAX_CMP_ARGS];
     int ncmp = 0;
@@ -97,6 +102,7 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
         if (ww_cli_opt(argc, argv, &i, "--stats", &jo.stats_path, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--audio", &jo.audio_path, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--golden", &golden, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--from-checkpoint", &from, &r, err)) continue;
         const struct { const char *name; int *flag; int value; } flags[] = {
             {"--quiet", &jo.quiet, 1},        {"--alpha", &jo.alpha, 1},
             {"--exr-float", &jo.exr_float, 1}, {"--y4m-420", &jo.y4m_420, 1},
@@ -144,10 +150,15 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     jo.progress = jo.quiet ? WW_PROGRESS_OFF : progress ? WW_PROGRESS_ON : WW_PROGRESS_AUTO;
 
     ww_scene *sc = NULL;
+    ww_checkpoint ck = {0};
     if ((r = ww_cli_load(&so, "render", &sc, err))) return r;
     ww_golden_opts go = {.golden_dir = golden};
     if (golden && (r = golden_opts(sc, cmp_words, ncmp, &go.cmp, err))) goto done;
     if ((r = ww_cli_frames(so.frames, sc, &jo.first, &jo.last, err))) goto done;
+    if (from && (r = ww_cli_checkpoint_load(&so, sc, from, jo.first * sc->steps_per_frame,
+                                            jo.audio_path != NULL, &ck, err)))
+        goto done;
+    jo.from = from ? &ck : NULL;
     char dir[600];
     if (out) {
         snprintf(dir, sizeof dir, "%s", out);
@@ -191,6 +202,7 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
                 (long long)gs.frames, (long long)gs.passed, (long long)gs.failed,
                 (long long)gs.missing, gs.wall_s, gs.golden_dir, gs.key, gs.report);
 done:
+    ww_checkpoint_free(&ck);
     ww_scene_free(sc);
     return r;
 }
