@@ -152,7 +152,15 @@ TEST_PROC(ckpt_sound_track_from_checkpoint_sample_exact) {
                              common, first, first + 45, b, ck, s), 0);
         same += ww_test_files_equal(a, b);
     }
-    ENSURE_EQ_INT(same, 4);
+    /* the folder: the latest checkpoint at or before frame 200's step 800 (step 750) */
+    snprintf(b, sizeof b, "%s/part_dir.wav", ck);
+    ENSURE_EQ_INT(run_ww(NULL, "render scenes/lake.yaml --backend null --format none --quiet "
+                               "--frames 200:245 --audio %s --from-checkpoint %s", b, ck), 0);
+    snprintf(a, sizeof a, "%s/full_%d.wav", ck, 750); /* frames 188..232: another slice */
+    ENSURE_EQ_INT(run_ww(NULL, "render scenes/lake.yaml --backend null --format none --quiet "
+                               "--frames 200:245 --audio %s", a), 0);
+    same += ww_test_files_equal(a, b);
+    ENSURE_EQ_INT(same, 5);
 }
 
 TEST_PROC(ckpt_simulate_from_checkpoint_reaches_pinned_hash) {

@@ -44,8 +44,10 @@ static const char usage[] =
     "                       --threshold T --max M --fail-percent P --fail-pixels N --psnr-min DB\n"
     "                       --yiq Y --yiq-pixels N --ssim-min S --rel-max R --no-aa\n"
     "  --from-checkpoint F  start from a checkpoint (simulate --checkpoint-every) at or before\n"
-    "                       the first frame instead of simulating the prefix; one from another\n"
-    "                       scene, other --set/--script values or another build is refused\n"
+    "                       the first frame instead of simulating the prefix; F a file, or the\n"
+    "                       folder of them (the latest at or before the first frame is taken);\n"
+    "                       one from another scene, other --set/--script values or another\n"
+    "                       build is refused (exit 2)\n"
     "  --progress           progress on stderr even when it is not a terminal (the prefix's\n"
     "                       steps, then the frames)\n"
     "  --quiet              no progress and no summary on stderr\n"
@@ -158,7 +160,7 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     if (from && (r = ww_cli_checkpoint_load(&so, sc, from, jo.first * sc->steps_per_frame,
                                             jo.audio_path != NULL, &ck, err)))
         goto done;
-    jo.from = from ? &ck : NULL;
+    jo.from = ck.st ? &ck : NULL;
     char dir[600];
     if (out) {
         snprintf(dir, sizeof dir, "%s", out);

@@ -43,8 +43,9 @@ static const char usage[] =
     "                       instead of simulating the prefix (the sound track's state included)\n"
     "  -o, --output DIR     the checkpoints' folder (made with its parents)\n"
     "  --from-checkpoint F  start from a checkpoint instead of step 0 (--frames A:B: at or\n"
-    "                       before frame A); another scene's, other --set/--script values' or\n"
-    "                       another build's is refused\n"
+    "                       before frame A); F a file or a folder of them (the latest that\n"
+    "                       fits); another scene's, other --set/--script values' or another\n"
+    "                       build's is refused (exit 2)\n"
     "  --progress           steps done / total, rate and ETA on stderr even when it is not a\n"
     "                       terminal (shown on a terminal unless --quiet)\n"
     "  --quiet              no progress line\n"
@@ -218,7 +219,7 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
         r = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the state");
         goto done;
     }
-    if (from) {
+    if (ck.st) {
         ww_state_copy(st, ck.st);
         int64_t f0 = (ck.step + spf - 1) / spf;
         if (f0 > first) first = f0;
@@ -232,9 +233,9 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
     }
     int64_t start_step = st->step;
     /* the sound track listens, so that each checkpoint carries its state (render --audio) */
-    if (dir && (!from || ck.sound)) {
+    if (dir && (!ck.st || ck.sound)) {
         if ((r = ww_audio_new(sc, start_step, start_step, &u.audio, err))) goto done;
-        if (from && (r = ww_audio_restore(u.audio, st, ck.sound, ck.sound_bytes, err))) goto done;
+        if (ck.st && (r = ww_audio_restore(u.audio, st, ck.sound, ck.sound_bytes, err))) goto done;
     }
     if (dir && (r = ww_make_dirs(dir, err))) goto done;
     if ((r = open_outputs(&o, err))) {
@@ -271,7 +272,7 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
                 simulated, (long long)(st->step - start_step), sc->dt, wall,
                 wall > 0 ? simulated / wall : 0.0,
                 st->step > start_step ? 1e6 * wall / (double)(st->step - start_step) : 0.0);
-        if (from) fprintf(stderr, "; from the checkpoint at step %lld", (long long)ck.step);
+        if (ck.st) fprintf(stderr, "; from the checkpoint at step %lld", (long long)ck.step);
         if (dir) fprintf(stderr, "; %lld checkpoints written to %s", u.ncheck, dir);
         if (o.ef) fprintf(stderr, "; %lld events written", o.nevents);
         fprintf(stderr, "; %lld events dropped by a full outbox\n", dropped);

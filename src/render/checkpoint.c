@@ -4,6 +4,7 @@
  */
 #include "render/checkpoint.h"
 
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -93,6 +94,26 @@ ww_result ww_checkpoint_scene_hash(const char *scene_path, const char *script_pa
 
 void ww_checkpoint_path(const char *dir, int64_t step, char *buf, size_t cap) {
     snprintf(buf, cap, "%s/step_%012lld" WW_CKPT_EXT, dir, (long long)step);
+}
+
+int ww_checkpoint_find(const char *dir, int64_t max_step, char *buf, size_t cap) {
+    DIR *d = opendir(dir);
+    if (!d) return -1;
+    long long best = -1;
+    int any = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        const char *n = e->d_name;
+        if (strncmp(n, "step_", 5) != 0) continue;
+        char *end = NULL;
+        long long step = strtoll(n + 5, &end, 10);
+        if (end == n + 5 || strcmp(end, WW_CKPT_EXT) != 0 || step < 0) continue;
+        any = 1;
+        if (step <= max_step && step > best) best = step;
+    }
+    closedir(d);
+    if (best >= 0) ww_checkpoint_path(dir, best, buf, cap);
+    return best >= 0 ? 1 : any ? 0 : -1;
 }
 
 /* ---- write --------------------------------------------------------------------------------- */

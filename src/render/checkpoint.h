@@ -54,6 +54,9 @@ ww_result ww_checkpoint_scene_hash(const char *scene_path, const char *script_pa
                                    const ww_set *sets, int nsets, uint64_t *hash, ww_error *err);
 /* DIR/step_000000001200.wwck */
 void ww_checkpoint_path(const char *dir, int64_t step, char *buf, size_t cap);
+/* the latest checkpoint in dir at or before max_step (by its name, DIR/step_N.wwck) into buf;
+ * 1 found, 0 none at or before it, -1 none in dir at all or dir cannot be read */
+int ww_checkpoint_find(const char *dir, int64_t max_step, char *buf, size_t cap);
 /* write st (and sound, sound_bytes > 0; NULL: none) to path, atomically (PATH.tmp.PID renamed) */
 ww_result ww_checkpoint_write(const char *path, uint64_t scene_hash, const ww_state *st,
                               const unsigned char *sound, size_t sound_bytes, ww_error *err);
