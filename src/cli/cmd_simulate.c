@@ -106,6 +106,8 @@ typedef struct sim_run {
     const char *dir;
     uint64_t scene_hash;
     long long ncheck;
+    double write_s;            /* writing the checkpoints (state and sound copied, file), s */
+    size_t bytes;              /* of the last checkpoint */
 } sim_run;
 
 static void after_step(void *ctx, const ww_scene *sc, const ww_state *st) {
@@ -116,6 +118,7 @@ static void after_step(void *ctx, const ww_scene *sc, const ww_state *st) {
 
 static ww_result write_checkpoint(sim_run *u, const ww_state *st, ww_error *err) {
     char path[1024];
+    double t0 = ww_now_seconds();
     ww_checkpoint_path(u->dir, st->step, path, sizeof path);
     size_t n = u->audio ? ww_audio_save(u->audio, NULL, 0) : 0;
     unsigned char *sound = n ? malloc(n) : NULL;
@@ -124,6 +127,8 @@ static ww_result write_checkpoint(sim_run *u, const ww_state *st, ww_error *err)
     ww_result r = ww_checkpoint_write(path, u->scene_hash, st, sound, n, err);
     free(sound);
     u->ncheck += !r;
+    u->write_s += ww_now_seconds() - t0;
+    u->bytes = WW_CKPT_HEADER_BYTES + st->bytes - ww_state_arrays_offset() + n;
     return r;
 }
 
@@ -208,9 +213,11 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
     spf = sc->steps_per_frame;
     if ((r = ww_cli_frames(so.frames, sc, &first, &last, err))) goto done;
     /* a checkpoint: at or before --frames A's step; without --frames the run starts there */
+    double read_t0 = ww_now_seconds();
     if (from && (r = ww_cli_checkpoint_load(&so, sc, from, so.frames ? first * spf : INT64_MAX, 0,
                                             &ck, err)))
         goto done;
+    double read_s = ww_now_seconds() - read_t0;
     if (dir && (r = ww_checkpoint_scene_hash(so.scene_path, so.script, so.sets, so.nsets,
                                              &u.scene_hash, err)))
         goto done;
@@ -272,8 +279,12 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
                 simulated, (long long)(st->step - start_step), sc->dt, wall,
                 wall > 0 ? simulated / wall : 0.0,
                 st->step > start_step ? 1e6 * wall / (double)(st->step - start_step) : 0.0);
-        if (ck.st) fprintf(stderr, "; from the checkpoint at step %lld", (long long)ck.step);
-        if (dir) fprintf(stderr, "; %lld checkpoints written to %s", u.ncheck, dir);
+        if (ck.st)
+            fprintf(stderr, "; from the checkpoint at step %lld (%zu bytes, read and checked in "
+                    "%.3f ms)", (long long)ck.step, ck.file_bytes, 1e3 * read_s);
+        if (dir)
+            fprintf(stderr, "; %lld checkpoints written to %s (%zu bytes each, %.3f ms each)",
+                    u.ncheck, dir, u.bytes, u.ncheck ? 1e3 * u.write_s / (double)u.ncheck : 0.0);
         if (o.ef) fprintf(stderr, "; %lld events written", o.nevents);
         fprintf(stderr, "; %lld events dropped by a full outbox\n", dropped);
     }
