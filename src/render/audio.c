@@ -145,27 +145,31 @@ static double loop_at(const ww_clip *c, double p, int ch) {
 static void mix_loops(ww_audio *a, int64_t n1) {
     const ww_clip *eng = &a->clip[WW_SOUND_ENGINE], *uw = &a->clip[WW_SOUND_UNDERWATER];
     for (int64_t n = a->cursor; n < n1; n++) {
+        /* outside the track (the prefix, a checkpoint's listener) only the state moves on */
+        int in = n >= a->b0 && n < a->b1;
         double l = 0.0, r = 0.0;
         double gl = smooth_tick(&a->eng_l), gr = smooth_tick(&a->eng_r);
         double rate = smooth_tick(&a->eng_rate);
         if (gl != 0.0 || gr != 0.0) {
-            l += gl * loop_at(eng, a->eng_phase, 0);
-            r += gr * loop_at(eng, a->eng_phase, 1);
+            if (in) {
+                l += gl * loop_at(eng, a->eng_phase, 0);
+                r += gr * loop_at(eng, a->eng_phase, 1);
+            }
             a->eng_phase = fmod(a->eng_phase + rate, (double)eng->frames);
         }
         double gu = smooth_tick(&a->underwater) * CENTRE;
-        if (gu != 0.0) { /* the loop's position is the absolute sample: no state to carry */
+        if (in && gu != 0.0) { /* the loop's position is the absolute sample: no state to carry */
             double p = (double)(n % uw->frames);
             l += gu * loop_at(uw, p, 0);
             r += gu * loop_at(uw, p, 1);
         }
         double gm = smooth_tick(&a->music_gain);
-        if (gm != 0.0 && a->music.frames) {
+        if (in && gm != 0.0 && a->music.frames) {
             double p = (double)(n % a->music.frames);
             l += gm * loop_at(&a->music, p, 0);
             r += gm * loop_at(&a->music, p, 1);
         }
-        if (n >= a->b0 && n < a->b1 && (l != 0.0 || r != 0.0)) {
+        if (in && (l != 0.0 || r != 0.0)) {
             a->mix[2 * (n - a->b0)] += (float)l;
             a->mix[2 * (n - a->b0) + 1] += (float)r;
         }
