@@ -276,8 +276,8 @@ TEST_PROC(ckpt_refusals_exit_2_and_leave_nothing) {
 TEST_PROC(ckpt_prefix_progress_line) {
     char errf[800];
     snprintf(errf, sizeof errf, "%s/err.txt", tmp("p"));
-    const char *r = "render scenes/lake.yaml --set time.duration=400 --backend null --format none "
-                    "--frames 11990:11991";
+    const char *r = "render scenes/lake.yaml --set time.duration=200 --backend null --format none "
+                    "--frames 5990:5991";
     ENSURE_EQ_INT(run_ww(errf, "%s --progress", r), 0);
     ENSURE(ww_test_file_contains(errf, "simulating the prefix: step "));
     ENSURE(ww_test_file_contains(errf, "steps/s  ETA "));
@@ -285,6 +285,6 @@ TEST_PROC(ckpt_prefix_progress_line) {
     char *e = ww_test_read_file(errf, NULL);
     ENSURE(e && e[0] == 0);
     free(e);
-    ENSURE_EQ_INT(run_ww(errf, "simulate scenes/lake.yaml --set time.duration=400 --progress"), 0);
+    ENSURE_EQ_INT(run_ww(errf, "simulate scenes/lake.yaml --set time.duration=200 --progress"), 0);
     ENSURE(ww_test_file_contains(errf, "simulating: step "));
 }
