@@ -168,13 +168,16 @@ TEST_PROC(ckpt_simulate_from_checkpoint_reaches_pinned_hash) {
     snprintf(ck, sizeof ck, "%s", tmp("ck"));
     ENSURE_EQ_INT(lake_checkpoints(ck), 0);
     snprintf(out, sizeof out, "%s/hash.txt", ck);
-    snprintf(cmd, sizeof cmd, "simulate scenes/lake.yaml --hash --from-checkpoint %s/step_000000001200.wwck", ck);
+    snprintf(cmd, sizeof cmd,
+             "simulate scenes/lake.yaml --hash --from-checkpoint %s/step_000000001200.wwck", ck);
     ENSURE_EQ_INT(ww_test_ww(cmd, out, NULL), 0);
     char *h = ww_test_read_file(out, NULL);
     ENSURE(h && strncmp(h, "77d2c3a982ceeef7", 16) == 0);
     free(h);
     /* loaded and not stepped: the hash at the checkpoint's own frame (step 1200 = frame 300) */
-    snprintf(cmd, sizeof cmd, "simulate scenes/lake.yaml --frames 300:301 --hash --from-checkpoint %s/step_000000001200.wwck", ck);
+    snprintf(cmd, sizeof cmd,
+             "simulate scenes/lake.yaml --frames 300:301 --hash --from-checkpoint "
+             "%s/step_000000001200.wwck", ck);
     ENSURE_EQ_INT(ww_test_ww(cmd, out, NULL), 0);
     char *x = ww_test_read_file(out, NULL);
     ENSURE_EQ_INT(ww_test_ww("simulate scenes/lake.yaml --frames 301 --hash", out, NULL), 0);

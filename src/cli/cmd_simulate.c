@@ -137,8 +137,8 @@ static ww_result run_to(sim_run *u, const ww_scene *sc, ww_state *st, int64_t ta
                         ww_steps_progress *pg, ww_error *err) {
     int hook = u->o->ef || u->audio;
     while (st->step < target) {
-        int64_t end = target;
-        if (u->every && (st->step / u->every + 1) * u->every < end) end = (st->step / u->every + 1) * u->every;
+        int64_t end = target, next = u->every ? (st->step / u->every + 1) * u->every : target;
+        if (next < end) end = next;
         ww_result r = ww_prefix_advance(sc, st, end, hook ? after_step : NULL, u, pg, NULL, err);
         if (!r && u->every && st->step % u->every == 0) r = write_checkpoint(u, st, err);
         if (r) return r;
@@ -146,13 +146,15 @@ static ww_result run_to(sim_run *u, const ww_scene *sc, ww_state *st, int64_t ta
     return WW_OK;
 }
 
-/* a positive whole number of steps */
+/* a positive whole number of steps, at most CHECKPOINT_EVERY_MAX (past any run's length, and
+ * far from where the next multiple could overflow) */
+#define CHECKPOINT_EVERY_MAX 1000000000000000LL
 static ww_result parse_every(const char *v, int64_t *out, ww_error *err) {
     char *end = NULL;
     long long n = strtoll(v, &end, 10);
-    if (end == v || *end != 0 || n < 1)
+    if (end == v || *end != 0 || n < 1 || n > CHECKPOINT_EVERY_MAX)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
-                            "--checkpoint-every wants a whole number of steps >= 1, got '%s'", v);
+                            "--checkpoint-every wants a whole number of steps in 1..1e15, got '%s'", v);
     *out = n;
     return WW_OK;
 }
@@ -200,8 +202,10 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
     if (every_s && (r = parse_every(every_s, &u.every, err))) return r;
     if (!!every_s != !!dir)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
-                            every_s ? "simulate: --checkpoint-every needs -o DIR, the checkpoints' folder"
-                                    : "simulate: -o DIR is the checkpoints' folder: give --checkpoint-every K too");
+                            every_s ? "simulate: --checkpoint-every needs -o DIR, the "
+                                      "checkpoints' folder"
+                                    : "simulate: -o DIR is the checkpoints' folder: give "
+                                      "--checkpoint-every K too");
     if (dir && (r = ww_check_out_dir("-o", dir, err))) return r;
     u.dir = dir;
 

@@ -484,7 +484,8 @@ ww_result ww_audio_restore(ww_audio *a, const ww_state *st, const unsigned char 
     }
     if (nv < 0 || nv > WW_AUDIO_MAX_VOICES || n != SAVE_FIXED + (size_t)nv * SAVE_VOICE ||
         cursor != grid(a, st->step) || splashes < 0 || !(phase >= 0.0))
-        return ww_error_set(err, WW_E_RANGE, NULL, 0, 0, "the sound track's state does not fit this scene");
+        return ww_error_set(err, WW_E_RANGE, NULL, 0, 0,
+                            "the sound track's state does not fit this scene");
     voice vs[WW_AUDIO_MAX_VOICES];
     for (int i = 0; i < nv; i++) {
         int64_t clip;
@@ -492,7 +493,8 @@ ww_result ww_audio_restore(ww_audio *a, const ww_state *st, const unsigned char 
         vs[i].clip = (int)clip;
         if (clip < 0 || clip >= WW_SOUND_COUNT + a->nsplash || clip == WW_SOUND_SPLASH ||
             vs[i].n0 > cursor)
-            return ww_error_set(err, WW_E_RANGE, NULL, 0, 0, "the sound track's state names a sound this scene does not have");
+            return ww_error_set(err, WW_E_RANGE, NULL, 0, 0,
+                                "the sound track's state names a sound this scene does not have");
     }
     a->cursor = cursor;
     a->splashes = splashes;

@@ -216,7 +216,9 @@ ww_result ww_checkpoint_read(const char *path, const ww_scene *sc, uint64_t scen
     size_t len = 0;
     ww_error e = {0};
     ww_result r = ww_file_read_max(path, CKPT_MAX_BYTES, CKPT_MAX_BYTES, &d, &len, &e);
-    if (r) return ww_error_set(err, r == WW_E_NOMEM ? r : WW_E_NOFILE, path, 0, 0, "cannot read the checkpoint: %s", e.msg);
+    if (r)
+        return ww_error_set(err, r == WW_E_NOMEM ? r : WW_E_NOFILE, path, 0, 0,
+                            "cannot read the checkpoint: %s", e.msg);
     if (!(r = check_whole(path, d, len, err))) {
         ww_state *st = ww_state_alloc(sc);
         size_t off = ww_state_arrays_offset(), nstate = (size_t)get_u64(d + 56);
