@@ -86,9 +86,11 @@ extern const ww_pass_ops ww_pass_hud_ops;     /* pass_hud.c */
  * convolved into one kernel and read as bilinear fetches: the centre weight and offset 0, then
  * (weight, offset in texels) pairs each fetched on both sides; returns how many entries (n) it
  * filled, the weights summing to weight[0] + 2 (weight[1] + ... + weight[n - 1]) = 1. One pass
- * gives Rakos's 5 fetches (n = 3). */
+ * gives Rakos's 5 fetches (n = 3). The rounds are texels of a blur at half the frame's size;
+ * at another `scale` (render.bloom.scale) the kernel is the Gaussian whose glow is as wide in
+ * the frame, so the scale sets the blur's resolution, not the look. */
 #define WW_BLOOM_MAX_FETCHES 16
-int ww_bloom_kernel(int passes, float weight[WW_BLOOM_MAX_FETCHES],
+int ww_bloom_kernel(int passes, double scale, float weight[WW_BLOOM_MAX_FETCHES],
                     float offset[WW_BLOOM_MAX_FETCHES]);
 
 typedef struct ww_pass {
