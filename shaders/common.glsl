@@ -340,22 +340,24 @@ vec3 ww_lights_scatter(vec3 o, vec3 d, float t0, float t1, float rho, vec2 px) {
     float g = WW_SCATTER_G, g2 = g * g;
     for (int i = 0; i < u_nlights; i++) {
         float k = u_light_scatter[i];
-        if (k <= 0.0) continue;
         vec4 q = u_light_param[i];
         vec3 co = o - u_light_pos[i];
         // the range sphere |co + t d| <= range
         float b = dot(co, d), c = dot(co, co) - q.x * q.x, disc = b * b - c;
-        if (disc <= 0.0) continue;
-        float s = sqrt(disc);
+        float s = sqrt(max(disc, 0.0));
         vec2 r = vec2(max(t0, -b - s), min(t1, -b + s));
         if (q.w > 0.5) r = ww_cone_clip(co, d, u_light_dir[i], q.y, r);
-        if (r.y <= r.x) continue;
+        // the samples are a loop of per-pixel length, 0 where the ray misses the light's
+        // volume: llvmpipe runs a branch's code for every pixel of a block, but a loop only
+        // while one of them still goes round, so blocks that miss skip the march
+        bool hit = k > 0.0 && disc > 0.0 && r.y > r.x;
+        int steps = hit ? WW_SCATTER_STEPS : 0;
         // equiangular samples about the ray's closest approach t_c (the +1 of the falloff
         // widens H)
         float tc = -b, H = sqrt(max(dot(co, co) - b * b, 0.0) + 1.0);
         float a0 = atan((r.x - tc) / H), a1 = atan((r.y - tc) / H);
         float da = (a1 - a0) / float(WW_SCATTER_STEPS), f = 0.0;
-        for (int j = 0; j < WW_SCATTER_STEPS; j++) {
+        for (int j = 0; j < steps; j++) {
             float t = tc + H * tan(a0 + (float(j) + xi) * da);
             vec3 x = co + t * d; // from the light
             float dist = length(x), xr = dist / q.x, xr2 = xr * xr;
@@ -369,7 +371,7 @@ vec3 ww_lights_scatter(vec3 o, vec3 d, float t0, float t1, float rho, vec2 px) {
             float e = rho * (t - t0);
             f += w * ph * exp(-e * e);
         }
-        sum += u_light_color[i] * (k * rho * f * da / H);
+        if (hit) sum += u_light_color[i] * (k * rho * f * da / H);
     }
     return sum;
 }
