@@ -8,15 +8,16 @@
 #   farm_same_render REF DIR                        frames and sound track byte for byte
 #   farm_same_sweep REF DIR                         sweep.jsonl and thumbnails byte for byte
 #
-# Environment: WW_BIN (default ./waterworld, else the one on PATH).
+# Environment: WW_BIN (default ./waterworld, else the one on PATH). The functions' own variables
+# start with an underscore (sh has no locals): a script sourcing this keeps its names.
 
 farm_ww() {
-    ww=${WW_BIN:-./waterworld}
-    [ -x "$ww" ] || ww=$(command -v waterworld || true)
-    [ -n "$ww" ] || { echo "farm: no waterworld binary (build it with make, or set WW_BIN)" >&2; return 3; }
+    _w=${WW_BIN:-./waterworld}
+    [ -x "$_w" ] || _w=$(command -v waterworld || true)
+    [ -n "$_w" ] || { echo "farm: no waterworld binary (build it with make, or set WW_BIN)" >&2; return 3; }
     # absolute, so that the job lines run from any folder and on any node of a shared filesystem
-    case "$ww" in /*) ;; */*) ww="$(cd "$(dirname "$ww")" && pwd)/$(basename "$ww")" ;; esac
-    echo "$ww"
+    case "$_w" in /*) ;; */*) _w="$(cd "$(dirname "$_w")" && pwd)/$(basename "$_w")" ;; esac
+    echo "$_w"
 }
 
 # the joined sound track and stats in a render's DIR (render/slices.h names them)
@@ -33,12 +34,12 @@ farm_have_join() {
 }
 
 farm_render_jobs() {
-    dir=$1 n=$2
+    _d=$1 _n=$2
     shift 2
     if farm_have_join; then
-        "$(farm_ww)" render "$@" -o "$dir" --audio "$FARM_AUDIO" --slices "$n" --emit-jobs
+        "$(farm_ww)" render "$@" -o "$_d" --audio "$FARM_AUDIO" --slices "$_n" --emit-jobs
     else
-        farm_standin_render_jobs "$dir" "$n" "$@"
+        farm_standin_render_jobs "$_d" "$_n" "$@"
     fi
 }
 
@@ -50,37 +51,36 @@ farm_join() {
 # (B-A)%N (render/slices.h's cut); its sound part DIR/slices/slice_IIIII.wav. Takes SCENE
 # --frames A:B [other options]; every slice's line is sh-quoted.
 farm_standin_render_jobs() {
-    dir=$1 n=$2 scene=$3
+    _d=$1 _n=$2 _scene=$3
     shift 3
-    ww=$(farm_ww) || return $?
-    a="" b="" rest=""
+    _ww=$(farm_ww) || return $?
+    _a="" _b="" _rest=""
     while [ $# -gt 0 ]; do
         case "$1" in
-        --frames) a=${2%%:*} b=${2#*:}; shift 2 ;;
-        *) rest="$rest $(farm_q "$1")"; shift ;;
+        --frames) _a=${2%%:*} _b=${2#*:}; shift 2 ;;
+        *) _rest="$_rest $(farm_q "$1")"; shift ;;
         esac
     done
-    [ -n "$a" ] || { echo "farm: the stand-in needs --frames A:B" >&2; return 2; }
-    q=$(((b - a) / n)) r=$(((b - a) % n)) i=0
-    while [ "$i" -lt "$n" ]; do
-        lo=$((a + i * q + (i < r ? i : r)))
-        hi=$((a + (i + 1) * q + (i + 1 < r ? i + 1 : r)))
-        part=$(printf '%s/slices/slice_%05d.wav' "$dir" "$i")
-        echo "mkdir -p $(farm_q "$dir/slices") && $(farm_q "$ww") render $(farm_q "$scene")$rest" \
-            "--frames $lo:$hi -o $(farm_q "$dir") --audio $(farm_q "$part") --quiet"
-        i=$((i + 1))
+    [ -n "$_a" ] || { echo "farm: the stand-in needs --frames A:B" >&2; return 2; }
+    _q=$(((_b - _a) / _n)) _r=$(((_b - _a) % _n)) _i=0
+    while [ "$_i" -lt "$_n" ]; do
+        _lo=$((_a + _i * _q + (_i < _r ? _i : _r)))
+        _hi=$((_a + (_i + 1) * _q + (_i + 1 < _r ? _i + 1 : _r)))
+        _part=$(printf '%s/slices/slice_%05d.wav' "$_d" "$_i")
+        echo "mkdir -p $(farm_q "$_d/slices") && $(farm_q "$_ww") render $(farm_q "$_scene")$_rest" \
+            "--frames $_lo:$_hi -o $(farm_q "$_d") --audio $(farm_q "$_part") --quiet"
+        _i=$((_i + 1))
     done
 }
 
 # stand-in join: a sweep's DIR/points/ into DIR/sweep.jsonl, a render's slice sound parts into
 # DIR/audio.wav (the PCM data butted, one header); written beside and renamed
 farm_standin_join() {
-    dir=$1
-    if [ -d "$dir/points" ]; then
-        cat "$dir"/points/point_*.jsonl >"$dir/.sweep.jsonl.tmp" && mv "$dir/.sweep.jsonl.tmp" "$dir/sweep.jsonl"
+    if [ -d "$1/points" ]; then
+        cat "$1"/points/point_*.jsonl >"$1/.sweep.jsonl.tmp" && mv "$1/.sweep.jsonl.tmp" "$1/sweep.jsonl"
         return
     fi
-    python3 - "$dir" "$FARM_AUDIO" <<'PY' || return 1
+    python3 - "$1" "$FARM_AUDIO" <<'PY' || return 1
 import glob, os, sys, wave
 d, name = sys.argv[1], sys.argv[2]
 parts = sorted(glob.glob(os.path.join(d, "slices", "slice_*.wav")))
@@ -104,28 +104,28 @@ farm_q() {
 
 # every frame of REF is in DIR with the same bytes, and no more frames; the sound tracks equal
 farm_same_render() {
-    ref=$1 dir=$2 bad=0 n=0
-    for f in "$ref"/frame_*.png; do
-        n=$((n + 1))
-        cmp -s "$f" "$dir/${f##*/}" || { echo "farm: ${f##*/} differs from one process" >&2; bad=1; }
+    _bad=0 _n=0
+    for _f in "$1"/frame_*.png; do
+        _n=$((_n + 1))
+        cmp -s "$_f" "$2/${_f##*/}" || { echo "farm: ${_f##*/} differs from one process" >&2; _bad=1; }
     done
-    m=$(ls "$dir" | grep -c '^frame_.*\.png$')
-    [ "$m" -eq "$n" ] || { echo "farm: $m frames in $dir, $n in one process" >&2; bad=1; }
-    cmp -s "$ref/$FARM_AUDIO" "$dir/$FARM_AUDIO" ||
-        { echo "farm: $dir/$FARM_AUDIO differs from one process" >&2; bad=1; }
-    [ "$bad" = 0 ] && echo "  same bytes: $n frames and $FARM_AUDIO ($(wc -c <"$dir/$FARM_AUDIO") bytes)"
-    return "$bad"
+    _m=$(ls "$2" | grep -c '^frame_.*\.png$')
+    [ "$_m" -eq "$_n" ] || { echo "farm: $_m frames in $2, $_n in one process" >&2; _bad=1; }
+    cmp -s "$1/$FARM_AUDIO" "$2/$FARM_AUDIO" ||
+        { echo "farm: $2/$FARM_AUDIO differs from one process" >&2; _bad=1; }
+    [ "$_bad" = 0 ] && echo "  same bytes: $_n frames and $FARM_AUDIO ($(wc -c <"$2/$FARM_AUDIO") bytes)"
+    return "$_bad"
 }
 
 # sweep.jsonl and every thumbnail the same bytes as one process's
 farm_same_sweep() {
-    ref=$1 dir=$2 bad=0 n=0
-    cmp -s "$ref/sweep.jsonl" "$dir/sweep.jsonl" || { echo "farm: sweep.jsonl differs" >&2; bad=1; }
-    for f in "$ref"/thumbs/point_*.png; do
-        [ -e "$f" ] || continue
-        n=$((n + 1))
-        cmp -s "$f" "$dir/thumbs/${f##*/}" || { echo "farm: thumbs/${f##*/} differs" >&2; bad=1; }
+    _bad=0 _n=0
+    cmp -s "$1/sweep.jsonl" "$2/sweep.jsonl" || { echo "farm: sweep.jsonl differs" >&2; _bad=1; }
+    for _f in "$1"/thumbs/point_*.png; do
+        [ -e "$_f" ] || continue
+        _n=$((_n + 1))
+        cmp -s "$_f" "$2/thumbs/${_f##*/}" || { echo "farm: thumbs/${_f##*/} differs" >&2; _bad=1; }
     done
-    [ "$bad" = 0 ] && echo "  same bytes: sweep.jsonl ($(wc -l <"$dir/sweep.jsonl") points) and $n thumbnails"
-    return "$bad"
+    [ "$_bad" = 0 ] && echo "  same bytes: sweep.jsonl ($(wc -l <"$2/sweep.jsonl") points) and $_n thumbnails"
+    return "$_bad"
 }
