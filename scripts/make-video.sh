@@ -4,6 +4,12 @@
 # line). Frames go as a Y4M stream straight into ffmpeg, never through files on disk.
 #
 #   scripts/make-video.sh SCENE.yaml OUT.mp4 [render options, e.g. --frames 90 --size 640x360]
+#   scripts/make-video.sh --from-dir DIR OUT.mp4
+#
+# --from-dir: the video of a render made in slices (`render --slice I/N -o DIR`, PNG frames):
+# `waterworld join DIR` first (it lists what is missing and stops, exit 1), then DIR's frames
+# and the joined sound track (when the slices made one) into OUT.mp4. The frame rate and the
+# first frame come from DIR/slices/slice_00000.record.
 #
 # Environment: WW_BIN (the waterworld binary, default ./waterworld, else the one on PATH),
 # MAKE_VIDEO_CRF (x264 quality, default 18), MAKE_VIDEO_PRESET (x264 preset, default medium).
@@ -11,8 +17,14 @@
 # Exit: 0 done, 2 usage, 3 ffmpeg missing, else the status of the step that failed.
 set -euo pipefail
 
-usage() { echo "usage: make-video.sh SCENE.yaml OUT.mp4 [render options]" >&2; exit 2; }
+usage() { echo "usage: make-video.sh SCENE.yaml OUT.mp4 [render options] | --from-dir DIR OUT.mp4" >&2; exit 2; }
 [ $# -ge 2 ] || usage
+from_dir=
+if [ "$1" = --from-dir ]; then
+    [ $# -eq 3 ] || usage
+    from_dir=$2
+    shift
+fi
 scene=$1
 out=$2
 shift 2
@@ -23,6 +35,31 @@ if [ ! -x "$ww" ]; then ww=$(command -v waterworld || true); fi
 [ -n "$ww" ] || { echo "make-video.sh: no waterworld binary (build it with make, or set WW_BIN)" >&2; exit 3; }
 command -v ffmpeg >/dev/null 2>&1 ||
     { echo "make-video.sh: ffmpeg is not installed (Debian: apt-get install ffmpeg)" >&2; exit 3; }
+
+x264=(-c:v libx264 -preset "${MAKE_VIDEO_PRESET:-medium}" -crf "${MAKE_VIDEO_CRF:-18}"
+      -pix_fmt yuv420p -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv)
+
+if [ -n "$from_dir" ]; then
+    "$ww" join "$from_dir" >/dev/null || exit $?
+    rec=$from_dir/slices/slice_00000.record
+    field() { sed -n "s/^$1 //p" "$rec"; }
+    fps=$(field fps)
+    first=$(field frames | cut -d: -f1)
+    track=$(field audio)
+    [ "$(field format)" = png ] ||
+        { echo "make-video.sh: $from_dir holds $(field format) frames: the video is made from png" >&2; exit 2; }
+    tmp=$(mktemp -d "$(dirname -- "$out")/.make-video.XXXXXX")
+    trap 'rm -rf -- "$tmp"' EXIT
+    trap 'exit 130' INT TERM
+    sound=()
+    [ "$track" = - ] || sound=(-i "$from_dir/$track" -map 0:v -map 1:a -c:a aac -b:a 192k -shortest)
+    ffmpeg -hide_banner -loglevel error -framerate "$fps" -start_number "$first" \
+        -i "$from_dir/frame_%05d.png" "${sound[@]}" -vf scale=out_color_matrix=bt709:out_range=tv \
+        "${x264[@]}" -movflags +faststart -f mp4 "$tmp/out.mp4"
+    mv -f -- "$tmp/out.mp4" "$out"
+    echo "make-video.sh: $out from $from_dir ($([ "$track" = - ] && echo "video, no sound track" || echo "video + sound"))" >&2
+    exit 0
+fi
 
 # plan sees the same scene: the render options that change it (--set, --script) are passed on
 plan_args=()
@@ -41,8 +78,6 @@ tmp=$(mktemp -d "$(dirname -- "$out")/.make-video.XXXXXX")
 trap 'rm -rf -- "$tmp"' EXIT
 trap 'exit 130' INT TERM
 
-x264=(-c:v libx264 -preset "${MAKE_VIDEO_PRESET:-medium}" -crf "${MAKE_VIDEO_CRF:-18}"
-      -pix_fmt yuv420p -colorspace bt709 -color_primaries bt709 -color_trc bt709 -color_range tv)
 if [ "$audio" = 1 ]; then
     # the WAV is complete only when the render ends: encode the video, then mux (no re-encode)
     "$ww" render "$scene" --format y4m -o - --audio "$tmp/audio.wav" "$@" |

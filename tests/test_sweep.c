@@ -378,7 +378,7 @@ TEST_PROC(sweep_bad_vary_exit_2_before_any_work) {
     ENSURE_EQ_INT(run_sweep("scenes/minimal.yaml --vary water.waves.model=flat --thumbs", NULL, errf), 2);
     ENSURE_EQ_INT(run_sweep("--help", errf, NULL), 0);
     char *help = ww_test_read_file(errf, NULL);
-    ENSURE(help && strstr(help, "usage: waterworld sweep") && strstr(help, "cat DIR/points/point_*.jsonl"));
+    ENSURE(help && strstr(help, "usage: waterworld sweep") && strstr(help, "waterworld join DIR"));
     free(help);
     /* an unknown key: found by loading the first point, named as the axis */
     snprintf(args, sizeof args, "scenes/minimal.yaml --vary water.waves.list[0].amplitud=0.1:0.5:3 -o %s", outd);

@@ -31,6 +31,7 @@ ww_result ww_cmd_waves(int argc, char **argv, ww_error *err);
 ww_result ww_cmd_sweep(int argc, char **argv, ww_error *err);
 ww_result ww_cmd_compare(int argc, char **argv, ww_error *err);
 ww_result ww_cmd_review(int argc, char **argv, ww_error *err);
+ww_result ww_cmd_join(int argc, char **argv, ww_error *err);
 
 /* is argv[*i] the option `name`? then *val = its argument (next word, or after '='), *i moves on;
  * a missing argument is WW_E_USAGE */

@@ -1,14 +1,17 @@
 /* cmd_render.c - `waterworld render`: scene -> frames on disk, a video stream on stdout, a sound
  * track, and (with --golden) the frames checked against golden images.
  */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "check/golden.h"
 #include "cli/cli.h"
 #include "gfx/backend.h"
 #include "render/job.h"
+#include "render/slices.h"
 
 static const char usage[] =
     "usage: waterworld render SCENE.yaml [options]\n"
@@ -42,6 +45,13 @@ static const char usage[] =
     "                       golden: section, with these options over them:\n"
     "                       --threshold T --max M --fail-percent P --fail-pixels N --psnr-min DB\n"
     "                       --yiq Y --yiq-pixels N --ssim-min S --rel-max R --no-aa\n"
+    "  --slices N --emit-jobs  print N shell commands, one per slice: this command with\n"
+    "                       --slice I/N (for GNU parallel, a Slurm array, a Kubernetes Job)\n"
+    "  --slice I/N          render slice I (0-based) of N near-equal pieces of the frames into\n"
+    "                       DIR as a full run would, its sound track, stats and completion record\n"
+    "                       under DIR/slices/; then `waterworld join DIR`. Here --audio [NAME.wav]\n"
+    "                       and --stats [NAME.jsonl] name the joined files in DIR (default\n"
+    "                       audio.wav, stats.jsonl); --resume skips a complete slice\n"
     "  --progress           progress on stderr even when it is not a terminal\n"
     "  --quiet              no progress and no summary on stderr\n"
     "\n"
@@ -51,6 +61,27 @@ static const char usage[] =
     "Environment: WW_EGL_PLATFORM=device|surfaceless, WW_EGL_DEVICE=N, WW_SHADER_DIR=DIR.\n";
 
 #define MAX_CMP_ARGS 32
+
+/* --slice or --slices anywhere on the line: --audio and --stats then take an optional name */
+static int is_slicing(int argc, char **argv) {
+    for (int i = 0; i < argc; i++)
+        if (strncmp(argv[i], "--slice", 7) == 0 && strchr("s=", argv[i][7])) return 1;
+    return 0;
+}
+
+/* with slices: `--audio [NAME.wav]` (`--stats [NAME.jsonl]`): the next word is the name when it
+ * ends in ext, else the default; returns 1 when argv[*i] was the option */
+static int opt_name(int argc, char **argv, int *i, const char *name, const char *ext,
+                    const char *fallback, const char **val) {
+    size_t n = strlen(name), e = strlen(ext);
+    const char *a = argv[*i];
+    if (strncmp(a, name, n) != 0 || (a[n] != 0 && a[n] != '=')) return 0;
+    *val = a[n] == '=' ? a + n + 1 : fallback;
+    const char *next = *i + 1 < argc ? argv[*i + 1] : "";
+    size_t k = strlen(next);
+    if (!a[n] && next[0] != '-' && k > e && strcmp(next + k - e, ext) == 0) *val = argv[++*i];
+    return 1;
+}
 
 static ww_result parse_threads(const char *v, int *out, ww_error *err) {
     char *end = NULL;
@@ -73,7 +104,25 @@ static ww_result golden_opts(const ww_scene *sc, char **words, int nwords, ww_cm
     return r;
 }
 
-ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
+/* the slicing options against each other */
+static ww_result slice_opts(const char *slice, const char *slices, int emit, ww_slice_opts *sl,
+                            ww_error *err) {
+    if (slice && slices)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--slice I/N renders one slice, --slices N --emit-jobs prints them "
+                            "all: give one or the other");
+    if (emit != (slices != NULL))
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            emit ? "--emit-jobs goes with --slices N"
+                                 : "--slices N goes with --emit-jobs (or render one slice with "
+                                   "--slice I/N)");
+    if (slice) return ww_slice_parse(slice, &sl->index, &sl->count, err);
+    if (slices) return ww_slices_parse(slices, &sl->count, err);
+    return WW_OK;
+}
+
+/* the command; drop and words have argc + 1 places (the slices' word list is built in them) */
+static ww_result render(int argc, char **argv, char *drop, char **words, ww_error *err) {
     ww_cli_scene_opts so = {0};
     ww_job_opts jo = ww_default_job_opts();
     const char *out = NULL, *format = NULL, *backend = NULL, *threads = NULL, *compression = NULL;
@@ -82,12 +131,36 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     char *cmp_words[MAX_CMP_ARGS];
     int ncmp = 0;
     ww_result r = WW_OK;
+    /* slices: the words every slice repeats are argv less the slicing ones (dropped) */
+    ww_slice_opts sl = {.index = -1};
+    const char *slice = NULL, *slices = NULL;
+    int emit = 0, slicing = is_slicing(argc, argv);
 
     for (int i = 0; i < argc && !r; i++) {
         if (ww_cli_is_help(argv[i])) {
             fputs(usage, stdout);
             return WW_OK;
         }
+        /* the slicing options with a value: not repeated by the slices' commands */
+        const struct { const char *name; const char **val; } slicing_opts[] = {
+            {"--slice", &slice}, {"--slices", &slices},
+        };
+        int at = i, sliced = 0;
+        for (size_t k = 0; k < sizeof slicing_opts / sizeof slicing_opts[0] && !sliced; k++)
+            sliced = ww_cli_opt(argc, argv, &i, slicing_opts[k].name, slicing_opts[k].val, &r, err);
+        if (sliced) {
+            for (int k = at; k <= i && k < argc; k++) drop[k] = 1;
+            continue;
+        }
+        if (strcmp(argv[i], "--emit-jobs") == 0 || strcmp(argv[i], "--resume") == 0) {
+            if (argv[i][2] == 'e') emit = 1;
+            else jo.resume = 1; /* join adds it to the commands it prints where it applies */
+            drop[i] = 1;
+            continue;
+        }
+        if (slicing && (opt_name(argc, argv, &i, "--audio", ".wav", WW_SLICE_AUDIO_DEFAULT, &sl.audio_name) ||
+                        opt_name(argc, argv, &i, "--stats", ".jsonl", WW_SLICE_STATS_DEFAULT, &sl.stats_name)))
+            continue;
         if (ww_cli_opt(argc, argv, &i, "-o", &out, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--output", &out, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--format", &format, &r, err)) continue;
@@ -100,7 +173,7 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
         const struct { const char *name; int *flag; int value; } flags[] = {
             {"--quiet", &jo.quiet, 1},        {"--alpha", &jo.alpha, 1},
             {"--exr-float", &jo.exr_float, 1}, {"--y4m-420", &jo.y4m_420, 1},
-            {"--resume", &jo.resume, 1},      {"--progress", &progress, 1},
+            {"--progress", &progress, 1},
         };
         int flag = 0;
         for (size_t k = 0; k < sizeof flags / sizeof flags[0] && !flag; k++) {
@@ -142,6 +215,20 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     if (golden && jo.format != WW_OUT_PNG)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--golden compares PNG frames: drop --format");
     jo.progress = jo.quiet ? WW_PROGRESS_OFF : progress ? WW_PROGRESS_ON : WW_PROGRESS_AUTO;
+    if ((r = slice_opts(slice, slices, emit, &sl, err))) return r;
+    for (int k = 0; k < argc; k++)
+        if (!drop[k]) words[sl.nwords++] = argv[k];
+    sl.words = words;
+    sl.scene_path = so.scene_path;
+    sl.script = so.script;
+    sl.sets = so.sets;
+    sl.nsets = so.nsets;
+    char exe[PATH_MAX];
+    ssize_t exe_len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (exe_len > 0) {
+        exe[exe_len] = 0;
+        sl.exe = exe; /* job lines name this very binary, so they run wherever this one did */
+    }
 
     ww_scene *sc = NULL;
     if ((r = ww_cli_load(&so, "render", &sc, err))) return r;
@@ -163,8 +250,20 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
     jo.width = sc->width;
     jo.height = sc->height;
 
+    int skip = 0;
+    if (slices) {
+        r = ww_slices_emit(&sl, sc, &jo, stdout, err);
+        goto done;
+    }
+    if (slice && ((r = ww_slice_begin(&sl, sc, &jo, &skip, err)) || skip)) {
+        if (skip && !jo.quiet)
+            fprintf(stderr, "slice %s (frames %lld..%lld) already complete: %s\n", slice,
+                    (long long)jo.first, (long long)jo.last - 1, sl.record);
+        goto done;
+    }
     ww_job_stats st;
     r = ww_job_run(sc, &jo, &st, err);
+    if (slice && !r) r = ww_slice_end(&sl, sc, &jo, st.renderer, err);
     if (!jo.quiet && (!r || r == WW_E_INTERRUPTED)) {
         fprintf(stderr, "%s %lld frames (%lld..%lld) at %dx%d on %s (%s) in %.2f s",
                 r ? "interrupted after" : "rendered", (long long)st.frames, (long long)jo.first,
@@ -192,5 +291,15 @@ ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
                 (long long)gs.missing, gs.wall_s, gs.golden_dir, gs.key, gs.report);
 done:
     ww_scene_free(sc);
+    return r;
+}
+
+ww_result ww_cmd_render(int argc, char **argv, ww_error *err) {
+    char *drop = calloc((size_t)argc + 1, 1);
+    char **words = calloc((size_t)argc + 1, sizeof *words);
+    ww_result r = drop && words ? render(argc, argv, drop, words, err)
+                                : ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
+    free(drop);
+    free(words);
     return r;
 }

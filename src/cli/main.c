@@ -14,6 +14,7 @@ static const char usage[] =
     "  render   SCENE.yaml [-o DIR|FILE|-] [--format png|exr|y4m|raw|none] [--frames N|A:B]\n"
     "                      [--size WxH] [--backend auto|egl|osmesa|null] [--script FILE] [--set KEY=VALUE]...\n"
     "                      [--threads N] [--resume] [--stats FILE] [--audio FILE.wav] [--golden DIR]\n"
+    "                      [--slices N --emit-jobs | --slice I/N]   one command per slice, or one slice\n"
     "  simulate SCENE.yaml [--frames N|A:B] [--trace FILE.jsonl] [--events FILE.jsonl] [--hash]\n"
     "                      [--stats] [--script FILE] [--set KEY=VALUE]...\n"
     "  plan     SCENE.yaml                systems and render passes the scene needs\n"
@@ -32,6 +33,9 @@ static const char usage[] =
     "  review   LIST [-o DIR] [--jobs N] [--size WxH] [--no-render]\n"
     "                                    one frame per shot of a review list, a labelled contact\n"
     "                                    sheet and an HTML page (make review)\n"
+    "  join     DIR                      put the slices of a render (render --slice) or the points\n"
+    "                                    of a sweep (sweep --point) back together; lists what is\n"
+    "                                    missing and the commands that complete it\n"
     "  backends [--renderer] [--key]     which GL backends open here, on what; the golden key\n"
     "  --help | --version\n"
     "\n"
@@ -54,6 +58,7 @@ static const command commands[] = {
     {"waves", ww_cmd_waves},
     {"compare", ww_cmd_compare},
     {"review", ww_cmd_review},
+    {"join", ww_cmd_join},
 };
 
 int main(int argc, char **argv) {

@@ -288,15 +288,11 @@ ww_result ww_wav_read_resampled(const char *path, int rate, ww_wav *out, ww_erro
     return WW_OK;
 }
 
-ww_result ww_wav_write16(const char *path, const int16_t *s, int64_t frames, int channels,
-                         int rate, ww_error *err) {
+int ww_wav_header16(unsigned char b[WW_WAV_HEADER_BYTES], int64_t frames, int channels, int rate) {
     WW_ASSERT(frames >= 0 && (channels == 1 || channels == 2) && rate > 0);
     uint64_t data_len = (uint64_t)frames * (uint64_t)channels * 2u;
-    if (data_len > 0xFFFFFFFFu - WW_WAV_HEADER_BYTES)
-        return ww_error_set(err, WW_E_RANGE, path, 0, 0, "the track is too long for a WAV file");
-
+    if (data_len > 0xFFFFFFFFu - WW_WAV_HEADER_BYTES) return -1;
     /* the canonical header: RIFF, fmt (PCM, 16 bytes), data */
-    unsigned char b[WW_WAV_HEADER_BYTES];
     memcpy(b, "RIFF", 4);
     put32(b + 4, (uint32_t)(36 + data_len));
     memcpy(b + 8, "WAVEfmt ", 8);
@@ -309,6 +305,15 @@ ww_result ww_wav_write16(const char *path, const int16_t *s, int64_t frames, int
     put16(b + 34, 16);
     memcpy(b + 36, "data", 4);
     put32(b + 40, (uint32_t)data_len);
+    return 0;
+}
+
+ww_result ww_wav_write16(const char *path, const int16_t *s, int64_t frames, int channels,
+                         int rate, ww_error *err) {
+    WW_ASSERT(frames >= 0 && (channels == 1 || channels == 2) && rate > 0);
+    unsigned char b[WW_WAV_HEADER_BYTES];
+    if (ww_wav_header16(b, frames, channels, rate) != 0)
+        return ww_error_set(err, WW_E_RANGE, path, 0, 0, "the track is too long for a WAV file");
 
     /* then the samples, little-endian, a block at a time: no copy of the track in memory */
     ww_stream out;

@@ -57,6 +57,9 @@ ww_result ww_wav_parse(const char *name, const unsigned char *bytes, size_t len,
                        ww_error *err);
 void ww_wav_free(ww_wav *w);
 
+/* the canonical 44-byte header of a 16-bit PCM file of `frames` frames (the writer's, and
+ * `join`'s for a track put together from slices); -1 when the data is past what RIFF holds */
+int ww_wav_header16(unsigned char b[WW_WAV_HEADER_BYTES], int64_t frames, int channels, int rate);
 /* the 44-byte header and the samples of a 16-bit PCM file, written atomically */
 ww_result ww_wav_write16(const char *path, const int16_t *samples, int64_t frames, int channels,
                          int rate, ww_error *err);

@@ -18,6 +18,7 @@
 #include "core/numfmt.h"
 #include "core/readfile.h"
 #include "core/rng.h"
+#include "core/shword.h"
 #include "io/image.h"
 #include "io/json.h"
 #include "io/stream.h"
@@ -602,6 +603,11 @@ typedef struct sink {
     long long rows, warned, failed;
 } sink;
 
+/* a grid's rows are its last axis; random points make a square */
+static int sheet_cols(const ww_sweep *s) {
+    return s->o.random > 0 ? (int)ceil(sqrt((double)s->npoints)) : s->ax[s->naxes - 1].count;
+}
+
 static void point_label(const ww_sweep *s, const row *rw, char vals[][WW_SWEEP_VALUE_MAX],
                         char *out, size_t cap) {
     size_t n = 0;
@@ -626,6 +632,17 @@ static ww_result sink_row(sink *k, const row *rw, ww_error *err) {
     k->rows++;
     k->warned += rw->status == ROW_WARN;
     k->failed += rw->status == ROW_ERROR;
+    if (s->o.point >= 0 && s->o.out_dir && s->o.thumbs) {
+        /* the point's cell of the contact sheet, for `join`: whether it has a thumbnail, then
+         * its label */
+        char path[1100], text[2100];
+        point_label(s, rw, vals, text + 8, sizeof text - 9);
+        memcpy(text, rw->thumb == THUMB_OK ? "thumb 1\n" : "thumb 0\n", 8);
+        strcat(text, "\n");
+        snprintf(path, sizeof path, "%s/points/point_%0*lld.label", s->o.out_dir, s->digits, rw->point);
+        ww_result r = ww_write_file_atomic(path, text, strlen(text), err);
+        if (r) return r;
+    }
 
     if (k->sheet_on) {
         ww_image thumb = {0};
@@ -665,8 +682,17 @@ static ww_result sink_open(sink *k, const ww_sweep *s, FILE *to, ww_error *err) 
             k->jsonl = to;
             return WW_OK;
         }
+        /* and its CSV row beside it, for `join` to make sweep.csv (committed first: the JSON
+         * line is the point's mark of completion) */
+        snprintf(path, sizeof path, "%s/points/point_%0*lld.csv", s->o.out_dir, s->digits, s->o.point);
+        if ((r = ww_stream_open(&k->csv_file, path, err))) return r;
+        k->csv_open = 1;
+        k->csv = k->csv_file.f;
         snprintf(path, sizeof path, "%s/points/point_%0*lld.jsonl", s->o.out_dir, s->digits, s->o.point);
-        if ((r = ww_stream_open(&k->jsonl_file, path, err))) return r;
+        if ((r = ww_stream_open(&k->jsonl_file, path, err))) {
+            sink_abort(k);
+            return r;
+        }
         k->jsonl_open = 1;
         k->jsonl = k->jsonl_file.f;
         return WW_OK;
@@ -688,9 +714,7 @@ static ww_result sink_open(sink *k, const ww_sweep *s, FILE *to, ww_error *err) 
     }
     csv_header(s, k->csv);
     if (s->o.thumbs) {
-        /* a grid's rows are its last axis; random points make a square */
-        int cols = s->o.random > 0 ? (int)ceil(sqrt((double)s->npoints)) : s->ax[s->naxes - 1].count;
-        ww_contact_plan((int)s->npoints, cols, s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &k->L);
+        ww_contact_plan((int)s->npoints, sheet_cols(s), s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &k->L);
         if (ww_contact_new(&k->L, &k->sheet) != 0) {
             sink_abort(k);
             return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for a %dx%d contact sheet",
@@ -801,6 +825,32 @@ static ww_result run_workers(const ww_sweep *s, int jobs, sink *k, ww_error *err
     return r;
 }
 
+static void point_command(const ww_sweep *s, FILE *to);
+
+/* OUT/points/sweep.job, what `join` needs to gather the points: their count, the file names'
+ * width, the CSV header and the command of every point (without its --point I). Every point
+ * writes the same bytes, atomically, before its own files. With thumbnails, the contact sheet's
+ * layout too (each point's label goes in its point_NNNNN.label). */
+static ww_result write_job(const ww_sweep *s, ww_error *err) {
+    char *buf = NULL, path[1100];
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    if (!f) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory for the sweep's job file");
+    fprintf(f, "%s\npoints %lld\ndigits %d\n", WW_SWEEP_JOB_MAGIC, s->npoints, s->digits);
+    /* the contact sheet's layout: columns, thumbnail size, label lines */
+    if (s->o.thumbs) fprintf(f, "sheet %d %d %d %d\n", sheet_cols(s), s->o.thumb_w, s->o.thumb_h, s->naxes + 1);
+    fputs("csv ", f);
+    csv_header(s, f); /* ends the line */
+    fputs("command ", f);
+    point_command(s, f);
+    fputc('\n', f);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/points/sweep.job", s->o.out_dir);
+    ww_result r = ww_write_file_atomic(path, buf, len, err);
+    free(buf);
+    return r;
+}
+
 ww_result ww_sweep_run(ww_sweep *s, FILE *to, ww_error *err) {
     const ww_sweep_opts *o = &s->o;
     ww_result r;
@@ -824,6 +874,7 @@ ww_result ww_sweep_run(ww_sweep *s, FILE *to, ww_error *err) {
         snprintf(path, sizeof path, "%s/thumbs", o->out_dir);
         if (o->thumbs && (r = ww_make_dirs(path, err))) return r;
     }
+    if (o->out_dir && o->point >= 0 && (r = write_job(s, err))) return r;
     sink k;
     if ((r = sink_open(&k, s, to, err))) return r;
 
@@ -856,76 +907,66 @@ ww_result ww_sweep_run(ww_sweep *s, FILE *to, ww_error *err) {
 
 /* ---- job lines ----------------------------------------------------------------------------- */
 
-/* one word for sh, after a space unless it is the first: as it is when it holds only safe
- * characters, else in single quotes (a quote inside becomes '\'') */
-static void sh_word(FILE *f, const char *w, int first) {
-    static const char safe[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_@%+=:,./-";
-    if (!first) fputc(' ', f);
-    if (w[0] && strspn(w, safe) == strlen(w)) {
-        fputs(w, f);
-        return;
+/* the command of every point, up to its --point I */
+static void point_command(const ww_sweep *s, FILE *to) {
+    const ww_sweep_opts *o = &s->o;
+    static const char *const backend_name[] = {"auto", "egl", "osmesa", "null"};
+    char num[64];
+    {
+        ww_sh_word(to, o->exe ? o->exe : "waterworld", 1);
+        ww_sh_word(to, "sweep", 0);
+        ww_sh_word(to, o->scene_path, 0);
+        for (int a = 0; a < s->naxes; a++) {
+            ww_sh_word(to, "--vary", 0);
+            ww_sh_word(to, s->ax[a].spec, 0);
+        }
+        if (o->random > 0) {
+            snprintf(num, sizeof num, "%lld", o->random);
+            ww_sh_word(to, "--random", 0);
+            ww_sh_word(to, num, 0);
+            snprintf(num, sizeof num, "%llu", (unsigned long long)o->seed);
+            ww_sh_word(to, "--seed", 0);
+            ww_sh_word(to, num, 0);
+        }
+        for (int k = 0; k < o->nsets; k++) {
+            ww_sh_word(to, "--set", 0);
+            ww_sh_word(to, o->sets[k].text, 0);
+        }
+        if (o->thumbs) {
+            ww_sh_word(to, "--thumbs", 0);
+            snprintf(num, sizeof num, "%dx%d", o->thumb_w, o->thumb_h);
+            ww_sh_word(to, "--thumb-size", 0);
+            ww_sh_word(to, num, 0);
+            snprintf(num, sizeof num, "%lld", (long long)o->thumb_frame);
+            ww_sh_word(to, "--thumb-frame", 0);
+            ww_sh_word(to, num, 0);
+        }
+        if (o->backend != WW_BACKEND_AUTO) {
+            ww_sh_word(to, "--backend", 0);
+            ww_sh_word(to, backend_name[o->backend], 0);
+        }
+        if (o->out_dir) {
+            ww_sh_word(to, "-o", 0);
+            ww_sh_word(to, o->out_dir, 0);
+        }
     }
-    fputc('\'', f);
-    for (; *w; w++) {
-        if (*w == '\'')
-            fputs("'\\''", f);
-        else
-            fputc(*w, f);
-    }
-    fputc('\'', f);
 }
 
 ww_result ww_sweep_emit_jobs(const ww_sweep *s, FILE *to, ww_error *err) {
     const ww_sweep_opts *o = &s->o;
-    static const char *const backend_name[] = {"auto", "egl", "osmesa", "null"};
     char num[64];
     for (long long i = 0; i < s->npoints; i++) {
-        sh_word(to, o->exe ? o->exe : "waterworld", 1);
-        sh_word(to, "sweep", 0);
-        sh_word(to, o->scene_path, 0);
-        for (int a = 0; a < s->naxes; a++) {
-            sh_word(to, "--vary", 0);
-            sh_word(to, s->ax[a].spec, 0);
-        }
-        if (o->random > 0) {
-            snprintf(num, sizeof num, "%lld", o->random);
-            sh_word(to, "--random", 0);
-            sh_word(to, num, 0);
-            snprintf(num, sizeof num, "%llu", (unsigned long long)o->seed);
-            sh_word(to, "--seed", 0);
-            sh_word(to, num, 0);
-        }
-        for (int k = 0; k < o->nsets; k++) {
-            sh_word(to, "--set", 0);
-            sh_word(to, o->sets[k].text, 0);
-        }
-        if (o->thumbs) {
-            sh_word(to, "--thumbs", 0);
-            snprintf(num, sizeof num, "%dx%d", o->thumb_w, o->thumb_h);
-            sh_word(to, "--thumb-size", 0);
-            sh_word(to, num, 0);
-            snprintf(num, sizeof num, "%lld", (long long)o->thumb_frame);
-            sh_word(to, "--thumb-frame", 0);
-            sh_word(to, num, 0);
-        }
-        if (o->backend != WW_BACKEND_AUTO) {
-            sh_word(to, "--backend", 0);
-            sh_word(to, backend_name[o->backend], 0);
-        }
-        if (o->out_dir) {
-            sh_word(to, "-o", 0);
-            sh_word(to, o->out_dir, 0);
-        }
+        point_command(s, to);
         snprintf(num, sizeof num, "%lld", i);
-        sh_word(to, "--point", 0);
-        sh_word(to, num, 0);
+        ww_sh_word(to, "--point", 0);
+        ww_sh_word(to, num, 0);
         fputc('\n', to);
     }
     if (!o->quiet) {
         if (o->out_dir)
             fprintf(stderr, "sweep: %lld job lines; each writes %s/points/point_N.jsonl; merge them with\n"
-                            "  cat %s/points/point_*.jsonl > %s/sweep.jsonl\n",
-                    s->npoints, o->out_dir, o->out_dir, o->out_dir);
+                            "  waterworld join %s\n",
+                    s->npoints, o->out_dir, o->out_dir);
         else
             fprintf(stderr, "sweep: %lld job lines; each prints its point's JSON line: keep their output\n"
                             "  in point order (e.g. parallel -k) to get sweep.jsonl\n", s->npoints);
@@ -1017,8 +1058,7 @@ ww_result ww_sweep_new(const ww_sweep_opts *o, ww_sweep **out, ww_error *err) {
     }
     if (o->thumbs && o->point < 0) {
         ww_contact_layout L;
-        int cols = o->random > 0 ? (int)ceil(sqrt((double)s->npoints)) : s->ax[s->naxes - 1].count;
-        if (ww_contact_plan((int)s->npoints, cols, s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &L) != 0) {
+        if (ww_contact_plan((int)s->npoints, sheet_cols(s), s->o.thumb_w, s->o.thumb_h, s->naxes + 1, &L) != 0) {
             r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                              "--thumbs: %lld points make a contact sheet over %d px on a side; use a smaller "
                              "--thumb-size or fewer points", s->npoints, WW_CONTACT_MAX_SIDE);

@@ -26,8 +26,10 @@
  *
  * Output. Without out_dir: CSV on the given stream. With out_dir: OUT/sweep.csv and
  * OUT/sweep.jsonl, each written atomically. With o.point >= 0 only that point is computed and
- * its JSON line goes to the stream, or to OUT/points/point_NNNNN.jsonl; the JSON line is the same
- * bytes as that point's line of a full sweep.jsonl, so `cat OUT/points/point_*.jsonl` is it.
+ * its JSON line goes to the stream, or to OUT/points/point_NNNNN.jsonl (with its CSV row in
+ * point_NNNNN.csv and the sweep's OUT/points/sweep.job: the point count, the CSV header and the
+ * points' command, for `waterworld join OUT`); the JSON line is the same bytes as that point's
+ * line of a full sweep.jsonl, so `cat OUT/points/point_*.jsonl` is it.
  * With o.jobs > 1, points are computed by that many forked worker processes (point i on worker
  * i mod jobs) and the rows gathered through pipes in point order: the same bytes as jobs = 1.
  * With o.thumbs, each point's frame o.thumb_frame is rendered at thumb_w x thumb_h in a child
@@ -49,6 +51,7 @@
 #define WW_SWEEP_MAX_POINTS 1000000  /* a larger grid is refused */
 #define WW_SWEEP_MAX_JOBS 256
 #define WW_SWEEP_VALUE_MAX 256       /* bytes of one value's text, with its terminator */
+#define WW_SWEEP_JOB_MAGIC "waterworld sweep job 1" /* first line of OUT/points/sweep.job */
 
 typedef struct ww_sweep_opts {
     const char *scene_path;
