@@ -20,7 +20,8 @@ static const char *err_text(const char *path) {
 }
 
 /* a short scene with its sound track in 3 slices, and a 4-point sweep with thumbnails, each
- * through `parallel`, joined: frames, audio.wav, sweep.jsonl and thumbnails equal to one run's */
+ * through `parallel`, joined: frames, audio.wav, sweep.jsonl and thumbnails equal to one run's;
+ * the render first without slice 1, which join must name and whose command it prints */
 TEST_PROC(farm_parallel_matches_one_process) {
     REQUIRE_GL();
     REQUIRE_TOOL("parallel");
@@ -32,8 +33,9 @@ TEST_PROC(farm_parallel_matches_one_process) {
     int rc = ww_test_run(cmd, out, err);
     if (rc == FARM_SKIP_STATUS) SKIP("%s", err_text(err));
     ENSURE_MSG(rc == 0, "check-parallel.sh exit %d: %s", rc, err_text(err));
+    ENSURE(ww_test_file_contains(out, "slice 1 missing: join exit 1"));
     ENSURE(ww_test_file_contains(out, "same bytes: 9 frames and audio.wav"));
-    ENSURE(ww_test_file_contains(out, "same bytes: sweep.jsonl (4 points) and 4 thumbnails"));
+    ENSURE(ww_test_file_contains(out, "same bytes: sweep.jsonl (4 points), sweep.csv, contact sheet, 4 thumbnails"));
 }
 
 /* the Kubernetes manifests are YAML with an indexed Job, the Slurm and parallel scripts are

@@ -1,6 +1,7 @@
 #!/bin/sh
 # check-parallel.sh WORK - a render with sound in 3 slices and a 4-point sweep with thumbnails,
-# each run as job lines through GNU parallel and joined, held byte for byte to one process.
+# each run as job lines through GNU parallel and joined, held byte for byte to one process; the
+# render first without one slice, which join must list and re-run.
 # `make test` runs it (farm_parallel_matches_one_process in tests/test_farm.c).
 #
 # Environment: WW_BIN (the binary), FARM_SCENE (default scenes/lake.yaml: it has a sound
@@ -21,11 +22,21 @@ ww=$(farm_ww)
 export LP_NUM_THREADS=1
 mkdir -p "$work"
 
-echo "render: $scene, $frames frames at $size with its sound track, 3 slices through parallel -j 3"
+echo "render: $scene, $frames frames at $size with its sound track, 3 slices through parallel -j 2"
 mkdir -p "$work/one"
 "$ww" render "$scene" --size "$size" --frames "0:$frames" -o "$work/one" --audio "$work/one/$FARM_AUDIO" --quiet
-farm_render_jobs "$work/par" 3 "$scene" --size "$size" --frames "0:$frames" >"$work/render.jobs"
-parallel --will-cite -j 3 --joblog "$work/render.joblog" <"$work/render.jobs"
+farm_render_jobs "$work/par" 3 "$scene" --size "$size" --frames "0:$frames" --quiet >"$work/render.jobs"
+# slice 1 left out, as if its node had died: join lists it and prints the command that
+# completes the set, which parallel runs; then the join succeeds
+sed 2d "$work/render.jobs" | parallel --will-cite -j 2 --joblog "$work/render.joblog"
+if farm_join "$work/par" >"$work/rerun.jobs" 2>"$work/join.err"; then
+    echo "check-parallel: join succeeded with slice 1 missing" >&2
+    exit 1
+fi
+grep -q "^slice 1/3: missing" "$work/join.err" && [ "$(wc -l <"$work/rerun.jobs")" -eq 1 ] ||
+    { echo "check-parallel: join did not name the one missing slice:" >&2; cat "$work/join.err" "$work/rerun.jobs" >&2; exit 1; }
+echo "  slice 1 missing: join exit 1, \"$(head -n 1 "$work/join.err")\"; its command re-run through parallel"
+parallel --will-cite -j 1 <"$work/rerun.jobs"
 farm_join "$work/par"
 farm_same_render "$work/one" "$work/par"
 

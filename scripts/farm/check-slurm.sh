@@ -5,8 +5,10 @@
 # ports), submits through scripts/farm/slurm/submit.sh a 4-task array render of
 # scenes/lake.yaml with its sound track and a 16-point sweep with thumbnails, each followed by
 # its join job, waits for them (squeue, at most FARM_TIMEOUT s), and holds the joined result to
-# one process byte for byte (frames, audio.wav, sweep.jsonl, thumbnails). The daemons it started
-# are stopped on the way out, whatever happens.
+# one process byte for byte (frames, audio.wav, sweep.jsonl, sweep.csv, contact sheet,
+# thumbnails). The render's task 3 is first left out: its join must fail naming slice 3, and
+# task 3 submitted alone then completes the set. The daemons it started are stopped on the way
+# out, whatever happens.
 #
 # Environment: WW_BIN, FARM_SIZE (160x90), FARM_FRAMES (24), FARM_TIMEOUT (600).
 # Exit: 0 the same bytes; 1 a difference or a failed job; 77 skipped (not root, Slurm or munge
@@ -140,31 +142,51 @@ mkdir -p "$work/one"
 say "one process: render of $frames frames at $size with sound, sweep of 16 points: $(($(date +%s) - t0)) s"
 
 # ---- the cluster's run ----------------------------------------------------------------------------
+# wait_jobs ID...: until none of them is in the queue (squeue), at most $timeout s from t0
+wait_jobs() {
+    _ids=$(echo "$*" | tr ' ' ',')
+    while [ -n "$(squeue -h -j "$_ids" 2>/dev/null)" ]; do
+        [ $(($(date +%s) - t0)) -le "$timeout" ] || { say "FAIL: jobs $_ids not done after $timeout s"; squeue; exit 1; }
+        sleep 2
+    done
+}
+# state ID: the job's (or its tasks') states from the job record, e.g. "COMPLETED FAILED"
+state() { sed -n "s/^JobId=$1 .* JobState=\([^ ]*\).*/\1/p" "$T/jobcomp.txt" | sort -u | tr '\n' ' '; }
 t0=$(date +%s)
-r=$(sh "$here/slurm/submit.sh" render "$work/par" 4 "$scene" --size "$size" --frames "0:$frames")
+# the render's tasks 0..2 only, as if task 3's node had died: the join (afterany) runs, lists
+# slice 3 and fails; then task 3 alone, and a second join completes the set
+r=$(sh "$here/slurm/submit.sh" --array 0-2 render "$work/par" 4 "$scene" --size "$size" --frames "0:$frames" --quiet)
 # shellcheck disable=SC2086
 s=$(sh "$here/slurm/submit.sh" sweep "$work/sweep-par" "$scene" $sweep_args)
-say "submitted render: $r; sweep: $s"
-ids="$(echo "$r" | cut -d' ' -f2),$(echo "$r" | cut -d' ' -f4),$(echo "$s" | cut -d' ' -f2),$(echo "$s" | cut -d' ' -f4)"
-while [ -n "$(squeue -h -j "$ids" 2>/dev/null)" ]; do
-    [ $(($(date +%s) - t0)) -le "$timeout" ] || { say "FAIL: jobs not done after $timeout s"; squeue; exit 1; }
-    sleep 2
-done
+say "submitted render tasks 0-2 of 4: $r; sweep: $s"
+set -- $r
+first_join=$4
+wait_jobs "$2" "$4"
+say "render join without task 3: $(state "$4")"
+grep -h "^slice" "$work/par/logs/ww-join-$4.out" | sed 's/^/  join says: /'
+grep -q "^slice 3/4: missing" "$work/par/logs/ww-join-$4.out" ||
+    { say "FAIL: the join did not name the missing slice 3"; exit 1; }
+r=$(sh "$here/slurm/submit.sh" --array 3 render "$work/par" 4 "$scene" --size "$size" --frames "0:$frames" --quiet)
+say "resubmitted task 3: $r"
+set -- $r $s
+wait_jobs "$2" "$4" "$6" "$8"
 say "all jobs left the queue after $(($(date +%s) - t0)) s"
-# the job record: one line per array task and join
+# the job records, one line per array task and join: all COMPLETED but the first join
 bad=0
-while read -r line; do
-    id=$(echo "$line" | sed -n 's/.*JobId=\([0-9]*\).*/\1/p')
+sort -t= -k2n "$T/jobcomp.txt" | while read -r line; do
+    id=$(echo "$line" | sed -n 's/^JobId=\([0-9]*\).*/\1/p')
     name=$(echo "$line" | sed -n 's/.* Name=\([^ ]*\).*/\1/p')
     task=$(echo "$line" | sed -n 's/.* ArrayTaskId=\([0-9]*\).*/\1/p')
-    state=$(echo "$line" | sed -n 's/.* JobState=\([^ ]*\).*/\1/p')
+    st=$(echo "$line" | sed -n 's/.* JobState=\([^ ]*\).*/\1/p')
     code=$(echo "$line" | sed -n 's/.* ExitCode=\([^ ]*\).*/\1/p')
-    echo "  job $id $name${task:+ task $task}: $state, exit $code"
-    [ "$state" = COMPLETED ] || bad=1
-done <"$T/jobcomp.txt"
+    echo "  job $id $name${task:+ task $task}: $st, exit $code"
+done
 n=$(wc -l <"$T/jobcomp.txt")
-[ "$n" -eq 22 ] || { say "FAIL: $n job records, want 22 (4 slices, 16 points, 2 joins)"; bad=1; }
-[ "$bad" = 0 ] || { say "FAIL: a job did not complete (logs: $work/par/logs, $work/sweep-par/logs)"; exit 1; }
+failed=$(grep -c "JobState=FAILED" "$T/jobcomp.txt" || true)
+done_=$(grep -c "JobState=COMPLETED" "$T/jobcomp.txt" || true)
+say "$n job records: $done_ completed, $failed failed (want 23: 4 render tasks, 16 sweep tasks and 2 joins completed, the first join failed)"
+[ "$n" -eq 23 ] && [ "$done_" -eq 22 ] && [ "$(state "$first_join")" = "FAILED " ] || bad=1
+[ "$bad" = 0 ] || { say "FAIL: not the jobs expected (logs: $work/par/logs, $work/sweep-par/logs)"; exit 1; }
 
 farm_same_render "$work/one" "$work/par"
 farm_same_sweep "$work/sweep-one" "$work/sweep-par"

@@ -6,7 +6,7 @@
 #   farm_render_jobs DIR N SCENE [render options]   N command lines on stdout, one per slice
 #   farm_join DIR                                   join a render's or a sweep's DIR
 #   farm_same_render REF DIR                        frames and sound track byte for byte
-#   farm_same_sweep REF DIR                         sweep.jsonl and thumbnails byte for byte
+#   farm_same_sweep REF DIR                         sweep.jsonl, .csv, thumbnails byte for byte
 #
 # Environment: WW_BIN (default ./waterworld, else the one on PATH). The functions' own variables
 # start with an underscore (sh has no locals): a script sourcing this keeps its names.
@@ -20,86 +20,20 @@ farm_ww() {
     echo "$_w"
 }
 
-# the joined sound track and stats in a render's DIR (render/slices.h names them)
+# the joined sound track in a render's DIR (--audio with --slice names a file inside DIR)
 FARM_AUDIO=audio.wav
 
-# ---- the one place to switch ---------------------------------------------------------------
-# `render --slices N --emit-jobs` and `join` are the contract of issue 18's split-and-join part.
-# Until a build has them, farm_render_jobs and farm_join fall back to a stand-in made of what
-# every build has (`render --frames A:B`, `sweep --point I`): the same slices, the same parts
-# under DIR/slices/, the same joined names. Once `join` is in every build, delete the stand-in
-# functions (farm_standin_*) and the two tests of `farm_have_join`.
-farm_have_join() {
-    "$(farm_ww)" join --help >/dev/null 2>&1
-}
-
+# the job lines of a render cut into N slices (render --slices N --emit-jobs), each writing its
+# part of the sound track to be joined into DIR/audio.wav
 farm_render_jobs() {
     _d=$1 _n=$2
     shift 2
-    if farm_have_join; then
-        "$(farm_ww)" render "$@" -o "$_d" --audio "$FARM_AUDIO" --slices "$_n" --emit-jobs
-    else
-        farm_standin_render_jobs "$_d" "$_n" "$@"
-    fi
+    "$(farm_ww)" render "$@" -o "$_d" --audio "$FARM_AUDIO" --slices "$_n" --emit-jobs
 }
 
+# join a render's slices or a sweep's points; lists what is missing and exits 1 when incomplete
 farm_join() {
-    if farm_have_join; then "$(farm_ww)" join "$1"; else farm_standin_join "$1"; fi
-}
-
-# stand-in: slice I of N of frames [A, B) is [A + I q + min(I, r), ...) with q, r = (B-A)/N,
-# (B-A)%N (render/slices.h's cut); its sound part DIR/slices/slice_IIIII.wav. Takes SCENE
-# --frames A:B [other options]; every slice's line is sh-quoted.
-farm_standin_render_jobs() {
-    _d=$1 _n=$2 _scene=$3
-    shift 3
-    _ww=$(farm_ww) || return $?
-    _a="" _b="" _rest=""
-    while [ $# -gt 0 ]; do
-        case "$1" in
-        --frames) _a=${2%%:*} _b=${2#*:}; shift 2 ;;
-        *) _rest="$_rest $(farm_q "$1")"; shift ;;
-        esac
-    done
-    [ -n "$_a" ] || { echo "farm: the stand-in needs --frames A:B" >&2; return 2; }
-    _q=$(((_b - _a) / _n)) _r=$(((_b - _a) % _n)) _i=0
-    while [ "$_i" -lt "$_n" ]; do
-        _lo=$((_a + _i * _q + (_i < _r ? _i : _r)))
-        _hi=$((_a + (_i + 1) * _q + (_i + 1 < _r ? _i + 1 : _r)))
-        _part=$(printf '%s/slices/slice_%05d.wav' "$_d" "$_i")
-        echo "mkdir -p $(farm_q "$_d/slices") && $(farm_q "$_ww") render $(farm_q "$_scene")$_rest" \
-            "--frames $_lo:$_hi -o $(farm_q "$_d") --audio $(farm_q "$_part") --quiet"
-        _i=$((_i + 1))
-    done
-}
-
-# stand-in join: a sweep's DIR/points/ into DIR/sweep.jsonl, a render's slice sound parts into
-# DIR/audio.wav (the PCM data butted, one header); written beside and renamed
-farm_standin_join() {
-    if [ -d "$1/points" ]; then
-        cat "$1"/points/point_*.jsonl >"$1/.sweep.jsonl.tmp" && mv "$1/.sweep.jsonl.tmp" "$1/sweep.jsonl"
-        return
-    fi
-    python3 - "$1" "$FARM_AUDIO" <<'PY' || return 1
-import glob, os, sys, wave
-d, name = sys.argv[1], sys.argv[2]
-parts = sorted(glob.glob(os.path.join(d, "slices", "slice_*.wav")))
-if not parts:
-    sys.exit("farm: no slice_*.wav under %s/slices" % d)
-tmp = os.path.join(d, "." + name + ".tmp")
-with wave.open(parts[0]) as w0, wave.open(tmp, "wb") as out:
-    out.setparams(w0.getparams())
-    for p in parts:
-        with wave.open(p) as w:
-            out.writeframes(w.readframes(w.getnframes()))
-os.replace(tmp, os.path.join(d, name))
-PY
-}
-# ---- end of the place to switch ------------------------------------------------------------
-
-# one word quoted for sh: 'it'\''s'
-farm_q() {
-    printf "'%s'" "$(printf '%s' "$1" | sed "s/'/'\\\\''/g")"
+    "$(farm_ww)" join "$1"
 }
 
 # every frame of REF is in DIR with the same bytes, and no more frames; the sound tracks equal
@@ -117,15 +51,18 @@ farm_same_render() {
     return "$_bad"
 }
 
-# sweep.jsonl and every thumbnail the same bytes as one process's
+# sweep.jsonl, sweep.csv, the contact sheet and every thumbnail the same bytes as one process's
 farm_same_sweep() {
     _bad=0 _n=0
-    cmp -s "$1/sweep.jsonl" "$2/sweep.jsonl" || { echo "farm: sweep.jsonl differs" >&2; _bad=1; }
+    for _f in sweep.jsonl sweep.csv contact_sheet.png; do
+        [ -e "$1/$_f" ] || continue
+        cmp -s "$1/$_f" "$2/$_f" || { echo "farm: $_f differs from one process" >&2; _bad=1; }
+    done
     for _f in "$1"/thumbs/point_*.png; do
         [ -e "$_f" ] || continue
         _n=$((_n + 1))
         cmp -s "$_f" "$2/thumbs/${_f##*/}" || { echo "farm: thumbs/${_f##*/} differs" >&2; _bad=1; }
     done
-    [ "$_bad" = 0 ] && echo "  same bytes: sweep.jsonl ($(wc -l <"$2/sweep.jsonl") points) and $_n thumbnails"
+    [ "$_bad" = 0 ] && echo "  same bytes: sweep.jsonl ($(wc -l <"$2/sweep.jsonl") points), sweep.csv, contact sheet, $_n thumbnails"
     return "$_bad"
 }

@@ -24,7 +24,7 @@ done
 kind=$1 dir=$2
 shift 2
 WW_BIN=$(farm_ww) || exit 3
-export WW_BIN WW_FARM="$here"
+export WW_BIN
 mkdir -p "$dir/logs"
 dir=$(cd "$dir" && pwd)
 case "$kind" in
