@@ -24,10 +24,10 @@ while [ "$r" -le "$repeat" ]; do
     "$ww" render "$scene" --size "$size" --frames "0:$frames" -o "$work/one" --audio "$work/one/$FARM_AUDIO" --quiet
     line="run $r: render $frames frames $size: one process $(secs "$t" "$(now)") s"
     for j in 1 2; do
-        farm_render_jobs "$work/j$j" 4 "$scene" --size "$size" --frames "0:$frames" >"$work/j$j.jobs"
+        farm_render_jobs "$work/j$j" 4 "$scene" --size "$size" --frames "0:$frames" --quiet >"$work/j$j.jobs"
         t=$(now)
         parallel --will-cite -j "$j" <"$work/j$j.jobs"
-        farm_join "$work/j$j"
+        farm_join "$work/j$j" 2>/dev/null
         line="$line, parallel -j$j $(secs "$t" "$(now)") s"
         farm_same_render "$work/one" "$work/j$j" >/dev/null
     done
@@ -41,7 +41,7 @@ while [ "$r" -le "$repeat" ]; do
         "$ww" sweep "$scene" $sweep -o "$work/sweep-j$j" --emit-jobs >"$work/sweep-j$j.jobs"
         t=$(now)
         parallel --will-cite -j "$j" <"$work/sweep-j$j.jobs"
-        farm_join "$work/sweep-j$j"
+        farm_join "$work/sweep-j$j" 2>/dev/null
         line="$line, parallel -j$j $(secs "$t" "$(now)") s"
         farm_same_sweep "$work/sweep-one" "$work/sweep-j$j" >/dev/null
     done

@@ -151,7 +151,7 @@ wait_jobs() {
     done
 }
 # state ID: the job's (or its tasks') states from the job record, e.g. "COMPLETED FAILED"
-state() { sed -n "s/^JobId=$1 .* JobState=\([^ ]*\).*/\1/p" "$T/jobcomp.txt" | sort -u | tr '\n' ' '; }
+state() { sed -n "s/^JobId=$1 .* JobState=\([^ ]*\).*/\1/p" "$T/jobcomp.txt" | sort -u | paste -sd' '; }
 t0=$(date +%s)
 # the render's tasks 0..2 only, as if task 3's node had died: the join (afterany) runs, lists
 # slice 3 and fails; then task 3 alone, and a second join completes the set
@@ -173,19 +173,21 @@ wait_jobs "$2" "$4" "$6" "$8"
 say "all jobs left the queue after $(($(date +%s) - t0)) s"
 # the job records, one line per array task and join: all COMPLETED but the first join
 bad=0
-sort -t= -k2n "$T/jobcomp.txt" | while read -r line; do
-    id=$(echo "$line" | sed -n 's/^JobId=\([0-9]*\).*/\1/p')
+while read -r line; do
+    # an array task's own JobId is arbitrary: it is named by its array's id and its index
+    id=$(echo "$line" | sed -n 's/.* ArrayJobId=\([0-9]*\).*/\1/p')
+    [ -n "$id" ] || id=$(echo "$line" | sed -n 's/^JobId=\([0-9]*\).*/\1/p')
     name=$(echo "$line" | sed -n 's/.* Name=\([^ ]*\).*/\1/p')
     task=$(echo "$line" | sed -n 's/.* ArrayTaskId=\([0-9]*\).*/\1/p')
     st=$(echo "$line" | sed -n 's/.* JobState=\([^ ]*\).*/\1/p')
     code=$(echo "$line" | sed -n 's/.* ExitCode=\([^ ]*\).*/\1/p')
     echo "  job $id $name${task:+ task $task}: $st, exit $code"
-done
+done <"$T/jobcomp.txt" | sort -k2,2n -k5,5n
 n=$(wc -l <"$T/jobcomp.txt")
 failed=$(grep -c "JobState=FAILED" "$T/jobcomp.txt" || true)
 done_=$(grep -c "JobState=COMPLETED" "$T/jobcomp.txt" || true)
 say "$n job records: $done_ completed, $failed failed (want 23: 4 render tasks, 16 sweep tasks and 2 joins completed, the first join failed)"
-[ "$n" -eq 23 ] && [ "$done_" -eq 22 ] && [ "$(state "$first_join")" = "FAILED " ] || bad=1
+[ "$n" -eq 23 ] && [ "$done_" -eq 22 ] && [ "$(state "$first_join")" = FAILED ] || bad=1
 [ "$bad" = 0 ] || { say "FAIL: not the jobs expected (logs: $work/par/logs, $work/sweep-par/logs)"; exit 1; }
 
 farm_same_render "$work/one" "$work/par"
