@@ -26,7 +26,10 @@ for t in munged mungekey slurmctld slurmd sbatch squeue sinfo; do
     command -v "$t" >/dev/null 2>&1 || skip "$t is not installed (sh scripts/install-deps.sh --farm)"
 done
 ww=$(farm_ww)
-work=${1:-$(mktemp -d /tmp/ww-farm-test.XXXXXX)}
+# WORK given: the outputs stay there; else a temporary one, removed when the check passes
+own_work=""
+[ $# -ge 1 ] || { own_work=1; set -- "$(mktemp -d /tmp/ww-farm-test.XXXXXX)"; }
+work=$1
 mkdir -p "$work"
 work=$(cd "$work" && pwd)
 size=${FARM_SIZE:-160x90}
@@ -54,6 +57,9 @@ stop() {
         done
     fi
     rm -rf "$T"
+    if [ -n "$own_work" ]; then
+        if [ "$rc" -eq 0 ] || [ "$rc" -eq "$SKIP" ]; then rm -rf "$work"; else echo "farm-test: outputs kept in $work"; fi
+    fi
     exit "$rc"
 }
 trap stop EXIT
