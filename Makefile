@@ -11,7 +11,7 @@
 #   make bench      speed and memory figures (not part of test)
 #   make fuzz       libFuzzer on every reader, FUZZ_SECONDS each (make fuzz-NAME: one of them)
 #   make soak       one hour of simulated time at 120 Hz with every system on (not part of test)
-#   make farm-test  a real one-node Slurm here: array render + sweep, joined, = one process
+#   make farm-test  a real one-node Slurm and parallel over ssh here, joined, = one process
 
 BUILD   ?= build
 CC      ?= cc
@@ -225,12 +225,16 @@ soak: $(BIN)
 
 # a one-node Slurm cluster started here on 127.0.0.1 (munged, slurmctld, slurmd as root, stopped
 # at the end): a 4-task array render of scenes/lake.yaml with sound and a 16-point sweep with
-# thumbnails, each joined by a dependent job, held byte for byte to one process
-# (scripts/farm/check-slurm.sh; docs/farm.md). A skip (exit 77 of the script) says why.
+# thumbnails, each joined by a dependent job, held byte for byte to one process; then GNU
+# parallel's --sshlogin against an sshd started the same way (scripts/farm/check-slurm.sh,
+# check-ssh.sh; docs/farm.md). A skip (exit 77 of a script) says why and is not a pass.
 farm-test: $(BIN)
 	@sh scripts/install-deps.sh --farm
-	@WW_BIN=./$(BIN) sh scripts/farm/check-slurm.sh; rc=$$?; \
-	if [ $$rc -eq 77 ]; then echo "farm-test: skipped (the reason is above), not passed"; exit 0; fi; exit $$rc
+	@for c in slurm ssh; do \
+	    WW_BIN=./$(BIN) sh scripts/farm/check-$$c.sh; rc=$$?; \
+	    if [ $$rc -eq 77 ]; then echo "farm-test: $$c skipped (the reason is above), not passed"; \
+	    elif [ $$rc -ne 0 ]; then exit $$rc; fi; \
+	done
 
 clean:
 	rm -rf build $(BIN)

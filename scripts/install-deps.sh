@@ -46,11 +46,12 @@ fuzz_pkgs() {
 }
 if [ "$fuzz" = 1 ]; then PKGS=$(fuzz_pkgs); OPTIONAL=""; fi
 
-# `make farm-test` only: a one-node Slurm cluster on this machine (scripts/farm/check-slurm.sh);
-# the packages' services are not started (the check runs the daemons itself)
+# `make farm-test` only: a one-node Slurm cluster and an sshd on this machine
+# (scripts/farm/check-slurm.sh, check-ssh.sh start the daemons themselves, on 127.0.0.1; on a
+# machine with systemd the packages also enable their own services)
 farm=0
 [ "${1:-}" = "--farm" ] && farm=1
-if [ "$farm" = 1 ]; then PKGS="slurmctld slurmd slurm-client munge parallel"; OPTIONAL=""; fi
+if [ "$farm" = 1 ]; then PKGS="slurmctld slurmd slurm-client munge parallel openssh-server"; OPTIONAL=""; fi
 
 missing=""
 for p in $PKGS; do installed "$p" || missing="$missing $p"; done

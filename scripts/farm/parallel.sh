@@ -23,8 +23,10 @@ mkdir -p "$dir"
 log=$dir/parallel.joblog
 resume=""
 [ -s "$log" ] && resume=--resume-failed
-# LP_NUM_THREADS: llvmpipe's threads per task (default 1: the tasks are the parallelism)
-LP_NUM_THREADS=${LP_NUM_THREADS:-1} parallel --will-cite --joblog "$log" $resume "$@" <"$jobs" || {
+# LP_NUM_THREADS: llvmpipe's threads per task (default 1: the tasks are the parallelism), carried
+# to the ssh logins too (--env)
+export LP_NUM_THREADS="${LP_NUM_THREADS:-1}"
+parallel --will-cite --env LP_NUM_THREADS --joblog "$log" $resume "$@" <"$jobs" || {
     rc=$?
     echo "parallel.sh: $rc job(s) failed (see $log); run the same command again to re-run them" >&2
     exit "$rc"
