@@ -43,7 +43,7 @@ chmod 755 "$T"
 mkdir -p "$T/munge" "$T/state" "$T/spool"
 chmod 700 "$T/munge"
 # the daemons run in the foreground as this script's children: it stops them by their process
-# ids and waits for them (nothing is left behind, not even a zombie)
+# ids and waits for them (no daemon is left behind, nor its zombie)
 started="" pids=""
 stop() {
     rc=$?
