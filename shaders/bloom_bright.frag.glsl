@@ -29,13 +29,20 @@ vec3 bright(ivec2 p) {
     return c * w;
 }
 
+// WW_BLOOM_BLOCK (pass_bloom.c): source texels per output texel along each side, rounded. The
+// output texel's footprint is split into that many points a side, one in each source texel:
+// every texel is thresholded, then they are averaged, so no glint falls between the samples
+#ifndef WW_BLOOM_BLOCK
+#define WW_BLOOM_BLOCK 2
+#endif
+
 void main() {
-    // the output texel's footprint in source texels and its four quarter points
     vec2 centre = gl_FragCoord.xy * u_ratio;
-    vec2 q = 0.25 * u_ratio;
-    vec3 s = bright(ivec2(floor(centre + vec2(-q.x, -q.y))))
-           + bright(ivec2(floor(centre + vec2( q.x, -q.y))))
-           + bright(ivec2(floor(centre + vec2(-q.x,  q.y))))
-           + bright(ivec2(floor(centre + vec2( q.x,  q.y))));
-    o_color = vec4(0.25 * s, 1.0);
+    vec3 s = vec3(0.0);
+    for (int j = 0; j < WW_BLOOM_BLOCK; j++)
+        for (int i = 0; i < WW_BLOOM_BLOCK; i++) {
+            vec2 at = (vec2(i, j) + 0.5) * (1.0 / float(WW_BLOOM_BLOCK)) - 0.5;
+            s += bright(ivec2(floor(centre + at * u_ratio)));
+        }
+    o_color = vec4(s * (1.0 / float(WW_BLOOM_BLOCK * WW_BLOOM_BLOCK)), 1.0);
 }

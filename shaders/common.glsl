@@ -10,6 +10,11 @@ const float WW_PI = 3.14159265358979;
 
 // ---- point and spot lights (lights[]): set by geometry.c for the geometry and the water ------
 #define WW_NLIGHTS_MAX 8
+// WW_LIGHTS 0: the scene has no lights and the loops over them are not built. llvmpipe runs a
+// loop's body once even when its count is 0 (all lanes masked): a quarter of the lake's prepass
+#ifndef WW_LIGHTS
+#define WW_LIGHTS 1
+#endif
 uniform int u_nlights;
 uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
 uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
@@ -242,6 +247,7 @@ float ww_light_att(int i, vec3 p, out vec3 l) {
 // lights a pool on the underside of the surface above it.
 vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess, bool below) {
     vec3 c = vec3(0.0);
+#if WW_LIGHTS
     float norm = (shininess + 8.0) / (8.0 * WW_PI);
     for (int i = 0; i < u_nlights; i++) {
         vec3 l;
@@ -267,6 +273,7 @@ vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess, bool 
         float spec = norm * pow(max(dot(n, h), 0.0), shininess) * fr;
         c += u_light_color[i] * att * nl * (albedo / WW_PI + spec);
     }
+#endif
     return c;
 }
 

@@ -42,10 +42,9 @@ void main() {
     float hi = max(max(max(N, S), max(E, W)), M);
     float lo = min(min(min(N, S), min(E, W)), M);
     float range = hi - lo;
-    if (range < max(EDGE_THRESHOLD_MIN, hi * EDGE_THRESHOLD)) {
-        o_color = vec4(rgbM.rgb, 1.0);
-        return;
-    }
+    // no edge: the pixel keeps the copy of the tone-mapped image already in the target
+    // (pass_fxaa.c), and where a whole block has none llvmpipe skips the rest
+    if (range < max(EDGE_THRESHOLD_MIN, hi * EDGE_THRESHOLD)) discard;
     float NW = luma_px(px + ivec2(-1, 1)), NE = luma_px(px + ivec2(1, 1));
     float SW = luma_px(px + ivec2(-1, -1)), SE = luma_px(px + ivec2(1, -1));
 

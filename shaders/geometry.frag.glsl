@@ -10,8 +10,10 @@
 //   fog: exp2 above and below the water (seeds 000, 003). Seed 000 fogs a point by the medium
 //        the camera is in; here the segment camera -> point is split where it crosses the water
 //        plane and each part is fogged by its own medium, far part first.
-// Modes (u_mode): 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive),
-// 3 an air bubble (blended, premultiplied).
+// Modes (WW_GEOM_MODE, one build of the program each: llvmpipe runs both arms of a branch for
+// every pixel, so a mode switched by a uniform made the lit seabed pay for the others' code):
+// 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive), 3 an air bubble
+// (blended, premultiplied).
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture;
@@ -26,7 +28,9 @@
 #define WW_FISH_PATTERNS 0
 #endif
 
-uniform int u_mode;
+#ifndef WW_GEOM_MODE
+#define WW_GEOM_MODE 1
+#endif
 uniform vec3 u_ambient;        // sky ambient, linear RGB
 uniform vec3 u_eye;            // the eye, camera-relative (the mirrored camera in reflections)
 uniform float u_water_y;       // the water plane (surface over the camera), camera-relative y
@@ -115,7 +119,7 @@ float ww_caustic(vec2 q, float depth) {
     float kappa = 1.0 - 1.0 / WW_ETA_WATER;
     float blur = depth * 2.0 * WW_SUN_RADIUS + 0.05;
     mat2 H = mat2(0.0);
-    for (int i = 0; i < u_nwaves; i++) {
+    for (int i = 0; i < WW_NWAVES; i++) {
         vec4 w = u_wave[i];
         float k = length(w.xy), L = 2.0 * WW_PI / k;
         float f = smoothstep(2.0 * blur, 6.0 * blur, L);
@@ -228,15 +232,15 @@ vec3 ww_fish_pattern(vec3 c, vec3 m, float pattern) {
 #endif
 
 void main() {
-    if (u_mode == 0) {
-        o_color = vec4(0.0);
-        return;
-    }
+#if WW_GEOM_MODE == 0
+    o_color = vec4(0.0);
+#else
     vec3 p = v_pos;
     vec3 v = normalize(u_eye - p);
     float depth = u_water_y - p.y; // below the water plane, m (negative above)
 
-    if (u_mode == 3) {
+#if WW_GEOM_MODE == 3
+    {
         // an air bubble: a sphere of air seen from the water, blended over what lies behind it
         // (premultiplied: rgb is light added, a the share of the background it hides). Near its
         // centre the light passes through (water to air and back: little is reflected), so the
@@ -268,9 +272,9 @@ void main() {
         float hi = pow(max(dot(n, normalize(l + v)), 0.0), 300.0);
         vec3 t = ww_fog_segment(vec3(1.0), p) - ww_fog_segment(vec3(0.0), p); // transmittance
         o_color = vec4(ww_fog_segment(env, p) * refl + sun * hi * 0.5 * t, refl);
-        return;
     }
-    if (u_mode == 2) {
+#elif WW_GEOM_MODE == 2
+    {
         // the glow column as a glowing medium: along the view ray, the
         // radiance of an emitting and absorbing slab is S (1 - e^(-tau)), tau the optical depth
         // over the ray's chord through the cylinder; bounded by S however long the chord (the
@@ -316,8 +320,8 @@ void main() {
         // additive: the fog only takes light away
         vec3 fogged = ww_fog_segment(c, p) - ww_fog_segment(vec3(0.0), p);
         o_color = vec4(max(fogged, vec3(0.0)), 1.0);
-        return;
     }
+#else
 
     vec3 n = normalize(v_normal);
     if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
@@ -368,6 +372,7 @@ void main() {
     vec3 spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), shininess) * ks : vec3(0.0);
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
 
+#if WW_LIGHTS
     for (int i = 0; i < u_nlights; i++) {
         vec3 l;
         float att = ww_light_att(i, p, l);
@@ -376,8 +381,11 @@ void main() {
         vec3 sl = nl > 0.0 ? pow(max(dot(n, hl), 0.0), shininess) * ks : vec3(0.0);
         c += u_light_color[i] * att * (albedo * nl + sl);
     }
+#endif
     c += albedo * v_color.a + u_mat_ke.rgb; // emission: the instance's factor, the material's Ke
     c = ww_fog_segment(c, p) + ww_lights_scatter_segment(u_eye, p, u_water_y, u_mirrored,
                                                          u_fog_below_density, gl_FragCoord.xy);
     o_color = vec4(c, u_mat_ke.a);
+#endif
+#endif
 }

@@ -26,6 +26,11 @@
 #ifndef WW_FADE
 #define WW_FADE 1
 #endif
+// WW_NWAVES: the count of components, u_nwaves, built in by the programs (water.c, geometry.c),
+// so the loops over them have a fixed count llvmpipe's compiler unrolls
+#ifndef WW_NWAVES
+#define WW_NWAVES u_nwaves
+#endif
 
 // the components, sorted by wavenumber ascending (water.c keeps the permutation), so a loop can
 // stop at the first one faded out: every later one is shorter and faded as well. A loop reads
@@ -158,7 +163,7 @@ vec3 ww_displace(vec2 p, float s) {
     vec3 d = vec3(0.0);
 #if WW_WAVE_MODEL != WW_MODEL_FLAT
     float inv_s = 1.0 / max(s, 1e-6);
-    for (int i = 0; i < u_nwaves; i++) {
+    for (int i = 0; i < WW_NWAVES; i++) {
         vec4 w = u_wave[i];
         float k = length(w.xy);
         float f = ww_wave_fade(2.0 * WW_PI / k, inv_s);
@@ -195,7 +200,7 @@ void ww_partials(vec2 p, ww_footprint fp, out vec3 dpdx, out vec3 dpdz, out floa
 #if WW_WAVE_MODEL != WW_MODEL_FLAT
     float seen = 0.0; // mean square slope of the components so far
     float inv_long = fp.inv_pix / fp.stretch; // 1 / the footprint along the view
-    for (int i = 0; i < u_nwaves; i++) {
+    for (int i = 0; i < WW_NWAVES; i++) {
         vec4 w = u_wave[i];
         float k = length(w.xy), L = 2.0 * WW_PI / k;
         // the smallest footprint of any direction is pix: faded out there, faded everywhere

@@ -5,14 +5,25 @@
 // it (u_luma_alpha) the luma FXAA reads, so FXAA fetches it instead of computing it per tap.
 
 uniform sampler2D u_hdr;    // linear HDR colour, same size as the output
-uniform sampler2D u_bloom;  // blurred bright light (bilinear), when u_bloom_on
-uniform sampler2D u_shafts; // light shafts (bilinear), when u_shafts_on
-uniform int u_bloom_on, u_shafts_on;
+uniform sampler2D u_bloom;  // blurred bright light (bilinear), when WW_BLOOM
+uniform sampler2D u_shafts; // light shafts (bilinear), when WW_SHAFTS
+// #defines (gfx/pass_tonemap.c): WW_BLOOM, WW_SHAFTS (those passes' images are there to add),
+// WW_ACES (the ACES curve, else exponential), WW_LUMA_ALPHA (alpha carries FXAA's luma)
+#ifndef WW_BLOOM
+#define WW_BLOOM 0
+#endif
+#ifndef WW_SHAFTS
+#define WW_SHAFTS 0
+#endif
+#ifndef WW_ACES
+#define WW_ACES 0
+#endif
+#ifndef WW_LUMA_ALPHA
+#define WW_LUMA_ALPHA 0
+#endif
 uniform float u_bloom_strength;
 uniform float u_exposure; // E
 uniform float u_gamma;    // display gamma
-uniform int u_op;         // 0: exponential, 1: ACES (Narkowicz fit), half hue-preserving
-uniform int u_luma_alpha; // 1: alpha = the gamma-encoded colour's luma (fxaa.frag.glsl's)
 
 out vec4 o_color;
 
@@ -29,24 +40,32 @@ void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 hdr = clamp(texelFetch(u_hdr, px, 0).rgb, 0.0, HDR_MAX);
     vec2 uv = gl_FragCoord.xy / vec2(textureSize(u_hdr, 0));
-    if (u_bloom_on != 0) hdr += u_bloom_strength * max(texture(u_bloom, uv).rgb, vec3(0.0));
-    if (u_shafts_on != 0) hdr += max(texture(u_shafts, uv).rgb, vec3(0.0));
+#if WW_BLOOM
+    hdr += u_bloom_strength * max(texture(u_bloom, uv).rgb, vec3(0.0));
+#endif
+#if WW_SHAFTS
+    hdr += max(texture(u_shafts, uv).rgb, vec3(0.0));
+#endif
     vec3 x = u_exposure * hdr;
-    vec3 c;
-    if (u_op == 1) {
-        // the curve per channel pushes bright colours toward white (a sunset sky turns grey);
-        // the curve on the luminance, scaling the colour, keeps their hue and saturation but
-        // lets a saturated highlight leave the gamut. Half of each keeps the colour and still
-        // lands in [0, 1] (both do)
-        float l = dot(x, LUMA);
-        vec3 hue = l > 1e-6 ? x * (aces(vec3(l)).r / l) : vec3(0.0);
-        c = mix(aces(x), clamp(hue, 0.0, 1.0), HUE_KEEP);
-    } else {
-        c = vec3(1.0) - exp(-x); // exp: 1 - e^(-E c), seed 000
-    }
+#if WW_ACES
+    // ACES (Narkowicz's fit), half hue-preserving:
+    // the curve per channel pushes bright colours toward white (a sunset sky turns grey);
+    // the curve on the luminance, scaling the colour, keeps their hue and saturation but
+    // lets a saturated highlight leave the gamut. Half of each keeps the colour and still
+    // lands in [0, 1] (both do)
+    float l = dot(x, LUMA);
+    vec3 hue = l > 1e-6 ? x * (aces(vec3(l)).r / l) : vec3(0.0);
+    vec3 c = mix(aces(x), clamp(hue, 0.0, 1.0), HUE_KEEP);
+#else
+    vec3 c = vec3(1.0) - exp(-x); // exp: 1 - e^(-E c), seed 000
+#endif
     vec3 g = pow(c, vec3(1.0 / u_gamma));
+#if WW_LUMA_ALPHA
     // the luma of the colour as the RGBA8 target will hold it (rounded to 8 bits), as FXAA
     // computed it from the stored image before
     vec3 g8 = floor(clamp(g, 0.0, 1.0) * 255.0 + 0.5) * (1.0 / 255.0);
-    o_color = vec4(g, u_luma_alpha != 0 ? dot(g8, vec3(0.299, 0.587, 0.114)) : 1.0);
+    o_color = vec4(g, dot(g8, vec3(0.299, 0.587, 0.114)));
+#else
+    o_color = vec4(g, 1.0);
+#endif
 }

@@ -48,7 +48,7 @@ uniform float u_pixel_angle; // angle one pixel spans, rad
 
 uniform vec4 u_fresnel;     // (0 bias + scale, 1 Schlick; bias or F0; scale; power)
 uniform float u_specular;   // sun highlight strength
-uniform vec3 u_distort;     // (strength, screen fraction; pattern cells per metre; 1: DuDv on)
+uniform vec2 u_distort;     // (strength, screen fraction; pattern cells per metre)
 uniform vec4 u_dudv_m[2];   // per layer, the mat2 (column-major) from rest offset (m) to cells
 uniform vec2 u_dudv_o[2];   // per layer: the centre's cells plus the drift, wrapped (CPU, double)
 // WW_DUDV_TEXTURE 1 (water.look.detail: texture): the noise's gradient per cell over its whole
@@ -62,20 +62,47 @@ uniform sampler2D u_dudv_grad;
 uniform vec4 u_cam_axes;    // camera right and forward, horizontal parts (x, z, x, z), unit
 uniform vec2 u_inv_size;    // 1 / the main target's size, 1/px
 uniform vec2 u_clip_range;  // near, far clip, m
-uniform int u_reflect_tex;  // 1: u_reflection holds this frame's mirrored scene
-uniform int u_refract_tex;  // 1: u_scene_color / u_scene_depth hold the prepass
-uniform int u_cube;         // 1: the sky is u_sky_cube (times u_sky_intensity)
+// The switches below are #defines, set per build of the program (gfx/water.c: water_prog):
+// llvmpipe computes both arms of a branch for every pixel, so a switch tested per pixel costs
+// the code it turns off. Per frame: WW_UNDERWATER (the camera is below the surface),
+// WW_REFLECT_TEX (u_reflection holds this frame's mirrored scene), WW_REFRACT_TEX (u_scene_color
+// and u_scene_depth hold the prepass), WW_DISTORT (the DuDv distorts them). Per scene:
+// WW_SKY_CUBE (the sky is u_sky_cube times u_sky_intensity), WW_ALPHA_BLEND (seed 004's blend),
+// WW_FOAM (foam on), WW_FRESNEL_SCHLICK (Schlick's Fresnel, else bias + scale (1 - c)^power).
+#ifndef WW_UNDERWATER
+#define WW_UNDERWATER 0
+#endif
+#ifndef WW_REFLECT_TEX
+#define WW_REFLECT_TEX 0
+#endif
+#ifndef WW_REFRACT_TEX
+#define WW_REFRACT_TEX 0
+#endif
+#ifndef WW_DISTORT
+#define WW_DISTORT 0
+#endif
+#ifndef WW_SKY_CUBE
+#define WW_SKY_CUBE 0
+#endif
+#ifndef WW_ALPHA_BLEND
+#define WW_ALPHA_BLEND 0
+#endif
+#ifndef WW_FOAM
+#define WW_FOAM 0
+#endif
+#ifndef WW_FRESNEL_SCHLICK
+#define WW_FRESNEL_SCHLICK 0
+#endif
 uniform sampler2D u_reflection;
 uniform sampler2D u_scene_color;
 uniform sampler2D u_scene_depth;
 uniform samplerCube u_sky_cube;
 uniform float u_sky_intensity;
 uniform float u_murk;       // extinction, 1/m
-uniform float u_foam;       // amount, 0: off
-uniform int u_underwater;   // the camera is below the surface
+uniform float u_foam;       // amount (WW_FOAM)
 uniform vec3 u_fog_below_color;
 uniform float u_fog_below_density; // 1/m
-uniform vec2 u_alpha;       // (1: alpha-blended, opacity at normal incidence)
+uniform float u_alpha;      // opacity at normal incidence (WW_ALPHA_BLEND)
 const int NDETAIL = 6; // water.c: WATER_NDETAIL
 // normal-only detail (water.c): short sines of a light breeze that only the shading sees (the
 // physics never feels them): (k Dx, k Dz 1/m, slope amplitude A k, phase at the mesh centre rad)
@@ -217,9 +244,12 @@ float ww_foam_aged(vec2 p, float xi, float inv_long) {
 
 float ww_fresnel(float c) {
     float m = 1.0 - clamp(c, 0.0, 1.0);
-    if (u_fresnel.x < 0.5) return clamp(u_fresnel.y + u_fresnel.z * pow(m, u_fresnel.w), 0.0, 1.0);
+#if WW_FRESNEL_SCHLICK
     float m2 = m * m;
     return u_fresnel.y + (1.0 - u_fresnel.y) * (m2 * m2 * m);
+#else
+    return clamp(u_fresnel.y + u_fresnel.z * pow(m, u_fresnel.w), 0.0, 1.0);
+#endif
 }
 
 // the sky along d: the cubemap when the sky is one, the dome's picture, else the gradient
@@ -227,8 +257,11 @@ vec3 ww_sky_any(vec3 d) {
 #if WW_SKY_DOME_IMAGE
     return u_sky_intensity * ww_sky_dome_image(d); // the dome's picture (common.glsl)
 #endif
-    if (u_cube != 0) return u_sky_intensity * texture(u_sky_cube, d).rgb;
+#if WW_SKY_CUBE
+    return u_sky_intensity * texture(u_sky_cube, d).rgb;
+#else
     return ww_sky(d);
+#endif
 }
 
 // eye-space depth of a window depth (perspective, default depth range), m
@@ -268,7 +301,8 @@ void main() {
     // fades out where a cell spans fewer than 4 footprints along the view (as the waves)
     vec2 dudv = vec2(0.0);
     float dudv_most = 1e9; // the DuDv's largest share of the lookup offset, DuDv units
-    if (u_distort.z > 0.5) {
+#if WW_DISTORT
+    {
         float cell = 1.0 / u_distort.y, inv_fp = 1.0 / max(pix * stretch, 1e-6);
         vec2 g = vec2(0.0);
         for (int j = 0; j < 2; j++) {
@@ -290,13 +324,14 @@ void main() {
         // normal-map detail: the DuDv as the slope of a small height field (seed 002)
         n = normalize(n - DETAIL_SLOPE * vec3(dudv.x, 0.0, dudv.y));
     }
+#endif
     // fine detail: slopes of short sines, each faded by the footprint along its direction as
     // the waves are; what the fade removes widens the sun highlight (LEAN mapping's variance,
     // Olano and Baker, "LEAN Mapping", 2010) so the far water keeps its sheen, not its shimmer.
     // Part of the normal-map detail, so only with the DuDv (seed 002), and never on flat water
     // (a mirror)
-#if WW_WAVE_MODEL != WW_MODEL_FLAT
-    if (u_distort.z > 0.5) {
+#if WW_WAVE_MODEL != WW_MODEL_FLAT && WW_DISTORT
+    {
         ww_footprint fp = ww_footprint_make(along, across, stretch, pix);
         vec2 g = vec2(0.0);
         // a fixed count and no early exit, the wavelengths and directions constants: the loop
@@ -325,7 +360,8 @@ void main() {
     float m2 = 2.0 / (SPEC_POWER + 2.0) + removed;
     float pw = 2.0 / m2 - 2.0;
 
-    if (u_underwater != 0) {
+#if WW_UNDERWATER
+    {
         // from below: the normal facing the camera; Snell's window, else total internal
         // reflection of the water below (its fog colour)
         vec3 nd = -n;
@@ -351,7 +387,7 @@ void main() {
         o_color = vec4(c, 1.0);
         return;
     }
-
+#else
     float ndv = max(dot(n, v), 0.0);
     float ndl = max(dot(n, l), 0.0);
     float fr = ww_fresnel(ndv);
@@ -367,18 +403,18 @@ void main() {
     }
 
     // reflection: the mirrored scene, or the sky
-    vec3 refl;
-    if (u_reflect_tex != 0) {
-        vec4 t = texture(u_reflection, clamp(uv0 + off, EDGE, 1.0 - EDGE));
-        refl = mix(ww_sky_any(rdir), t.rgb, t.a);
-    } else {
-        refl = ww_sky_any(rdir);
-    }
+#if WW_REFLECT_TEX
+    vec4 rt = texture(u_reflection, clamp(uv0 + off, EDGE, 1.0 - EDGE));
+    vec3 refl = mix(ww_sky_any(rdir), rt.rgb, rt.a);
+#else
+    vec3 refl = ww_sky_any(rdir);
+#endif
 
     // refraction: deep water lit by the sky and a little sun, or what lies below through murk
     vec3 deep = u_water_color * (u_ambient + 0.1 * sun_up * ndl * u_sun_color);
     vec3 refr = deep;
-    if (u_refract_tex != 0 && u_alpha.x < 0.5) {
+#if WW_REFRACT_TEX && !WW_ALPHA_BLEND
+    {
         float zw = ww_linear_depth(gl_FragCoord.z), ray = dist / zw; // eye depth -> ray length
         float zs = ww_linear_depth(texture(u_scene_depth, uv0).r);
         float shore = 1.0 - exp(-max(zs - zw, 0.0) * ray / SHORE_DEPTH);
@@ -395,6 +431,7 @@ void main() {
         vec3 tr = exp(-(ABSORB + u_murk) * path);
         refr = mix(deep, texture(u_scene_color, uv).rgb, tr);
     }
+#endif
     vec3 c = mix(refr, refl, fr);
 
     // sun glitter: normalised Blinn-Phong whose roughness grows with the removed slopes
@@ -408,7 +445,8 @@ void main() {
     // foam: folding (J -> 0), steep, steeper-looking edge-on; broken up by noise
     float foam = 0.0;
     vec3 foam_lit = vec3(0.0);
-    if (u_foam > 0.0) {
+#if WW_FOAM
+    {
         // coverage now (fresh foam), then what the recent past left (aged foam): each tap's age
         // is dithered by a smooth noise (a fraction of the taps' spacing), so the crest's past
         // positions blend into a trail rather than stand as copies
@@ -448,20 +486,24 @@ void main() {
         c = mix(c, foam_lit, foam);
         sun *= 1.0 - foam;
     }
+#endif
 
     float fog = exp(-(u_fog_density * dist) * (u_fog_density * dist));
     vec3 fogc = u_fog_color + ww_sun_glow(-v);
-    if (u_alpha.x > 0.5) {
+#if WW_ALPHA_BLEND
+    {
         // seed 004's blend over what was drawn below: out = a C + (1 - a) below with
         // (1 - a) = (1 - F)(1 - alpha) the light let through, a C = F refl + (1 - F) alpha deep
         // foam is opaque
-        float a = 1.0 - (1.0 - fr) * (1.0 - u_alpha.y);
-        vec3 ca = (fr * refl + (1.0 - fr) * u_alpha.y * deep + sun) / a;
+        float a = 1.0 - (1.0 - fr) * (1.0 - u_alpha);
+        vec3 ca = (fr * refl + (1.0 - fr) * u_alpha * deep + sun) / a;
         ca = mix(ca, foam_lit, foam);
         a = mix(a, 1.0, foam);
         o_color = vec4(mix(fogc, ca, fog), mix(1.0, a, fog));
-        return;
     }
+#else
     // exp2 fog toward the fog colour lit by the sun glow along the view
     o_color = vec4(mix(fogc, c + sun, fog), 1.0);
+#endif
+#endif // WW_UNDERWATER
 }

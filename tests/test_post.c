@@ -13,6 +13,8 @@
 #include "test.h"
 
 #define BLOOM_KERNEL_TOL 1e-6
+#define BLOOM_SCALE_PSNR_MIN 50.0   /* dB: a quarter- or eighth-size blur against the half-size one */
+#define BLOOM_SCALE_ENERGY_TOL 0.05 /* the glow's total light, a share of the half-size blur's */
 /* the merged kernel's variance against n rounds': its dropped tail (pass_bloom.c BLOOM_TAIL,
  * 2e-3 of the weight beyond ~3.3 sigma) takes at most ~2.5% of it */
 #define BLOOM_MERGED_VAR_TOL 0.03
@@ -141,7 +143,7 @@ static masked count_in_mask(const pic *a, const pic *b, const unsigned char *mas
 
 TEST(post_bloom_kernel_sums_to_one) {
     float w[WW_BLOOM_MAX_FETCHES], o[WW_BLOOM_MAX_FETCHES];
-    ENSURE_EQ_INT(ww_bloom_kernel(1, w, o), 3);
+    ENSURE_EQ_INT(ww_bloom_kernel(1, 0.5, w, o), 3);
     ENSURE_NEAR(w[0] + 2.0 * (w[1] + w[2]), 1.0, BLOOM_KERNEL_TOL);
     /* Rakos 2010's published figures for the same kernel */
     ENSURE_NEAR(w[0], 0.2270270270, BLOOM_KERNEL_TOL);
@@ -156,7 +158,7 @@ TEST(post_bloom_kernel_sums_to_one) {
  * less what the dropped faint taps held (BLOOM_TAIL); and it takes fewer fetches than the rounds */
 static double bloom_variance(int passes, int *fetches) {
     float w[WW_BLOOM_MAX_FETCHES], o[WW_BLOOM_MAX_FETCHES];
-    int n = ww_bloom_kernel(passes, w, o);
+    int n = ww_bloom_kernel(passes, 0.5, w, o);
     *fetches = 2 * n - 1;
     double v = 0.0, sum = w[0];
     for (int i = 1; i < n; i++) {
@@ -178,6 +180,42 @@ TEST(post_bloom_rounds_merged) {
         ENSURE_MSG(fabs(vn / (n * v1) - 1.0) < BLOOM_MERGED_VAR_TOL,
                    "%d rounds: variance %.4f, %d x %.4f", n, vn, n, v1);
         ENSURE_MSG(fn < n * f1, "%d rounds: %d fetches", n, fn);
+    }
+}
+
+/* render.bloom.scale sets the blur's resolution, not the look: the glow the bloom adds (the frame
+ * with it less the frame without, summed over the frame) stays within BLOOM_SCALE_ENERGY_TOL of
+ * the half-size blur's at a quarter and an eighth, and the frames within BLOOM_SCALE_PSNR_MIN dB.
+ * Before the kernel was matched a quarter-size blur drew a glow twice as wide (45.8 dB on the
+ * demo's glitter) */
+static double glow_energy(const pic *on, const pic *off) {
+    double e = 0.0;
+    for (int y = 0; y < on->h; y++)
+        for (int x = 0; x < on->w; x++) e += ww_test_pic_luma(on, x, y) - ww_test_pic_luma(off, x, y);
+    return e;
+}
+
+TEST_IMAGE(post_bloom_scale_keeps_the_glow) {
+    REQUIRE_GL();
+    const char *scene = "scenes/demo.yaml";
+    pic off, half, quarter, eighth;
+    int ok = ww_test_render_pic(scene, 240, "640x360", "--set render.bloom=false", "bl_off", &off) &&
+             ww_test_render_pic(scene, 240, "640x360", "--set render.bloom.scale=0.5", "bl_half", &half) &&
+             ww_test_render_pic(scene, 240, "640x360", "--set render.bloom.scale=0.25", "bl_quarter",
+                                &quarter) &&
+             ww_test_render_pic(scene, 240, "640x360", "--set render.bloom.scale=0.125", "bl_eighth",
+                                &eighth);
+    if (!ok) return;
+    double e_half = glow_energy(&half, &off);
+    ENSURE_MSG(e_half > 0.0, "the bloom adds no light (%.0f)", e_half);
+    const pic *low[2] = {&quarter, &eighth};
+    for (int i = 0; i < 2; i++) {
+        int most = 0;
+        double psnr = ww_test_pic_psnr(&half, low[i], &most), e = glow_energy(low[i], &off);
+        fprintf(stderr, "(scale %s: %.1f dB, max %d, glow %.3f of the half's) ", i ? "1/8" : "1/4",
+                psnr, most, e / e_half);
+        ENSURE_MSG(psnr >= BLOOM_SCALE_PSNR_MIN, "%.1f dB against the half-size blur", psnr);
+        ENSURE_MSG(fabs(e / e_half - 1.0) <= BLOOM_SCALE_ENERGY_TOL, "glow %.3f of the half's", e / e_half);
     }
 }
 

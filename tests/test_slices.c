@@ -153,6 +153,29 @@ TEST_PROC(slices_joined_equal_one_process) {
     check_joined(dir, 1);
 }
 
+/* slices that start from checkpoints (--emit-jobs --checkpoints DIR) simulate no prefix and
+ * still join to one process's frames and sound track */
+TEST_PROC(slices_from_checkpoints_joined_equal_one_process) {
+    char dir[512], args[1800], jobs[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("slices_ck"));
+    setenv("LP_NUM_THREADS", "1", 1);
+    render_full(dir, "null");
+    /* every 20 steps: a checkpoint inside each slice's prefix (a frame is 4 steps) */
+    snprintf(args, sizeof args, "simulate scenes/lake.yaml --frames 0:25 --checkpoint-every 20 --quiet -o %s/ck", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, NULL), 0);
+    snprintf(args, sizeof args,
+             "render " SCENE " --backend null --quiet --audio --stats -o %s/sl --slices %d "
+             "--emit-jobs --checkpoints %s/ck", dir, NSLICES, dir);
+    snprintf(jobs, sizeof jobs, "%s/jobs.sh", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, jobs, NULL), 0);
+    char line[4096];
+    job_line(dir, 2, line, sizeof line);
+    ENSURE_MSG(strstr(line, " --from-checkpoint ") && strstr(line, " --slice 2/3"), "line 2: %s", line);
+    ENSURE_EQ_INT(ww_test_run(ww("sh %s/jobs.sh", dir, NULL), NULL, NULL), 0);
+    ENSURE_EQ_INT(ww_test_ww(ww("join %s/sl", dir, NULL), NULL, NULL), 0);
+    check_joined(dir, 1);
+}
+
 /* the same with a GL backend: the frames are pictures, and they too are byte-identical */
 TEST_IMAGE(slices_joined_equal_one_process_gl) {
     REQUIRE_GL();

@@ -45,6 +45,14 @@ ww_result ww_cli_load(const ww_cli_scene_opts *o, const char *cmd, ww_scene **sc
 ww_result ww_cli_frames(const char *text, const ww_scene *sc, int64_t *first, int64_t *last,
                         ww_error *err);
 int ww_cli_is_help(const char *arg);
+/* --from-checkpoint FILE (cli/checkpoint_args.c): the checkpoint read for the scene as loaded
+ * from o (its file, --set and --script), refused (exit 2, the file named) when it is from another
+ * scene or build, damaged, later than first_step, or without the sound state a --audio track
+ * needs (need_sound) */
+struct ww_checkpoint;
+ww_result ww_cli_checkpoint_load(const ww_cli_scene_opts *o, const ww_scene *sc, const char *path,
+                                 int64_t first_step, int need_sound, struct ww_checkpoint *ck,
+                                 ww_error *err);
 /* `backends`' closing advice from which backends opened and EGL's GL_VERSION (its Mesa version
  * says whether OSMesa can exist here); NULL when both opened */
 const char *ww_cli_backends_advice(int egl_ok, const char *egl_version, int osmesa_ok);

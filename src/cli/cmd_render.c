@@ -10,6 +10,7 @@
 #include "check/golden.h"
 #include "cli/cli.h"
 #include "gfx/backend.h"
+#include "render/checkpoint.h"
 #include "render/job.h"
 #include "render/slices.h"
 
@@ -52,7 +53,15 @@ static const char usage[] =
     "                       under DIR/slices/; then `waterworld join DIR`. Here --audio [NAME.wav]\n"
     "                       and --stats [NAME.jsonl] name the joined files in DIR (default\n"
     "                       audio.wav, stats.jsonl); --resume skips a complete slice\n"
-    "  --progress           progress on stderr even when it is not a terminal\n"
+    "  --checkpoints DIR    with --slices N --emit-jobs: each slice's command starts from the\n"
+    "                       latest checkpoint in DIR at or before its first frame\n"
+    "  --from-checkpoint F  start from a checkpoint (simulate --checkpoint-every) at or before\n"
+    "                       the first frame instead of simulating the prefix; F a file, or the\n"
+    "                       folder of them (the latest at or before the first frame is taken);\n"
+    "                       one from another scene, other --set/--script values or another\n"
+    "                       build is refused (exit 2)\n"
+    "  --progress           progress on stderr even when it is not a terminal (the prefix's\n"
+    "                       steps, then the frames)\n"
     "  --quiet              no progress and no summary on stderr\n"
     "\n"
     "Exit: 0 done (and every frame matched), 1 a frame differs from its golden, 2 bad input\n"
@@ -126,7 +135,7 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
     ww_cli_scene_opts so = {0};
     ww_job_opts jo = ww_default_job_opts();
     const char *out = NULL, *format = NULL, *backend = NULL, *threads = NULL, *compression = NULL;
-    const char *golden = NULL;
+    const char *golden = NULL, *from = NULL;
     int progress = 0;
     char *cmp_words[MAX_CMP_ARGS];
     int ncmp = 0;
@@ -143,7 +152,7 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         }
         /* the slicing options with a value: not repeated by the slices' commands */
         const struct { const char *name; const char **val; } slicing_opts[] = {
-            {"--slice", &slice}, {"--slices", &slices},
+            {"--slice", &slice}, {"--slices", &slices}, {"--checkpoints", &sl.checkpoints},
         };
         int at = i, sliced = 0;
         for (size_t k = 0; k < sizeof slicing_opts / sizeof slicing_opts[0] && !sliced; k++)
@@ -170,6 +179,7 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         if (ww_cli_opt(argc, argv, &i, "--stats", &jo.stats_path, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--audio", &jo.audio_path, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--golden", &golden, &r, err)) continue;
+        if (ww_cli_opt(argc, argv, &i, "--from-checkpoint", &from, &r, err)) continue;
         const struct { const char *name; int *flag; int value; } flags[] = {
             {"--quiet", &jo.quiet, 1},        {"--alpha", &jo.alpha, 1},
             {"--exr-float", &jo.exr_float, 1}, {"--y4m-420", &jo.y4m_420, 1},
@@ -216,6 +226,10 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--golden compares PNG frames: drop --format");
     jo.progress = jo.quiet ? WW_PROGRESS_OFF : progress ? WW_PROGRESS_ON : WW_PROGRESS_AUTO;
     if ((r = slice_opts(slice, slices, emit, &sl, err))) return r;
+    if (sl.checkpoints && !slices)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--checkpoints DIR goes with --slices N --emit-jobs (one slice takes "
+                            "--from-checkpoint)");
     for (int k = 0; k < argc; k++)
         if (!drop[k]) words[sl.nwords++] = argv[k];
     sl.words = words;
@@ -231,6 +245,7 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
     }
 
     ww_scene *sc = NULL;
+    ww_checkpoint ck = {0};
     if ((r = ww_cli_load(&so, "render", &sc, err))) return r;
     ww_golden_opts go = {.golden_dir = golden};
     if (golden && (r = golden_opts(sc, cmp_words, ncmp, &go.cmp, err))) goto done;
@@ -255,6 +270,14 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         r = ww_slices_emit(&sl, sc, &jo, stdout, err);
         goto done;
     }
+    /* the checkpoint at or before the first frame rendered here (a slice's own first) */
+    int64_t first = jo.first, last = jo.last;
+    if (slice) ww_slice_range(jo.first, jo.last, sl.index, sl.count, &first, &last);
+    if (from && (r = ww_cli_checkpoint_load(&so, sc, from, first * sc->steps_per_frame,
+                                            jo.audio_path != NULL || sl.audio_name != NULL, &ck,
+                                            err)))
+        goto done;
+    jo.from = ck.st ? &ck : NULL;
     if (slice && ((r = ww_slice_begin(&sl, sc, &jo, &skip, err)) || skip)) {
         if (skip && !jo.quiet)
             fprintf(stderr, "slice %s (frames %lld..%lld) already complete: %s\n", slice,
@@ -290,6 +313,7 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
                 (long long)gs.frames, (long long)gs.passed, (long long)gs.failed,
                 (long long)gs.missing, gs.wall_s, gs.golden_dir, gs.key, gs.report);
 done:
+    ww_checkpoint_free(&ck);
     ww_scene_free(sc);
     return r;
 }

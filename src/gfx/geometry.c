@@ -119,14 +119,29 @@ typedef struct light_locs {
     GLint n, pos, dir, color, param, scatter;
 } light_locs;
 
-struct ww_geometry {
-    GLuint prog;
+/* one build of the geometry program per kind of draw (geometry.frag.glsl's WW_GEOM_MODE):
+ * llvmpipe runs both arms of a branch for every pixel, so the lit seabed paid for the bubble's
+ * and the glow column's code while it was one program switched by a uniform (a fifth of the
+ * lake's prepass) */
+enum { GEOM_DEPTH, GEOM_LIT, GEOM_GLOW, GEOM_BUBBLE, GEOM_PROGS };
+
+typedef struct geom_prog {
+    GLuint prog; /* 0: the scene never draws this kind */
     ww_sky_locs sky;
     GLint view_proj, clip, ambient, eye, mirrored, water_y, fog_color, fog_density,
-        fog_below_color, fog_below_density, extinction, caustics_loc, mode, glow, glow_y;
+        fog_below_color, fog_below_density, extinction, caustics_loc, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
     GLint scatter_through;
     light_locs lights;
+    GLint sway_loc, sway_axis_loc;
+    GLint mat_kd, mat_ks, mat_ke, mat_map;
+    GLint detail_loc, dudv_m_loc, dudv_o_loc, dudv_h_loc;
+    GLint cset_loc, cset_at_loc, cset_frame_loc;
+} geom_prog;
+
+struct ww_geometry {
+    geom_prog var[GEOM_PROGS];
+    const geom_prog *cur; /* the program in use: per-draw uniforms (material, sway) go to it */
     int64_t uploaded; /* frame whose instances are in the buffers, -1 none */
     gmesh slot[SLOT_COUNT];
     gmesh hull_cap;   /* the lid over each hull's inside, drawing the hull slot's instances */
@@ -137,10 +152,8 @@ struct ww_geometry {
     int sway;          /* the scene has a swaying model: the shader is built WW_SWAY */
     float obj_sway[WW_MAX_MODELS][4];      /* u_sway of each OBJ model this frame (0: rigid) */
     float obj_sway_axis[WW_MAX_MODELS][4]; /* its u_sway_axis */
-    GLint sway_loc, sway_axis_loc;
     GLuint *image_tex; /* the scene's images a material draws (map_Kd), by asset index; 0 none */
     int nimage;
-    GLint mat_kd, mat_ks, mat_ke, mat_map;
     struct bubble_order *bubble_order; /* scratch: this frame's bubbles, farthest first */
     instance *scratch; /* the largest slot's instances, filled per frame */
     int scratch_cap;
@@ -150,13 +163,11 @@ struct ww_geometry {
     ww_water_waves waves; /* caustics: the wave field's phases at the camera */
     float detail[WW_WATER_NDETAIL][4]; /* ... and the surface's detail at the camera */
     float dudv_m[2][4], dudv_o[2][2];  /* ... and its DuDv ripples (ww_water_dudv) */
-    GLint detail_loc, dudv_m_loc, dudv_o_loc, dudv_h_loc;
     ww_water_ubos ubos;
     int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
     GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
-    GLint cset_loc, cset_at_loc, cset_frame_loc;
     /* stencilled shadows (stencil_shadows.c): the casters' meshes kept on the CPU (slots that
      * cast; OBJ models are the scene's), and how the next draws test depth and light */
     int keep_casters;
@@ -408,7 +419,8 @@ static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
 
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     if (!g) return;
-    if (g->prog) gl->DeleteProgram(g->prog);
+    for (int i = 0; i < GEOM_PROGS; i++)
+        if (g->var[i].prog) gl->DeleteProgram(g->var[i].prog);
     for (int s = 0; s < SLOT_COUNT; s++) {
         mesh_free(gl, &g->slot[s]);
         ww_meshgen_free(&g->caster_mesh[s]);
@@ -426,23 +438,75 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     free(g);
 }
 
-static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc,
+/* builds the program for draws of `kind` (GEOM_*) and finds its uniforms */
+static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, int kind,
                               ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
-    char defs[256];
+    char defs[320];
     snprintf(defs, sizeof defs,
-             "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES 0\n#define WW_FADE 1\n"
+             "#define WW_WAVE_MODEL %d\n#define WW_NWAVES %d\n#define WW_RIPPLES 0\n"
+             "#define WW_FADE 1\n"
              "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n"
-             "#define WW_SWAY %d\n%s",
-             ww_water_shader_model(sc->wave_model), g->caustics,
-             sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc), g->sway,
-             ww_sky_map_define(sc));
+             "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n%s",
+             ww_water_shader_model(sc->wave_model), ww_water_wave_count(sc), g->caustics,
+             sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc), g->sway, kind,
+             sc->render.nlights > 0, ww_sky_map_define(sc));
+    geom_prog *v = &g->var[kind];
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
-                                       defs, &g->prog, err);
+                                       defs, &v->prog, err);
     if (rc != WW_OK) return rc;
-    GLuint idx = gl->GetUniformBlockIndex(g->prog, "WwWaves");
-    if (idx != GL_INVALID_INDEX) gl->UniformBlockBinding(g->prog, idx, WW_UBO_WAVES);
+    GLuint p = v->prog;
+    GLuint idx = gl->GetUniformBlockIndex(p, "WwWaves");
+    if (idx != GL_INVALID_INDEX) gl->UniformBlockBinding(p, idx, WW_UBO_WAVES);
+    ww_sky_locs_init(gl, p, sc, &v->sky);
+    v->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
+    v->clip = ww_gfx_uniform(gl, p, "u_clip");
+    v->ambient = ww_gfx_uniform(gl, p, "u_ambient");
+    v->eye = ww_gfx_uniform(gl, p, "u_eye");
+    v->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
+    v->scatter_through = ww_gfx_uniform(gl, p, "u_scatter_through");
+    v->water_y = ww_gfx_uniform(gl, p, "u_water_y");
+    v->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
+    v->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
+    v->fog_below_color = ww_gfx_uniform(gl, p, "u_fog_below_color");
+    v->fog_below_density = ww_gfx_uniform(gl, p, "u_fog_below_density");
+    v->extinction = ww_gfx_uniform(gl, p, "u_extinction");
+    v->caustics_loc = ww_gfx_uniform(gl, p, "u_caustics");
+    v->detail_loc = ww_gfx_uniform(gl, p, "u_detail");
+    v->dudv_m_loc = ww_gfx_uniform(gl, p, "u_dudv_m");
+    v->dudv_o_loc = ww_gfx_uniform(gl, p, "u_dudv_o");
+    v->dudv_h_loc = ww_gfx_uniform(gl, p, "u_dudv_h");
+    v->cset_loc = ww_gfx_uniform(gl, p, "u_caustic_set");
+    v->cset_at_loc = ww_gfx_uniform(gl, p, "u_caustic_set_at");
+    v->cset_frame_loc = ww_gfx_uniform(gl, p, "u_caustic_set_frame");
+    v->glow = ww_gfx_uniform(gl, p, "u_glow");
+    v->glow_y = ww_gfx_uniform(gl, p, "u_glow_y");
+    v->shadow_map = ww_gfx_uniform(gl, p, "u_shadow_map");
+    v->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
+    v->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
+    v->shadow_filter = ww_gfx_uniform(gl, p, "u_shadow_filter");
+    v->shadow_water = ww_gfx_uniform(gl, p, "u_shadow_water");
+    v->shadow_bend = ww_gfx_uniform(gl, p, "u_shadow_bend");
+    v->sway_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway") : -1;
+    v->sway_axis_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway_axis") : -1;
+    v->mat_kd = ww_gfx_uniform(gl, p, "u_mat_kd");
+    v->mat_ks = ww_gfx_uniform(gl, p, "u_mat_ks");
+    v->mat_ke = ww_gfx_uniform(gl, p, "u_mat_ke");
+    v->mat_map = ww_gfx_uniform(gl, p, "u_mat_map");
+    v->lights.n = ww_gfx_uniform(gl, p, "u_nlights");
+    v->lights.pos = ww_gfx_uniform(gl, p, "u_light_pos");
+    v->lights.dir = ww_gfx_uniform(gl, p, "u_light_dir");
+    v->lights.color = ww_gfx_uniform(gl, p, "u_light_color");
+    v->lights.param = ww_gfx_uniform(gl, p, "u_light_param");
+    v->lights.scatter = ww_gfx_uniform(gl, p, "u_light_scatter");
     return WW_OK;
+}
+
+/* makes kind's program current */
+static const geom_prog *use(ww_geometry *g, const ww_gl *gl, int kind) {
+    g->cur = &g->var[kind];
+    gl->UseProgram(g->cur->prog);
+    return g->cur;
 }
 
 /* the GL texture of the scene's image `index` (a material's map_Kd), uploaded the first time a
@@ -527,7 +591,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||
                                                 sc->render.shadows.technique ==
                                                     WW_SHADOW_VOLUMES_VISIBLE);
-    ww_result rc = make_program(g, gl, sc, err);
+    ww_result rc = make_program(g, gl, sc, GEOM_LIT, err);
+    if (rc == WW_OK) rc = make_program(g, gl, sc, GEOM_DEPTH, err);
     if (rc == WW_OK && g->caustics == 1) {
         ww_water_waves_init(sc, &g->waves);
         rc = ww_water_ubos_new(gl, sc, &g->waves, &g->ubos, err);
@@ -580,53 +645,14 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         g->scratch_cap = most;
         if (!g->scratch) rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
     }
+    /* the glow column's and the bubbles' own programs, in the scenes that draw them */
+    if (rc == WW_OK && g->slot[SLOT_COLUMN].cap > 0) rc = make_program(g, gl, sc, GEOM_GLOW, err);
+    if (rc == WW_OK && g->slot[SLOT_BUBBLE].cap > 0) rc = make_program(g, gl, sc, GEOM_BUBBLE, err);
     if (rc != WW_OK) {
         ww_geometry_free(g, gl);
         return rc;
     }
-    GLuint p = g->prog;
-    ww_sky_locs_init(gl, p, sc, &g->sky);
-    g->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
-    g->clip = ww_gfx_uniform(gl, p, "u_clip");
-    g->ambient = ww_gfx_uniform(gl, p, "u_ambient");
-    g->eye = ww_gfx_uniform(gl, p, "u_eye");
-    g->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
-    g->scatter_through = ww_gfx_uniform(gl, p, "u_scatter_through");
-    g->water_y = ww_gfx_uniform(gl, p, "u_water_y");
-    g->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
-    g->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
-    g->fog_below_color = ww_gfx_uniform(gl, p, "u_fog_below_color");
-    g->fog_below_density = ww_gfx_uniform(gl, p, "u_fog_below_density");
-    g->extinction = ww_gfx_uniform(gl, p, "u_extinction");
-    g->caustics_loc = ww_gfx_uniform(gl, p, "u_caustics");
-    g->detail_loc = ww_gfx_uniform(gl, p, "u_detail");
-    g->dudv_m_loc = ww_gfx_uniform(gl, p, "u_dudv_m");
-    g->dudv_o_loc = ww_gfx_uniform(gl, p, "u_dudv_o");
-    g->dudv_h_loc = ww_gfx_uniform(gl, p, "u_dudv_h");
-    g->cset_loc = ww_gfx_uniform(gl, p, "u_caustic_set");
-    g->cset_at_loc = ww_gfx_uniform(gl, p, "u_caustic_set_at");
-    g->cset_frame_loc = ww_gfx_uniform(gl, p, "u_caustic_set_frame");
-    g->mode = ww_gfx_uniform(gl, p, "u_mode");
-    g->glow = ww_gfx_uniform(gl, p, "u_glow");
-    g->glow_y = ww_gfx_uniform(gl, p, "u_glow_y");
-    g->shadow_map = ww_gfx_uniform(gl, p, "u_shadow_map");
-    g->shadow_on = ww_gfx_uniform(gl, p, "u_shadow_on");
-    g->sun_view_proj = ww_gfx_uniform(gl, p, "u_sun_view_proj");
-    g->shadow_filter = ww_gfx_uniform(gl, p, "u_shadow_filter");
-    g->shadow_water = ww_gfx_uniform(gl, p, "u_shadow_water");
-    g->shadow_bend = ww_gfx_uniform(gl, p, "u_shadow_bend");
-    g->sway_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway") : -1;
-    g->sway_axis_loc = g->sway ? ww_gfx_uniform(gl, p, "u_sway_axis") : -1;
-    g->mat_kd = ww_gfx_uniform(gl, p, "u_mat_kd");
-    g->mat_ks = ww_gfx_uniform(gl, p, "u_mat_ks");
-    g->mat_ke = ww_gfx_uniform(gl, p, "u_mat_ke");
-    g->mat_map = ww_gfx_uniform(gl, p, "u_mat_map");
-    g->lights.n = ww_gfx_uniform(gl, p, "u_nlights");
-    g->lights.pos = ww_gfx_uniform(gl, p, "u_light_pos");
-    g->lights.dir = ww_gfx_uniform(gl, p, "u_light_dir");
-    g->lights.color = ww_gfx_uniform(gl, p, "u_light_color");
-    g->lights.param = ww_gfx_uniform(gl, p, "u_light_param");
-    g->lights.scatter = ww_gfx_uniform(gl, p, "u_light_scatter");
+    g->cur = &g->var[GEOM_LIT];
     *out = g;
     return WW_OK;
 }
@@ -995,14 +1021,14 @@ static void set_material(const ww_geometry *g, const ww_gl *gl, const ww_materia
     GLuint tex = 0;
     if (mt && mt->texture >= 0 && mt->texture < g->nimage) tex = g->image_tex[mt->texture];
     if (!mt) {
-        gl->Uniform4f(g->mat_kd, 1.0f, 1.0f, 1.0f, 0.0f);
-        gl->Uniform4f(g->mat_ks, 0.0f, 0.0f, 0.0f, 0.0f);
-        gl->Uniform4f(g->mat_ke, 0.0f, 0.0f, 0.0f, 1.0f);
+        gl->Uniform4f(g->cur->mat_kd, 1.0f, 1.0f, 1.0f, 0.0f);
+        gl->Uniform4f(g->cur->mat_ks, 0.0f, 0.0f, 0.0f, 0.0f);
+        gl->Uniform4f(g->cur->mat_ke, 0.0f, 0.0f, 0.0f, 1.0f);
     } else {
         const float *kd = mt->diffuse, *ks = mt->specular, *ke = mt->emission;
-        gl->Uniform4f(g->mat_kd, kd[0], kd[1], kd[2], tex ? 1.0f : 0.0f);
-        gl->Uniform4f(g->mat_ks, ks[0], ks[1], ks[2], fmaxf(mt->shininess, 1.0f));
-        gl->Uniform4f(g->mat_ke, ke[0], ke[1], ke[2], mt->opacity);
+        gl->Uniform4f(g->cur->mat_kd, kd[0], kd[1], kd[2], tex ? 1.0f : 0.0f);
+        gl->Uniform4f(g->cur->mat_ks, ks[0], ks[1], ks[2], fmaxf(mt->shininess, 1.0f));
+        gl->Uniform4f(g->cur->mat_ke, ke[0], ke[1], ke[2], mt->opacity);
     }
     gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_MATERIAL);
     gl->BindTexture(GL_TEXTURE_2D, tex);
@@ -1017,8 +1043,8 @@ static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode m
     const ww_mesh_data *d = g->obj_data[i];
     if (m->ninst <= 0) return 0;
     if (g->sway) {
-        gl->Uniform4fv(g->sway_loc, 1, g->obj_sway[i]);
-        gl->Uniform4fv(g->sway_axis_loc, 1, g->obj_sway_axis[i]);
+        gl->Uniform4fv(g->cur->sway_loc, 1, g->obj_sway[i]);
+        gl->Uniform4fv(g->cur->sway_axis_loc, 1, g->obj_sway_axis[i]);
     }
     if (mode == WW_GEOM_SHADOW || !d || d->nsub <= 0) {
         set_material(g, gl, NULL);
@@ -1058,59 +1084,51 @@ int ww_geometry_has_hulls(const ww_geometry *g) { return g && g->hull_cap.cap > 
 
 int ww_geometry_has_bubbles(const ww_geometry *g) { return g && g->slot[SLOT_BUBBLE].cap > 0; }
 
-void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
-                            ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts) {
+/* the uniforms every draw of a frame shares, into program v (in use) */
+static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, const ww_frame *f,
+                         ww_geom_mode mode, mat4 view_proj, const float *clip) {
     const ww_gl *gl = r->gl;
     const ww_scene *sc = f->sc;
     const ww_state *st = f->st;
-    upload_instances(g, gl, f);
-
-    gl->UseProgram(g->prog);
-    ww_sky_locs_set(gl, &g->sky, st);
-    gl->UniformMatrix4fv(g->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
-    if (clip) {
-        gl->Enable(GL_CLIP_DISTANCE0);
-        gl->Uniform4f(g->clip, clip[0], clip[1], clip[2], clip[3]);
-    } else {
-        gl->Disable(GL_CLIP_DISTANCE0);
-        gl->Uniform4f(g->clip, 0.0f, 0.0f, 0.0f, 1.0f);
-    }
+    ww_sky_locs_set(gl, &v->sky, st);
+    gl->UniformMatrix4fv(v->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
+    if (clip) gl->Uniform4f(v->clip, clip[0], clip[1], clip[2], clip[3]);
+    else gl->Uniform4f(v->clip, 0.0f, 0.0f, 0.0f, 1.0f);
     float water_y = (float)(f->surface_y - f->cam_pos[1]);
-    gl->Uniform3f(g->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
+    gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
     /* reflections see the world from the camera mirrored about the water plane */
-    gl->Uniform3f(g->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
+    gl->Uniform3f(v->eye, 0.0f, mode == WW_GEOM_REFLECTION ? 2.0f * water_y : 0.0f, 0.0f);
     /* ... whose path to a point is air all the way: no under-water fog on it */
-    gl->Uniform1i(g->mirrored, mode == WW_GEOM_REFLECTION);
-    gl->Uniform1i(g->scatter_through, mode == WW_GEOM_PREPASS);
-    gl->Uniform1f(g->water_y, water_y);
+    gl->Uniform1i(v->mirrored, mode == WW_GEOM_REFLECTION);
+    gl->Uniform1i(v->scatter_through, mode == WW_GEOM_PREPASS);
+    gl->Uniform1f(v->water_y, water_y);
     double hz[3];
     ww_sky_horizon(sc, st, hz);
     const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
-    gl->Uniform3f(g->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
-    gl->Uniform1f(g->fog_density, (float)sc->fog_density);
+    gl->Uniform3f(v->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
+    gl->Uniform1f(v->fog_density, (float)sc->fog_density);
     double fb[3];
     ww_fog_below_color(sc, st, fb);
-    gl->Uniform3f(g->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
-    gl->Uniform1f(g->fog_below_density, (float)sc->render.fog_below_density);
-    gl->Uniform3f(g->extinction, (float)WATER_EXTINCTION_R, (float)WATER_EXTINCTION_G,
+    gl->Uniform3f(v->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
+    gl->Uniform1f(v->fog_below_density, (float)sc->render.fog_below_density);
+    gl->Uniform3f(v->extinction, (float)WATER_EXTINCTION_R, (float)WATER_EXTINCTION_G,
                   (float)WATER_EXTINCTION_B);
-    gl->Uniform1f(g->caustics_loc, g->caustics ? (float)sc->render.water.caustics_strength : 0.0f);
-    gl->Uniform1i(g->mode, mode == WW_GEOM_SHADOW ? 0 : 1);
+    gl->Uniform1f(v->caustics_loc, g->caustics ? (float)sc->render.water.caustics_strength : 0.0f);
 
     /* the sun's shadow map, when the shadow pass drew one this frame */
     int shadowed = mode != WW_GEOM_SHADOW && r->shared.shadow_map != 0;
     /* 2: in a stencilled shadow, no sunlight (shadow.glsl) */
-    gl->Uniform1i(g->shadow_on, g->stage == WW_GEOM_STAGE_SUNLESS ? 2 : shadowed);
-    gl->Uniform1i(g->shadow_map, WW_TEX_SHADOW);
+    gl->Uniform1i(v->shadow_on, g->stage == WW_GEOM_STAGE_SUNLESS ? 2 : shadowed);
+    gl->Uniform1i(v->shadow_map, WW_TEX_SHADOW);
     /* the sunlight's bend at the water (shadow.glsl): the map's casters and receivers, or the
      * projected shadows' casters (their mark stage) */
-    gl->Uniform1i(g->shadow_bend, mode != WW_GEOM_SHADOW           ? 0
+    gl->Uniform1i(v->shadow_bend, mode != WW_GEOM_SHADOW           ? 0
                                   : g->stage == WW_GEOM_STAGE_MARK ? 2
                                                                    : 1);
     if (shadowed || mode == WW_GEOM_SHADOW) {
         double u[3];
         ww_sun_in_water(st->sun_dir, u);
-        gl->Uniform4f(g->shadow_water, (float)u[0], (float)u[1], (float)u[2],
+        gl->Uniform4f(v->shadow_water, (float)u[0], (float)u[1], (float)u[2],
                       (float)(sc->water_level - f->cam_pos[1]));
     }
     if (shadowed) {
@@ -1118,37 +1136,53 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_SHADOW);
         gl->BindTexture(GL_TEXTURE_2D, r->shared.shadow_map);
         gl->ActiveTexture(GL_TEXTURE0);
-        gl->UniformMatrix4fv(g->sun_view_proj, 1, GL_FALSE, (const GLfloat *)r->shared.sun_view_proj);
+        gl->UniformMatrix4fv(v->sun_view_proj, 1, GL_FALSE, (const GLfloat *)r->shared.sun_view_proj);
         /* a texel in metres: the orthographic map spans 2 / |row 0| of its matrix */
         const float(*m)[4] = (const float(*)[4])r->shared.sun_view_proj;
         float row = sqrtf(m[0][0] * m[0][0] + m[1][0] * m[1][0] + m[2][0] * m[2][0]);
-        gl->Uniform3f(g->shadow_filter, 1.0f / (float)size, (float)sc->render.shadows.softness,
+        gl->Uniform3f(v->shadow_filter, 1.0f / (float)size, (float)sc->render.shadows.softness,
                       2.0f / (row * (float)size));
     }
-    gl->Uniform1i(g->lights.n, mode == WW_GEOM_SHADOW ? 0 : g->nlights);
+    gl->Uniform1i(v->lights.n, mode == WW_GEOM_SHADOW ? 0 : g->nlights);
     if (g->nlights > 0 && mode != WW_GEOM_SHADOW) {
-        gl->Uniform3fv(g->lights.pos, g->nlights, &g->light_pos[0][0]);
-        gl->Uniform3fv(g->lights.dir, g->nlights, &g->light_dir[0][0]);
-        gl->Uniform3fv(g->lights.color, g->nlights, &g->light_color[0][0]);
-        gl->Uniform4fv(g->lights.param, g->nlights, &g->light_param[0][0]);
-        gl->Uniform1fv(g->lights.scatter, g->nlights, g->light_scatter);
+        gl->Uniform3fv(v->lights.pos, g->nlights, &g->light_pos[0][0]);
+        gl->Uniform3fv(v->lights.dir, g->nlights, &g->light_dir[0][0]);
+        gl->Uniform3fv(v->lights.color, g->nlights, &g->light_color[0][0]);
+        gl->Uniform4fv(v->lights.param, g->nlights, &g->light_param[0][0]);
+        gl->Uniform1fv(v->lights.scatter, g->nlights, g->light_scatter);
     }
     if (g->caustics == 2) {
         gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_CAUSTIC_SET);
         gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
         gl->ActiveTexture(GL_TEXTURE0);
-        gl->Uniform1i(g->cset_loc, WW_TEX_CAUSTIC_SET);
-        gl->Uniform4fv(g->cset_at_loc, 1, g->cset_at);
-        gl->Uniform2fv(g->cset_frame_loc, 1, g->cset_frame);
+        gl->Uniform1i(v->cset_loc, WW_TEX_CAUSTIC_SET);
+        gl->Uniform4fv(v->cset_at_loc, 1, g->cset_at);
+        gl->Uniform2fv(v->cset_frame_loc, 1, g->cset_frame);
     } else if (g->caustics) {
         gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
-        gl->Uniform4fv(g->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
-        gl->Uniform4fv(g->dudv_m_loc, 2, &g->dudv_m[0][0]);
-        gl->Uniform2fv(g->dudv_o_loc, 2, &g->dudv_o[0][0]);
+        gl->Uniform4fv(v->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
+        gl->Uniform4fv(v->dudv_m_loc, 2, &g->dudv_m[0][0]);
+        gl->Uniform2fv(v->dudv_o_loc, 2, &g->dudv_o[0][0]);
         /* the ripples' height per unit of noise: water.frag.glsl's DETAIL_SLOPE times a cell */
         double scale = sc->render.water.distortion_scale;
-        gl->Uniform2f(g->dudv_h_loc, scale > 0.0 ? (float)(WATER_DETAIL_SLOPE / scale) : 0.0f, 0.0f);
+        gl->Uniform2f(v->dudv_h_loc, scale > 0.0 ? (float)(WATER_DETAIL_SLOPE / scale) : 0.0f, 0.0f);
     }
+
+    gl->Uniform1i(v->mat_map, WW_TEX_MATERIAL);
+    set_material(g, gl, NULL);
+}
+
+void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
+                            ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts) {
+    const ww_gl *gl = r->gl;
+    upload_instances(g, gl, f);
+    /* every program the scene has gets the frame's uniforms: the glow column and the hulls'
+     * lids drawn after this with their own programs read them */
+    for (int k = 0; k < GEOM_PROGS; k++)
+        if (g->var[k].prog) set_uniforms(g, use(g, gl, k), r, f, mode, view_proj, clip);
+    use(g, gl, mode == WW_GEOM_SHADOW ? GEOM_DEPTH : GEOM_LIT);
+    if (clip) gl->Enable(GL_CLIP_DISTANCE0);
+    else gl->Disable(GL_CLIP_DISTANCE0);
 
     gl->Enable(GL_DEPTH_TEST);
     /* stencilled shadows: the shadowed pixels drawn again where they lie (the same program and
@@ -1157,9 +1191,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
                   : g->stage == WW_GEOM_STAGE_MARK  ? GL_LEQUAL
                                                     : GL_LESS);
     gl->DepthMask(g->stage == WW_GEOM_STAGE_NORMAL ? GL_TRUE : GL_FALSE);
-    gl->Uniform1i(g->mat_map, WW_TEX_MATERIAL);
-    set_material(g, gl, NULL);
-    if (g->sway) gl->Uniform4f(g->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* the meshes are rigid */
+    if (g->sway) gl->Uniform4f(g->cur->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* the meshes are rigid */
     int draws = 0;
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
@@ -1170,10 +1202,10 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
         draws += draw_obj(g, gl, i, mode);
-    if (g->sway) gl->Uniform4f(g->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* later draws are rigid */
+    if (g->sway) gl->Uniform4f(g->cur->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* later draws are rigid */
     if ((parts & WW_GEOM_PART_BUBBLES) && mode == WW_GEOM_MAIN && g->slot[SLOT_BUBBLE].ninst > 0) {
         /* over everything already drawn, the sky included; tested against depth, never written */
-        gl->Uniform1i(g->mode, 3);
+        use(g, gl, GEOM_BUBBLE);
         gl->Enable(GL_BLEND);
         gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied: rim light, then cover */
         gl->DepthMask(GL_FALSE);
@@ -1220,10 +1252,9 @@ void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode) {
     if (!g || (mode != WW_GEOM_MAIN && mode != WW_GEOM_REFLECTION) ||
         g->slot[SLOT_COLUMN].ninst <= 0)
         return;
-    gl->UseProgram(g->prog);
-    gl->Uniform1i(g->mode, 2);
-    gl->Uniform4f(g->glow, g->glow_cyl[0], g->glow_cyl[1], g->glow_cyl[2], g->glow_cyl[5]);
-    gl->Uniform2f(g->glow_y, g->glow_cyl[3], g->glow_cyl[4]);
+    const geom_prog *v = use(g, gl, GEOM_GLOW);
+    gl->Uniform4f(v->glow, g->glow_cyl[0], g->glow_cyl[1], g->glow_cyl[2], g->glow_cyl[5]);
+    gl->Uniform2f(v->glow_y, g->glow_cyl[3], g->glow_cyl[4]);
     if (g->glow_clip) gl->Enable(GL_CLIP_DISTANCE0);
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
@@ -1251,11 +1282,10 @@ void ww_geometry_draw_hull_mask(ww_geometry *g, ww_renderer *r, const ww_frame *
     const ww_gl *gl = r->gl;
     upload_instances(g, gl, f);
     if (g->hull_cap.ninst <= 0) return;
-    gl->UseProgram(g->prog);
-    gl->UniformMatrix4fv(g->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
+    const geom_prog *v = use(g, gl, GEOM_DEPTH);
+    gl->UniformMatrix4fv(v->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
     gl->Disable(GL_CLIP_DISTANCE0);
-    gl->Uniform4f(g->clip, 0.0f, 0.0f, 0.0f, 1.0f);
-    gl->Uniform1i(g->mode, 0);
+    gl->Uniform4f(v->clip, 0.0f, 0.0f, 0.0f, 1.0f);
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
     gl->DepthMask(GL_TRUE);

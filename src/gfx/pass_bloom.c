@@ -9,6 +9,7 @@
  * 5 fetches, now 2 passes of 11, the same picture. ping and pong have a framebuffer each, so no
  * pass reads a texture that is attached to the framebuffer it draws into.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -37,7 +38,18 @@ static void bloom_taps(double c[5]) {
     for (int i = 0; i < 5; i++) c[i] /= sum;
 }
 
-int ww_bloom_kernel(int passes, float weight[WW_BLOOM_MAX_FETCHES],
+/* the glow in frame pixels is the blur's kernel between the bright pass's box (a texel w pixels
+ * wide: variance w^2 / 12) and the tone mapping's bilinear upsample (a tent 2w wide: w^2 / 6), so
+ * its variance is w^2 (V + 1/4) for a kernel of variance V texels^2. A blur at texels w wide has
+ * the glow of the rounds' kernel (variance V2) at half size (w = 2) when
+ * V = (4 V2 + 1) / w^2 - 1/4; the kernel is then sampled from the Gaussian of that variance */
+#define BLOOM_MIN_VAR 0.25 /* texels^2: the least a kernel keeps (a blur narrower than its box) */
+
+static void gaussian_kernel(double var, double *k, int rmax) {
+    for (int i = -rmax; i <= rmax; i++) k[rmax + i] = exp(-0.5 * (double)(i * i) / var);
+}
+
+int ww_bloom_kernel(int passes, double scale, float weight[WW_BLOOM_MAX_FETCHES],
                     float offset[WW_BLOOM_MAX_FETCHES]) {
     enum { R_MAX = 4 * 16 }; /* render.bloom.passes at most 16 (compile_render.c) */
     double c[5], k[2 * R_MAX + 1] = {0.0}, t[2 * R_MAX + 1];
@@ -57,8 +69,20 @@ int ww_bloom_kernel(int passes, float weight[WW_BLOOM_MAX_FETCHES],
         }
         for (int i = 0; i <= 2 * R_MAX; i++) k[i] = t[i];
     }
-    /* drop the faint outer taps (at most what the fetches hold), renormalise */
     int r = 4 * passes;
+    if (fabs(scale - 0.5) > 1e-9 && scale > 0.0) {
+        double v2 = 0.0, w = 1.0 / scale;
+        for (int i = -r; i <= r; i++) v2 += (double)(i * i) * k[R_MAX + i];
+        double var = fmax((4.0 * v2 + 1.0) / (w * w) - 0.25, BLOOM_MIN_VAR);
+        r = (int)ceil(4.0 * sqrt(var));
+        if (r > R_MAX) r = R_MAX;
+        for (int i = 0; i <= 2 * R_MAX; i++) k[i] = 0.0;
+        gaussian_kernel(var, k + (R_MAX - r), r);
+        double total = 0.0; /* weights summing to 1, as the rounds' do, for the tail's share */
+        for (int i = -r; i <= r; i++) total += k[R_MAX + i];
+        for (int i = -r; i <= r; i++) k[R_MAX + i] /= total;
+    }
+    /* drop the faint outer taps (at most what the fetches hold), renormalise */
     double tail = 0.0;
     while (r > 4 && (r > BLOOM_MAX_TAPS || tail + 2.0 * k[R_MAX + r] < BLOOM_TAIL)) {
         tail += 2.0 * k[R_MAX + r];
@@ -127,11 +151,16 @@ static ww_result bloom_create(ww_renderer *r, const ww_scene *sc, const ww_pass_
         }
     }
 
-    ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "bloom_bright.frag.glsl", NULL,
-                                  &p->bright, err);
+    /* the bright pass thresholds every source texel of its block (WW_BLOOM_BLOCK a side) */
+    char bdefs[48];
+    long block = lround((double)in->width / (double)rt->width);
+    snprintf(bdefs, sizeof bdefs, "#define WW_BLOOM_BLOCK %ld\n", block < 1 ? 1L : block);
+    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "bloom_bright.frag.glsl", NULL,
+                                       bdefs, &p->bright, err);
     /* the fetch count is built in: llvmpipe unrolls a constant loop and indexes the weights
      * directly, where a uniform count cost more than the six passes it replaces */
-    p->fetches = ww_bloom_kernel(sc->render.bloom.passes, p->weight, p->offset);
+    p->fetches = ww_bloom_kernel(sc->render.bloom.passes, sc->render.bloom.scale, p->weight,
+                                 p->offset);
     char defs[64];
     snprintf(defs, sizeof defs, "#define WW_BLOOM_FETCHES %d\n", p->fetches);
     if (rc == WW_OK)

@@ -1,7 +1,12 @@
 /* pass_fxaa.c - FXAA (seed 000's last post pass; Lottes, FXAA 3.11 quality): reads the tone
  * mapping pass's RGBA8 image bilinearly and writes the anti-aliased image into its own RGBA8
  * target (fxaa.frag.glsl), its luma from the image's alpha (pass_tonemap.c writes it there).
- * Only pixels on luma edges change.
+ * Only pixels on luma edges change, and only they are shaded: the tone-mapped image is copied
+ * into the target first (a blit) and the shader discards every pixel without an edge, which
+ * llvmpipe skips for the rest of the shader when a whole block of pixels has none (it runs both
+ * arms of a branch, but not past a discard that took every lane): 42 -> 27 CPU ms on the lake
+ * at 1280x720. Where no edge was found, alpha keeps the luma (readers take RGB, or replace it
+ * with the coverage).
  */
 #include <stdlib.h>
 
@@ -9,6 +14,7 @@
 
 typedef struct fxaa_pass {
     const ww_rt *rt;
+    const ww_rt *in; /* the tone mapping's target */
     GLuint ldr_tex;
     GLuint prog;
     GLint ldr;
@@ -35,6 +41,7 @@ static ww_result fxaa_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     fxaa_pass *p = calloc(1, sizeof *p);
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "fxaa pass: out of memory");
     p->rt = rt;
+    p->in = in;
     p->ldr_tex = ldr;
     /* the edge search and the final fetch read between texels */
     gl->BindTexture(GL_TEXTURE_2D, ldr);
@@ -58,6 +65,11 @@ static ww_result fxaa_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     fxaa_pass *p = self;
     const ww_gl *gl = r->gl;
     ww_gfx_begin_pass(gl, p->rt);
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, p->in->fbo);
+    gl->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl->BlitFramebuffer(0, 0, p->in->width, p->in->height, 0, 0, p->rt->width, p->rt->height,
+                        GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, p->rt->fbo);
     gl->UseProgram(p->prog);
     gl->ActiveTexture(GL_TEXTURE0);
     gl->BindTexture(GL_TEXTURE_2D, p->ldr_tex);

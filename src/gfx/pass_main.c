@@ -49,7 +49,7 @@ static void draw_bubbles(ww_renderer *r, const ww_frame *f) {
 }
 
 static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
-    (void)err;
+    ww_result rc;
     main_pass *p = self;
     const ww_gl *gl = r->gl;
     ww_gfx_begin_pass(gl, p->rt);
@@ -73,13 +73,13 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         }
         ww_sky_draw(p->sky, gl, r->empty_vao, f);
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
-        ww_water_draw(p->water, r, f);
+        if ((rc = ww_water_draw(p->water, r, f, err))) return rc;
         draw_bubbles(r, f);
     } else if (!ww_geometry_has_hulls(r->geometry)) {
         /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
          * which the water shows through the prepass) then fails the depth test before it is
          * shaded; the sky last shades only what is left uncovered */
-        ww_water_draw(p->water, r, f);
+        if ((rc = ww_water_draw(p->water, r, f, err))) return rc;
         if (r->geometry)
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
@@ -96,7 +96,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
                                WW_GEOM_PART_SOLIDS);
         ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
-        ww_water_draw(p->water, r, f);
+        if ((rc = ww_water_draw(p->water, r, f, err))) return rc;
         ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
                                WW_GEOM_PART_SEABED);
         ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);

@@ -2,8 +2,10 @@
  * (pass_bloom.c's `ping`, times render.bloom.strength) and the light shafts (pass_shafts.c) when
  * those passes exist, applies exposure, the scene's tone curve (exp or ACES) and gamma, and
  * writes RGBA8 with alpha 1, or the luma FXAA reads when the FXAA pass follows
- * (tonemap.frag.glsl). The smaller inputs are upsampled bilinearly.
+ * (tonemap.frag.glsl). The smaller inputs are upsampled bilinearly. Which inputs there are, the
+ * curve and the alpha are #defines of the program (llvmpipe would run every arm per pixel).
  */
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "gfx/render_impl.h"
@@ -13,9 +15,8 @@ typedef struct tonemap_pass {
     GLuint hdr_tex;
     GLuint bloom_tex, shafts_tex; /* 0 when the pass is not planned */
     GLuint prog;
-    GLint hdr, exposure, gamma, op, luma_alpha;
-    int fxaa; /* the FXAA pass follows: alpha carries the luma it reads */
-    GLint bloom, bloom_on, bloom_strength, shafts, shafts_on;
+    GLint hdr, exposure, gamma;
+    GLint bloom, bloom_strength, shafts;
 } tonemap_pass;
 
 static void tonemap_destroy(void *self, const ww_gl *gl) {
@@ -47,8 +48,14 @@ static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     const ww_rt *shafts = ww_renderer_output(r, WW_PASS_SHAFTS);
     p->bloom_tex = bloom ? bloom->tex[0] : 0; /* the blur ends in ping */
     p->shafts_tex = shafts ? shafts->tex[0] : 0;
-    ww_result rc = ww_gfx_program(r->gl, "fullscreen.vert.glsl", "tonemap.frag.glsl", NULL,
-                                  &p->prog, err);
+    /* alpha carries the luma FXAA reads when the FXAA pass follows */
+    char defs[160];
+    snprintf(defs, sizeof defs,
+             "#define WW_BLOOM %d\n#define WW_SHAFTS %d\n#define WW_ACES %d\n#define WW_LUMA_ALPHA %d\n",
+             p->bloom_tex != 0, p->shafts_tex != 0, sc->tonemap == WW_TONEMAP_ACES,
+             sc->render.fxaa != 0);
+    ww_result rc = ww_gfx_program_defs(r->gl, "fullscreen.vert.glsl", "tonemap.frag.glsl", NULL,
+                                       defs, &p->prog, err);
     if (rc != WW_OK) {
         tonemap_destroy(p, r->gl);
         return rc;
@@ -56,14 +63,9 @@ static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     p->hdr = ww_gfx_uniform(r->gl, p->prog, "u_hdr");
     p->exposure = ww_gfx_uniform(r->gl, p->prog, "u_exposure");
     p->gamma = ww_gfx_uniform(r->gl, p->prog, "u_gamma");
-    p->op = ww_gfx_uniform(r->gl, p->prog, "u_op");
-    p->luma_alpha = ww_gfx_uniform(r->gl, p->prog, "u_luma_alpha");
-    p->fxaa = sc->render.fxaa;
     p->bloom = ww_gfx_uniform(r->gl, p->prog, "u_bloom");
-    p->bloom_on = ww_gfx_uniform(r->gl, p->prog, "u_bloom_on");
     p->bloom_strength = ww_gfx_uniform(r->gl, p->prog, "u_bloom_strength");
     p->shafts = ww_gfx_uniform(r->gl, p->prog, "u_shafts");
-    p->shafts_on = ww_gfx_uniform(r->gl, p->prog, "u_shafts_on");
     *self = p;
     return WW_OK;
 }
@@ -79,18 +81,14 @@ static ww_result tonemap_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
     gl->Uniform1i(p->hdr, 0);
     gl->Uniform1f(p->exposure, (float)f->sc->exposure);
     gl->Uniform1f(p->gamma, (float)f->sc->gamma);
-    gl->Uniform1i(p->op, f->sc->tonemap == WW_TONEMAP_ACES ? 1 : 0);
-    gl->Uniform1i(p->luma_alpha, p->fxaa);
     /* every sampler on its own unit, bound or not, so none aliases u_hdr's */
     gl->ActiveTexture(GL_TEXTURE1);
     gl->BindTexture(GL_TEXTURE_2D, p->bloom_tex);
     gl->Uniform1i(p->bloom, 1);
-    gl->Uniform1i(p->bloom_on, p->bloom_tex != 0);
     gl->Uniform1f(p->bloom_strength, (float)f->sc->render.bloom.strength);
     gl->ActiveTexture(GL_TEXTURE2);
     gl->BindTexture(GL_TEXTURE_2D, p->shafts_tex);
     gl->Uniform1i(p->shafts, 2);
-    gl->Uniform1i(p->shafts_on, p->shafts_tex != 0);
     gl->BindVertexArray(r->empty_vao);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
     gl->BindTexture(GL_TEXTURE_2D, 0);

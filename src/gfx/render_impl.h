@@ -86,9 +86,11 @@ extern const ww_pass_ops ww_pass_hud_ops;     /* pass_hud.c */
  * convolved into one kernel and read as bilinear fetches: the centre weight and offset 0, then
  * (weight, offset in texels) pairs each fetched on both sides; returns how many entries (n) it
  * filled, the weights summing to weight[0] + 2 (weight[1] + ... + weight[n - 1]) = 1. One pass
- * gives Rakos's 5 fetches (n = 3). */
+ * gives Rakos's 5 fetches (n = 3). The rounds are texels of a blur at half the frame's size;
+ * at another `scale` (render.bloom.scale) the kernel is the Gaussian whose glow is as wide in
+ * the frame, so the scale sets the blur's resolution, not the look. */
 #define WW_BLOOM_MAX_FETCHES 16
-int ww_bloom_kernel(int passes, float weight[WW_BLOOM_MAX_FETCHES],
+int ww_bloom_kernel(int passes, double scale, float weight[WW_BLOOM_MAX_FETCHES],
                     float offset[WW_BLOOM_MAX_FETCHES]);
 
 typedef struct ww_pass {
@@ -319,6 +321,9 @@ typedef struct ww_water_ubos {
 } ww_water_ubos;
 
 void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w);
+/* the components the shaders draw (k > 0, at most WW_MAX_WAVES; 0 for flat water): the block's n,
+ * built into the programs as WW_NWAVES */
+int ww_water_wave_count(const ww_scene *sc);
 /* the WW_WAVE_MODEL gerstner.glsl is built with for a scene's family (0 flat, 1 Gerstner and
  * spectrum, 2 sines, 3 steep sines) */
 int ww_water_shader_model(ww_wave_model m);
@@ -361,7 +366,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
 /* uploads the frame's phases and ripples, then draws, reading what earlier passes left in
  * r->shared (reflection, prepass) and r->sky_cubemap; alpha-blended over what the target holds
  * when render.water.alpha_blend */
-void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f);
+ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww_error *err);
 void ww_water_free(ww_water *w, const ww_gl *gl);
 
 #endif

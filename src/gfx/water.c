@@ -23,21 +23,35 @@
 #define WATER_FOAM_TAPS 4   /* water.frag.glsl: FOAM_TAPS */
 #define WATER_FOAM_SPAN 2.0 /* lives the taps reach back over: exp(-2) = 13.5% left at the last */
 
+/* one build of the water program. llvmpipe runs both arms of a branch for every pixel (it masks
+ * lanes, it does not jump), so what a frame cannot use is left out at compile time: the side of
+ * the surface the camera is on and which of the earlier passes' images there are to read are
+ * #defines, not uniforms (WW_UNDERWATER, WW_REFLECT_TEX, WW_REFRACT_TEX); the program for a
+ * combination is built the first time a frame needs it. About 15% of the lake's main pass. */
+typedef struct water_prog {
+    GLuint prog;
+    ww_sky_locs sky;
+    GLint view_proj, origin, ugrid;
+    GLint water_color, ambient, fog_color, fog_density, pixel_angle;
+    GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
+    GLint reflection, scene_color, scene_depth, sky_cube, sky_dome;
+    GLint sky_intensity, murk, foam, fog_below_color, fog_below_density, alpha;
+    GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
+} water_prog;
+
+enum { WATER_UNDER = 1, WATER_REFL = 2, WATER_REFR = 4, WATER_VARIANTS = 8 };
+
 struct ww_water {
-    GLuint prog, vao, vbo, ibo;
+    water_prog var[WATER_VARIANTS]; /* by the WATER_* bits; prog 0: not built yet */
+    char defines[1024];             /* the scene's own, shared by every variant */
+    int fade;                       /* WW_FADE (WW_WATER_FADE=0 turns it off) */
+    GLuint vao, vbo, ibo;
     GLsizei ninner;     /* indices of the inner disc (drawn whole), first in the buffer */
     GLsizei per_seg;    /* indices of one angular segment of the outer rings, after the disc */
     int nseg;           /* segments around the mesh (render.grid) */
     double inner_r;     /* radius of the inner disc's outer ring, m */
     int cull;           /* draw only the segments in view (WW_WATER_CULL=0 turns it off) */
     float grid[3]; /* (s0, q - 1, angular step) for the shaders' spacing estimate */
-    ww_sky_locs sky;
-    GLint view_proj, origin, ugrid;
-    GLint water_color, ambient, fog_color, fog_density, pixel_angle;
-    GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
-    GLint reflect_tex, refract_tex, cube, reflection, scene_color, scene_depth, sky_cube, sky_dome;
-    GLint sky_intensity, murk, foam, underwater, fog_below_color, fog_below_density, alpha;
-    GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
     GLuint dudv_tex; /* water.look.detail: texture: the DuDv noise's gradient, tiled; 0: exact */
     int foam_n;                      /* components foam's memory re-evaluates, 0: none */
     int foam_slot[WATER_FOAM_WAVES]; /* their upload slots */
@@ -247,7 +261,8 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, doubl
 
 /* foam's memory per frame: the chosen components' phases at the centre (already wrapped in
  * the wave block) and their frequencies, and the taps' spacing */
-static void set_foam_memory(const ww_water *w, const ww_gl *gl, const ww_scene *sc) {
+static void set_foam_memory(const ww_water *w, const water_prog *v, const ww_gl *gl,
+                            const ww_scene *sc) {
     float wave[WATER_FOAM_WAVES][4] = {{0}}, phase[WATER_FOAM_WAVES][4] = {{0}};
     float step[WATER_FOAM_WAVES][2] = {{0}};
     const ww_wave_block *b = &w->waves.block;
@@ -267,10 +282,82 @@ static void set_foam_memory(const ww_water *w, const ww_gl *gl, const ww_scene *
         step[j][1] = (float)sin(wv->omega * dt);
         longest = fmax(longest, WW_TAU / wv->k);
     }
-    gl->Uniform4fv(w->foam_wave, WATER_FOAM_WAVES, &wave[0][0]);
-    gl->Uniform4fv(w->foam_phase, WATER_FOAM_WAVES, &phase[0][0]);
-    gl->Uniform2fv(w->foam_step, WATER_FOAM_WAVES, &step[0][0]);
-    gl->Uniform4f(w->foam_memory, (float)w->foam_n, (float)life, (float)dt, (float)longest);
+    gl->Uniform4fv(v->foam_wave, WATER_FOAM_WAVES, &wave[0][0]);
+    gl->Uniform4fv(v->foam_phase, WATER_FOAM_WAVES, &phase[0][0]);
+    gl->Uniform2fv(v->foam_step, WATER_FOAM_WAVES, &step[0][0]);
+    gl->Uniform4f(v->foam_memory, (float)w->foam_n, (float)life, (float)dt, (float)longest);
+}
+
+/* the scene's own #defines, the same for every variant of the program. The switches a scene
+ * keeps for its whole run are built in rather than tested per pixel (see water_prog) */
+static void scene_defines(const ww_scene *sc, char *out, size_t size) {
+    const ww_water_look *lk = &sc->render.water;
+    char detail[400];
+    ww_water_detail_define(detail, sizeof detail);
+    snprintf(out, size,
+             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_SKY_DOME_IMAGE %d\n#define WW_DUDV_TEXTURE %d\n"
+             "#define WW_SKY_CUBE %d\n#define WW_ALPHA_BLEND %d\n#define WW_FOAM %d\n"
+             "#define WW_FRESNEL_SCHLICK %d\n#define WW_LIGHTS %d\n%s%s",
+             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc),
+             lk->detail == WW_DETAIL_TEXTURE, sc->render.sky == WW_SKY_CUBEMAP,
+             lk->alpha_blend != 0, lk->foam && lk->foam_amount > 0.0,
+             lk->fresnel == WW_FRESNEL_SCHLICK, sc->render.nlights > 0, detail,
+             ww_sky_map_define(sc));
+}
+
+/* builds variant `bits` (WATER_*) of the program and finds its uniforms */
+static ww_result build_variant(ww_water *w, const ww_gl *gl, const ww_scene *sc, int bits,
+                               ww_error *err) {
+    water_prog *v = &w->var[bits];
+    /* DuDv distorts and details only what there is a texture of to distort */
+    int distort = sc->render.water.distortion > 0.0 && (bits & (WATER_REFL | WATER_REFR));
+    char defs[1400];
+    snprintf(defs, sizeof defs,
+             "#define WW_UNDERWATER %d\n#define WW_REFLECT_TEX %d\n#define WW_REFRACT_TEX %d\n"
+             "#define WW_DISTORT %d\n%s",
+             (bits & WATER_UNDER) != 0, (bits & WATER_REFL) != 0, (bits & WATER_REFR) != 0,
+             distort != 0, w->defines);
+    ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl", w->fade, defs,
+                                    &v->prog, err);
+    if (rc != WW_OK) return rc;
+    GLuint p = v->prog;
+    ww_sky_locs_init(gl, p, sc, &v->sky);
+    v->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
+    v->origin = ww_gfx_uniform(gl, p, "u_origin");
+    v->ugrid = ww_gfx_uniform(gl, p, "u_grid");
+    v->water_color = ww_gfx_uniform(gl, p, "u_water_color");
+    v->ambient = ww_gfx_uniform(gl, p, "u_ambient");
+    v->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
+    v->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
+    v->pixel_angle = ww_gfx_uniform(gl, p, "u_pixel_angle");
+    v->fresnel = ww_gfx_uniform(gl, p, "u_fresnel");
+    v->specular = ww_gfx_uniform(gl, p, "u_specular");
+    v->distort = ww_gfx_uniform(gl, p, "u_distort");
+    v->dudv_m = ww_gfx_uniform(gl, p, "u_dudv_m");
+    v->dudv_o = ww_gfx_uniform(gl, p, "u_dudv_o");
+    v->cam_axes = ww_gfx_uniform(gl, p, "u_cam_axes");
+    v->inv_size = ww_gfx_uniform(gl, p, "u_inv_size");
+    v->clip_range = ww_gfx_uniform(gl, p, "u_clip_range");
+    v->reflection = ww_gfx_uniform(gl, p, "u_reflection");
+    v->scene_color = ww_gfx_uniform(gl, p, "u_scene_color");
+    v->scene_depth = ww_gfx_uniform(gl, p, "u_scene_depth");
+    v->sky_cube = ww_gfx_uniform(gl, p, "u_sky_cube");
+    v->sky_dome = ww_gfx_uniform(gl, p, "u_sky_dome_image");
+    v->sky_intensity = ww_gfx_uniform(gl, p, "u_sky_intensity");
+    v->murk = ww_gfx_uniform(gl, p, "u_murk");
+    v->foam = ww_gfx_uniform(gl, p, "u_foam");
+    v->fog_below_color = ww_gfx_uniform(gl, p, "u_fog_below_color");
+    v->fog_below_density = ww_gfx_uniform(gl, p, "u_fog_below_density");
+    v->alpha = ww_gfx_uniform(gl, p, "u_alpha");
+    v->detail = ww_gfx_uniform(gl, p, "u_detail");
+    v->skirt = ww_gfx_uniform(gl, p, "u_skirt_r");
+    v->foam_wave = ww_gfx_uniform(gl, p, "u_foam_wave");
+    v->foam_phase = ww_gfx_uniform(gl, p, "u_foam_phase");
+    v->foam_step = ww_gfx_uniform(gl, p, "u_foam_step");
+    v->foam_memory = ww_gfx_uniform(gl, p, "u_foam_memory");
+    v->dudv_grad = ww_gfx_uniform(gl, p, "u_dudv_grad");
+    return WW_OK;
 }
 
 ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err) {
@@ -278,63 +365,20 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     if (!w) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory");
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
     w->cull = !(cull && strcmp(cull, "0") == 0);
+    w->fade = !(fade && strcmp(fade, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
-    int dudv_tex = sc->render.water.detail == WW_DETAIL_TEXTURE;
-    char detail[400], more[600];
-    ww_water_detail_define(detail, sizeof detail);
-    snprintf(more, sizeof more,
-             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
-             "#define WW_SKY_DOME_IMAGE %d\n#define WW_DUDV_TEXTURE %d\n%s%s",
-             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc), dudv_tex,
-             detail, ww_sky_map_define(sc));
-    ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl",
-                                    !(fade && strcmp(fade, "0") == 0), more, &w->prog, err);
+    scene_defines(sc, w->defines, sizeof w->defines);
+    /* the variant seen from above with the images the scene's passes make: built now, so a
+     * shader that does not compile fails here rather than in the middle of a run */
+    int first = (sc->render.reflection.on ? WATER_REFL : 0) | (sc->render.refraction ? WATER_REFR : 0);
+    ww_result rc = build_variant(w, gl, sc, first, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
-    if (rc == WW_OK && dudv_tex) rc = dudv_texture(w, gl, err);
+    if (rc == WW_OK && sc->render.water.detail == WW_DETAIL_TEXTURE) rc = dudv_texture(w, gl, err);
     if (rc != WW_OK) {
         ww_water_free(w, gl);
         return rc;
     }
-    ww_sky_locs_init(gl, w->prog, sc, &w->sky);
-    w->view_proj = ww_gfx_uniform(gl, w->prog, "u_view_proj");
-    w->origin = ww_gfx_uniform(gl, w->prog, "u_origin");
-    w->ugrid = ww_gfx_uniform(gl, w->prog, "u_grid");
-    w->water_color = ww_gfx_uniform(gl, w->prog, "u_water_color");
-    w->ambient = ww_gfx_uniform(gl, w->prog, "u_ambient");
-    w->fog_color = ww_gfx_uniform(gl, w->prog, "u_fog_color");
-    w->fog_density = ww_gfx_uniform(gl, w->prog, "u_fog_density");
-    w->pixel_angle = ww_gfx_uniform(gl, w->prog, "u_pixel_angle");
-    w->fresnel = ww_gfx_uniform(gl, w->prog, "u_fresnel");
-    w->specular = ww_gfx_uniform(gl, w->prog, "u_specular");
-    w->distort = ww_gfx_uniform(gl, w->prog, "u_distort");
-    w->dudv_m = ww_gfx_uniform(gl, w->prog, "u_dudv_m");
-    w->dudv_o = ww_gfx_uniform(gl, w->prog, "u_dudv_o");
-    w->cam_axes = ww_gfx_uniform(gl, w->prog, "u_cam_axes");
-    w->inv_size = ww_gfx_uniform(gl, w->prog, "u_inv_size");
-    w->clip_range = ww_gfx_uniform(gl, w->prog, "u_clip_range");
-    w->reflect_tex = ww_gfx_uniform(gl, w->prog, "u_reflect_tex");
-    w->refract_tex = ww_gfx_uniform(gl, w->prog, "u_refract_tex");
-    w->cube = ww_gfx_uniform(gl, w->prog, "u_cube");
-    w->reflection = ww_gfx_uniform(gl, w->prog, "u_reflection");
-    w->scene_color = ww_gfx_uniform(gl, w->prog, "u_scene_color");
-    w->scene_depth = ww_gfx_uniform(gl, w->prog, "u_scene_depth");
-    w->sky_cube = ww_gfx_uniform(gl, w->prog, "u_sky_cube");
-    w->sky_dome = ww_gfx_uniform(gl, w->prog, "u_sky_dome_image");
-    w->sky_intensity = ww_gfx_uniform(gl, w->prog, "u_sky_intensity");
-    w->murk = ww_gfx_uniform(gl, w->prog, "u_murk");
-    w->foam = ww_gfx_uniform(gl, w->prog, "u_foam");
-    w->underwater = ww_gfx_uniform(gl, w->prog, "u_underwater");
-    w->fog_below_color = ww_gfx_uniform(gl, w->prog, "u_fog_below_color");
-    w->fog_below_density = ww_gfx_uniform(gl, w->prog, "u_fog_below_density");
-    w->alpha = ww_gfx_uniform(gl, w->prog, "u_alpha");
-    w->detail = ww_gfx_uniform(gl, w->prog, "u_detail");
-    w->skirt = ww_gfx_uniform(gl, w->prog, "u_skirt_r");
-    w->foam_wave = ww_gfx_uniform(gl, w->prog, "u_foam_wave");
-    w->foam_phase = ww_gfx_uniform(gl, w->prog, "u_foam_phase");
-    w->foam_step = ww_gfx_uniform(gl, w->prog, "u_foam_step");
-    w->foam_memory = ww_gfx_uniform(gl, w->prog, "u_foam_memory");
-    w->dudv_grad = ww_gfx_uniform(gl, w->prog, "u_dudv_grad");
     foam_components(sc, w);
     *out = w;
     return WW_OK;
@@ -393,25 +437,22 @@ static void bind_unit(const ww_gl *gl, int unit, GLenum target, GLuint tex) {
 }
 
 /* the optics' uniforms and textures: what the earlier passes of the frame left (r->shared) */
-static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *f,
-                       const double centre[2]) {
+static void set_optics(const ww_water *w, const water_prog *v, int bits, const ww_renderer *r,
+                       const ww_frame *f, const double centre[2]) {
     const ww_gl *gl = r->gl;
     const ww_scene *sc = f->sc;
     const ww_water_look *lk = &sc->render.water;
     const ww_shared *sh = &r->shared;
-    int refl = sh->reflection && sh->reflection_tex;
-    int refr = sh->scene_color && sh->scene_depth;
+    int refl = (bits & WATER_REFL) != 0, refr = (bits & WATER_REFR) != 0;
 
-    gl->Uniform4f(w->fresnel, lk->fresnel == WW_FRESNEL_SCHLICK ? 1.0f : 0.0f,
+    gl->Uniform4f(v->fresnel, lk->fresnel == WW_FRESNEL_SCHLICK ? 1.0f : 0.0f,
                   (float)lk->fresnel_bias, (float)lk->fresnel_scale, (float)lk->fresnel_power);
-    gl->Uniform1f(w->specular, (float)lk->specular);
-    /* DuDv only distorts and details what it has a texture to distort */
-    int dudv = lk->distortion > 0.0 && (refl || refr);
-    gl->Uniform3f(w->distort, (float)lk->distortion, (float)lk->distortion_scale, dudv ? 1.0f : 0.0f);
+    gl->Uniform1f(v->specular, (float)lk->specular);
+    gl->Uniform2f(v->distort, (float)lk->distortion, (float)lk->distortion_scale);
     float m[2][4], o[2][2];
     ww_water_dudv(sc, f->st, centre, m, o);
-    gl->Uniform4fv(w->dudv_m, 2, &m[0][0]);
-    gl->Uniform2fv(w->dudv_o, 2, &o[0][0]);
+    gl->Uniform4fv(v->dudv_m, 2, &m[0][0]);
+    gl->Uniform2fv(v->dudv_o, 2, &o[0][0]);
 
     /* the screen's axes on the water: right, and farther (forward tilted by up, so that a
      * camera looking straight down still has one) */
@@ -419,38 +460,34 @@ static void set_optics(const ww_water *w, const ww_renderer *r, const ww_frame *
     double rl = hypot(rx, rz), fl = hypot(fx, fz);
     rl = rl > 1e-9 ? rl : 1.0;
     fl = fl > 1e-9 ? fl : 1.0;
-    gl->Uniform4f(w->cam_axes, (float)(rx / rl), (float)(rz / rl), (float)(fx / fl), (float)(fz / fl));
-    gl->Uniform2f(w->inv_size, 1.0f / (float)f->width, 1.0f / (float)f->height);
-    gl->Uniform2f(w->clip_range, (float)sc->near_clip, (float)sc->far_clip);
+    gl->Uniform4f(v->cam_axes, (float)(rx / rl), (float)(rz / rl), (float)(fx / fl), (float)(fz / fl));
+    gl->Uniform2f(v->inv_size, 1.0f / (float)f->width, 1.0f / (float)f->height);
+    gl->Uniform2f(v->clip_range, (float)sc->near_clip, (float)sc->far_clip);
 
-    gl->Uniform1i(w->reflect_tex, refl);
-    gl->Uniform1i(w->refract_tex, refr);
-    gl->Uniform1i(w->cube, r->sky_cubemap != 0);
-    gl->Uniform1i(w->reflection, UNIT_REFLECTION);
-    gl->Uniform1i(w->scene_color, UNIT_SCENE_COLOR);
-    gl->Uniform1i(w->scene_depth, UNIT_SCENE_DEPTH);
-    gl->Uniform1i(w->sky_cube, UNIT_SKY_CUBE);
-    gl->Uniform1i(w->sky_dome, UNIT_SKY_DOME);
-    gl->Uniform1f(w->sky_intensity, (float)sc->render.sky_intensity);
-    gl->Uniform1f(w->murk, (float)lk->murk);
-    gl->Uniform1f(w->foam, lk->foam ? (float)lk->foam_amount : 0.0f);
-    gl->Uniform1i(w->underwater, f->underwater);
+    gl->Uniform1i(v->reflection, UNIT_REFLECTION);
+    gl->Uniform1i(v->scene_color, UNIT_SCENE_COLOR);
+    gl->Uniform1i(v->scene_depth, UNIT_SCENE_DEPTH);
+    gl->Uniform1i(v->sky_cube, UNIT_SKY_CUBE);
+    gl->Uniform1i(v->sky_dome, UNIT_SKY_DOME);
+    gl->Uniform1f(v->sky_intensity, (float)sc->render.sky_intensity);
+    gl->Uniform1f(v->murk, (float)lk->murk);
+    gl->Uniform1f(v->foam, lk->foam ? (float)lk->foam_amount : 0.0f);
     double fb[3];
     ww_fog_below_color(sc, f->st, fb);
-    gl->Uniform3f(w->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
-    gl->Uniform1f(w->fog_below_density, (float)sc->render.fog_below_density);
-    gl->Uniform2f(w->alpha, lk->alpha_blend ? 1.0f : 0.0f, (float)lk->alpha);
+    gl->Uniform3f(v->fog_below_color, (float)fb[0], (float)fb[1], (float)fb[2]);
+    gl->Uniform1f(v->fog_below_density, (float)sc->render.fog_below_density);
+    gl->Uniform1f(v->alpha, (float)lk->alpha);
     float det[WW_WATER_NDETAIL][4];
     ww_water_detail(f->st, centre, det);
-    gl->Uniform4fv(w->detail, WW_WATER_NDETAIL, &det[0][0]);
-    if (w->foam_n > 0) set_foam_memory(w, gl, sc); /* else the shader has no memory built in */
+    gl->Uniform4fv(v->detail, WW_WATER_NDETAIL, &det[0][0]);
+    if (w->foam_n > 0) set_foam_memory(w, v, gl, sc); /* else the shader has no memory built in */
     bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
     if (r->sky_dome_image) bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, r->sky_dome_image);
     if (w->dudv_tex) {
-        gl->Uniform1i(w->dudv_grad, UNIT_DUDV);
+        gl->Uniform1i(v->dudv_grad, UNIT_DUDV);
         bind_unit(gl, UNIT_DUDV, GL_TEXTURE_2D, w->dudv_tex);
     }
     gl->ActiveTexture(GL_TEXTURE0);
@@ -463,10 +500,19 @@ static void unbind_optics(const ww_gl *gl) {
     for (int u = UNIT_SCENE_DEPTH; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
 }
 
-void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
+ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww_error *err) {
     const ww_gl *gl = r->gl;
     const ww_scene *sc = f->sc;
     const ww_state *st = f->st;
+    const ww_shared *sh = &r->shared;
+    int bits = (f->underwater ? WATER_UNDER : 0) |
+               (sh->reflection && sh->reflection_tex ? WATER_REFL : 0) |
+               (sh->scene_color && sh->scene_depth ? WATER_REFR : 0);
+    if (!w->var[bits].prog) {
+        ww_result rc = build_variant(w, gl, sc, bits, err);
+        if (rc != WW_OK) return rc;
+    }
+    const water_prog *v = &w->var[bits];
 
     /* the mesh follows the camera in whole grid steps, so its vertices do not swim */
     double centre[2] = {WW_WATER_SNAP * floor(f->cam_pos[0] / WW_WATER_SNAP + 0.5),
@@ -489,22 +535,22 @@ void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
         gl->Enable(GL_BLEND);
         gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
-    gl->UseProgram(w->prog);
-    ww_sky_locs_set(gl, &w->sky, st);
-    ww_geometry_lights_set(r->geometry, gl, f, w->prog); /* lights[] */
-    gl->UniformMatrix4fv(w->view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
-    gl->Uniform3f(w->origin, (float)(centre[0] - f->cam_pos[0]),
+    gl->UseProgram(v->prog);
+    ww_sky_locs_set(gl, &v->sky, st);
+    ww_geometry_lights_set(r->geometry, gl, f, v->prog); /* lights[] */
+    gl->UniformMatrix4fv(v->view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
+    gl->Uniform3f(v->origin, (float)(centre[0] - f->cam_pos[0]),
                   (float)(sc->water_level - f->cam_pos[1]), (float)(centre[1] - f->cam_pos[2]));
     ww_water_ubos_bind(gl, &w->ubos);
-    gl->Uniform3fv(w->ugrid, 1, w->grid);
-    gl->Uniform1f(w->skirt, w->skirt_r);
-    gl->Uniform3f(w->water_color, (float)sc->water_color[0], (float)sc->water_color[1],
+    gl->Uniform3fv(v->ugrid, 1, w->grid);
+    gl->Uniform1f(v->skirt, w->skirt_r);
+    gl->Uniform3f(v->water_color, (float)sc->water_color[0], (float)sc->water_color[1],
                   (float)sc->water_color[2]);
-    gl->Uniform3f(w->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
-    gl->Uniform3f(w->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
-    gl->Uniform1f(w->fog_density, (float)sc->fog_density);
-    gl->Uniform1f(w->pixel_angle, f->pixel_angle);
-    set_optics(w, r, f, centre);
+    gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
+    gl->Uniform3f(v->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
+    gl->Uniform1f(v->fog_density, (float)sc->fog_density);
+    gl->Uniform1f(v->pixel_angle, f->pixel_angle);
+    set_optics(w, v, bits, r, f, centre);
 
     gl->BindVertexArray(w->vao);
     gl->DrawElements(GL_TRIANGLES, w->ninner, GL_UNSIGNED_INT, NULL);
@@ -515,11 +561,13 @@ void ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f) {
     gl->BindVertexArray(0);
     unbind_optics(gl);
     if (blend) gl->Disable(GL_BLEND);
+    return WW_OK;
 }
 
 void ww_water_free(ww_water *w, const ww_gl *gl) {
     if (!w) return;
-    if (w->prog) gl->DeleteProgram(w->prog);
+    for (int i = 0; i < WATER_VARIANTS; i++)
+        if (w->var[i].prog) gl->DeleteProgram(w->var[i].prog);
     if (w->vao) gl->DeleteVertexArrays(1, &w->vao);
     if (w->vbo) gl->DeleteBuffers(1, &w->vbo);
     if (w->ibo) gl->DeleteBuffers(1, &w->ibo);

@@ -28,6 +28,13 @@ static double steep_slope_factor(double e) {
     return sum / n;
 }
 
+int ww_water_wave_count(const ww_scene *sc) {
+    if (sc->wave_model == WW_WAVES_FLAT) return 0;
+    int n = 0;
+    for (int i = 0; i < sc->nwaves && i < WW_MAX_WAVES; i++) n += sc->waves[i].k > 0.0;
+    return n;
+}
+
 void ww_water_waves_init(const ww_scene *sc, ww_water_waves *w) {
     memset(w, 0, sizeof *w);
     ww_wave_block *b = &w->block;
@@ -133,9 +140,11 @@ ww_result ww_water_program(const ww_gl *gl, const ww_scene *sc, const char *vs, 
                            int fade, const char *more, GLuint *prog, ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", NULL};
     char defines[1024];
-    snprintf(defines, sizeof defines, "#define WW_WAVE_MODEL %d\n#define WW_RIPPLES %d\n#define WW_FADE %d\n%s",
-             ww_water_shader_model(sc->wave_model), sc->ripples_on ? 1 : 0, fade ? 1 : 0,
-             more ? more : "");
+    snprintf(defines, sizeof defines,
+             "#define WW_WAVE_MODEL %d\n#define WW_NWAVES %d\n#define WW_RIPPLES %d\n"
+             "#define WW_FADE %d\n%s",
+             ww_water_shader_model(sc->wave_model), ww_water_wave_count(sc),
+             sc->ripples_on ? 1 : 0, fade ? 1 : 0, more ? more : "");
     ww_result rc = ww_gfx_program_defs(gl, vs, fs, includes, defines, prog, err);
     if (rc == WW_OK)
         rc = bind_block(gl, *prog, "WwWaves", WW_UBO_WAVES, sizeof(ww_wave_block), err);

@@ -59,6 +59,14 @@ typedef struct smooth {
     double v, target, k;           /* value, target, per-sample coefficient */
 } smooth;
 
+/* a one-shot still sounding: what a checkpoint keeps so that a track started after it hears the
+ * clip's tail (audio.h, ww_audio_save) */
+typedef struct voice {
+    int clip;                      /* index into clip[], or WW_SOUND_COUNT + splash variant */
+    int64_t n0;                    /* first sample on the absolute grid */
+    double gl, gr;                 /* gains, as played */
+} voice;
+
 struct ww_audio {
     ww_audio_desc d;
     uint64_t seed;
@@ -73,6 +81,9 @@ struct ww_audio {
     int engine_file;               /* the engine is a WAV loop, not the wavetable */
     smooth eng_l, eng_r, eng_rate, underwater, music_gain;
     double eng_phase;              /* position in the engine clip, samples */
+    voice voices[WW_AUDIO_MAX_VOICES]; /* the one-shots sounding, in the order they were played */
+    int nvoices;
+    int64_t lost_until;            /* a full list dropped a voice that sounds until this sample */
 };
 
 static int64_t grid(const ww_audio *a, int64_t step) {
@@ -134,27 +145,31 @@ static double loop_at(const ww_clip *c, double p, int ch) {
 static void mix_loops(ww_audio *a, int64_t n1) {
     const ww_clip *eng = &a->clip[WW_SOUND_ENGINE], *uw = &a->clip[WW_SOUND_UNDERWATER];
     for (int64_t n = a->cursor; n < n1; n++) {
+        /* outside the track (the prefix, a checkpoint's listener) only the state moves on */
+        int in = n >= a->b0 && n < a->b1;
         double l = 0.0, r = 0.0;
         double gl = smooth_tick(&a->eng_l), gr = smooth_tick(&a->eng_r);
         double rate = smooth_tick(&a->eng_rate);
         if (gl != 0.0 || gr != 0.0) {
-            l += gl * loop_at(eng, a->eng_phase, 0);
-            r += gr * loop_at(eng, a->eng_phase, 1);
+            if (in) {
+                l += gl * loop_at(eng, a->eng_phase, 0);
+                r += gr * loop_at(eng, a->eng_phase, 1);
+            }
             a->eng_phase = fmod(a->eng_phase + rate, (double)eng->frames);
         }
         double gu = smooth_tick(&a->underwater) * CENTRE;
-        if (gu != 0.0) { /* the loop's position is the absolute sample: no state to carry */
+        if (in && gu != 0.0) { /* the loop's position is the absolute sample: no state to carry */
             double p = (double)(n % uw->frames);
             l += gu * loop_at(uw, p, 0);
             r += gu * loop_at(uw, p, 1);
         }
         double gm = smooth_tick(&a->music_gain);
-        if (gm != 0.0 && a->music.frames) {
+        if (in && gm != 0.0 && a->music.frames) {
             double p = (double)(n % a->music.frames);
             l += gm * loop_at(&a->music, p, 0);
             r += gm * loop_at(&a->music, p, 1);
         }
-        if (n >= a->b0 && n < a->b1 && (l != 0.0 || r != 0.0)) {
+        if (in && (l != 0.0 || r != 0.0)) {
             a->mix[2 * (n - a->b0)] += (float)l;
             a->mix[2 * (n - a->b0) + 1] += (float)r;
         }
@@ -191,10 +206,34 @@ static void mix_reels(ww_audio *a, const ww_scene *sc) {
 
 /* ---- events and controls ------------------------------------------------------------------- */
 
+/* the clip of a voice's index */
+static const ww_clip *voice_clip(const ww_audio *a, int clip) {
+    return clip < WW_SOUND_COUNT ? &a->clip[clip] : &a->splash[clip - WW_SOUND_COUNT];
+}
+
+/* forget the voices that ended by sample n (their last sample is before it), keeping the order */
+static void prune_voices(ww_audio *a, int64_t n) {
+    int k = 0;
+    for (int i = 0; i < a->nvoices; i++)
+        if (a->voices[i].n0 + voice_clip(a, a->voices[i].clip)->frames > n) a->voices[k++] = a->voices[i];
+    a->nvoices = k;
+}
+
+static void remember_voice(ww_audio *a, const ww_clip *c, int64_t n0, double gl, double gr) {
+    int clip = c >= a->clip && c < a->clip + WW_SOUND_COUNT ? (int)(c - a->clip)
+                                                           : WW_SOUND_COUNT + (int)(c - a->splash);
+    if (a->nvoices < WW_AUDIO_MAX_VOICES) {
+        a->voices[a->nvoices++] = (voice){clip, n0, gl, gr};
+    } else if (n0 + c->frames > a->lost_until) {
+        a->lost_until = n0 + c->frames;
+    }
+}
+
 static void play(ww_audio *a, const ww_state *st, const ww_clip *c, const double *pos, double level) {
     double gl = level * CENTRE, gr = gl;
     if (pos) spatial(a, st, pos, level, &gl, &gr);
     add_clip(a, c, grid(a, st->step), gl, gr);
+    remember_voice(a, c, grid(a, st->step), gl, gr);
 }
 
 /* the sounds of the step's events, at the step's end sample, heard from the step's camera */
@@ -256,6 +295,7 @@ static void set_controls(ww_audio *a, const ww_scene *sc, const ww_state *st) {
 
 void ww_audio_step(ww_audio *a, const ww_scene *sc, const ww_state *st) {
     mix_loops(a, grid(a, st->step));
+    prune_voices(a, grid(a, st->step));
     play_events(a, sc, st);
     set_controls(a, sc, st);
 }
@@ -389,6 +429,85 @@ ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) all[i]->v = all[i]->target;
     ww_state_free(st);
     *out = a;
+    return WW_OK;
+}
+
+/* ---- checkpoints --------------------------------------------------------------------------- */
+
+/* the synth's state as bytes (native doubles and integers: a checkpoint's build id says the
+ * layout): cursor, splashes, engine phase, the five smoothers' value and target, then the
+ * voices sounding. The smoothers' coefficients and the clips come from the scene. */
+#define SAVE_FIXED (3 * 8 + 5 * 2 * 8 + 8)
+#define SAVE_VOICE (4 * 8)
+
+static unsigned char *put8(unsigned char *p, const void *v) { return memcpy(p, v, 8), p + 8; }
+static const unsigned char *get8(const unsigned char *p, void *v) { return memcpy(v, p, 8), p + 8; }
+
+static void smoothers(ww_audio *a, smooth **all) {
+    all[0] = &a->eng_l, all[1] = &a->eng_r, all[2] = &a->eng_rate, all[3] = &a->underwater;
+    all[4] = &a->music_gain;
+}
+
+size_t ww_audio_save(ww_audio *a, unsigned char *buf, size_t cap) {
+    size_t n = SAVE_FIXED + (size_t)a->nvoices * SAVE_VOICE;
+    if (a->lost_until > a->cursor) return 0;
+    if (!buf) return n;
+    WW_ASSERT(cap >= n);
+    smooth *all[5];
+    smoothers(a, all);
+    int64_t nv = a->nvoices;
+    unsigned char *p = buf;
+    p = put8(p, &a->cursor);
+    p = put8(p, &a->splashes);
+    p = put8(p, &a->eng_phase);
+    for (int i = 0; i < 5; i++) p = put8(put8(p, &all[i]->v), &all[i]->target);
+    p = put8(p, &nv);
+    for (int i = 0; i < a->nvoices; i++) {
+        const voice *v = &a->voices[i];
+        int64_t clip = v->clip;
+        p = put8(put8(put8(put8(p, &clip), &v->n0), &v->gl), &v->gr);
+    }
+    return n;
+}
+
+ww_result ww_audio_restore(ww_audio *a, const ww_state *st, const unsigned char *buf, size_t n,
+                           ww_error *err) {
+    int64_t cursor, splashes, nv = -1;
+    double phase;
+    smooth *all[5], saved[5];
+    smoothers(a, all);
+    const unsigned char *p = buf;
+    if (n >= SAVE_FIXED) {
+        p = get8(get8(get8(p, &cursor), &splashes), &phase);
+        for (int i = 0; i < 5; i++) p = get8(get8(p, &saved[i].v), &saved[i].target);
+        p = get8(p, &nv);
+    }
+    if (nv < 0 || nv > WW_AUDIO_MAX_VOICES || n != SAVE_FIXED + (size_t)nv * SAVE_VOICE ||
+        cursor != grid(a, st->step) || splashes < 0 || !(phase >= 0.0))
+        return ww_error_set(err, WW_E_RANGE, NULL, 0, 0,
+                            "the sound track's state does not fit this scene");
+    voice vs[WW_AUDIO_MAX_VOICES];
+    for (int i = 0; i < nv; i++) {
+        int64_t clip;
+        p = get8(get8(get8(get8(p, &clip), &vs[i].n0), &vs[i].gl), &vs[i].gr);
+        vs[i].clip = (int)clip;
+        if (clip < 0 || clip >= WW_SOUND_COUNT + a->nsplash || clip == WW_SOUND_SPLASH ||
+            vs[i].n0 > cursor)
+            return ww_error_set(err, WW_E_RANGE, NULL, 0, 0,
+                                "the sound track's state names a sound this scene does not have");
+    }
+    a->cursor = cursor;
+    a->splashes = splashes;
+    a->eng_phase = phase;
+    for (int i = 0; i < 5; i++) all[i]->v = saved[i].v, all[i]->target = saved[i].target;
+    /* the tails, added in the order the full run added them (after the reels, before the
+     * loops), so every sample's float sum is the same */
+    a->nvoices = 0;
+    for (int i = 0; i < nv; i++) {
+        const ww_clip *c = voice_clip(a, vs[i].clip);
+        add_clip(a, c, vs[i].n0, vs[i].gl, vs[i].gr);
+        remember_voice(a, c, vs[i].n0, vs[i].gl, vs[i].gr);
+    }
     return WW_OK;
 }
 

@@ -42,6 +42,19 @@ ww_result ww_audio_new(const ww_scene *sc, int64_t first_step, int64_t last_step
                        ww_error *err);
 /* after each step: the step's events, the camera, the boat's speed, above or below water */
 void ww_audio_step(ww_audio *a, const ww_scene *sc, const ww_state *st);
+/* one-shots a checkpoint remembers as still sounding; past this, a checkpoint holds no sound */
+#define WW_AUDIO_MAX_VOICES 256
+
+/* the synth's state after the last step fed (checkpoints, render/checkpoint.h): the loops' levels
+ * and phase, the splash counter and the one-shots still sounding. With buf NULL, the size;
+ * 0 when it cannot be kept (more than WW_AUDIO_MAX_VOICES one-shots were sounding at once).
+ * ww_audio_restore, on a fresh track of the same scene whose first step is at or after st's,
+ * makes it go on as the saved one would (st: the checkpoint's state); WW_E_RANGE when the
+ * bytes do not fit this scene. A track that only listens (first = last step) is what
+ * `simulate --checkpoint-every` feeds. */
+size_t ww_audio_save(ww_audio *a, unsigned char *buf, size_t cap);
+ww_result ww_audio_restore(ww_audio *a, const ww_state *st, const unsigned char *buf, size_t n,
+                           ww_error *err);
 /* once: the mix is converted in place and freed */
 ww_result ww_audio_write(ww_audio *a, const char *path, ww_error *err);
 void ww_audio_free(ww_audio *a);

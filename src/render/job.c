@@ -26,6 +26,8 @@
 #include "io/writers.h"
 #include "io/y4m.h"
 #include "render/audio.h"
+#include "render/checkpoint.h"
+#include "render/prefix.h"
 #include "sim/state.h"
 #include "sim/step.h"
 
@@ -315,6 +317,31 @@ static ww_result advance(const ww_scene *sc, job *j, int64_t step, ww_error *err
     return WW_OK;
 }
 
+static void hear_step(void *audio, const ww_scene *sc, const ww_state *st) {
+    ww_audio_step(audio, sc, st);
+}
+
+/* the prefix: from step 0, or from the checkpoint's state and sound, to the first frame's step,
+ * with its progress line; a signal stops it (the loop then stops at once) */
+static ww_result step_prefix(const ww_scene *sc, job *j, ww_error *err) {
+    const ww_job_opts *o = j->o;
+    ww_result r = WW_OK;
+    WW_ASSERT(!o->from || o->from->step <= o->first * sc->steps_per_frame);
+    if (o->from) {
+        ww_state_copy(j->st, o->from->st);
+        if (j->audio) r = ww_audio_restore(j->audio, j->st, o->from->sound, o->from->sound_bytes, err);
+        if (r) return r;
+    }
+    ww_steps_progress p;
+    ww_steps_progress_begin(&p, o->progress == WW_PROGRESS_ON ||
+                                    (o->progress == WW_PROGRESS_AUTO && !o->quiet && isatty(2)),
+                            "simulating the prefix", j->st->step, o->first * sc->steps_per_frame);
+    r = ww_prefix_advance(sc, j->st, o->first * sc->steps_per_frame, j->audio ? hear_step : NULL,
+                          j->audio, &p, &job_signal, err);
+    ww_steps_progress_end(&p);
+    return r;
+}
+
 /* ---- resume -------------------------------------------------------------------------------- */
 
 /* frame f is on disk, whole (an atomic rename published it; the check catches files copied or
@@ -582,7 +609,7 @@ ww_result ww_job_run(const ww_scene *sc, const ww_job_opts *o, ww_job_stats *s, 
     if ((r = job_open(&j, s, err))) goto done;
     /* the prefix is stepped, not rendered (and heard by the sound track, not kept) */
     double t0 = ww_now_seconds();
-    if ((r = advance(sc, &j, o->first * sc->steps_per_frame, err))) goto done;
+    if ((r = step_prefix(sc, &j, err))) goto done;
     s->prefix_s = ww_now_seconds() - t0;
     if ((r = job_loop(&j, s, err))) goto done;
     if (job_signal) {

@@ -47,6 +47,9 @@ typedef struct ww_job_opts {
     ww_progress progress;
     const char *stats_path;   /* --stats FILE.jsonl: one line per frame with its timings; NULL: none */
     const char *audio_path;   /* --audio FILE.wav: the sound track of the slice; NULL: none */
+    const struct ww_checkpoint *from; /* --from-checkpoint: start from its state (and sound), at
+                               * or before the first frame's step (render/checkpoint.h); NULL:
+                               * from step 0 */
 } ww_job_opts;
 
 typedef struct ww_job_stats {

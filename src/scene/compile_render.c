@@ -104,8 +104,10 @@ void ww_render_defaults(ww_render_desc *d) {
     /* murk and the distortion blur what is refracted: half the resolution costs a quarter */
     d->refraction_scale = 0.5;
     d->reflection = (ww_reflection_desc){.on = 1, .scale = 0.5};
+    /* the blur at a quarter of the frame draws the glow it draws at half (pass_bloom.c matches
+     * the kernel) for a third of the time */
     d->bloom = (ww_bloom_desc){.on = 1, .threshold = 1.0, .strength = 0.6, .passes = 3,
-                               .scale = 0.5};
+                               .scale = 0.25};
     /* decay 0.985: at 0.95 the 48th sample, the light's end of the march, weighed 0.95^48 = 9%
      * of the first, so the sum was the mask around the pixel: a glow, in which an occluder in
      * front of the sun cast no ray. 0.985^48 = 48% keeps the light's end in the sum (Mitchell's

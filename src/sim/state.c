@@ -18,6 +18,8 @@ static size_t field_bytes(size_t elem, long long count) {
 
 static size_t header_bytes(void) { return (sizeof(ww_state) + 15u) & ~(size_t)15u; }
 
+size_t ww_state_arrays_offset(void) { return header_bytes(); }
+
 /* point the field pointers into the block that follows the header */
 static void bind_fields(const ww_scene *sc, ww_state *st) {
     unsigned char *p = (unsigned char *)st + header_bytes();

@@ -84,6 +84,10 @@ void ww_state_copy(ww_state *dst, const ww_state *src);
 uint64_t ww_state_hash(const ww_scene *sc, const ww_state *st);
 /* one JSON object (no newline): t, step, camera, sun and every field */
 void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to);
+/* where the arrays start in the block (a checkpoint stores the bytes from here to st->bytes:
+ * the header before them holds pointers, which are the process's own and are bound again on
+ * load by ww_state_alloc) */
+size_t ww_state_arrays_offset(void);
 /* 0 when every value is finite; otherwise fills err naming the field, index and step */
 ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err);
 
