@@ -45,7 +45,7 @@ TEST_PROC(farm_scripts_parse) {
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("farm_parse"));
     snprintf(err, sizeof err, "%s/err.txt", dir);
     const char *scripts[] = {"lib.sh", "check-parallel.sh", "check-slurm.sh", "check-ssh.sh", "parallel.sh",
-                             "slurm/submit.sh", "slurm/render.sbatch", "slurm/sweep.sbatch",
+                             "slurm/submit.sh", "slurm/render.sbatch", "slurm/sweep.sbatch", "slurm/checkpoints.sbatch",
                              "slurm/join.sbatch"};
     for (size_t i = 0; i < sizeof scripts / sizeof scripts[0]; i++) {
         snprintf(cmd, sizeof cmd, "sh -n scripts/farm/%s", scripts[i]);

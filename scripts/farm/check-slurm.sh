@@ -7,7 +7,8 @@
 # its join job, waits for them (squeue, at most FARM_TIMEOUT s), and holds the joined result to
 # one process byte for byte (frames, audio.wav, sweep.jsonl, sweep.csv, contact sheet,
 # thumbnails). The render's task 3 is first left out: its join must fail naming slice 3, and
-# task 3 submitted alone then completes the set. The daemons it started are stopped on the way
+# task 3 submitted alone then completes the set. The render is also run from checkpoints (a
+# simulate job, the array after it), the same bytes again. The daemons it started are stopped on the way
 # out, whatever happens.
 #
 # Environment: WW_BIN, FARM_SIZE (160x90), FARM_FRAMES (24), FARM_TIMEOUT (600).
@@ -164,7 +165,10 @@ t0=$(date +%s)
 r=$(sh "$here/slurm/submit.sh" --array 0-2 render "$work/par" 4 "$scene" --size "$size" --frames "0:$frames" --quiet)
 # shellcheck disable=SC2086
 s=$(sh "$here/slurm/submit.sh" sweep "$work/sweep-par" "$scene" $sweep_args)
-say "submitted render tasks 0-2 of 4: $r; sweep: $s"
+# the same render from checkpoints: one job writes one every 24 steps (6 frames, a slice), the
+# 4 slices start after it, each from the checkpoint at its first frame
+c=$(sh "$here/slurm/submit.sh" --checkpoint-every 24 render "$work/ck" 4 "$scene" --size "$size" --frames "0:$frames" --quiet)
+say "submitted render tasks 0-2 of 4: $r; sweep: $s; render from checkpoints: $c"
 set -- $r
 first_join=$4
 wait_jobs "$2" "$4"
@@ -174,8 +178,9 @@ grep -q "^slice 3/4: missing" "$work/par/logs/ww-join-$4.out" ||
     { say "FAIL: the join did not name the missing slice 3"; exit 1; }
 r=$(sh "$here/slurm/submit.sh" --array 3 render "$work/par" 4 "$scene" --size "$size" --frames "0:$frames" --quiet)
 say "resubmitted task 3: $r"
-set -- $r $s
-wait_jobs "$2" "$4" "$6" "$8"
+set -- $r $s $c
+wait_jobs "$2" "$4" "$6" "$8" "${10}" "${12}" "${14}"
+ck_join=${14}
 say "all jobs left the queue after $(($(date +%s) - t0)) s"
 # the job records, one line per array task and join: all COMPLETED but the first join
 bad=0
@@ -192,10 +197,13 @@ done <"$T/jobcomp.txt" | sort -k2,2n -k5,5n
 n=$(wc -l <"$T/jobcomp.txt")
 failed=$(grep -c "JobState=FAILED" "$T/jobcomp.txt" || true)
 done_=$(grep -c "JobState=COMPLETED" "$T/jobcomp.txt" || true)
-say "$n job records: $done_ completed, $failed failed (want 23: 4 render tasks, 16 sweep tasks and 2 joins completed, the first join failed)"
-[ "$n" -eq 23 ] && [ "$done_" -eq 22 ] && [ "$(state "$first_join")" = FAILED ] || bad=1
+say "$n job records: $done_ completed, $failed failed (want 29: 8 render tasks, 16 sweep tasks, 1 checkpoint job and 3 joins completed, the first join failed)"
+[ "$n" -eq 29 ] && [ "$done_" -eq 28 ] && [ "$(state "$first_join")" = FAILED ] || bad=1
 [ "$bad" = 0 ] || { say "FAIL: not the jobs expected (logs: $work/par/logs, $work/sweep-par/logs)"; exit 1; }
 
 farm_same_render "$work/one" "$work/par"
+say "from checkpoints: $(ls "$work/ck/checkpoints" | grep -c '\.wwck$') checkpoints ($(cat "$work/ck/checkpoints"/*.wwck | wc -c) bytes), join $(state "$ck_join")"
+grep -q -- "--from-checkpoint" "$work/ck/render.jobs" || { say "FAIL: the slices do not start from checkpoints"; exit 1; }
+farm_same_render "$work/one" "$work/ck"
 farm_same_sweep "$work/sweep-one" "$work/sweep-par"
 say "PASSED: the Slurm run's frames, sound track, sweep.jsonl and thumbnails are one process's bytes"

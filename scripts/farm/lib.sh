@@ -66,3 +66,8 @@ farm_same_sweep() {
     [ "$_bad" = 0 ] && echo "  same bytes: sweep.jsonl ($(wc -l <"$2/sweep.jsonl") points), sweep.csv, contact sheet, $_n thumbnails"
     return "$_bad"
 }
+
+# one word quoted for sh: 'it'\''s'
+farm_q() {
+    printf "'%s'" "$(printf '%s' "$1" | sed "s/'/'\\\\''/g")"
+}
