@@ -11,6 +11,7 @@
 #   make bench      speed and memory figures (not part of test)
 #   make fuzz       libFuzzer on every reader, FUZZ_SECONDS each (make fuzz-NAME: one of them)
 #   make soak       one hour of simulated time at 120 Hz with every system on (not part of test)
+#   make farm-test  a real one-node Slurm and parallel over ssh here, joined, = one process
 
 BUILD   ?= build
 CC      ?= cc
@@ -48,7 +49,7 @@ BIN     ?= waterworld
 # the test runner runs this many tests at once (default: the CPU count)
 JOBS    ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps demo review test unit asan test-long golden bench fuzz soak clean help
+.PHONY: all deps demo review test unit asan test-long golden bench fuzz soak farm-test clean help
 all: $(BIN)
 
 # V=1 shows the full command lines
@@ -222,10 +223,23 @@ soak: $(BIN)
 	./$(BIN) simulate $(SOAK_SCENE) --set time.dt=1/120 --set time.fps=30 \
 	    --set time.duration=$(SOAK_SECONDS) --stats
 
+# a one-node Slurm cluster started here on 127.0.0.1 (munged, slurmctld, slurmd as root, stopped
+# at the end): a 4-task array render of scenes/lake.yaml with sound and a 16-point sweep with
+# thumbnails, each joined by a dependent job, held byte for byte to one process; then GNU
+# parallel's --sshlogin against an sshd started the same way (scripts/farm/check-slurm.sh,
+# check-ssh.sh; docs/farm.md). A skip (exit 77 of a script) says why and is not a pass.
+farm-test: $(BIN)
+	@sh scripts/install-deps.sh --farm
+	@for c in slurm ssh; do \
+	    WW_BIN=./$(BIN) sh scripts/farm/check-$$c.sh; rc=$$?; \
+	    if [ $$rc -eq 77 ]; then echo "farm-test: $$c skipped (the reason is above), not passed"; \
+	    elif [ $$rc -ne 0 ]; then exit $$rc; fi; \
+	done
+
 clean:
 	rm -rf build $(BIN)
 
 help:
-	@sed -n '1,14p' Makefile
+	@sed -n '1,15p' Makefile
 
 -include $(LIB_OBJ:.o=.d) $(TEST_OBJ:.o=.d) $(BUILD)/src/cli/main.d

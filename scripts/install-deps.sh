@@ -1,5 +1,5 @@
 #!/bin/sh
-# install-deps.sh [--fuzz] - install the Debian packages waterworld builds, runs and tests with,
+# install-deps.sh [--fuzz|--farm] - install the Debian packages waterworld builds, runs and tests with,
 # on Debian 12 (bookworm), 13 (trixie) and unstable (sid).
 # Idempotent: installs only what is missing, and says nothing when everything is there.
 # Needs root (or sudo) only when something is missing.
@@ -10,10 +10,10 @@ set -eu
 # run:   EGL (glvnd + Mesa), llvmpipe (libgl1-mesa-dri)
 # tests: the outside tools our outputs are checked with: ImageMagick (compare), OpenImageIO
 #        (oiiotool, idiff), ffmpeg (ffprobe, make-video.sh), Chromium (the HTML report's picture),
-#        and pixelmatch under Node.js (below)
+#        and pixelmatch under Node.js (below); GNU parallel (the farm's job lines, run and joined)
 PKGS="gcc make libc6-dev pkg-config libyaml-dev libcglm-dev libstb-dev libopenexr-dev zlib1g-dev
 libegl-dev libgl-dev libegl1 libegl-mesa0 libgl1-mesa-dri
-imagemagick openimageio-tools ffmpeg chromium"
+imagemagick openimageio-tools ffmpeg chromium parallel"
 # optional, where the release has it: OSMesa, the second backend (Mesa 25.1 removed it, so
 # Debian 12 and 13 have it and unstable does not); without it EGL alone runs and the tests
 # that need OSMesa are skipped with the reason
@@ -46,6 +46,13 @@ fuzz_pkgs() {
 }
 if [ "$fuzz" = 1 ]; then PKGS=$(fuzz_pkgs); OPTIONAL=""; fi
 
+# `make farm-test` only: a one-node Slurm cluster and an sshd on this machine
+# (scripts/farm/check-slurm.sh, check-ssh.sh start the daemons themselves, on 127.0.0.1; on a
+# machine with systemd the packages also enable their own services)
+farm=0
+[ "${1:-}" = "--farm" ] && farm=1
+if [ "$farm" = 1 ]; then PKGS="slurmctld slurmd slurm-client munge parallel openssh-server"; OPTIONAL=""; fi
+
 missing=""
 for p in $PKGS; do installed "$p" || missing="$missing $p"; done
 # optional packages: asked for only when the lists say the release has them
@@ -62,7 +69,7 @@ want_optional
 
 # the reference the compare tests check against: Node.js and pixelmatch 7.2.0 from the npm
 # registry, hash-pinned (scripts/install-pixelmatch.sh; quiet when there, a skip without network)
-pixelmatch() { [ "$fuzz" = 1 ] || sh "$(dirname "$0")/install-pixelmatch.sh"; }
+pixelmatch() { [ "$fuzz" = 1 ] || [ "$farm" = 1 ] || sh "$(dirname "$0")/install-pixelmatch.sh"; }
 [ -z "$missing" ] && { pixelmatch; exit 0; }
 
 SUDO=""
