@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 
 #include "core/hash.h"
+#include "render/checkpoint.h"
 #include "core/readfile.h"
 #include "core/shword.h"
 #include "io/wav.h"
@@ -18,7 +19,6 @@
 #include "sim/step.h"
 
 #define RECORD_MAX_BYTES (64 * 1024)
-#define SCENE_MAX_BYTES (64u << 20) /* the scene and script files hashed, as the loader caps */
 
 /* a whole number >= 0 spanning all of [s, end) */
 static int parse_whole(const char *s, const char *end, int64_t *v) {
@@ -68,23 +68,14 @@ int64_t ww_slice_sample(const ww_scene *sc, int64_t step) {
 
 /* ---- the run's identity -------------------------------------------------------------------- */
 
-static uint64_t hash_file(uint64_t h, const char *path) {
-    unsigned char *data = NULL;
-    size_t len = 0;
-    ww_error e = {0};
-    if (!path) return ww_hash_bytes(h, "-", 1);
-    if (ww_file_read_max(path, SCENE_MAX_BYTES, SCENE_MAX_BYTES, &data, &len, &e)) return h;
-    h = ww_hash_bytes(h, data, len);
-    free(data);
-    return h;
-}
-
-/* FNV-1a of what the scene is made from: its file, the script's, the --set texts, and the
- * state hash at step 0 (what the loader made of them, files it read included) */
+/* what the scene is made from, as a checkpoint names it (its file, the script's, the --set
+ * texts: render/checkpoint.h), and the state hash at step 0 (what the loader made of them, the
+ * files it read included) */
 static uint64_t scene_hash(const ww_slice_opts *so, const ww_scene *sc) {
-    uint64_t h = hash_file(WW_HASH_INIT, so->scene_path);
-    h = hash_file(h, so->script);
-    for (int k = 0; k < so->nsets; k++) h = ww_hash_bytes(h, so->sets[k].text, strlen(so->sets[k].text) + 1);
+    uint64_t h = WW_HASH_INIT;
+    ww_error e = {0};
+    if (ww_checkpoint_scene_hash(so->scene_path, so->script, so->sets, so->nsets, &h, &e))
+        h = WW_HASH_INIT; /* loaded a moment ago: the state hash below still tells runs apart */
     ww_state *st = ww_state_new(sc);
     if (st) {
         uint64_t s = ww_state_hash(sc, st);
