@@ -438,6 +438,26 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     free(g);
 }
 
+/* the lights' uniforms (common.glsl) in program prog */
+static light_locs find_lights(const ww_gl *gl, GLuint prog) {
+    return (light_locs){ww_gfx_uniform(gl, prog, "u_nlights"), ww_gfx_uniform(gl, prog, "u_light_pos"),
+                        ww_gfx_uniform(gl, prog, "u_light_dir"),
+                        ww_gfx_uniform(gl, prog, "u_light_color"),
+                        ww_gfx_uniform(gl, prog, "u_light_param"),
+                        ww_gfx_uniform(gl, prog, "u_light_scatter")};
+}
+
+/* the first n of this frame's lights into the program in use, whose lights' uniforms are l */
+static void put_lights(const ww_geometry *g, const ww_gl *gl, const light_locs *l, int n) {
+    gl->Uniform1i(l->n, n);
+    if (n <= 0) return;
+    gl->Uniform3fv(l->pos, n, &g->light_pos[0][0]);
+    gl->Uniform3fv(l->dir, n, &g->light_dir[0][0]);
+    gl->Uniform3fv(l->color, n, &g->light_color[0][0]);
+    gl->Uniform4fv(l->param, n, &g->light_param[0][0]);
+    gl->Uniform1fv(l->scatter, n, g->light_scatter);
+}
+
 /* builds the program for draws of `kind` (GEOM_*) and finds its uniforms */
 static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, int kind,
                               ww_error *err) {
@@ -493,12 +513,7 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     v->mat_ks = ww_gfx_uniform(gl, p, "u_mat_ks");
     v->mat_ke = ww_gfx_uniform(gl, p, "u_mat_ke");
     v->mat_map = ww_gfx_uniform(gl, p, "u_mat_map");
-    v->lights.n = ww_gfx_uniform(gl, p, "u_nlights");
-    v->lights.pos = ww_gfx_uniform(gl, p, "u_light_pos");
-    v->lights.dir = ww_gfx_uniform(gl, p, "u_light_dir");
-    v->lights.color = ww_gfx_uniform(gl, p, "u_light_color");
-    v->lights.param = ww_gfx_uniform(gl, p, "u_light_param");
-    v->lights.scatter = ww_gfx_uniform(gl, p, "u_light_scatter");
+    v->lights = find_lights(gl, p);
     return WW_OK;
 }
 
@@ -1143,14 +1158,7 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
         gl->Uniform3f(v->shadow_filter, 1.0f / (float)size, (float)sc->render.shadows.softness,
                       2.0f / (row * (float)size));
     }
-    gl->Uniform1i(v->lights.n, mode == WW_GEOM_SHADOW ? 0 : g->nlights);
-    if (g->nlights > 0 && mode != WW_GEOM_SHADOW) {
-        gl->Uniform3fv(v->lights.pos, g->nlights, &g->light_pos[0][0]);
-        gl->Uniform3fv(v->lights.dir, g->nlights, &g->light_dir[0][0]);
-        gl->Uniform3fv(v->lights.color, g->nlights, &g->light_color[0][0]);
-        gl->Uniform4fv(v->lights.param, g->nlights, &g->light_param[0][0]);
-        gl->Uniform1fv(v->lights.scatter, g->nlights, g->light_scatter);
-    }
+    put_lights(g, gl, &v->lights, mode == WW_GEOM_SHADOW ? 0 : g->nlights);
     if (g->caustics == 2) {
         gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_CAUSTIC_SET);
         gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
@@ -1228,18 +1236,8 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
 void ww_geometry_lights_set(ww_geometry *g, const ww_gl *gl, const ww_frame *f, GLuint prog) {
     if (!g) return;
     upload_instances(g, gl, f); /* once per frame: the lights follow their parents */
-    light_locs l = {ww_gfx_uniform(gl, prog, "u_nlights"), ww_gfx_uniform(gl, prog, "u_light_pos"),
-                    ww_gfx_uniform(gl, prog, "u_light_dir"),
-                    ww_gfx_uniform(gl, prog, "u_light_color"),
-                    ww_gfx_uniform(gl, prog, "u_light_param"),
-                    ww_gfx_uniform(gl, prog, "u_light_scatter")};
-    gl->Uniform1i(l.n, g->nlights);
-    if (g->nlights <= 0) return;
-    gl->Uniform3fv(l.pos, g->nlights, &g->light_pos[0][0]);
-    gl->Uniform3fv(l.dir, g->nlights, &g->light_dir[0][0]);
-    gl->Uniform3fv(l.color, g->nlights, &g->light_color[0][0]);
-    gl->Uniform4fv(l.param, g->nlights, &g->light_param[0][0]);
-    gl->Uniform1fv(l.scatter, g->nlights, g->light_scatter);
+    light_locs l = find_lights(gl, prog);
+    put_lights(g, gl, &l, g->nlights);
 }
 
 /* the chest's glow column: additive light drawn after the sky, never into depth. Drawn before
