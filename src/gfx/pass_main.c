@@ -55,15 +55,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     ww_gfx_begin_pass(gl, p->rt);
     if (p->rt->fbo_ms) gl->BindFramebuffer(GL_FRAMEBUFFER, p->rt->fbo_ms); /* post: MSAA */
     gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    gl->ClearDepth(1.0);
-    gl->DepthMask(GL_TRUE);
-    if (r->stencil) { /* stencilled shadows: only their scenes have a stencil to clear */
-        gl->ClearStencil(0);
-        gl->StencilMask(0xFF);
-        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    } else {
-        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    }
+    ww_gfx_clear_scene(r);
     if (f->sc->render.water.alpha_blend && !f->underwater) {
         /* seed 004: the water blends over whatever lies behind it, the sky included */
         if (r->geometry) {

@@ -75,15 +75,7 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         plane[0] = 0.0f; plane[1] = 1.0f; plane[2] = 0.0f;
         plane[3] = (float)(-(level - p->crest));
     }
-    gl->ClearDepth(1.0);
-    gl->DepthMask(GL_TRUE);
-    if (r->stencil) { /* stencilled shadows: only their scenes have a stencil to clear */
-        gl->ClearStencil(0);
-        gl->StencilMask(0xFF);
-        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    } else {
-        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    }
+    ww_gfx_clear_scene(r);
     if (r->geometry)
         ww_geometry_draw(r->geometry, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
     /* the shadows seen through the surface from above. From below, the prepass holds what

@@ -214,6 +214,9 @@ const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id);
 /* renderer.c: the state every pass starts from: its framebuffer bound, viewport, no blending,
  * culling, dithering or depth test */
 void ww_gfx_begin_pass(const ww_gl *gl, const ww_rt *rt);
+/* renderer.c: the bound framebuffer of a pass that draws the scene cleared: colour (to the
+ * clear colour set), depth to 1, and the stencil where the scene's shadows keep one */
+void ww_gfx_clear_scene(const ww_renderer *r);
 
 /* targets.c: textures and a framebuffer for a pass description; WW_E_GL when incomplete */
 ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww_error *err);

@@ -49,6 +49,19 @@ void ww_gfx_begin_pass(const ww_gl *gl, const ww_rt *rt) {
     gl->Disable(GL_FRAMEBUFFER_SRGB);
 }
 
+void ww_gfx_clear_scene(const ww_renderer *r) {
+    const ww_gl *gl = r->gl;
+    gl->ClearDepth(1.0);
+    gl->DepthMask(GL_TRUE);
+    if (r->stencil) { /* stencilled shadows: only their scenes have a stencil to clear */
+        gl->ClearStencil(0);
+        gl->StencilMask(0xFF);
+        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    } else {
+        gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+}
+
 void ww_renderer_free(ww_renderer *r) {
     if (!r) return;
     const ww_gl *gl = r->gl;
