@@ -238,8 +238,8 @@ TEST_IMAGE(post_bloom_toggle) {
     unsigned char *bright = calloc(n, 1), *near = calloc(n, 1);
     if (bright && near) {
         for (int y = 0; y < b.h; y++)
-            for (int x = 0; x < b.w; x++) bright[(size_t)y * b.w + x] = ww_test_pic_luma(&b, x,
-                                                                                         y) >= BLOOM_BRIGHT_LUMA;
+            for (int x = 0; x < b.w; x++)
+                bright[(size_t)y * b.w + x] = ww_test_pic_luma(&b, x, y) >= BLOOM_BRIGHT_LUMA;
         dilate(bright, near, b.w, b.h, BLOOM_REACH_PX);
         masked m = count_in_mask(&a, &b, near, 0);
         fprintf(stderr, "(%ld changed, %ld near bright of %ld px) ", m.changed, m.in_mask, (long)n);
