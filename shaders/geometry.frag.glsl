@@ -17,7 +17,8 @@
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture;
-// WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns, below);
+// WW_FISH_PATTERNS 1 in the build that draws the fish species' slots (their colour patterns,
+// below); WW_MAT_MAP 1 in the build that draws an OBJ submesh with a map_Kd (geometry.c);
 // WW_LIGHT_SCATTER 1 when a light glows in the water (common.glsl: the lights' in-scattering
 // along the part of the view ray under water).
 
@@ -26,6 +27,9 @@
 #endif
 #ifndef WW_FISH_PATTERNS
 #define WW_FISH_PATTERNS 0
+#endif
+#ifndef WW_MAT_MAP
+#define WW_MAT_MAP 0
 #endif
 
 #ifndef WW_GEOM_MODE
@@ -44,7 +48,7 @@ uniform vec3 u_extinction;     // sunlight lost per metre of water it crosses, 1
 uniform float u_caustics;      // strength (0 off)
 // the lights' uniforms and their range window: common.glsl (the water shares them)
 // the OBJ material of the submesh drawn (gfx/geometry.c; the identity for every other mesh)
-uniform vec4 u_mat_kd;         // Kd, multiplying the instance's albedo; a: 1 times map_Kd
+uniform vec4 u_mat_kd;         // Kd, multiplying the instance's albedo (times map_Kd: WW_MAT_MAP)
 uniform vec4 u_mat_ks;         // Ks and Ns (a): Blinn-Phong; Ns 0: the instance's own specular
 uniform vec4 u_mat_ke;         // Ke, emitted radiance added unlit, linear RGB; a: d (opacity)
 uniform sampler2D u_mat_map;   // map_Kd, sRGB (read as linear)
@@ -326,7 +330,9 @@ void main() {
     vec3 n = normalize(v_normal);
     if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
     vec3 albedo = v_color.rgb * u_mat_kd.rgb;
-    if (u_mat_kd.a > 0.5) albedo *= texture(u_mat_map, v_uv).rgb;
+#if WW_MAT_MAP
+    albedo *= texture(u_mat_map, v_uv).rgb;
+#endif
 #if WW_FISH_PATTERNS
     if (v_pattern > 0.5) albedo = ww_fish_pattern(albedo, v_mesh, v_pattern);
 #endif

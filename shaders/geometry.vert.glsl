@@ -5,7 +5,7 @@
 // Fish swim: a travelling wave runs down the body, weighted by the tail weight in uv.x
 // (gfx/meshgen.h), swinging vertices sideways (mesh z); a fish's phase and amplitude come per
 // instance, so the whole school is one draw.
-// Defines: WW_FISH_PATTERNS 1 in scenes with objects.fish.species (the species' colour patterns
+// Defines: WW_FISH_PATTERNS 1 in the build that draws the fish species (their colour patterns
 // in geometry.frag.glsl need the mesh-space position).
 // Plants sway (WW_SWAY, defined only in scenes with a swaying model): the water's surge pushes a
 // plant sideways along u_sway_axis.zw by s = A w^2 sin(phase - lag w), w its height above the

@@ -88,6 +88,11 @@ static int slot_casts(int s) {
     return s != SLOT_SEABED && s != SLOT_BUBBLE && s != SLOT_COLUMN;
 }
 
+/* the slots of the fish species, whose instances carry a colour pattern */
+static int slot_patterned(int s) {
+    return s == SLOT_FISH_SLIM || s == SLOT_FISH_DEEP || s == SLOT_FISH_LONG;
+}
+
 /* a bubble's squared distance from the camera and its index, for the back-to-front order */
 typedef struct bubble_order {
     double d2;
@@ -122,8 +127,13 @@ typedef struct light_locs {
 /* one build of the geometry program per kind of draw (geometry.frag.glsl's WW_GEOM_MODE):
  * llvmpipe runs both arms of a branch for every pixel, so the lit seabed paid for the bubble's
  * and the glow column's code while it was one program switched by a uniform (a fifth of the
- * lake's prepass) */
-enum { GEOM_DEPTH, GEOM_LIT, GEOM_GLOW, GEOM_BUBBLE, GEOM_PROGS };
+ * lake's prepass). For the same reason the lit draws have three builds: plain, with the
+ * material's texture (WW_MAT_MAP: an OBJ submesh with map_Kd) and with the fish species'
+ * patterns (WW_FISH_PATTERNS: their slots), so the rest pay for neither */
+enum { GEOM_DEPTH, GEOM_LIT, GEOM_GLOW, GEOM_BUBBLE, GEOM_LIT_MAP, GEOM_LIT_FISH, GEOM_PROGS };
+static const int GEOM_MODE[GEOM_PROGS] = {
+    [GEOM_DEPTH] = 0, [GEOM_LIT] = 1,     [GEOM_GLOW] = 2,
+    [GEOM_BUBBLE] = 3, [GEOM_LIT_MAP] = 1, [GEOM_LIT_FISH] = 1};
 
 typedef struct geom_prog {
     GLuint prog; /* 0: the scene never draws this kind */
@@ -462,15 +472,15 @@ static void put_lights(const ww_geometry *g, const ww_gl *gl, const light_locs *
 static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, int kind,
                               ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
-    char defs[320];
+    char defs[360];
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_NWAVES %d\n#define WW_RIPPLES 0\n"
-             "#define WW_FADE 1\n"
-             "#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_FADE 1\n#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n"
+             "#define WW_MAT_MAP %d\n#define WW_LIGHT_SCATTER %d\n"
              "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n%s",
              ww_water_shader_model(sc->wave_model), ww_water_wave_count(sc), g->caustics,
-             sc->fish.on && sc->fish.nspecies > 0, ww_lights_scatter_on(sc), g->sway, kind,
-             sc->render.nlights > 0, ww_sky_map_define(sc));
+             kind == GEOM_LIT_FISH, kind == GEOM_LIT_MAP, ww_lights_scatter_on(sc), g->sway,
+             GEOM_MODE[kind], sc->render.nlights > 0, ww_sky_map_define(sc));
     geom_prog *v = &g->var[kind];
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &v->prog, err);
@@ -522,6 +532,16 @@ static const geom_prog *use(ww_geometry *g, const ww_gl *gl, int kind) {
     g->cur = &g->var[kind];
     gl->UseProgram(g->cur->prog);
     return g->cur;
+}
+
+/* while a lit program is in use, switches to the lit build `kind` (GEOM_LIT, _MAP, _FISH) when
+ * the scene has it, else to the plain one; a depth-only draw keeps its program */
+static void use_lit(ww_geometry *g, const ww_gl *gl, int kind) {
+    const geom_prog *c = g->cur;
+    if (c != &g->var[GEOM_LIT] && c != &g->var[GEOM_LIT_MAP] && c != &g->var[GEOM_LIT_FISH])
+        return;
+    if (!g->var[kind].prog) kind = GEOM_LIT;
+    if (c != &g->var[kind]) use(g, gl, kind);
 }
 
 /* the GL texture of the scene's image `index` (a material's map_Kd), uploaded the first time a
@@ -663,6 +683,9 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     /* the glow column's and the bubbles' own programs, in the scenes that draw them */
     if (rc == WW_OK && g->slot[SLOT_COLUMN].cap > 0) rc = make_program(g, gl, sc, GEOM_GLOW, err);
     if (rc == WW_OK && g->slot[SLOT_BUBBLE].cap > 0) rc = make_program(g, gl, sc, GEOM_BUBBLE, err);
+    if (rc == WW_OK && g->nimage > 0) rc = make_program(g, gl, sc, GEOM_LIT_MAP, err);
+    if (rc == WW_OK && sc->fish.on && sc->fish.nspecies > 0)
+        rc = make_program(g, gl, sc, GEOM_LIT_FISH, err);
     if (rc != WW_OK) {
         ww_geometry_free(g, gl);
         return rc;
@@ -1032,37 +1055,45 @@ static int draw_mesh(const ww_gl *gl, const gmesh *m) {
 
 /* the material uniforms (geometry.frag.glsl): an OBJ submesh's, or with mt NULL the identity
  * every other mesh is drawn with (the instance's own albedo and specular, no emission, opaque) */
-static void set_material(const ww_geometry *g, const ww_gl *gl, const ww_material *mt) {
-    GLuint tex = 0;
-    if (mt && mt->texture >= 0 && mt->texture < g->nimage) tex = g->image_tex[mt->texture];
+static void put_material(const ww_gl *gl, const geom_prog *v, const ww_material *mt,
+                         GLuint tex) {
     if (!mt) {
-        gl->Uniform4f(g->cur->mat_kd, 1.0f, 1.0f, 1.0f, 0.0f);
-        gl->Uniform4f(g->cur->mat_ks, 0.0f, 0.0f, 0.0f, 0.0f);
-        gl->Uniform4f(g->cur->mat_ke, 0.0f, 0.0f, 0.0f, 1.0f);
+        gl->Uniform4f(v->mat_kd, 1.0f, 1.0f, 1.0f, 0.0f);
+        gl->Uniform4f(v->mat_ks, 0.0f, 0.0f, 0.0f, 0.0f);
+        gl->Uniform4f(v->mat_ke, 0.0f, 0.0f, 0.0f, 1.0f);
     } else {
         const float *kd = mt->diffuse, *ks = mt->specular, *ke = mt->emission;
-        gl->Uniform4f(g->cur->mat_kd, kd[0], kd[1], kd[2], tex ? 1.0f : 0.0f);
-        gl->Uniform4f(g->cur->mat_ks, ks[0], ks[1], ks[2], fmaxf(mt->shininess, 1.0f));
-        gl->Uniform4f(g->cur->mat_ke, ke[0], ke[1], ke[2], mt->opacity);
+        gl->Uniform4f(v->mat_kd, kd[0], kd[1], kd[2], tex ? 1.0f : 0.0f);
+        gl->Uniform4f(v->mat_ks, ks[0], ks[1], ks[2], fmaxf(mt->shininess, 1.0f));
+        gl->Uniform4f(v->mat_ke, ke[0], ke[1], ke[2], mt->opacity);
     }
     gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_MATERIAL);
     gl->BindTexture(GL_TEXTURE_2D, tex);
     gl->ActiveTexture(GL_TEXTURE0);
 }
 
-/* an OBJ model by its submeshes, each with its material: the opaque ones first, then those with
- * d < 1 blended over them (depth tested, not written; within one model, in file order). The
- * depth-only shadow pass draws the whole mesh at once. */
-static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode mode) {
+/* the material for the next draw, in the lit build that reads its texture when it has one */
+static void set_material(ww_geometry *g, const ww_gl *gl, const ww_material *mt) {
+    GLuint tex = 0;
+    if (mt && mt->texture >= 0 && mt->texture < g->nimage) tex = g->image_tex[mt->texture];
+    use_lit(g, gl, tex ? GEOM_LIT_MAP : GEOM_LIT);
+    put_material(gl, g->cur, mt, tex);
+}
+
+/* model i's sway into the program in use (each build keeps its own) */
+static void set_sway(const ww_geometry *g, const ww_gl *gl, int i) {
+    if (!g->sway) return;
+    gl->Uniform4fv(g->cur->sway_loc, 1, g->obj_sway[i]);
+    gl->Uniform4fv(g->cur->sway_axis_loc, 1, g->obj_sway_axis[i]);
+}
+
+static int draw_obj(ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode mode) {
     const gmesh *m = &g->obj[i];
     const ww_mesh_data *d = g->obj_data[i];
     if (m->ninst <= 0) return 0;
-    if (g->sway) {
-        gl->Uniform4fv(g->cur->sway_loc, 1, g->obj_sway[i]);
-        gl->Uniform4fv(g->cur->sway_axis_loc, 1, g->obj_sway_axis[i]);
-    }
     if (mode == WW_GEOM_SHADOW || !d || d->nsub <= 0) {
         set_material(g, gl, NULL);
+        set_sway(g, gl, i);
         return draw_mesh(gl, m);
     }
     gl->BindVertexArray(m->vao);
@@ -1075,6 +1106,7 @@ static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode m
             if (blended != pass || sub->count == 0) continue;
             if (blended && g->stage != WW_GEOM_STAGE_NORMAL) continue; /* never blended twice */
             set_material(g, gl, mt);
+            set_sway(g, gl, i);
             if (blended) {
                 gl->Enable(GL_BLEND);
                 gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -1090,6 +1122,7 @@ static int draw_obj(const ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode m
         }
     }
     set_material(g, gl, NULL);
+    if (g->sway) gl->Uniform4f(g->cur->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f);
     return 1;
 }
 
@@ -1177,7 +1210,7 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
     }
 
     gl->Uniform1i(v->mat_map, WW_TEX_MATERIAL);
-    set_material(g, gl, NULL);
+    put_material(gl, v, NULL, 0);
 }
 
 void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
@@ -1206,6 +1239,8 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         if (s == SLOT_COLUMN || s == SLOT_BUBBLE || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW))
             continue;
         if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
+        if (g->slot[s].ninst <= 0) continue;
+        use_lit(g, gl, slot_patterned(s) ? GEOM_LIT_FISH : GEOM_LIT);
         draws += draw_mesh(gl, &g->slot[s]);
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
