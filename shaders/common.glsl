@@ -385,11 +385,14 @@ vec3 ww_lights_scatter_segment(vec3 e, vec3 p, float water_y, bool air_only, flo
     if (air_only || u_nlights == 0) return vec3(0.0);
     float he = e.y - water_y, hp = p.y - water_y, len = length(p - e);
     vec3 d = (p - e) / max(len, 1e-6);
-    if (he < 0.0 && hp < 0.0) return ww_lights_scatter(e, d, 0.0, len, rho, px);
-    if ((he >= 0.0 && hp >= 0.0) || (he >= 0.0 && !u_scatter_through)) return vec3(0.0);
-    float cross = len * he / (he - hp); // where the segment meets the plane
-    return he < 0.0 ? ww_lights_scatter(e, d, 0.0, cross, rho, px)
-                    : ww_lights_scatter(e, d, cross, len, rho, px);
+    // the part of [0, len] under the plane, empty when there is none; one call, not one per
+    // case: llvmpipe would run every call's code for every pixel
+    bool split = (he < 0.0) != (hp < 0.0);
+    float cross = split ? len * he / (he - hp) : 0.0; // where the segment meets the plane
+    vec2 t = vec2(0.0);
+    if (he < 0.0) t = vec2(0.0, hp < 0.0 ? len : cross);
+    else if (hp < 0.0 && u_scatter_through) t = vec2(cross, len);
+    return ww_lights_scatter(e, d, t.x, t.y, rho, px);
 #else
     return vec3(0.0);
 #endif
