@@ -11,8 +11,12 @@
 uniform mat4 u_inv_view_proj; // inverse of projection * camera rotation (camera at the origin)
 uniform float u_intensity;    // sky.intensity: radiance scale of the cubemap and the dome
 uniform vec4 u_below;         // (fog colour under water, 1) when the camera is under water: what
-                              // lies beyond everything drawn is water, fogged out completely
+                              // lies beyond everything drawn is water, fogged out completely.
+                              // WW_SKY_BELOW (gfx/sky.c) builds that side in: one program each
 uniform float u_below_density; // fog.below.density, 1/m (the lights' glow, WW_LIGHT_SCATTER)
+#ifndef WW_SKY_BELOW
+#define WW_SKY_BELOW 0
+#endif
 #ifdef WW_SKY_CUBEMAP
 uniform samplerCube u_cubemap; // sRGB faces, decoded to linear by the sampler
 #endif
@@ -27,16 +31,14 @@ void main() {
     // the camera sits at the origin, so a point on the far plane is a point along the ray
     vec4 p = u_inv_view_proj * vec4(v_ndc, 1.0, 1.0);
     vec3 d = normalize(p.xyz / p.w);
-    if (u_below.a > 0.5) {
-        vec3 c = u_below.rgb;
+#if WW_SKY_BELOW
+    vec3 c = u_below.rgb;
 #if WW_LIGHT_SCATTER
-        // the lights' glow along the ray, which the fog ends (common.glsl)
-        c += ww_lights_scatter(vec3(0.0), d, 0.0, 1e4, u_below_density, gl_FragCoord.xy);
+    // the lights' glow along the ray, which the fog ends (common.glsl)
+    c += ww_lights_scatter(vec3(0.0), d, 0.0, 1e4, u_below_density, gl_FragCoord.xy);
 #endif
-        o_color = vec4(c, 1.0);
-        return;
-    }
-#if defined(WW_SKY_CUBEMAP)
+    o_color = vec4(c, 1.0);
+#elif defined(WW_SKY_CUBEMAP)
     o_color = vec4(texture(u_cubemap, d).rgb * u_intensity + ww_sun_disc(d), 1.0);
 #elif defined(WW_SKY_DOME) && WW_SKY_DOME_IMAGE
     o_color = vec4(ww_sky_dome_image(d) * u_intensity + ww_sun_disc(d), 1.0);

@@ -63,7 +63,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
             ww_geometry_draw_hull_mask(r->geometry, r, f, (vec4 *)f->view_proj);
             ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         }
-        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        if ((rc = ww_sky_draw(p->sky, gl, r->empty_vao, f, err))) return rc;
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         if ((rc = ww_water_draw(p->water, r, f, err))) return rc;
         draw_bubbles(r, f);
@@ -75,7 +75,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         if (r->geometry)
             ww_geometry_draw(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
         ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
-        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        if ((rc = ww_sky_draw(p->sky, gl, r->empty_vao, f, err))) return rc;
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         draw_bubbles(r, f);
@@ -92,7 +92,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
                                WW_GEOM_PART_SEABED);
         ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL);
-        ww_sky_draw(p->sky, gl, r->empty_vao, f);
+        if ((rc = ww_sky_draw(p->sky, gl, r->empty_vao, f, err))) return rc;
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         draw_bubbles(r, f);

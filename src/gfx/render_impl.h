@@ -278,7 +278,8 @@ typedef struct ww_sky ww_sky;
  * common.glsl's WW_SKY_DOME_IMAGE and sample r->sky_dome_image */
 int ww_sky_dome_image_on(const ww_scene *sc);
 ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error *err);
-void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f);
+ww_result ww_sky_draw(ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f,
+                      ww_error *err);
 void ww_sky_free(ww_sky *s, const ww_gl *gl);
 
 /* waveblock.c: the wave field as shaders/gerstner.glsl takes it, in two std140 uniform blocks

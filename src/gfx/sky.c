@@ -24,18 +24,25 @@ static const double PEREZ_MIN_ELEV = 0.0175;
 static const double PEREZ_FADE0 = -0.06, PEREZ_FADE1 = 0.06;
 static const double PREETHAM_SCALE = 0.022; /* WW_PREETHAM_SCALE in common.glsl */
 
-struct ww_sky {
-    GLuint prog;
-    ww_sky_model model;
+/* one build of the sky program for each side of the surface the camera can be on
+ * (WW_SKY_BELOW): llvmpipe runs both arms of a branch for every pixel, so under water the fog
+ * colour paid for the clouds' noise, and above it the sky paid for the lights' glow */
+typedef struct sky_prog {
+    GLuint prog; /* 0: not built yet (built the first time a frame needs it) */
     ww_sky_locs sky;
-    GLint inv_view_proj, intensity, below, below_density, cubemap, drift;
+    GLint inv_view_proj, intensity, below, below_density, cubemap, drift, dome_image;
+} sky_prog;
+
+struct ww_sky {
+    sky_prog var[2]; /* by the camera's side: 0 above the water, 1 below */
+    char defines[160];
+    ww_sky_model model;
     ww_renderer *r;   /* its geometry holds this frame's lights (the glow under water) */
     int scatter;      /* WW_LIGHT_SCATTER: the lights glow in the water */
     GLuint cube_tex;  /* owned when this sky uploaded it (0 otherwise) */
     GLuint cube_draw; /* the cube texture drawn (owned or the renderer's) */
     GLuint dome_tex;  /* the dome's picture, owned when this sky uploaded it (0 otherwise) */
     GLuint dome_draw; /* the picture drawn (owned or the renderer's) */
-    GLint dome_image;
 };
 
 void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l) {
@@ -281,8 +288,28 @@ static ww_result upload_dome_image(const ww_gl *gl, const ww_scene *sc, GLuint *
     return WW_OK;
 }
 
-ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error *err) {
+/* builds the program for the camera's side `below` and finds its uniforms */
+static ww_result build_variant(ww_sky *s, const ww_gl *gl, const ww_scene *sc, int below,
+                               ww_error *err) {
     static const char *const includes[] = {"common.glsl", NULL};
+    sky_prog *v = &s->var[below];
+    char defs[200];
+    snprintf(defs, sizeof defs, "#define WW_SKY_BELOW %d\n%s", below, s->defines);
+    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes, defs,
+                                       &v->prog, err);
+    if (rc != WW_OK) return rc;
+    v->dome_image = ww_gfx_uniform(gl, v->prog, "u_sky_dome_image");
+    ww_sky_locs_init(gl, v->prog, sc, &v->sky);
+    v->inv_view_proj = ww_gfx_uniform(gl, v->prog, "u_inv_view_proj");
+    v->intensity = ww_gfx_uniform(gl, v->prog, "u_intensity");
+    v->below = ww_gfx_uniform(gl, v->prog, "u_below");
+    v->below_density = ww_gfx_uniform(gl, v->prog, "u_below_density");
+    v->cubemap = ww_gfx_uniform(gl, v->prog, "u_cubemap");
+    v->drift = ww_gfx_uniform(gl, v->prog, "u_drift");
+    return WW_OK;
+}
+
+ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error *err) {
     static const char *const defines[] = {[WW_SKY_GRADIENT] = NULL,
                                           [WW_SKY_CUBEMAP] = "#define WW_SKY_CUBEMAP 1\n",
                                           [WW_SKY_DOME] = "#define WW_SKY_DOME 1\n",
@@ -293,12 +320,12 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     s->model = sc->render.sky;
     s->r = r;
     s->scatter = ww_lights_scatter_on(sc);
-    char defs[160];
-    snprintf(defs, sizeof defs, "%s#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n%s",
+    snprintf(s->defines, sizeof s->defines,
+             "%s#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n%s",
              defines[s->model] ? defines[s->model] : "", s->scatter, ww_sky_dome_image_on(sc),
              ww_sky_map_define(sc));
-    ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes, defs,
-                                       &s->prog, err);
+    /* the side most frames see is built now, so a broken shader fails before the first frame */
+    ww_result rc = build_variant(s, gl, sc, 0, err);
     /* one cube texture per renderer: a second sky (the reflection's) draws the first one's */
     if (rc == WW_OK && s->model == WW_SKY_CUBEMAP) {
         if (r->sky_cubemap) {
@@ -321,47 +348,46 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
         ww_sky_free(s, gl);
         return rc;
     }
-    s->dome_image = ww_gfx_uniform(gl, s->prog, "u_sky_dome_image");
-    ww_sky_locs_init(gl, s->prog, sc, &s->sky);
-    s->inv_view_proj = ww_gfx_uniform(gl, s->prog, "u_inv_view_proj");
-    s->intensity = ww_gfx_uniform(gl, s->prog, "u_intensity");
-    s->below = ww_gfx_uniform(gl, s->prog, "u_below");
-    s->below_density = ww_gfx_uniform(gl, s->prog, "u_below_density");
-    s->cubemap = ww_gfx_uniform(gl, s->prog, "u_cubemap");
-    s->drift = ww_gfx_uniform(gl, s->prog, "u_drift");
     *out = s;
     return WW_OK;
 }
 
-void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f) {
+ww_result ww_sky_draw(ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_frame *f,
+                      ww_error *err) {
+    int below = f->underwater != 0;
+    if (!s->var[below].prog) {
+        ww_result rc = build_variant(s, gl, f->sc, below, err);
+        if (rc != WW_OK) return rc;
+    }
+    const sky_prog *v = &s->var[below];
     /* the triangle lies on the far plane: it passes where the depth is still clear */
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LEQUAL);
     gl->DepthMask(GL_FALSE);
-    gl->UseProgram(s->prog);
-    ww_sky_locs_set(gl, &s->sky, f->st);
-    gl->UniformMatrix4fv(s->inv_view_proj, 1, GL_FALSE, (const GLfloat *)f->inv_view_proj);
-    gl->Uniform1f(s->intensity, (float)f->sc->render.sky_intensity);
+    gl->UseProgram(v->prog);
+    ww_sky_locs_set(gl, &v->sky, f->st);
+    gl->UniformMatrix4fv(v->inv_view_proj, 1, GL_FALSE, (const GLfloat *)f->inv_view_proj);
+    gl->Uniform1f(v->intensity, (float)f->sc->render.sky_intensity);
     double fb[3];
     ww_fog_below_color(f->sc, f->st, fb);
-    gl->Uniform4f(s->below, (float)fb[0], (float)fb[1], (float)fb[2], f->underwater ? 1.0f : 0.0f);
+    gl->Uniform4f(v->below, (float)fb[0], (float)fb[1], (float)fb[2], f->underwater ? 1.0f : 0.0f);
     if (s->scatter && f->underwater) {
         /* the lights' glow along the rays that meet nothing under water */
-        gl->Uniform1f(s->below_density, (float)f->sc->render.fog_below_density);
-        ww_geometry_lights_set(s->r->geometry, gl, f, s->prog);
+        gl->Uniform1f(v->below_density, (float)f->sc->render.fog_below_density);
+        ww_geometry_lights_set(s->r->geometry, gl, f, v->prog);
     }
     if (s->model == WW_SKY_CUBEMAP) {
         gl->ActiveTexture(GL_TEXTURE0);
         gl->BindTexture(GL_TEXTURE_CUBE_MAP, s->cube_draw);
-        gl->Uniform1i(s->cubemap, 0);
+        gl->Uniform1i(v->cubemap, 0);
     } else if (s->dome_draw) {
         gl->ActiveTexture(GL_TEXTURE0);
         gl->BindTexture(GL_TEXTURE_2D, s->dome_draw);
-        gl->Uniform1i(s->dome_image, 0);
+        gl->Uniform1i(v->dome_image, 0);
     } else if (s->model == WW_SKY_DOME) {
         double x = fmod(DOME_WIND[0] * f->st->t, DOME_PERIOD);
         double z = fmod(DOME_WIND[1] * f->st->t, DOME_PERIOD);
-        gl->Uniform2f(s->drift, (float)(x < 0.0 ? x + DOME_PERIOD : x),
+        gl->Uniform2f(v->drift, (float)(x < 0.0 ? x + DOME_PERIOD : x),
                       (float)(z < 0.0 ? z + DOME_PERIOD : z));
     }
     gl->BindVertexArray(empty_vao);
@@ -370,11 +396,13 @@ void ww_sky_draw(const ww_sky *s, const ww_gl *gl, GLuint empty_vao, const ww_fr
     gl->DepthFunc(GL_LESS);
     if (s->model == WW_SKY_CUBEMAP) gl->BindTexture(GL_TEXTURE_CUBE_MAP, 0);
     if (s->dome_draw) gl->BindTexture(GL_TEXTURE_2D, 0);
+    return WW_OK;
 }
 
 void ww_sky_free(ww_sky *s, const ww_gl *gl) {
     if (!s) return;
-    if (s->prog) gl->DeleteProgram(s->prog);
+    for (int i = 0; i < 2; i++)
+        if (s->var[i].prog) gl->DeleteProgram(s->var[i].prog);
     if (s->cube_tex) gl->DeleteTextures(1, &s->cube_tex);
     if (s->dome_tex) gl->DeleteTextures(1, &s->dome_tex);
     free(s);
