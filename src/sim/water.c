@@ -557,13 +557,22 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
             lanes_evaluate(sc, st->wave_phase, xw, cold);
             lanes_take(sc, trial, cold, far);
         }
-        /* a trial that halves |F| is taken, as invert takes it; any other point goes alone */
+        /* a trial that halves |F| is taken, as invert takes it; any other point goes alone.
+         * Where every lane takes its trial (most first steps) the probes swap roles */
+        int all = 1;
         for (int c = 0; c < LANES; c++) {
             int halves = trial->norm[c] <= RESIDUAL_CUT * cur->norm[c];
             take[c] = open[c] != 0.0 && halves;
             alone[c] = open[c] != 0.0 && !halves ? 1.0 : alone[c];
+            all &= take[c] != 0.0;
         }
-        lanes_take(sc, cur, trial, take);
+        if (all) {
+            lane_probe *was = cur;
+            cur = trial;
+            trial = was;
+        } else {
+            lanes_take(sc, cur, trial, take);
+        }
     }
 
     /* finish's height and velocity */
