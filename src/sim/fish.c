@@ -28,6 +28,7 @@ enum { K_JITTER = 0, K_BIG, K_BIG_ANGLE, K_SPAWN_ANGLE, K_SPAWN_R, K_CRUISE, K_Y
 #define SLOW_TURN_MIN 0.3        /* speed fraction while the goal is behind */
 #define FLEE_HALF 3.0            /* (R/d)^2 - 1 at d = R/2: a threat there gives fear 1 */
 #define FLEE_MIN_GAP 0.05        /* m: the closest a threat's surface counts (fear <= 2130 R^2) */
+#define FAR_THREAT_MARGIN (1.0 + 1e-9) /* squared distance beyond (R + r)^2: surely out of reach */
 #define FLEE_RESPONSE 8.0        /* 1/s: extra velocity response at full fear */
 
 static double draw(const ww_scene *sc, const ww_state *st, int i, uint64_t k) {
@@ -157,6 +158,10 @@ static void add_fear(const double p[3], const double q[3], double r, double R, d
                      double fl[3]) {
     double d[3];
     ww_m_sub3(p, q, d);
+    /* a threat surely farther than R + r (by far more than the rounding of the root) adds
+     * nothing: passed without it. With R at most the least gap nothing is ever near */
+    double reach = R + r;
+    if (!(R > FLEE_MIN_GAP) || ww_m_dot3(d, d) > FAR_THREAT_MARGIN * reach * reach) return;
     double dist = ww_m_len3(d), gap = fmax(dist - r, FLEE_MIN_GAP);
     if (!(gap < R)) return;
     double w = ((R / gap) * (R / gap) - 1.0) / FLEE_HALF, h = hypot(d[0], d[2]);

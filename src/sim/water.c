@@ -591,10 +591,21 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
         }
     }
 
-    /* the ripples at the world points, the answers and the warm starts */
+    /* the ripples at the world points (those whose front reaches the block's rectangle), the
+     * answers and the warm starts */
     const double *rip = ripples_in_use(sc, st);
     int rslots = sc->ripples_on ? st->ripple_slots[0] : 0, converged = 0;
     if (rslots <= 0) rslots = sc->ripples.max;
+    double near[WW_MAX_RIPPLES * WW_RIPPLE_STRIDE];
+    if (rip) {
+        double lo[2] = {x[0], z[0]}, hi[2] = {x[0], z[0]};
+        for (int c = 1; c < m; c++) {
+            lo[0] = fmin(lo[0], x[c]), hi[0] = fmax(hi[0], x[c]);
+            lo[1] = fmin(lo[1], z[c]), hi[1] = fmax(hi[1], z[c]);
+        }
+        rslots = ww_ripples_reaching(sc, rip, rslots, st->t, lo, hi, near);
+        rip = rslots > 0 ? near : NULL;
+    }
     for (int c = 0; c < m; c++) {
         double *wm = warm + WW_WARM_STRIDE * c;
         if (alone[c] != 0.0) {
