@@ -37,7 +37,12 @@ static double draw(const ww_scene *sc, const ww_state *st, int i, uint64_t k) {
 }
 
 /* to (-pi, pi] */
-static double wrap_pi(double a) { return a - WW_TAU * floor((a + WW_PI) / WW_TAU); }
+/* a into [-pi, pi). Within 3 rad of 0 the quotient's floor is 0 whatever the rounding, so a is
+ * its own wrap (a - 2 pi 0 = a to the bit) without the division and floor */
+static double wrap_pi(double a) {
+    if (fabs(a) < 3.0) return a;
+    return a - WW_TAU * floor((a + WW_PI) / WW_TAU);
+}
 
 /* |(x, z)|: the fish's lengths are metres, far from hypot's overflow and underflow */
 static double len2(double x, double z) { return sqrt(x * x + z * z); }
