@@ -637,8 +637,8 @@ TEST(water_lanes_match_one_point_queries_to_the_bit) {
      * and a padded one) of a turning 1.2 m box over a steep sea (fold margin 0.1, eight
      * components) with two ripples, and one point past the far-from-origin reference, for 600
      * steps of 1/120 s with their warm starts carried: the same height, velocity and warm start
-     * to the bit (the lanes do the one-point query's arithmetic; the points that leave the
-     * common path go through it) */
+     * to the bit, with every component and with those shorter than 5 m ignored (the lanes do
+     * the one-point query's arithmetic; the points that leave the common path go through it) */
     ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
     random_sea(sc, 8, 0.5, 40.0, 0.9, 1.0, 5151);
     ripple_setup(sc);
@@ -649,6 +649,7 @@ TEST(water_lanes_match_one_point_queries_to_the_bit) {
     ww_ripples_add(sc, st, 3.5, -1.5, 0.03);
     enum { NPTS = 13, STEPS = 600 };
     double wa[NPTS * WW_WARM_STRIDE] = {0.0}, wb[NPTS * WW_WARM_STRIDE] = {0.0};
+    double wc[NPTS * WW_WARM_STRIDE] = {0.0}, wd[NPTS * WW_WARM_STRIDE] = {0.0};
     long differ = 0;
     for (int n = 0; n < STEPS; n++) {
         st->t = 1.5 + n / 120.0;
@@ -661,7 +662,7 @@ TEST(water_lanes_match_one_point_queries_to_the_bit) {
             z[p] = cz + u * sn + w * cs;
         }
         x[NPTS - 1] += 2000.0; /* far from the origin: the one-point path */
-        ww_water_at_warm_n(sc, st, NPTS, x, z, wa, h, v);
+        ww_water_at_warm_n(sc, st, NPTS, x, z, 0.0, wa, h, v);
         for (int p = 0; p < NPTS; p++) {
             ww_water_sample o;
             ww_water_at_warm(sc, st, x[p], z[p], 0.0, wb + WW_WARM_STRIDE * p, &o);
@@ -669,6 +670,15 @@ TEST(water_lanes_match_one_point_queries_to_the_bit) {
             differ += memcmp(o.velocity, &v[3 * p], 3 * sizeof(double)) != 0;
         }
         differ += memcmp(wa, wb, sizeof wa) != 0;
+        /* the boat's way: components shorter than 5 m ignored, no velocity wanted */
+        double h5[NPTS];
+        ww_water_at_warm_n(sc, st, NPTS, x, z, 5.0, wc, h5, NULL);
+        for (int p = 0; p < NPTS; p++) {
+            ww_water_sample o;
+            ww_water_at_warm(sc, st, x[p], z[p], 5.0, wd + WW_WARM_STRIDE * p, &o);
+            differ += memcmp(&o.height, &h5[p], sizeof(double)) != 0;
+        }
+        differ += memcmp(wc, wd, sizeof wc) != 0;
     }
     printf("    %d points x %d steps: %ld answers differ from the one-point query's bits\n", NPTS,
            STEPS, differ);

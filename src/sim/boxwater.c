@@ -69,7 +69,7 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
         }
     }
     if (warm) {
-        ww_water_at_warm_n(sc, st, nc, px, pz, warm, height, &vel3[0][0]);
+        ww_water_at_warm_n(sc, st, nc, px, pz, 0.0, warm, height, &vel3[0][0]);
     } else {
         for (int col = 0; col < nc; col++) {
             ww_water_sample ws;

@@ -389,6 +389,16 @@ int ww_water_at_warm(const ww_scene *sc, const ww_state *st, double x, double z,
 /* a point stays in the lanes for at most this many evaluations (the lake's queries take 2.03) */
 #define LANE_EVALUATIONS 8
 
+/* the components a lane query sums (those not shorter than its min_wavelength), in order */
+typedef struct lane_wave {
+    double k, dir[2], steepness, amplitude, omega;
+    int index; /* in sc->waves, for its phase */
+} lane_wave;
+typedef struct lane_waves {
+    int n;
+    lane_wave w[LANE_WAVES];
+} lane_waves;
+
 /* one probe per lane (struct of arrays): rest point, residual, each component's sine and cosine */
 typedef struct lane_probe {
     double a[2][LANES];
@@ -409,13 +419,13 @@ static void lanes_close(lane_probe *p, double x[2][LANES], double d[2][LANES]) {
     for (int c = 0; c < LANES; c++) p->norm[c] = sqrt(n2[c]);
 }
 
-/* the Gerstner sum at every lane's rest point p->a, as evaluate (every component: minL = 0) */
-static void lanes_evaluate(const ww_scene *sc, const double *phase, double x[2][LANES],
+/* the Gerstner sum at every lane's rest point p->a, as evaluate */
+static void lanes_evaluate(const lane_waves *lw, const double *phase, double x[2][LANES],
                            lane_probe *p) {
     double d[2][LANES] = {{0.0}};
-    for (int i = 0; i < sc->nwaves; i++) {
-        const ww_wave *w = &sc->waves[i];
-        double k = w->k, dx = w->dir[0], dz = w->dir[1], ph0 = phase[i];
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
+        double k = w->k, dx = w->dir[0], dz = w->dir[1], ph0 = phase[w->index];
         double qa = w->steepness * w->amplitude;
         for (int c = 0; c < LANES; c++) {
             double s, co;
@@ -431,7 +441,7 @@ static void lanes_evaluate(const ww_scene *sc, const double *phase, double x[2][
 
 /* the trial at t->a from the probe p by angle addition, as evaluate_near; far[c] becomes 1 where
  * a phase of lane c turns by more than NEAR_TURN (its trial is then evaluate's) */
-static void lanes_near(const ww_scene *sc, double x[2][LANES], const lane_probe *p,
+static void lanes_near(const lane_waves *lw, double x[2][LANES], const lane_probe *p,
                        lane_probe *t, double far[LANES]) {
     double d[2][LANES] = {{0.0}}, da[2][LANES];
     for (int c = 0; c < LANES; c++) {
@@ -439,8 +449,8 @@ static void lanes_near(const ww_scene *sc, double x[2][LANES], const lane_probe 
         da[1][c] = t->a[1][c] - p->a[1][c];
         far[c] = 0.0;
     }
-    for (int i = 0; i < sc->nwaves; i++) {
-        const ww_wave *w = &sc->waves[i];
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
         double k = w->k, dx = w->dir[0], dz = w->dir[1], qa = w->steepness * w->amplitude;
         for (int c = 0; c < LANES; c++) {
             double e = k * (dx * da[0][c] + dz * da[1][c]);
@@ -460,15 +470,15 @@ static void lanes_near(const ww_scene *sc, double x[2][LANES], const lane_probe 
 }
 
 /* the damped Newton direction of every lane, as direction */
-static void lanes_direction(const ww_scene *sc, const lane_probe *p, double d[2][LANES]) {
+static void lanes_direction(const lane_waves *lw, const lane_probe *p, double d[2][LANES]) {
     double jxx[LANES], jxz[LANES], jzz[LANES];
     for (int c = 0; c < LANES; c++) {
         jxx[c] = 1.0;
         jxz[c] = 0.0;
         jzz[c] = 1.0;
     }
-    for (int i = 0; i < sc->nwaves; i++) {
-        const ww_wave *w = &sc->waves[i];
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
         double k = w->k, q = w->steepness, A = w->amplitude, dx = w->dir[0], dz = w->dir[1];
         for (int c = 0; c < LANES; c++) {
             double kr = k * p->norm[c], rho = 1.0 / (1.0 + kr * kr);
@@ -489,7 +499,7 @@ static void lanes_direction(const ww_scene *sc, const lane_probe *p, double d[2]
 }
 
 /* lane c of p <- lane c of q where take[c] is not 0 */
-static void lanes_take(const ww_scene *sc, lane_probe *p, const lane_probe *q,
+static void lanes_take(const lane_waves *lw, lane_probe *p, const lane_probe *q,
                        const double take[LANES]) {
     for (int c = 0; c < LANES; c++) {
         int k = take[c] != 0.0;
@@ -499,7 +509,7 @@ static void lanes_take(const ww_scene *sc, lane_probe *p, const lane_probe *q,
         p->F[1][c] = k ? q->F[1][c] : p->F[1][c];
         p->norm[c] = k ? q->norm[c] : p->norm[c];
     }
-    for (int i = 0; i < sc->nwaves; i++)
+    for (int i = 0; i < lw->n; i++)
         for (int c = 0; c < LANES; c++) {
             int k = take[c] != 0.0;
             p->sn[i][c] = k ? q->sn[i][c] : p->sn[i][c];
@@ -510,9 +520,11 @@ static void lanes_take(const ww_scene *sc, lane_probe *p, const lane_probe *q,
 /* the warm queries of up to LANES points (m of them, the block padded with the last): the
  * iteration of invert while every trial is its first step (lambda = 1) and halves |F|, which the
  * best so far then is; a point where that fails, or far from the origin, is left to
- * ww_water_at_warm (alone[c]). Then finish's height and velocity, and the ripples. */
-static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const double *x,
-                       const double *z, double *warm, double *height, double *velocity) {
+ * ww_water_at_warm (alone[c]). Then finish's height and velocity, and the ripples; velocity
+ * may be NULL. */
+static int lanes_query(const ww_scene *sc, const ww_state *st, const lane_waves *lw,
+                       double minL, int m, const double *x, const double *z, double *warm,
+                       double *height, double *velocity) {
     lane_probe P[3];
     lane_probe *cur = &P[0], *trial = &P[1], *cold = &P[2];
     double xw[2][LANES], alone[LANES];
@@ -525,7 +537,7 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
         cur->a[1][c] = z[j] + (wm[1] + wm[3]);
         alone[c] = fabs(x[j]) > FAR_FROM_ORIGIN || fabs(z[j]) > FAR_FROM_ORIGIN;
     }
-    lanes_evaluate(sc, st->wave_phase, xw, cur);
+    lanes_evaluate(lw, st->wave_phase, xw, cur);
     for (int evals = 1;; evals++) {
         double open[LANES], d[2][LANES], far[LANES], take[LANES];
         int any = 0;
@@ -538,12 +550,12 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
             for (int c = 0; c < LANES; c++) alone[c] = open[c] != 0.0 ? 1.0 : alone[c];
             break;
         }
-        lanes_direction(sc, cur, d);
+        lanes_direction(lw, cur, d);
         for (int c = 0; c < LANES; c++) {
             trial->a[0][c] = cur->a[0][c] + d[0][c];
             trial->a[1][c] = cur->a[1][c] + d[1][c];
         }
-        lanes_near(sc, xw, cur, trial, far);
+        lanes_near(lw, xw, cur, trial, far);
         int anyfar = 0;
         for (int c = 0; c < LANES; c++) {
             far[c] = open[c] != 0.0 ? far[c] : 0.0;
@@ -554,8 +566,8 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
                 cold->a[0][c] = trial->a[0][c];
                 cold->a[1][c] = trial->a[1][c];
             }
-            lanes_evaluate(sc, st->wave_phase, xw, cold);
-            lanes_take(sc, trial, cold, far);
+            lanes_evaluate(lw, st->wave_phase, xw, cold);
+            lanes_take(lw, trial, cold, far);
         }
         /* a trial that halves |F| is taken, as invert takes it; any other point goes alone.
          * Where every lane takes its trial (most first steps) the probes swap roles */
@@ -571,15 +583,15 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
             cur = trial;
             trial = was;
         } else {
-            lanes_take(sc, cur, trial, take);
+            lanes_take(lw, cur, trial, take);
         }
     }
 
     /* finish's height and velocity */
     double y[LANES], v[3][LANES];
     for (int c = 0; c < LANES; c++) y[c] = v[0][c] = v[1][c] = v[2][c] = 0.0;
-    for (int i = 0; i < sc->nwaves; i++) {
-        const ww_wave *w = &sc->waves[i];
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
         double A = w->amplitude, qa = w->steepness * A, om = w->omega;
         double dx = w->dir[0], dz = w->dir[1];
         for (int c = 0; c < LANES; c++) {
@@ -610,16 +622,19 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
         double *wm = warm + WW_WARM_STRIDE * c;
         if (alone[c] != 0.0) {
             ww_water_sample ws;
-            converged += ww_water_at_warm(sc, st, x[c], z[c], 0.0, wm, &ws);
+            converged += ww_water_at_warm(sc, st, x[c], z[c], minL, wm, &ws);
             height[c] = ws.height;
-            for (int k = 0; k < 3; k++) velocity[3 * c + k] = ws.velocity[k];
+            if (velocity)
+                for (int k = 0; k < 3; k++) velocity[3 * c + k] = ws.velocity[k];
             continue;
         }
         double rdt, rh = ww_ripples_height_n(sc, rip, rslots, st->t, x[c], z[c], NULL, &rdt);
         height[c] = sc->water_level + y[c] + rh;
-        velocity[3 * c] = v[0][c];
-        velocity[3 * c + 1] = v[1][c] + rdt;
-        velocity[3 * c + 2] = v[2][c];
+        if (velocity) {
+            velocity[3 * c] = v[0][c];
+            velocity[3 * c + 1] = v[1][c] + rdt;
+            velocity[3 * c + 2] = v[2][c];
+        }
         for (int k = 0; k < 2; k++) {
             double off = cur->a[k][c] - (k ? z[c] : x[c]);
             wm[2 + k] = off - wm[k];
@@ -631,22 +646,36 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, int m, const doub
 }
 
 int ww_water_at_warm_n(const ww_scene *sc, const ww_state *st, int n, const double *x,
-                       const double *z, double *warm, double *height, double *velocity) {
+                       const double *z, double min_wavelength, double *warm, double *height,
+                       double *velocity) {
     int converged = 0;
-    if ((sc->wave_model != WW_WAVES_GERSTNER && sc->wave_model != WW_WAVES_SPECTRUM) ||
-        sc->nwaves > LANE_WAVES) {
-        for (int j = 0; j < n; j++) {
-            ww_water_sample ws;
-            converged += ww_water_at_warm(sc, st, x[j], z[j], 0.0, warm + WW_WARM_STRIDE * j, &ws);
-            height[j] = ws.height;
-            for (int k = 0; k < 3; k++) velocity[3 * j + k] = ws.velocity[k];
-        }
-        return converged;
+    lane_waves lw;
+    lw.n = 0;
+    int lanes = (sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM) &&
+                sc->nwaves <= LANE_WAVES;
+    for (int i = 0; lanes && i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        if (w->wavelength < min_wavelength) continue;
+        lw.w[lw.n++] = (lane_wave){.k = w->k, .dir = {w->dir[0], w->dir[1]},
+                                   .steepness = w->steepness, .amplitude = w->amplitude,
+                                   .omega = w->omega, .index = i};
     }
     for (int j = 0; j < n; j += LANES) {
         int m = n - j < LANES ? n - j : LANES;
-        converged += lanes_query(sc, st, m, x + j, z + j, warm + WW_WARM_STRIDE * j, height + j,
-                                 velocity + 3 * j);
+        double *vj = velocity ? velocity + 3 * j : NULL;
+        if (lanes) {
+            converged += lanes_query(sc, st, &lw, min_wavelength, m, x + j, z + j,
+                                     warm + WW_WARM_STRIDE * j, height + j, vj);
+            continue;
+        }
+        for (int c = 0; c < m; c++) {
+            ww_water_sample ws;
+            converged += ww_water_at_warm(sc, st, x[j + c], z[j + c], min_wavelength,
+                                          warm + WW_WARM_STRIDE * (j + c), &ws);
+            height[j + c] = ws.height;
+            if (vj)
+                for (int k = 0; k < 3; k++) vj[3 * c + k] = ws.velocity[k];
+        }
     }
     return converged;
 }
