@@ -36,7 +36,6 @@ static double draw(const ww_scene *sc, const ww_state *st, int i, uint64_t k) {
     return ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step, (uint64_t)i * 16u + k);
 }
 
-/* to (-pi, pi] */
 /* a into [-pi, pi). Within 3 rad of 0 the quotient's floor is 0 whatever the rounding, so a is
  * its own wrap (a - 2 pi 0 = a to the bit) without the division and floor */
 static double wrap_pi(double a) {
@@ -324,7 +323,7 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
      * threats */
     double cruise = cruise_speed(f, i);
     double speed = cruise + (f->max_speed - cruise) * alarm;
-    double sw, cw, sy, cy;
+    double sw, cw, sy, cy; /* sw unused: ww_sincos gives both */
     ww_sincos(wrap_pi(want - yaw), &sw, &cw);
     double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cw);
     speed *= slow + (1.0 - slow) * alarm;
@@ -438,7 +437,7 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
             swim(sc, st, i);
             if (lure_free(sc, st) &&
                 len2(st->lure_pos[0] - st->fish_pos[3 * i],
-                      st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius)
+                     st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius)
                 bite(sc, st, i);
             break;
         }

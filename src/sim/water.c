@@ -1,6 +1,7 @@
 /* water.c - the exact surface over a world point (water.h): inverts the Gerstner horizontal
  * displacement by a damped Newton iteration on a smoothed Jacobian, then adds the ripples;
- * height, normal and velocity.
+ * height, normal and velocity. The same iteration over many points in vectorised lanes
+ * (ww_water_at_warm_n) for the bodies that sample several.
  */
 #include "sim/water.h"
 
