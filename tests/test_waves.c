@@ -632,6 +632,61 @@ static void ripple_setup(ww_scene *sc) {
                                    .speed = 1.2};
 }
 
+TEST(water_lanes_match_one_point_queries_to_the_bit) {
+    /* ww_water_at_warm_n against ww_water_at_warm point by point: 13 points (a full lane block
+     * and a padded one) of a turning 1.2 m box over a steep sea (fold margin 0.1, eight
+     * components) with two ripples, and one point past the far-from-origin reference, for 600
+     * steps of 1/120 s with their warm starts carried: the same height, velocity and warm start
+     * to the bit, with every component and with those shorter than 5 m ignored (the lanes do
+     * the one-point query's arithmetic; the points that leave the common path go through it) */
+    ww_scene *sc = new_scene(WW_WAVES_GERSTNER);
+    random_sea(sc, 8, 0.5, 40.0, 0.9, 1.0, 5151);
+    ripple_setup(sc);
+    ww_state *st = ww_state_new(sc);
+    st->t = 0.2;
+    ww_ripples_add(sc, st, 2.5, -0.5, 0.04);
+    st->t = 1.1;
+    ww_ripples_add(sc, st, 3.5, -1.5, 0.03);
+    enum { NPTS = 13, STEPS = 600 };
+    double wa[NPTS * WW_WARM_STRIDE] = {0.0}, wb[NPTS * WW_WARM_STRIDE] = {0.0};
+    double wc[NPTS * WW_WARM_STRIDE] = {0.0}, wd[NPTS * WW_WARM_STRIDE] = {0.0};
+    long differ = 0;
+    for (int n = 0; n < STEPS; n++) {
+        st->t = 1.5 + n / 120.0;
+        ww_waves_phases(sc, st->t, st->wave_phase);
+        double heading = 0.4 * st->t, cx = 2.0 + 1.5 * st->t, cz = -1.0 + sin(0.7 * st->t);
+        double cs = cos(heading), sn = sin(heading), x[NPTS], z[NPTS], h[NPTS], v[3 * NPTS];
+        for (int p = 0; p < NPTS; p++) {
+            double u = 1.2 * ((p / 4 + 0.5) / 4 - 0.5), w = 1.2 * ((p % 4 + 0.5) / 4 - 0.5);
+            x[p] = cx + u * cs - w * sn;
+            z[p] = cz + u * sn + w * cs;
+        }
+        x[NPTS - 1] += 2000.0; /* far from the origin: the one-point path */
+        ww_water_at_warm_n(sc, st, NPTS, x, z, 0.0, wa, h, v);
+        for (int p = 0; p < NPTS; p++) {
+            ww_water_sample o;
+            ww_water_at_warm(sc, st, x[p], z[p], 0.0, wb + WW_WARM_STRIDE * p, &o);
+            differ += memcmp(&o.height, &h[p], sizeof(double)) != 0;
+            differ += memcmp(o.velocity, &v[3 * p], 3 * sizeof(double)) != 0;
+        }
+        differ += memcmp(wa, wb, sizeof wa) != 0;
+        /* the boat's way: components shorter than 5 m ignored, no velocity wanted */
+        double h5[NPTS];
+        ww_water_at_warm_n(sc, st, NPTS, x, z, 5.0, wc, h5, NULL);
+        for (int p = 0; p < NPTS; p++) {
+            ww_water_sample o;
+            ww_water_at_warm(sc, st, x[p], z[p], 5.0, wd + WW_WARM_STRIDE * p, &o);
+            differ += memcmp(&o.height, &h5[p], sizeof(double)) != 0;
+        }
+        differ += memcmp(wc, wd, sizeof wc) != 0;
+    }
+    printf("    %d points x %d steps: %ld answers differ from the one-point query's bits\n", NPTS,
+           STEPS, differ);
+    ENSURE(differ == 0);
+    ww_state_free(st);
+    free(sc);
+}
+
 TEST(water_query_matches_surface_point_and_finite_differences) {
     /* every family with two ripples: the reported height, normal and velocity are the surface
      * at the reported rest point plus the ripples; the normal is the finite-difference normal

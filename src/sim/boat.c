@@ -63,16 +63,14 @@ static void surface_targets(const ww_scene *sc, ww_state *st, double x, double z
     const ww_boat_desc *b = &sc->boat;
     double fx = cos(heading), fz = sin(heading); /* starboard is (-fz, fx) */
     double hl = 0.5 * b->length, hb = 0.5 * b->beam, minL = b->length;
-    ww_water_sample centre, bow, stern, port, stbd;
-    double *warm = st->boat_warm; /* one warm start per sample, in this order */
-    ww_water_at_warm(sc, st, x, z, minL, warm, &centre);
-    ww_water_at_warm(sc, st, x + hl * fx, z + hl * fz, minL, warm + WW_WARM_STRIDE, &bow);
-    ww_water_at_warm(sc, st, x - hl * fx, z - hl * fz, minL, warm + 2 * WW_WARM_STRIDE, &stern);
-    ww_water_at_warm(sc, st, x + hb * fz, z - hb * fx, minL, warm + 3 * WW_WARM_STRIDE, &port);
-    ww_water_at_warm(sc, st, x - hb * fz, z + hb * fx, minL, warm + 4 * WW_WARM_STRIDE, &stbd);
-    out[0] = centre.height + b->ride_height;
-    out[1] = atan2(bow.height - stern.height, b->length);
-    out[2] = atan2(port.height - stbd.height, b->beam);
+    /* centre, bow, stern, port, starboard: one warm start per sample, in this order, queried
+     * together (sim/water.h) */
+    double px[5] = {x, x + hl * fx, x - hl * fx, x + hb * fz, x - hb * fz};
+    double pz[5] = {z, z + hl * fz, z - hl * fz, z - hb * fx, z + hb * fx}, h[5];
+    ww_water_at_warm_n(sc, st, 5, px, pz, minL, st->boat_warm, h, NULL);
+    out[0] = h[0] + b->ride_height;
+    out[1] = atan2(h[1] - h[2], b->length);
+    out[2] = atan2(h[3] - h[4], b->beam);
 }
 
 /* y follows u through dy/dt = (u - y) / tau over a step in which u goes linearly from u0 to u1:

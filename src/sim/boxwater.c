@@ -56,35 +56,43 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
      * otherwise seed a tilt that an unstable box amplifies) */
     enum { MAXC = WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS };
     double vol[MAXC], off3[MAXC][3], vel3[MAXC][3];
+    /* the columns' centre lines and the surface over them, the warm queries all at once */
+    double rc[MAXC][3], px[MAXC], pz[MAXC], height[MAXC];
+    int nc = n * n;
     for (int iu = 0; iu < n; iu++) {
         for (int iv = 0; iv < n; iv++) {
             int col = iu * n + iv;
-            double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq, r[3];
-            for (int k = 0; k < 3; k++) r[k] = u * P[k] + v * Q[k];
-            ww_water_sample ws;
-            if (warm)
-                ww_water_at_warm(sc, st, c[0] + r[0], c[2] + r[2], 0.0,
-                                 warm + WW_WARM_STRIDE * col, &ws);
-            else
-                ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
-            double wet = (ws.height - (c[1] + r[1])) / U[1] + h; /* submerged length along U */
-            double L = ww_m_clamp(wet, 0.0, s);
-            out->wet[col] = wet;
-            if (wet > 0.0 && wet < s) {
-                double r2 = r[0] * r[0] + r[2] * r[2];
-                out->waterplane += dA / U[1];
-                out->waterplane_moment += dA / U[1] * r2;
-            }
-            double off = 0.5 * (L - s);
-            vol[col] = dA * L;
-            for (int k = 0; k < 3; k++) {
-                off3[col][k] = r[k] + off * U[k];
-                vel3[col][k] = ws.velocity[k];
-            }
+            double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq;
+            for (int k = 0; k < 3; k++) rc[col][k] = u * P[k] + v * Q[k];
+            px[col] = c[0] + rc[col][0];
+            pz[col] = c[2] + rc[col][2];
         }
     }
+    if (warm) {
+        ww_water_at_warm_n(sc, st, nc, px, pz, 0.0, warm, height, &vel3[0][0]);
+    } else {
+        for (int col = 0; col < nc; col++) {
+            ww_water_sample ws;
+            ww_water_at(sc, st, px[col], pz[col], 0.0, &ws);
+            height[col] = ws.height;
+            for (int k = 0; k < 3; k++) vel3[col][k] = ws.velocity[k];
+        }
+    }
+    for (int col = 0; col < nc; col++) {
+        const double *r = rc[col];
+        double wet = (height[col] - (c[1] + r[1])) / U[1] + h; /* submerged length along U */
+        double L = ww_m_clamp(wet, 0.0, s);
+        out->wet[col] = wet;
+        if (wet > 0.0 && wet < s) {
+            double r2 = r[0] * r[0] + r[2] * r[2];
+            out->waterplane += dA / U[1];
+            out->waterplane_moment += dA / U[1] * r2;
+        }
+        double off = 0.5 * (L - s);
+        vol[col] = dA * L;
+        for (int k = 0; k < 3; k++) off3[col][k] = r[k] + off * U[k];
+    }
     double moment[3] = {0.0, 0.0, 0.0}, vel[3] = {0.0, 0.0, 0.0};
-    int nc = n * n;
     for (int a0 = 0; a0 < (nc + 1) / 2; a0++) {
         int a1 = nc - 1 - a0;
         if (a1 == a0) {

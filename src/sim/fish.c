@@ -9,6 +9,7 @@
 
 #include "core/mathx.h"
 #include "core/rng.h"
+#include "core/sincos.h"
 #include "sim/events.h"
 #include "sim/rod.h"
 #include "sim/water.h"
@@ -28,14 +29,22 @@ enum { K_JITTER = 0, K_BIG, K_BIG_ANGLE, K_SPAWN_ANGLE, K_SPAWN_R, K_CRUISE, K_Y
 #define SLOW_TURN_MIN 0.3        /* speed fraction while the goal is behind */
 #define FLEE_HALF 3.0            /* (R/d)^2 - 1 at d = R/2: a threat there gives fear 1 */
 #define FLEE_MIN_GAP 0.05        /* m: the closest a threat's surface counts (fear <= 2130 R^2) */
+#define FAR_THREAT_MARGIN (1.0 + 1e-9) /* squared distance over (reach)^2: surely beyond it */
 #define FLEE_RESPONSE 8.0        /* 1/s: extra velocity response at full fear */
 
 static double draw(const ww_scene *sc, const ww_state *st, int i, uint64_t k) {
     return ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step, (uint64_t)i * 16u + k);
 }
 
-/* to (-pi, pi] */
-static double wrap_pi(double a) { return a - WW_TAU * floor((a + WW_PI) / WW_TAU); }
+/* a into [-pi, pi). Within 3 rad of 0 the quotient's floor is 0 whatever the rounding, so a is
+ * its own wrap (a - 2 pi 0 = a to the bit) without the division and floor */
+static double wrap_pi(double a) {
+    if (fabs(a) < 3.0) return a;
+    return a - WW_TAU * floor((a + WW_PI) / WW_TAU);
+}
+
+/* |(x, z)|: the fish's lengths are metres, far from hypot's overflow and underflow */
+static double len2(double x, double z) { return sqrt(x * x + z * z); }
 
 void ww_fish_depth_bounds(const ww_scene *sc, double h, double *lo, double *hi) {
     *lo = sc->water_level - sc->water_depth + sc->fish.margin;
@@ -157,9 +166,13 @@ static void add_fear(const double p[3], const double q[3], double r, double R, d
                      double fl[3]) {
     double d[3];
     ww_m_sub3(p, q, d);
+    /* a threat surely farther than R + r (by far more than the rounding of the root) adds
+     * nothing: passed without it. With R at most the least gap nothing is ever near */
+    double reach = R + r;
+    if (!(R > FLEE_MIN_GAP) || ww_m_dot3(d, d) > FAR_THREAT_MARGIN * reach * reach) return;
     double dist = ww_m_len3(d), gap = fmax(dist - r, FLEE_MIN_GAP);
     if (!(gap < R)) return;
-    double w = ((R / gap) * (R / gap) - 1.0) / FLEE_HALF, h = hypot(d[0], d[2]);
+    double w = ((R / gap) * (R / gap) - 1.0) / FLEE_HALF, h = len2(d[0], d[2]);
     fl[0] += w * (h > 1e-9 ? d[0] / h : cos(yaw));
     fl[1] += w * (dist > 1e-9 ? d[1] / dist : 0.0);
     fl[2] += w * (h > 1e-9 ? d[2] / h : sin(yaw));
@@ -191,8 +204,7 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
         if (draw(sc, st, i, K_BIG) < f->big_turn_rate * sc->dt)
             goal += f->big_turn * (2.0 * draw(sc, st, i, K_BIG_ANGLE) - 1.0);
         st->fish_goal[i] = wrap_pi(goal);
-        g[0] = cos(st->fish_goal[i]);
-        g[1] = sin(st->fish_goal[i]);
+        ww_sincos(st->fish_goal[i], &g[1], &g[0]);
     } else {
         double *t = st->fish_target + 3 * i, d[3];
         ww_m_sub3(t, p, d);
@@ -201,14 +213,14 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
             new_target(sc, st, i);
             ww_m_sub3(t, p, d);
         }
-        double h = hypot(d[0], d[2]);
+        double h = len2(d[0], d[2]);
         g[0] = h > 1e-9 ? d[0] / h : cos(st->fish_yaw[i]);
         g[1] = h > 1e-9 ? d[2] / h : sin(st->fish_yaw[i]);
     }
 
     /* a free floating lure nearby wins over wandering */
     if (lure_free(sc, st)) {
-        double dx = st->lure_pos[0] - p[0], dz = st->lure_pos[2] - p[2], h = hypot(dx, dz);
+        double dx = st->lure_pos[0] - p[0], dz = st->lure_pos[2] - p[2], h = len2(dx, dz);
         if (h < sc->rod.attract && h > 1e-9) {
             g[0] = dx / h;
             g[1] = dz / h;
@@ -221,13 +233,13 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
 
     /* back into the region near its edge */
     const double *center = school_center(f, i);
-    double cx = center[0] - p[0], cz = center[2] - p[2], r = hypot(cx, cz), R = school_radius(f, i);
+    double cx = center[0] - p[0], cz = center[2] - p[2], r = len2(cx, cz), R = school_radius(f, i);
     if (r > HOME_START * R) {
         double w = HOME_WEIGHT * (r - HOME_START * R) / ((1.0 - HOME_START) * R);
         g[0] += w * cx / r;
         g[1] += w * cz / r;
     }
-    double n = hypot(g[0], g[1]);
+    double n = len2(g[0], g[1]);
     if (n > 1e-12) {
         g[0] /= n;
         g[1] /= n;
@@ -247,6 +259,8 @@ static void separation(const ww_scene *sc, const ww_state *st, int i, double pus
         if (j == i || st->fish_mode[j] == WW_FISH_AWAY) continue;
         double d[3];
         ww_m_sub3(p, st->fish_pos + 3 * j, d);
+        /* surely beyond the separation: passed without the root */
+        if (ww_m_dot3(d, d) > FAR_THREAT_MARGIN * f->separation * f->separation) continue;
         double dist = ww_m_len3(d);
         if (!(dist < f->separation)) continue;
         double u[3];
@@ -309,7 +323,9 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
      * threats */
     double cruise = cruise_speed(f, i);
     double speed = cruise + (f->max_speed - cruise) * alarm;
-    double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cos(wrap_pi(want - yaw)));
+    double sw, cw, sy, cy; /* sw unused: ww_sincos gives both */
+    ww_sincos(wrap_pi(want - yaw), &sw, &cw);
+    double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cw);
     speed *= slow + (1.0 - slow) * alarm;
     double y_want;
     if (f->mode == WW_FISH_TARGETS) {
@@ -320,8 +336,9 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
                  f->swim[0] * sin(WW_TAU * st->t / T + st->fish_cruise[2 * i + 1]);
     }
     double vy_max = VERTICAL_MAX * cruise;
-    double want_v[3] = {speed * cos(yaw), ww_m_clamp(VERTICAL_GAIN * (y_want - p[1]), -vy_max, vy_max),
-                        speed * sin(yaw)};
+    ww_sincos(yaw, &sy, &cy);
+    double want_v[3] = {speed * cy, ww_m_clamp(VERTICAL_GAIN * (y_want - p[1]), -vy_max, vy_max),
+                        speed * sy};
     double push[3];
     separation(sc, st, i, push);
     for (int k = 0; k < 3; k++) want_v[k] += push[k] + f->max_speed * fl[k];
@@ -344,7 +361,7 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
 
     /* a coordinated turn's bank from the yaw rate */
     st->fish_yaw_rate[i] = turn / dt;
-    double bank = atan(hypot(v[0], v[2]) * st->fish_yaw_rate[i] / WW_G);
+    double bank = atan(len2(v[0], v[2]) * st->fish_yaw_rate[i] / WW_G);
     st->fish_bank[i] = ww_m_clamp(bank, -f->max_bank, f->max_bank);
 }
 
@@ -419,8 +436,8 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
         default:
             swim(sc, st, i);
             if (lure_free(sc, st) &&
-                hypot(st->lure_pos[0] - st->fish_pos[3 * i],
-                      st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius)
+                len2(st->lure_pos[0] - st->fish_pos[3 * i],
+                     st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius)
                 bite(sc, st, i);
             break;
         }

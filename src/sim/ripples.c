@@ -10,6 +10,9 @@
 /* a point whose squared distance exceeds the front's squared radius by this factor is beyond
  * it whatever the rounding of the root (a few ulps), so W = 0 there without computing r */
 #define FRONT_MARGIN (1.0 + 1e-12)
+/* a rectangle whose nearest squared distance exceeds the front's squared radius by this factor
+ * has every point beyond it by far more than FRONT_MARGIN and the rounding of each point's r^2 */
+#define RECT_MARGIN (1.0 + 1e-9)
 
 void ww_ripples_add(const ww_scene *sc, ww_state *st, double x, double z, double amplitude) {
     if (!sc->ripples_on || sc->ripples.max <= 0 || !(amplitude > 0.0)) return;
@@ -99,4 +102,26 @@ double ww_ripples_height_n(const ww_scene *sc, const double *pool, int nslots, d
     }
     if (dhdt) *dhdt = ht;
     return h;
+}
+
+int ww_ripples_reaching(const ww_scene *sc, const double *pool, int nslots, double t,
+                        const double lo[2], const double hi[2], double *out) {
+    if (!sc->ripples_on || !pool) return 0;
+    const ww_ripple_desc *d = &sc->ripples;
+    double lambda = WW_TAU / d->wavenumber, r0 = 1.0 / d->wavenumber;
+    int n = nslots < d->max ? nslots : d->max, kept = 0;
+    for (int i = 0; i < n; i++) {
+        const double *e = pool + i * WW_RIPPLE_STRIDE;
+        double age = t - e[2];
+        if (e[3] == 0.0 || age < 0.0) continue;
+        double front = d->speed * age + lambda;
+        if (front <= 0.0) continue;
+        /* the rectangle's nearest point to the centre: every point's r^2 is at least this */
+        double gx = fmax(fmax(lo[0] - e[0], e[0] - hi[0]), 0.0);
+        double gz = fmax(fmax(lo[1] - e[1], e[1] - hi[1]), 0.0);
+        if (gx * gx + gz * gz + r0 * r0 > RECT_MARGIN * FRONT_MARGIN * front * front) continue;
+        for (int k = 0; k < WW_RIPPLE_STRIDE; k++) out[kept * WW_RIPPLE_STRIDE + k] = e[k];
+        kept++;
+    }
+    return kept;
 }

@@ -31,4 +31,11 @@ double ww_ripples_height(const ww_scene *sc, const double *pool, double t, doubl
 double ww_ripples_height_n(const ww_scene *sc, const double *pool, int nslots, double t, double x,
                            double z, double grad[2], double *dhdt);
 
+/* the entries of the pool's first nslots whose front can reach some point of the rectangle
+ * lo..hi (x, z) at time t, copied in order to out (room for nslots entries); returns their
+ * count. ww_ripples_height_n over them gives the same bits at every point of the rectangle as
+ * over the whole pool: an entry left out is one it passes at each of those points. */
+int ww_ripples_reaching(const ww_scene *sc, const double *pool, int nslots, double t,
+                        const double lo[2], const double hi[2], double *out);
+
 #endif

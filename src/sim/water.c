@@ -1,6 +1,7 @@
 /* water.c - the exact surface over a world point (water.h): inverts the Gerstner horizontal
  * displacement by a damped Newton iteration on a smoothed Jacobian, then adds the ripples;
- * height, normal and velocity.
+ * height, normal and velocity. The same iteration over many points in vectorised lanes
+ * (ww_water_at_warm_n) for the bodies that sample several.
  */
 #include "sim/water.h"
 
@@ -375,4 +376,307 @@ int ww_water_at_warm(const ww_scene *sc, const ww_state *st, double x, double z,
     warm[0] = off[0];
     warm[1] = off[1];
     return ok;
+}
+
+/* ---- many points at once (ww_water_at_warm_n) ----------------------------------------------- */
+
+/* points per lane block: every loop over a block runs this many iterations over local arrays (a
+ * short block is padded with its last point), so GCC's -O2 cost model vectorises them without an
+ * epilogue or alias checks */
+#define LANES 8
+/* the lanes keep the sines and cosines of this many components; a longer list takes the
+ * one-point path */
+#define LANE_WAVES 64
+/* a point stays in the lanes for at most this many evaluations (the lake's queries take 2.03) */
+#define LANE_EVALUATIONS 8
+
+/* the components a lane query sums (those not shorter than its min_wavelength), in order */
+typedef struct lane_wave {
+    double k, dir[2], steepness, amplitude, omega;
+    int index; /* in sc->waves, for its phase */
+} lane_wave;
+typedef struct lane_waves {
+    int n;
+    lane_wave w[LANE_WAVES];
+} lane_waves;
+
+/* one probe per lane (struct of arrays): rest point, residual, each component's sine and cosine */
+typedef struct lane_probe {
+    double a[2][LANES];
+    double F[2][LANES];
+    double norm[LANES];
+    double sn[LANE_WAVES][LANES], cn[LANE_WAVES][LANES];
+} lane_probe;
+
+/* F = a + D - x and |F| of every lane, as close_probe; d: the displacements. The root has its
+ * own loop: with errno kept, sqrt is a call the loops around it could not be vectorised over */
+static void lanes_close(lane_probe *p, double x[2][LANES], double d[2][LANES]) {
+    double n2[LANES];
+    for (int c = 0; c < LANES; c++) {
+        p->F[0][c] = p->a[0][c] + d[0][c] - x[0][c];
+        p->F[1][c] = p->a[1][c] + d[1][c] - x[1][c];
+        n2[c] = p->F[0][c] * p->F[0][c] + p->F[1][c] * p->F[1][c];
+    }
+    for (int c = 0; c < LANES; c++) p->norm[c] = sqrt(n2[c]);
+}
+
+/* the Gerstner sum at every lane's rest point p->a, as evaluate */
+static void lanes_evaluate(const lane_waves *lw, const double *phase, double x[2][LANES],
+                           lane_probe *p) {
+    double d[2][LANES] = {{0.0}};
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
+        double k = w->k, dx = w->dir[0], dz = w->dir[1], ph0 = phase[w->index];
+        double qa = w->steepness * w->amplitude;
+        for (int c = 0; c < LANES; c++) {
+            double s, co;
+            ww_sincos(k * (dx * p->a[0][c] + dz * p->a[1][c]) + ph0, &s, &co);
+            p->sn[i][c] = s;
+            p->cn[i][c] = co;
+            d[0][c] += qa * dx * co;
+            d[1][c] += qa * dz * co;
+        }
+    }
+    lanes_close(p, x, d);
+}
+
+/* the trial at t->a from the probe p by angle addition, as evaluate_near; far[c] becomes 1 where
+ * a phase of lane c turns by more than NEAR_TURN (its trial is then evaluate's) */
+static void lanes_near(const lane_waves *lw, double x[2][LANES], const lane_probe *p,
+                       lane_probe *t, double far[LANES]) {
+    double d[2][LANES] = {{0.0}}, da[2][LANES];
+    for (int c = 0; c < LANES; c++) {
+        da[0][c] = t->a[0][c] - p->a[0][c];
+        da[1][c] = t->a[1][c] - p->a[1][c];
+        far[c] = 0.0;
+    }
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
+        double k = w->k, dx = w->dir[0], dz = w->dir[1], qa = w->steepness * w->amplitude;
+        for (int c = 0; c < LANES; c++) {
+            double e = k * (dx * da[0][c] + dz * da[1][c]);
+            far[c] = fabs(e) <= NEAR_TURN ? far[c] : 1.0;
+            double z = e * e;
+            double se = e * (1.0 + z * (SIN3 + z * (SIN5 + z * SIN7)));
+            double ce = 1.0 + z * (COS2 + z * (COS4 + z * COS6));
+            double s = p->sn[i][c] * ce + p->cn[i][c] * se;
+            double co = p->cn[i][c] * ce - p->sn[i][c] * se;
+            t->sn[i][c] = s;
+            t->cn[i][c] = co;
+            d[0][c] += qa * dx * co;
+            d[1][c] += qa * dz * co;
+        }
+    }
+    lanes_close(t, x, d);
+}
+
+/* the damped Newton direction of every lane, as direction */
+static void lanes_direction(const lane_waves *lw, const lane_probe *p, double d[2][LANES]) {
+    double jxx[LANES], jxz[LANES], jzz[LANES];
+    for (int c = 0; c < LANES; c++) {
+        jxx[c] = 1.0;
+        jxz[c] = 0.0;
+        jzz[c] = 1.0;
+    }
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
+        double k = w->k, q = w->steepness, A = w->amplitude, dx = w->dir[0], dz = w->dir[1];
+        for (int c = 0; c < LANES; c++) {
+            double kr = k * p->norm[c], rho = 1.0 / (1.0 + kr * kr);
+            double t = rho * q * k * A * p->sn[i][c];
+            jxx[c] -= t * dx * dx;
+            jxz[c] -= t * dx * dz;
+            jzz[c] -= t * dz * dz;
+        }
+    }
+    /* both candidates are worked out and one kept, so the loop has no branch */
+    for (int c = 0; c < LANES; c++) {
+        double det = jxx[c] * jzz[c] - jxz[c] * jxz[c], F0 = p->F[0][c], F1 = p->F[1][c];
+        double n0 = -(jzz[c] * F0 - jxz[c] * F1) / det, n1 = -(jxx[c] * F1 - jxz[c] * F0) / det;
+        int ok = jxx[c] > 0.0 && jzz[c] > 0.0 && det > 0.0;
+        d[0][c] = ok ? n0 : -F0;
+        d[1][c] = ok ? n1 : -F1;
+    }
+}
+
+/* lane c of p <- lane c of q where take[c] is not 0 */
+static void lanes_take(const lane_waves *lw, lane_probe *p, const lane_probe *q,
+                       const double take[LANES]) {
+    for (int c = 0; c < LANES; c++) {
+        int k = take[c] != 0.0;
+        p->a[0][c] = k ? q->a[0][c] : p->a[0][c];
+        p->a[1][c] = k ? q->a[1][c] : p->a[1][c];
+        p->F[0][c] = k ? q->F[0][c] : p->F[0][c];
+        p->F[1][c] = k ? q->F[1][c] : p->F[1][c];
+        p->norm[c] = k ? q->norm[c] : p->norm[c];
+    }
+    for (int i = 0; i < lw->n; i++)
+        for (int c = 0; c < LANES; c++) {
+            int k = take[c] != 0.0;
+            p->sn[i][c] = k ? q->sn[i][c] : p->sn[i][c];
+            p->cn[i][c] = k ? q->cn[i][c] : p->cn[i][c];
+        }
+}
+
+/* the warm queries of up to LANES points (m of them, the block padded with the last): the
+ * iteration of invert while every trial is its first step (lambda = 1) and halves |F|, which the
+ * best so far then is; a point where that fails, or far from the origin, is left to
+ * ww_water_at_warm (alone[c]). Then finish's height and velocity, and the ripples; velocity
+ * may be NULL. */
+static int lanes_query(const ww_scene *sc, const ww_state *st, const lane_waves *lw,
+                       double minL, int m, const double *x, const double *z, double *warm,
+                       double *height, double *velocity) {
+    lane_probe P[3];
+    lane_probe *cur = &P[0], *trial = &P[1], *cold = &P[2];
+    double xw[2][LANES], alone[LANES];
+    for (int c = 0; c < LANES; c++) {
+        int j = c < m ? c : m - 1;
+        const double *wm = warm + WW_WARM_STRIDE * j;
+        xw[0][c] = x[j];
+        xw[1][c] = z[j];
+        cur->a[0][c] = x[j] + (wm[0] + wm[2]);
+        cur->a[1][c] = z[j] + (wm[1] + wm[3]);
+        alone[c] = fabs(x[j]) > FAR_FROM_ORIGIN || fabs(z[j]) > FAR_FROM_ORIGIN;
+    }
+    lanes_evaluate(lw, st->wave_phase, xw, cur);
+    for (int evals = 1;; evals++) {
+        double open[LANES], d[2][LANES], far[LANES], take[LANES];
+        int any = 0;
+        for (int c = 0; c < LANES; c++) {
+            open[c] = alone[c] == 0.0 && cur->norm[c] > WW_QUERY_TOLERANCE;
+            any |= open[c] != 0.0;
+        }
+        if (!any) break;
+        if (evals >= LANE_EVALUATIONS) {
+            for (int c = 0; c < LANES; c++) alone[c] = open[c] != 0.0 ? 1.0 : alone[c];
+            break;
+        }
+        lanes_direction(lw, cur, d);
+        for (int c = 0; c < LANES; c++) {
+            trial->a[0][c] = cur->a[0][c] + d[0][c];
+            trial->a[1][c] = cur->a[1][c] + d[1][c];
+        }
+        lanes_near(lw, xw, cur, trial, far);
+        int anyfar = 0;
+        for (int c = 0; c < LANES; c++) {
+            far[c] = open[c] != 0.0 ? far[c] : 0.0;
+            anyfar |= far[c] != 0.0;
+        }
+        if (anyfar) {
+            for (int c = 0; c < LANES; c++) {
+                cold->a[0][c] = trial->a[0][c];
+                cold->a[1][c] = trial->a[1][c];
+            }
+            lanes_evaluate(lw, st->wave_phase, xw, cold);
+            lanes_take(lw, trial, cold, far);
+        }
+        /* a trial that halves |F| is taken, as invert takes it; any other point goes alone.
+         * Where every lane takes its trial (most first steps) the probes swap roles */
+        int all = 1;
+        for (int c = 0; c < LANES; c++) {
+            int halves = trial->norm[c] <= RESIDUAL_CUT * cur->norm[c];
+            take[c] = open[c] != 0.0 && halves;
+            alone[c] = open[c] != 0.0 && !halves ? 1.0 : alone[c];
+            all &= take[c] != 0.0;
+        }
+        if (all) {
+            lane_probe *was = cur;
+            cur = trial;
+            trial = was;
+        } else {
+            lanes_take(lw, cur, trial, take);
+        }
+    }
+
+    /* finish's height and velocity */
+    double y[LANES], v[3][LANES];
+    for (int c = 0; c < LANES; c++) y[c] = v[0][c] = v[1][c] = v[2][c] = 0.0;
+    for (int i = 0; i < lw->n; i++) {
+        const lane_wave *w = &lw->w[i];
+        double A = w->amplitude, qa = w->steepness * A, om = w->omega;
+        double dx = w->dir[0], dz = w->dir[1];
+        for (int c = 0; c < LANES; c++) {
+            double s = cur->sn[i][c], co = cur->cn[i][c];
+            y[c] += A * s;
+            v[0][c] += qa * om * dx * s;
+            v[1][c] -= om * A * co;
+            v[2][c] += qa * om * dz * s;
+        }
+    }
+
+    /* the ripples at the world points (those whose front reaches the block's rectangle), the
+     * answers and the warm starts */
+    const double *rip = ripples_in_use(sc, st);
+    int rslots = sc->ripples_on ? st->ripple_slots[0] : 0, converged = 0;
+    if (rslots <= 0) rslots = sc->ripples.max;
+    double near[WW_MAX_RIPPLES * WW_RIPPLE_STRIDE];
+    if (rip) {
+        double lo[2] = {x[0], z[0]}, hi[2] = {x[0], z[0]};
+        for (int c = 1; c < m; c++) {
+            lo[0] = fmin(lo[0], x[c]), hi[0] = fmax(hi[0], x[c]);
+            lo[1] = fmin(lo[1], z[c]), hi[1] = fmax(hi[1], z[c]);
+        }
+        rslots = ww_ripples_reaching(sc, rip, rslots, st->t, lo, hi, near);
+        rip = rslots > 0 ? near : NULL;
+    }
+    for (int c = 0; c < m; c++) {
+        double *wm = warm + WW_WARM_STRIDE * c;
+        if (alone[c] != 0.0) {
+            ww_water_sample ws;
+            converged += ww_water_at_warm(sc, st, x[c], z[c], minL, wm, &ws);
+            height[c] = ws.height;
+            if (velocity)
+                for (int k = 0; k < 3; k++) velocity[3 * c + k] = ws.velocity[k];
+            continue;
+        }
+        double rdt, rh = ww_ripples_height_n(sc, rip, rslots, st->t, x[c], z[c], NULL, &rdt);
+        height[c] = sc->water_level + y[c] + rh;
+        if (velocity) {
+            velocity[3 * c] = v[0][c];
+            velocity[3 * c + 1] = v[1][c] + rdt;
+            velocity[3 * c + 2] = v[2][c];
+        }
+        for (int k = 0; k < 2; k++) {
+            double off = cur->a[k][c] - (k ? z[c] : x[c]);
+            wm[2 + k] = off - wm[k];
+            wm[k] = off;
+        }
+        converged += cur->norm[c] <= WW_QUERY_TOLERANCE;
+    }
+    return converged;
+}
+
+int ww_water_at_warm_n(const ww_scene *sc, const ww_state *st, int n, const double *x,
+                       const double *z, double min_wavelength, double *warm, double *height,
+                       double *velocity) {
+    int converged = 0;
+    lane_waves lw;
+    lw.n = 0;
+    int lanes = (sc->wave_model == WW_WAVES_GERSTNER || sc->wave_model == WW_WAVES_SPECTRUM) &&
+                sc->nwaves <= LANE_WAVES;
+    for (int i = 0; lanes && i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        if (w->wavelength < min_wavelength) continue;
+        lw.w[lw.n++] = (lane_wave){.k = w->k, .dir = {w->dir[0], w->dir[1]},
+                                   .steepness = w->steepness, .amplitude = w->amplitude,
+                                   .omega = w->omega, .index = i};
+    }
+    for (int j = 0; j < n; j += LANES) {
+        int m = n - j < LANES ? n - j : LANES;
+        double *vj = velocity ? velocity + 3 * j : NULL;
+        if (lanes) {
+            converged += lanes_query(sc, st, &lw, min_wavelength, m, x + j, z + j,
+                                     warm + WW_WARM_STRIDE * j, height + j, vj);
+            continue;
+        }
+        for (int c = 0; c < m; c++) {
+            ww_water_sample ws;
+            converged += ww_water_at_warm(sc, st, x[j + c], z[j + c], min_wavelength,
+                                          warm + WW_WARM_STRIDE * (j + c), &ws);
+            height[j + c] = ws.height;
+            if (vj)
+                for (int k = 0; k < 3; k++) vj[3 * c + k] = ws.velocity[k];
+        }
+    }
+    return converged;
 }

@@ -78,4 +78,16 @@ double ww_water_lowest(const ww_scene *sc, const ww_state *st);
 int ww_water_at_warm(const ww_scene *sc, const ww_state *st, double x, double z,
                      double min_wavelength, double warm[WW_WARM_STRIDE], ww_water_sample *out);
 
+/* the warm query at n points at once, for what needs only the height and the water's velocity
+ * (a box's columns, sim/boxwater.c; the boat's samples): x, z, min_wavelength and warm
+ * (WW_WARM_STRIDE values a point) as n ww_water_at_warm calls would take them; height (n) and
+ * velocity (3 n, xyz a point; NULL: not wanted) as their answers' height and velocity, to the
+ * bit. The points go through the iteration together in lanes (structure of arrays, vectorised
+ * by the compiler); a point that leaves the common path (a trial that does not halve |F|, a far
+ * point, a long wave list) is answered by ww_water_at_warm itself. Returns the number of points
+ * that converged. */
+int ww_water_at_warm_n(const ww_scene *sc, const ww_state *st, int n, const double *x,
+                       const double *z, double min_wavelength, double *warm, double *height,
+                       double *velocity);
+
 #endif
