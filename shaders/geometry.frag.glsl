@@ -187,11 +187,12 @@ vec3 ww_fog(vec3 c, float l, bool below) {
 vec3 ww_fog_segment(vec3 c, vec3 p) {
     vec3 e = u_eye;
     float he = e.y - u_water_y, hp = p.y - u_water_y, len = length(p - e);
-    bool eye_below = he < 0.0 && !u_mirrored, p_below = hp < 0.0;
-    if (eye_below == p_below) return ww_fog(c, len, eye_below);
-    float near = len * he / (he - hp); // where the segment crosses the plane
+    bool eye_below = he < 0.0 && !u_mirrored, p_below = hp < 0.0, split = eye_below != p_below;
+    // unsplit, the far part is the whole segment: two fogs, not three (llvmpipe would work out
+    // the unsplit case's as well for every pixel)
+    float near = split ? len * he / (he - hp) : 0.0; // where the segment crosses the plane
     c = ww_fog(c, len - near, p_below);
-    return ww_fog(c, near, eye_below);
+    return split ? ww_fog(c, near, eye_below) : c;
 }
 
 #if WW_FISH_PATTERNS
