@@ -50,6 +50,8 @@ layout(std140) uniform WwRipples {
     int u_nripples;
     vec4 u_ripple_param;            // (alpha 1/m, beta 1/s, kr rad/m, v m/s)
     vec4 u_ripple_shape;            // (front width lambda = 2 pi / kr m, softening r0 = 1 / kr m, 0, 0)
+    vec4 u_ripple_bound;            // (x - centre.x m, z - centre.z m, radius m, 0): every front
+                                    // lies inside this circle (radius < 0: no ripple)
     vec4 u_ripple[WW_MAX_RIPPLES];  // (x - centre.x m, z - centre.z m, age s, A0 m)
 };
 #endif
@@ -128,7 +130,13 @@ vec3 ww_ripples(vec2 q, ww_footprint fp) {
     float alpha = u_ripple_param.x, beta = u_ripple_param.y, kr = u_ripple_param.z;
     float v = u_ripple_param.w, lambda = u_ripple_shape.x, r0 = u_ripple_shape.y;
     if (ww_faded_out(lambda, fp.inv_pix)) return s;
-    for (int i = 0; i < u_nripples; i++) {
+    // outside the circle that holds every front no ripple has arrived: the loop's count is per
+    // point, so llvmpipe leaves it for a block of pixels none of which lies inside (a branch
+    // would cost every pixel the loop's body)
+    vec2 dc = q - u_ripple_bound.xy;
+    float rb = u_ripple_bound.z;
+    int n = rb >= 0.0 && dot(dc, dc) <= rb * rb ? u_nripples : 0;
+    for (int i = 0; i < n; i++) {
         vec4 e = u_ripple[i];
         vec2 d = q - e.xy;
         float r = sqrt(dot(d, d) + r0 * r0);

@@ -309,6 +309,7 @@ typedef struct ww_ripple_block {
     int32_t n, pad_[3];
     float param[4];                  /* (alpha, beta, kr, v) */
     float shape[4];                  /* (lambda, r0, 0, 0) */
+    float bound[4];                  /* (x, z, radius, 0): a circle holding every front */
     float ripple[WW_MAX_RIPPLES][4]; /* (x - centre.x, z - centre.z, age, A0) */
 } ww_ripple_block;
 

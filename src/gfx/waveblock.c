@@ -79,6 +79,30 @@ void ww_water_waves_phases(const ww_scene *sc, const ww_state *st, const double 
     }
 }
 
+/* a circle that holds every live ripple's front: a ripple is exactly 0 beyond v age + lambda
+ * from its centre (ripples.c's causal front), so the shaders evaluate none outside it. The
+ * circle about the middle of the fronts' bounding box, widened by a part in a thousand and a
+ * millimetre against the float rounding of the distance the shaders compare */
+static void ripple_bound(ww_ripple_block *b, double speed) {
+    double lo[2] = {1e30, 1e30}, hi[2] = {-1e30, -1e30}, radius = 0.0;
+    for (int i = 0; i < b->n; i++) {
+        double front = speed * b->ripple[i][2] + b->shape[0];
+        for (int k = 0; k < 2; k++) {
+            lo[k] = fmin(lo[k], b->ripple[i][k] - front);
+            hi[k] = fmax(hi[k], b->ripple[i][k] + front);
+        }
+    }
+    double c[2] = {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])};
+    for (int i = 0; i < b->n; i++) {
+        double front = speed * b->ripple[i][2] + b->shape[0];
+        radius = fmax(radius, hypot(b->ripple[i][0] - c[0], b->ripple[i][1] - c[1]) + front);
+    }
+    b->bound[0] = b->n ? (float)c[0] : 0.0f;
+    b->bound[1] = b->n ? (float)c[1] : 0.0f;
+    b->bound[2] = b->n ? (float)(radius * 1.001 + 1e-3) : -1.0f;
+    b->bound[3] = 0.0f;
+}
+
 int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double centre[2],
                           ww_ripple_block *b) {
     const ww_ripple_desc *d = &sc->ripples;
@@ -102,6 +126,7 @@ int ww_water_pack_ripples(const ww_scene *sc, const ww_state *st, const double c
         }
     }
     b->n = n;
+    ripple_bound(b, d->speed);
     return n;
 }
 
