@@ -404,8 +404,8 @@ void main() {
 
     // reflection: the mirrored scene, or the sky
 #if WW_REFLECT_TEX
-    vec4 rt = texture(u_reflection, clamp(uv0 + off, EDGE, 1.0 - EDGE));
-    vec3 refl = mix(ww_sky_any(rdir), rt.rgb, rt.a);
+    // the pass draws its sky behind the mirrored geometry, so the texture is whole everywhere
+    vec3 refl = texture(u_reflection, clamp(uv0 + off, EDGE, 1.0 - EDGE)).rgb;
 #else
     vec3 refl = ww_sky_any(rdir);
 #endif
