@@ -31,6 +31,12 @@ vec3 ww_sun_glow(vec3 d) {
     return u_sun_color * 0.5 * c;
 }
 
+// WW_CLOUDS 0 (gfx/sky.c, per scene): sky.clouds.cover is 0, and the clouds' noise, which every
+// sky pixel would work out to find no cloud (llvmpipe runs both arms of the test), is left out
+#ifndef WW_CLOUDS
+#define WW_CLOUDS 1
+#endif
+
 // Preetham's sky (sky.model preetham, and under the dome), set by gfx/sky.c per frame
 uniform vec3 u_perez[5];      // Perez coefficients A..E, each for (Y, x, y)
 uniform vec3 u_perez_zenith;  // zenith (Y kcd/m^2, x, y) over F(0, theta_sun)
@@ -76,6 +82,9 @@ vec3 ww_sky_exact_clear(vec3 d) {
 // sky (its share u_sky_mode.y), under the glow. Exact by day (share 1); in the twilight fade the
 // clouds blend over the gradient's share too (the map keeps one clear colour)
 vec3 ww_sky_with_clouds(vec3 m, vec3 d, float a) {
+#if !WW_CLOUDS
+    return m;
+#endif
     if (a <= 0.0 || d.y <= 0.0 || u_sky_mode.x < 0.5) return m;
     vec3 g = ww_sun_glow(d), c = m - g;
     return mix(c, ww_sky_clouds_over(c, d, a), min(u_sky_mode.y, 1.0)) + g;
@@ -417,6 +426,9 @@ vec3 ww_perez(float ct, float g, float cg) {
 // cloud cover along d in [0, 1]: fbm on a plane above the camera drifting with the simulated
 // time (the dome's clouds), thresholded by sky.clouds.cover
 float ww_sky_cloud(vec3 d) {
+#if !WW_CLOUDS
+    return 0.0;
+#endif
     if (u_sky_clouds.x <= 0.0 || d.y <= 0.0) return 0.0;
     vec2 p = d.xz / (d.y + WW_DOME_CLOUD_HEIGHT) * WW_DOME_CLOUD_SCALE + u_sky_clouds.yz;
     float lo = 0.72 - 0.34 * u_sky_clouds.x;

@@ -480,7 +480,7 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
              "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n%s",
              ww_water_shader_model(sc->wave_model), ww_water_wave_count(sc), g->caustics,
              kind == GEOM_LIT_FISH, kind == GEOM_LIT_MAP, ww_lights_scatter_on(sc), g->sway,
-             GEOM_MODE[kind], sc->render.nlights > 0, ww_sky_map_define(sc));
+             GEOM_MODE[kind], sc->render.nlights > 0, ww_sky_defines(sc));
     geom_prog *v = &g->var[kind];
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &v->prog, err);

@@ -51,7 +51,7 @@ static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_
     ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "reflection_sky.frag.glsl",
                                        includes,
                                        ww_sky_dome_image_on(sc) ? "#define WW_SKY_DOME_IMAGE 1\n"
-                                                                : ww_sky_map_define(sc),
+                                                                : ww_sky_defines(sc),
                                        &p->prog, err);
     if (rc != WW_OK) {
         reflection_destroy(p, gl);

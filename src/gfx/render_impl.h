@@ -256,9 +256,9 @@ typedef struct ww_sky_locs {
 /* the texture unit the sky map (pass_skymap.c) stays bound to for the whole frame; no other
  * program uses it */
 #define WW_TEX_SKY_MAP 15
-/* "#define WW_SKY_MAP 1\n" when the scene's sky is drawn from the map, "" otherwise: the
- * programs that include common.glsl add it to their defines */
-const char *ww_sky_map_define(const ww_scene *sc);
+/* the #define lines of the scene's sky that the programs including common.glsl add to their
+ * own: WW_SKY_MAP 1 when the sky is drawn from the map, WW_CLOUDS 1 when it has clouds */
+const char *ww_sky_defines(const ww_scene *sc);
 /* sc: the scene whose sky (model, turbidity, clouds) the program draws */
 void ww_sky_locs_init(const ww_gl *gl, GLuint prog, const ww_scene *sc, ww_sky_locs *l);
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st);

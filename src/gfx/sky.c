@@ -177,8 +177,11 @@ void ww_fog_below_color(const ww_scene *sc, const ww_state *st, double out[3]) {
     for (int c = 0; c < 3; c++) out[c] = sc->render.fog_below_color[c] * k;
 }
 
-const char *ww_sky_map_define(const ww_scene *sc) {
-    return ww_sky_map_on(sc) ? "#define WW_SKY_MAP 1\n" : "";
+const char *ww_sky_defines(const ww_scene *sc) {
+    static const char *const defs[2][2] = {
+        {"#define WW_CLOUDS 0\n", "#define WW_CLOUDS 1\n"},
+        {"#define WW_SKY_MAP 1\n#define WW_CLOUDS 0\n", "#define WW_SKY_MAP 1\n#define WW_CLOUDS 1\n"}};
+    return defs[ww_sky_map_on(sc) != 0][sc->render.cloud_cover > 0.0];
 }
 
 void ww_sky_locs_set(const ww_gl *gl, const ww_sky_locs *l, const ww_state *st) {
@@ -323,7 +326,7 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     snprintf(s->defines, sizeof s->defines,
              "%s#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n%s",
              defines[s->model] ? defines[s->model] : "", s->scatter, ww_sky_dome_image_on(sc),
-             ww_sky_map_define(sc));
+             ww_sky_defines(sc));
     /* the side most frames see is built now, so a broken shader fails before the first frame */
     ww_result rc = build_variant(s, gl, sc, 0, err);
     /* one cube texture per renderer: a second sky (the reflection's) draws the first one's */

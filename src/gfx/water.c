@@ -303,7 +303,7 @@ static void scene_defines(const ww_scene *sc, char *out, size_t size) {
              lk->detail == WW_DETAIL_TEXTURE, sc->render.sky == WW_SKY_CUBEMAP,
              lk->alpha_blend != 0, lk->foam && lk->foam_amount > 0.0,
              lk->fresnel == WW_FRESNEL_SCHLICK, sc->render.nlights > 0, detail,
-             ww_sky_map_define(sc));
+             ww_sky_defines(sc));
 }
 
 /* builds variant `bits` (WATER_*) of the program and finds its uniforms */
