@@ -16,6 +16,13 @@ const float WW_PI = 3.14159265358979;
 #define WW_LIGHTS 1
 #endif
 uniform int u_nlights;
+// WW_NLIGHTS: the scene's count of lights, built in by the programs that light (geometry.c,
+// water.c, sky.c) as u_nlights would be: a loop of fixed count unrolls into direct uniform
+// reads, where a uniform count made llvmpipe gather every light's uniforms lane by lane (a
+// ninth of the reef's wreck view with its one lantern)
+#ifndef WW_NLIGHTS
+#define WW_NLIGHTS u_nlights
+#endif
 uniform vec3 u_light_pos[WW_NLIGHTS_MAX];   // camera-relative, m
 uniform vec3 u_light_dir[WW_NLIGHTS_MAX];   // spot axis, unit
 uniform vec3 u_light_color[WW_NLIGHTS_MAX]; // colour x intensity x flicker of this frame
@@ -258,7 +265,7 @@ vec3 ww_lights_water(vec3 p, vec3 n, vec3 v, vec3 albedo, float shininess, bool 
     vec3 c = vec3(0.0);
 #if WW_LIGHTS
     float norm = (shininess + 8.0) / (8.0 * WW_PI);
-    for (int i = 0; i < u_nlights; i++) {
+    for (int i = 0; i < WW_NLIGHTS; i++) {
         vec3 l;
         float att = ww_light_att(i, p, l);
         float nl = dot(n, l);
@@ -347,7 +354,7 @@ vec3 ww_lights_scatter(vec3 o, vec3 d, float t0, float t1, float rho, vec2 px) {
     vec3 sum = vec3(0.0);
     float xi = fract(52.9829189 * fract(dot(px, vec2(0.06711056, 0.00583715))));
     float g = WW_SCATTER_G, g2 = g * g;
-    for (int i = 0; i < u_nlights; i++) {
+    for (int i = 0; i < WW_NLIGHTS; i++) {
         float k = u_light_scatter[i];
         vec4 q = u_light_param[i];
         vec3 co = o - u_light_pos[i];
@@ -391,7 +398,7 @@ vec3 ww_lights_scatter(vec3 o, vec3 d, float t0, float t1, float rho, vec2 px) {
 // px: the pixel (gl_FragCoord.xy), which dithers the samples
 vec3 ww_lights_scatter_segment(vec3 e, vec3 p, float water_y, bool air_only, float rho, vec2 px) {
 #if WW_LIGHT_SCATTER
-    if (air_only || u_nlights == 0) return vec3(0.0);
+    if (air_only || WW_NLIGHTS == 0) return vec3(0.0);
     float he = e.y - water_y, hp = p.y - water_y, len = length(p - e);
     vec3 d = (p - e) / max(len, 1e-6);
     // the part of [0, len] under the plane, empty when there is none; one call, not one per

@@ -380,7 +380,7 @@ void main() {
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
 
 #if WW_LIGHTS
-    for (int i = 0; i < u_nlights; i++) {
+    for (int i = 0; i < WW_NLIGHTS; i++) {
         vec3 l;
         float att = ww_light_att(i, p, l);
         float nl = max(dot(n, l), 0.0);

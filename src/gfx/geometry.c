@@ -472,15 +472,16 @@ static void put_lights(const ww_geometry *g, const ww_gl *gl, const light_locs *
 static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *sc, int kind,
                               ww_error *err) {
     static const char *const includes[] = {"common.glsl", "gerstner.glsl", "shadow.glsl", NULL};
-    char defs[360];
+    char defs[400];
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_NWAVES %d\n#define WW_RIPPLES 0\n"
              "#define WW_FADE 1\n#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n"
              "#define WW_MAT_MAP %d\n#define WW_LIGHT_SCATTER %d\n"
-             "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n%s",
+             "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n"
+             "#define WW_NLIGHTS %d\n%s",
              ww_water_shader_model(sc->wave_model), ww_water_wave_count(sc), g->caustics,
              kind == GEOM_LIT_FISH, kind == GEOM_LIT_MAP, ww_lights_scatter_on(sc), g->sway,
-             GEOM_MODE[kind], sc->render.nlights > 0, ww_sky_defines(sc));
+             GEOM_MODE[kind], sc->render.nlights > 0, sc->render.nlights, ww_sky_defines(sc));
     geom_prog *v = &g->var[kind];
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
                                        defs, &v->prog, err);

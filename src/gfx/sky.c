@@ -35,7 +35,7 @@ typedef struct sky_prog {
 
 struct ww_sky {
     sky_prog var[2]; /* by the camera's side: 0 above the water, 1 below */
-    char defines[160];
+    char defines[200];
     ww_sky_model model;
     ww_renderer *r;   /* its geometry holds this frame's lights (the glow under water) */
     int scatter;      /* WW_LIGHT_SCATTER: the lights glow in the water */
@@ -296,7 +296,7 @@ static ww_result build_variant(ww_sky *s, const ww_gl *gl, const ww_scene *sc, i
                                ww_error *err) {
     static const char *const includes[] = {"common.glsl", NULL};
     sky_prog *v = &s->var[below];
-    char defs[200];
+    char defs[240];
     snprintf(defs, sizeof defs, "#define WW_SKY_BELOW %d\n%s", below, s->defines);
     ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "sky.frag.glsl", includes, defs,
                                        &v->prog, err);
@@ -324,9 +324,9 @@ ww_result ww_sky_new(ww_renderer *r, const ww_scene *sc, ww_sky **out, ww_error 
     s->r = r;
     s->scatter = ww_lights_scatter_on(sc);
     snprintf(s->defines, sizeof s->defines,
-             "%s#define WW_LIGHT_SCATTER %d\n#define WW_SKY_DOME_IMAGE %d\n%s",
-             defines[s->model] ? defines[s->model] : "", s->scatter, ww_sky_dome_image_on(sc),
-             ww_sky_defines(sc));
+             "%s#define WW_LIGHT_SCATTER %d\n#define WW_NLIGHTS %d\n#define WW_SKY_DOME_IMAGE %d\n%s",
+             defines[s->model] ? defines[s->model] : "", s->scatter, sc->render.nlights,
+             ww_sky_dome_image_on(sc), ww_sky_defines(sc));
     /* the side most frames see is built now, so a broken shader fails before the first frame */
     ww_result rc = build_variant(s, gl, sc, 0, err);
     /* one cube texture per renderer: a second sky (the reflection's) draws the first one's */

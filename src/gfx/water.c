@@ -298,11 +298,11 @@ static void scene_defines(const ww_scene *sc, char *out, size_t size) {
              "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
              "#define WW_SKY_DOME_IMAGE %d\n#define WW_DUDV_TEXTURE %d\n"
              "#define WW_SKY_CUBE %d\n#define WW_ALPHA_BLEND %d\n#define WW_FOAM %d\n"
-             "#define WW_FRESNEL_SCHLICK %d\n#define WW_LIGHTS %d\n%s%s",
+             "#define WW_FRESNEL_SCHLICK %d\n#define WW_LIGHTS %d\n#define WW_NLIGHTS %d\n%s%s",
              foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc),
              lk->detail == WW_DETAIL_TEXTURE, sc->render.sky == WW_SKY_CUBEMAP,
              lk->alpha_blend != 0, lk->foam && lk->foam_amount > 0.0,
-             lk->fresnel == WW_FRESNEL_SCHLICK, sc->render.nlights > 0, detail,
+             lk->fresnel == WW_FRESNEL_SCHLICK, sc->render.nlights > 0, sc->render.nlights, detail,
              ww_sky_defines(sc));
 }
 
