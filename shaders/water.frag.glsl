@@ -124,6 +124,11 @@ uniform vec4 u_foam_phase[FOAM_WAVES]; // (phase at the centre now rad, omega ra
 uniform vec2 u_foam_step[FOAM_WAVES];  // (cos, sin) of omega times the taps' spacing
 // (components in use, 0: no memory; life s; spacing of the taps s; longest of their wavelengths m)
 uniform vec4 u_foam_memory;
+// WW_FOAM_N: u_foam_memory.x built in (water.c, per scene), so the loop over the components
+// unrolls into direct reads of their uniforms rather than gathers lane by lane (llvmpipe)
+#ifndef WW_FOAM_N
+#define WW_FOAM_N int(u_foam_memory.x)
+#endif
 
 in vec2 v_local;
 in vec3 v_pos;
@@ -212,8 +217,7 @@ float ww_foam_aged(vec2 p, float xi, float inv_long) {
         dz[j] = vec3(0.0, 0.0, 1.0);
     }
     float dt = u_foam_memory.z;
-    int n = int(u_foam_memory.x);
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < WW_FOAM_N; i++) {
         vec4 w = u_foam_wave[i], ph = u_foam_phase[i];
         float k = length(w.xy);
         vec2 dir = w.xy / k;

@@ -290,16 +290,16 @@ static void set_foam_memory(const ww_water *w, const water_prog *v, const ww_gl 
 
 /* the scene's own #defines, the same for every variant of the program. The switches a scene
  * keeps for its whole run are built in rather than tested per pixel (see water_prog) */
-static void scene_defines(const ww_scene *sc, char *out, size_t size) {
+static void scene_defines(const ww_scene *sc, int foam_n, char *out, size_t size) {
     const ww_water_look *lk = &sc->render.water;
     char detail[400];
     ww_water_detail_define(detail, sizeof detail);
     snprintf(out, size,
-             "#define WW_FOAM_MEMORY %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_FOAM_MEMORY %d\n#define WW_FOAM_N %d\n#define WW_LIGHT_SCATTER %d\n"
              "#define WW_SKY_DOME_IMAGE %d\n#define WW_DUDV_TEXTURE %d\n"
              "#define WW_SKY_CUBE %d\n#define WW_ALPHA_BLEND %d\n#define WW_FOAM %d\n"
              "#define WW_FRESNEL_SCHLICK %d\n#define WW_LIGHTS %d\n#define WW_NLIGHTS %d\n%s%s",
-             foam_remembers(sc), ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc),
+             foam_remembers(sc), foam_n, ww_lights_scatter_on(sc), ww_sky_dome_image_on(sc),
              lk->detail == WW_DETAIL_TEXTURE, sc->render.sky == WW_SKY_CUBEMAP,
              lk->alpha_blend != 0, lk->foam && lk->foam_amount > 0.0,
              lk->fresnel == WW_FRESNEL_SCHLICK, sc->render.nlights > 0, sc->render.nlights, detail,
@@ -367,7 +367,8 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     w->cull = !(cull && strcmp(cull, "0") == 0);
     w->fade = !(fade && strcmp(fade, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
-    scene_defines(sc, w->defines, sizeof w->defines);
+    foam_components(sc, w);
+    scene_defines(sc, w->foam_n, w->defines, sizeof w->defines);
     /* the variant seen from above with the images the scene's passes make: built now, so a
      * shader that does not compile fails here rather than in the middle of a run */
     int first = (sc->render.reflection.on ? WATER_REFL : 0) | (sc->render.refraction ? WATER_REFR : 0);
@@ -379,7 +380,6 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
         ww_water_free(w, gl);
         return rc;
     }
-    foam_components(sc, w);
     *out = w;
     return WW_OK;
 }
