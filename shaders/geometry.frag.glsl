@@ -31,6 +31,12 @@
 #ifndef WW_MAT_MAP
 #define WW_MAT_MAP 0
 #endif
+// WW_SUNLESS 1: the build for the stencilled shadows' second draw of what lies in shadow
+// (geometry.c): no sunlight reaches it, so none of the sun's terms is built in (what the lit
+// build gives with ww_shadow 0: the ambient, the lights and the emission)
+#ifndef WW_SUNLESS
+#define WW_SUNLESS 0
+#endif
 
 #ifndef WW_GEOM_MODE
 #define WW_GEOM_MODE 1
@@ -365,7 +371,7 @@ void main() {
             sun *= (1.0 - (0.02 + 0.98 * m2 * m2 * m)) * ci / max(-ts.y, 1e-3);
         }
         amb *= t;
-#if WW_CAUSTICS == 2 || (WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT)
+#if !WW_SUNLESS && (WW_CAUSTICS == 2 || (WW_CAUSTICS && WW_WAVE_MODEL != WW_MODEL_FLAT))
         // the surface point the refracted sun ray through p left from (camera-relative xz)
         vec3 tr = refract(-u_sun_dir, vec3(0.0, 1.0, 0.0), 1.0 / WW_ETA_WATER);
         vec2 q = p.xz - tr.xz * (depth / min(tr.y, -0.05));
@@ -373,11 +379,15 @@ void main() {
         sun *= max(1.0 + u_caustics * (caustic - 1.0), 0.0);
 #endif
     }
+#if WW_SUNLESS
+    vec3 c = albedo * amb;
+#else
     float lit = ww_shadow(p, n);
     float ndl = max(dot(n, l), 0.0);
     vec3 h = normalize(l + v);
     vec3 spec = ndl > 0.0 ? pow(max(dot(n, h), 0.0), shininess) * ks : vec3(0.0);
     vec3 c = albedo * (amb + sun * ndl * lit) + sun * spec * lit;
+#endif
 
 #if WW_LIGHTS
     for (int i = 0; i < WW_NLIGHTS; i++) {

@@ -129,11 +129,25 @@ typedef struct light_locs {
  * and the glow column's code while it was one program switched by a uniform (a fifth of the
  * lake's prepass). For the same reason the lit draws have three builds: plain, with the
  * material's texture (WW_MAT_MAP: an OBJ submesh with map_Kd) and with the fish species'
- * patterns (WW_FISH_PATTERNS: their slots), so the rest pay for neither */
-enum { GEOM_DEPTH, GEOM_LIT, GEOM_GLOW, GEOM_BUBBLE, GEOM_LIT_MAP, GEOM_LIT_FISH, GEOM_PROGS };
+ * patterns (WW_FISH_PATTERNS: their slots), so the rest pay for neither; and, in scenes with
+ * stencilled shadows, each again without the sun (WW_SUNLESS) for the second draw of what lies
+ * in shadow, which then skips the sunlight's path, the caustics and the highlight */
+enum {
+    GEOM_DEPTH,
+    GEOM_LIT,
+    GEOM_GLOW,
+    GEOM_BUBBLE,
+    GEOM_LIT_MAP,
+    GEOM_LIT_FISH,
+    GEOM_SUNLESS, /* the three lit builds without the sun, in the same order */
+    GEOM_SUNLESS_MAP,
+    GEOM_SUNLESS_FISH,
+    GEOM_PROGS
+};
 static const int GEOM_MODE[GEOM_PROGS] = {
-    [GEOM_DEPTH] = 0, [GEOM_LIT] = 1,     [GEOM_GLOW] = 2,
-    [GEOM_BUBBLE] = 3, [GEOM_LIT_MAP] = 1, [GEOM_LIT_FISH] = 1};
+    [GEOM_DEPTH] = 0,   [GEOM_LIT] = 1,         [GEOM_GLOW] = 2,
+    [GEOM_BUBBLE] = 3,  [GEOM_LIT_MAP] = 1,     [GEOM_LIT_FISH] = 1,
+    [GEOM_SUNLESS] = 1, [GEOM_SUNLESS_MAP] = 1, [GEOM_SUNLESS_FISH] = 1};
 
 typedef struct geom_prog {
     GLuint prog; /* 0: the scene never draws this kind */
@@ -476,11 +490,13 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     snprintf(defs, sizeof defs,
              "#define WW_WAVE_MODEL %d\n#define WW_NWAVES %d\n#define WW_RIPPLES 0\n"
              "#define WW_FADE 1\n#define WW_CAUSTICS %d\n#define WW_FISH_PATTERNS %d\n"
-             "#define WW_MAT_MAP %d\n#define WW_LIGHT_SCATTER %d\n"
+             "#define WW_MAT_MAP %d\n#define WW_SUNLESS %d\n#define WW_LIGHT_SCATTER %d\n"
              "#define WW_SWAY %d\n#define WW_GEOM_MODE %d\n#define WW_LIGHTS %d\n"
              "#define WW_NLIGHTS %d\n%s",
              ww_water_shader_model(sc->wave_model), ww_water_wave_count(sc), g->caustics,
-             kind == GEOM_LIT_FISH, kind == GEOM_LIT_MAP, ww_lights_scatter_on(sc), g->sway,
+             kind == GEOM_LIT_FISH || kind == GEOM_SUNLESS_FISH,
+             kind == GEOM_LIT_MAP || kind == GEOM_SUNLESS_MAP, kind >= GEOM_SUNLESS,
+             ww_lights_scatter_on(sc), g->sway,
              GEOM_MODE[kind], sc->render.nlights > 0, sc->render.nlights, ww_sky_defines(sc));
     geom_prog *v = &g->var[kind];
     ww_result rc = ww_gfx_program_defs(gl, "geometry.vert.glsl", "geometry.frag.glsl", includes,
@@ -535,14 +551,23 @@ static const geom_prog *use(ww_geometry *g, const ww_gl *gl, int kind) {
     return g->cur;
 }
 
+static int is_lit(int kind) {
+    return kind == GEOM_LIT || kind == GEOM_LIT_MAP || kind == GEOM_LIT_FISH || kind >= GEOM_SUNLESS;
+}
+
 /* while a lit program is in use, switches to the lit build `kind` (GEOM_LIT, _MAP, _FISH) when
- * the scene has it, else to the plain one; a depth-only draw keeps its program */
+ * the scene has it, else to the plain one, each without the sun in the stencilled shadows'
+ * second draw; a depth-only draw keeps its program */
 static void use_lit(ww_geometry *g, const ww_gl *gl, int kind) {
-    const geom_prog *c = g->cur;
-    if (c != &g->var[GEOM_LIT] && c != &g->var[GEOM_LIT_MAP] && c != &g->var[GEOM_LIT_FISH])
-        return;
+    int cur = (int)(g->cur - g->var);
+    if (!is_lit(cur)) return;
     if (!g->var[kind].prog) kind = GEOM_LIT;
-    if (c != &g->var[kind]) use(g, gl, kind);
+    if (g->stage == WW_GEOM_STAGE_SUNLESS) {
+        int dark = kind == GEOM_LIT ? GEOM_SUNLESS : kind == GEOM_LIT_MAP ? GEOM_SUNLESS_MAP
+                                                                         : GEOM_SUNLESS_FISH;
+        if (g->var[dark].prog) kind = dark;
+    }
+    if (cur != kind) use(g, gl, kind);
 }
 
 /* the GL texture of the scene's image `index` (a material's map_Kd), uploaded the first time a
@@ -687,6 +712,13 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     if (rc == WW_OK && g->nimage > 0) rc = make_program(g, gl, sc, GEOM_LIT_MAP, err);
     if (rc == WW_OK && sc->fish.on && sc->fish.nspecies > 0)
         rc = make_program(g, gl, sc, GEOM_LIT_FISH, err);
+    /* the stencilled techniques draw what lies in shadow again, without the sun */
+    if (sc->render.shadows.on && sc->render.shadows.technique != WW_SHADOW_MAP)
+        for (int k = GEOM_LIT; k <= GEOM_LIT_FISH && rc == WW_OK; k++)
+            if (is_lit(k) && g->var[k].prog)
+                rc = make_program(g, gl, sc, k == GEOM_LIT ? GEOM_SUNLESS
+                                             : k == GEOM_LIT_MAP ? GEOM_SUNLESS_MAP
+                                                                 : GEOM_SUNLESS_FISH, err);
     if (rc != WW_OK) {
         ww_geometry_free(g, gl);
         return rc;
@@ -1223,6 +1255,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     for (int k = 0; k < GEOM_PROGS; k++)
         if (g->var[k].prog) set_uniforms(g, use(g, gl, k), r, f, mode, view_proj, clip);
     use(g, gl, mode == WW_GEOM_SHADOW ? GEOM_DEPTH : GEOM_LIT);
+    use_lit(g, gl, GEOM_LIT); /* without the sun in the stencilled shadows' second draw */
     if (clip) gl->Enable(GL_CLIP_DISTANCE0);
     else gl->Disable(GL_CLIP_DISTANCE0);
 
