@@ -135,7 +135,8 @@ static double clamp_integral(double x, double s) {
  * int_0^xi V = dA U.y sum (C(w_c) - C(w_c - xi / U.y)), C = clamp_integral, and
  * d Vbar / d xi = (V(xi) - Vbar) / xi. Below a ten-millionth of the box the secant cancels: there
  * Vbar is V at the midpoint (exact on a linear piece) and its slope half of V's there. */
-static double volume_mean(const ww_box_water *w, double xi, double *slope) {
+static double volume_mean(const ww_box_water *w, const double *wet_integral, double xi,
+                          double *slope) {
     double s = w->length, lift = xi / w->up_y;
     if (fabs(lift) < 1e-7 * s) {
         double v = 0.0, wet = 0.0;
@@ -150,7 +151,7 @@ static double volume_mean(const ww_box_water *w, double xi, double *slope) {
     double acc = 0.0, v = 0.0;
     for (int c = 0; c < w->ncolumns; c++) {
         double x = w->wet[c] - lift;
-        acc += clamp_integral(w->wet[c], s) - clamp_integral(x, s);
+        acc += wet_integral[c] - clamp_integral(x, s);
         v += ww_m_clamp(x, 0.0, s);
     }
     double mean = w->cell_area * w->up_y * acc / xi;
@@ -172,8 +173,11 @@ double ww_box_heave_step(const ww_box_water *w, const double extent[3], double k
      * A_w xi / 2), which is the answer while no column's wet length reaches 0 or the box */
     double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
     if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
+    /* C(w_c) of every column, the same at every iterate */
+    double wet_integral[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS];
+    for (int c = 0; c < w->ncolumns; c++) wet_integral[c] = clamp_integral(w->wet[c], w->length);
     for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
-        double slope, r = den * xi - base - dt * kb * volume_mean(w, xi, &slope);
+        double slope, r = den * xi - base - dt * kb * volume_mean(w, wet_integral, xi, &slope);
         if (r == 0.0) break;
         if (r > 0.0)
             hi = xi;
