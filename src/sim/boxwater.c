@@ -190,8 +190,15 @@ double ww_box_heave_step(const ww_box_water *w, const double extent[3], double k
         else
             lo = xi;
         double dr = den - dt * kb * slope, next = xi - r / dr;
-        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
         double tol = HEAVE_TOLERANCE * (fabs(lo) + fabs(hi)) + 1e-300;
+        /* a Newton step within the tolerance: xi is the root to rounding. Tested before the
+         * safeguard, which takes a step onto the bracket's end (xi itself, most often the
+         * first guess's) for one leaving it and bisects, two evaluations for nothing */
+        if (dr > 0.0 && fabs(next - xi) <= tol) {
+            xi = next;
+            break;
+        }
+        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
         if (fabs(next - xi) <= tol || hi - lo <= tol || next <= lo || next >= hi) {
             xi = next;
             break;
