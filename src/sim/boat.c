@@ -56,12 +56,13 @@ void ww_boat_frame(double heading, double pitch, double roll, double fwd[3], dou
     }
 }
 
-/* what the hull follows at (x, z) with this heading: [0] the height of the hull centre, [1] pitch
- * from bow and stern, [2] roll from port and starboard (seed 001's sampling) */
-static void surface_targets(const ww_scene *sc, ww_state *st, double x, double z,
-                            double heading, double out[3]) {
+/* what the hull follows at (x, z) with the heading whose cosine and sine are fx, fz: [0] the
+ * height of the hull centre, [1] pitch from bow and stern, [2] roll from port and starboard (seed
+ * 001's sampling) */
+static void surface_targets(const ww_scene *sc, ww_state *st, double x, double z, double fx,
+                            double fz, double out[3]) {
     const ww_boat_desc *b = &sc->boat;
-    double fx = cos(heading), fz = sin(heading); /* starboard is (-fz, fx) */
+    /* starboard is (-fz, fx) */
     double hl = 0.5 * b->length, hb = 0.5 * b->beam, minL = b->length;
     /* centre, bow, stern, port, starboard: one warm start per sample, in this order, queried
      * together (sim/water.h) */
@@ -74,11 +75,12 @@ static void surface_targets(const ww_scene *sc, ww_state *st, double x, double z
 }
 
 /* y follows u through dy/dt = (u - y) / tau over a step in which u goes linearly from u0 to u1:
- * y(t) = u(t) - s tau + (y0 - u0 + s tau) e^(-t / tau) with s = (u1 - u0) / dt, exact */
-static double follow(double y0, double u0, double u1, double dt, double tau) {
+ * y(t) = u(t) - s tau + (y0 - u0 + s tau) e^(-t / tau) with s = (u1 - u0) / dt, exact; decay is
+ * e^(-dt / tau) */
+static double follow(double y0, double u0, double u1, double dt, double tau, double decay) {
     if (tau <= 0.0) return u1;
     double s_tau = (u1 - u0) * (tau / dt);
-    return u1 - s_tau + (y0 - u0 + s_tau) * exp(-dt / tau);
+    return u1 - s_tau + (y0 - u0 + s_tau) * decay;
 }
 
 /* forward speed after dt under throttle u: dv/dt = a u - k v from v0, exact; *mean is the mean
@@ -124,16 +126,17 @@ static void move(const ww_scene *sc, ww_state *st, double dt) {
     double h1 = wrap_pi(h0 + dh);
     st->boat_heading[0] = h1;
     st->boat_speed[0] = v1;
-    v[0] = v1 * (cos(h1) - slip * sin(h1));
-    v[2] = v1 * (sin(h1) + slip * cos(h1));
+    double c1 = cos(h1), s1 = sin(h1);
+    v[0] = v1 * (c1 - slip * s1);
+    v[2] = v1 * (s1 + slip * c1);
 
     /* height, pitch and roll after the surface (first-order hold of the targets) */
-    double target[3], y0 = p[1];
-    surface_targets(sc, st, p[0], p[2], h1, target);
-    p[1] = follow(p[1], st->boat_follow[0], target[0], dt, b->bob_time);
+    double target[3], y0 = p[1], decay = b->bob_time > 0.0 ? exp(-dt / b->bob_time) : 0.0;
+    surface_targets(sc, st, p[0], p[2], c1, s1, target);
+    p[1] = follow(p[1], st->boat_follow[0], target[0], dt, b->bob_time, decay);
     for (int i = 0; i < 2; i++)
         st->boat_tilt[i] = follow(st->boat_tilt[i], st->boat_follow[1 + i], target[1 + i], dt,
-                                  b->bob_time);
+                                  b->bob_time, decay);
     for (int i = 0; i < 3; i++) st->boat_follow[i] = target[i];
     v[1] = (p[1] - y0) / dt;
 }
@@ -196,7 +199,8 @@ void ww_boat_reset(const ww_scene *sc, ww_state *st) {
     st->boat_speed[0] = 0.0;
     st->boat_tilt[0] = st->boat_tilt[1] = 0.0;
     for (int k = 0; k < WW_WARM_STRIDE * WW_BOAT_SAMPLES; k++) st->boat_warm[k] = 0.0; /* cold */
-    surface_targets(sc, st, b->position[0], b->position[2], st->boat_heading[0], st->boat_follow);
+    surface_targets(sc, st, b->position[0], b->position[2], cos(st->boat_heading[0]),
+                    sin(st->boat_heading[0]), st->boat_follow);
     st->boat_input[0] = st->boat_input[1] = 0.0;
     st->boat_input[2] = UNTIL_NONE;
     st->boat_command[0] = st->boat_command[1] = st->boat_command[3] = 0.0;

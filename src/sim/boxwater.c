@@ -51,21 +51,21 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
 
     *out = (ww_box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
                           .cell_area = dA, .length = s};
-    /* each column's volume and centroid offset from the centre, then sums over point-mirrored
-     * pairs, so that a symmetric box on flat water feels exactly no torque (rounding would
-     * otherwise seed a tilt that an unstable box amplifies) */
     enum { MAXC = WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS };
-    double vol[MAXC], off3[MAXC][3], vel3[MAXC][3];
-    /* the columns' centre lines and the surface over them, the warm queries all at once */
-    double rc[MAXC][3], px[MAXC], pz[MAXC], height[MAXC];
+    /* the columns' centre lines (offsets r from the centre, one array a coordinate) and the
+     * surface over them, the warm queries all at once */
+    double rx[MAXC], ry[MAXC], rz[MAXC], px[MAXC], pz[MAXC], height[MAXC], vel3[MAXC][3];
     int nc = n * n;
     for (int iu = 0; iu < n; iu++) {
+        double u = (iu + 0.5 - 0.5 * n) * cp;
         for (int iv = 0; iv < n; iv++) {
             int col = iu * n + iv;
-            double u = (iu + 0.5 - 0.5 * n) * cp, v = (iv + 0.5 - 0.5 * n) * cq;
-            for (int k = 0; k < 3; k++) rc[col][k] = u * P[k] + v * Q[k];
-            px[col] = c[0] + rc[col][0];
-            pz[col] = c[2] + rc[col][2];
+            double v = (iv + 0.5 - 0.5 * n) * cq;
+            rx[col] = u * P[0] + v * Q[0];
+            ry[col] = u * P[1] + v * Q[1];
+            rz[col] = u * P[2] + v * Q[2];
+            px[col] = c[0] + rx[col];
+            pz[col] = c[2] + rz[col];
         }
     }
     if (warm) {
@@ -78,36 +78,42 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
             for (int k = 0; k < 3; k++) vel3[col][k] = ws.velocity[k];
         }
     }
+    /* each column's volume and centroid offset from the centre */
+    double vol[MAXC], ox[MAXC], oy[MAXC], oz[MAXC];
     for (int col = 0; col < nc; col++) {
-        const double *r = rc[col];
-        double wet = (height[col] - (c[1] + r[1])) / U[1] + h; /* submerged length along U */
+        double wet = (height[col] - (c[1] + ry[col])) / U[1] + h; /* submerged length along U */
         double L = ww_m_clamp(wet, 0.0, s);
         out->wet[col] = wet;
         if (wet > 0.0 && wet < s) {
-            double r2 = r[0] * r[0] + r[2] * r[2];
+            double r2 = rx[col] * rx[col] + rz[col] * rz[col];
             out->waterplane += dA / U[1];
             out->waterplane_moment += dA / U[1] * r2;
         }
         double off = 0.5 * (L - s);
         vol[col] = dA * L;
-        for (int k = 0; k < 3; k++) off3[col][k] = r[k] + off * U[k];
+        ox[col] = rx[col] + off * U[0];
+        oy[col] = ry[col] + off * U[1];
+        oz[col] = rz[col] + off * U[2];
     }
+    /* sums over point-mirrored pairs, so that a symmetric box on flat water feels exactly no
+     * torque (rounding would otherwise seed a tilt that an unstable box amplifies) */
     double moment[3] = {0.0, 0.0, 0.0}, vel[3] = {0.0, 0.0, 0.0};
     for (int a0 = 0; a0 < (nc + 1) / 2; a0++) {
         int a1 = nc - 1 - a0;
+        double v0 = vol[a0], v1 = vol[a1];
         if (a1 == a0) {
-            out->volume += vol[a0];
-            for (int k = 0; k < 3; k++) {
-                moment[k] += vol[a0] * off3[a0][k];
-                vel[k] += vol[a0] * vel3[a0][k];
-            }
+            out->volume += v0;
+            moment[0] += v0 * ox[a0];
+            moment[1] += v0 * oy[a0];
+            moment[2] += v0 * oz[a0];
+            for (int k = 0; k < 3; k++) vel[k] += v0 * vel3[a0][k];
             continue;
         }
-        out->volume += vol[a0] + vol[a1];
-        for (int k = 0; k < 3; k++) {
-            moment[k] += vol[a0] * off3[a0][k] + vol[a1] * off3[a1][k];
-            vel[k] += vol[a0] * vel3[a0][k] + vol[a1] * vel3[a1][k];
-        }
+        out->volume += v0 + v1;
+        moment[0] += v0 * ox[a0] + v1 * ox[a1];
+        moment[1] += v0 * oy[a0] + v1 * oy[a1];
+        moment[2] += v0 * oz[a0] + v1 * oz[a1];
+        for (int k = 0; k < 3; k++) vel[k] += v0 * vel3[a0][k] + v1 * vel3[a1][k];
     }
     if (out->volume > 0.0) {
         for (int k = 0; k < 3; k++) {
@@ -135,7 +141,8 @@ static double clamp_integral(double x, double s) {
  * int_0^xi V = dA U.y sum (C(w_c) - C(w_c - xi / U.y)), C = clamp_integral, and
  * d Vbar / d xi = (V(xi) - Vbar) / xi. Below a ten-millionth of the box the secant cancels: there
  * Vbar is V at the midpoint (exact on a linear piece) and its slope half of V's there. */
-static double volume_mean(const ww_box_water *w, double xi, double *slope) {
+static double volume_mean(const ww_box_water *w, const double *wet_integral, double xi,
+                          double *slope) {
     double s = w->length, lift = xi / w->up_y;
     if (fabs(lift) < 1e-7 * s) {
         double v = 0.0, wet = 0.0;
@@ -150,7 +157,7 @@ static double volume_mean(const ww_box_water *w, double xi, double *slope) {
     double acc = 0.0, v = 0.0;
     for (int c = 0; c < w->ncolumns; c++) {
         double x = w->wet[c] - lift;
-        acc += clamp_integral(w->wet[c], s) - clamp_integral(x, s);
+        acc += wet_integral[c] - clamp_integral(x, s);
         v += ww_m_clamp(x, 0.0, s);
     }
     double mean = w->cell_area * w->up_y * acc / xi;
@@ -172,16 +179,26 @@ double ww_box_heave_step(const ww_box_water *w, const double extent[3], double k
      * A_w xi / 2), which is the answer while no column's wet length reaches 0 or the box */
     double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
     if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
+    /* C(w_c) of every column, the same at every iterate */
+    double wet_integral[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS];
+    for (int c = 0; c < w->ncolumns; c++) wet_integral[c] = clamp_integral(w->wet[c], w->length);
     for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
-        double slope, r = den * xi - base - dt * kb * volume_mean(w, xi, &slope);
+        double slope, r = den * xi - base - dt * kb * volume_mean(w, wet_integral, xi, &slope);
         if (r == 0.0) break;
         if (r > 0.0)
             hi = xi;
         else
             lo = xi;
         double dr = den - dt * kb * slope, next = xi - r / dr;
-        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
         double tol = HEAVE_TOLERANCE * (fabs(lo) + fabs(hi)) + 1e-300;
+        /* a Newton step within the tolerance: xi is the root to rounding. Tested before the
+         * safeguard, which takes a step onto the bracket's end (xi itself, most often the
+         * first guess's) for one leaving it and bisects, two evaluations for nothing */
+        if (dr > 0.0 && fabs(next - xi) <= tol) {
+            xi = next;
+            break;
+        }
+        if (!(dr > 0.0) || !(next > lo && next < hi)) next = 0.5 * (lo + hi);
         if (fabs(next - xi) <= tol || hi - lo <= tol || next <= lo || next >= hi) {
             xi = next;
             break;

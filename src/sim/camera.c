@@ -85,29 +85,30 @@ static void find_segment(const ww_scene *sc, double t, int *i, double *u, double
     *u = (t - sc->cam[lo].t) / *h;
 }
 
+/* the angles of keys lo .. hi (those the segment's Hermite tangents read), the yaw unwrapped so
+ * neighbours differ by at most pi: only the segment's neighbourhood, so a step costs the same
+ * whatever the path's length */
+static void key_angles_near(const ww_scene *sc, int lo, int hi, keyset *ks) {
+    for (int k = lo; k <= hi; k++) {
+        key_angles(&sc->cam[k], &ks->yaw[k], &ks->pitch[k]);
+        if (k > lo) {
+            while (ks->yaw[k] - ks->yaw[k - 1] > WW_PI) ks->yaw[k] -= WW_TAU;
+            while (ks->yaw[k] - ks->yaw[k - 1] < -WW_PI) ks->yaw[k] += WW_TAU;
+        }
+    }
+}
+
 void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], double *fov) {
-    keyset ks = {.sc = sc};
+    keyset ks; /* the angles are filled where they are read (key_angles_near) */
+    ks.sc = sc;
     int n = sc->ncam, i;
     double u, h;
     WW_ASSERT(n >= 1);
     find_segment(sc, t, &i, &u, &h);
-
-    /* angles of the keys the segment's Hermite tangents read (i - 1 .. i + 2), the yaw unwrapped
-     * so neighbours differ by at most pi: only the segment's neighbourhood, so a step costs the
-     * same whatever the path's length */
-    int lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1, all_targets = 1;
-    for (int k = lo; k <= hi; k++) {
-        all_targets &= sc->cam[k].has_look_at;
-        key_angles(&sc->cam[k], &ks.yaw[k], &ks.pitch[k]);
-        if (k > lo) {
-            while (ks.yaw[k] - ks.yaw[k - 1] > WW_PI) ks.yaw[k] -= WW_TAU;
-            while (ks.yaw[k] - ks.yaw[k - 1] < -WW_PI) ks.yaw[k] += WW_TAU;
-        }
-    }
-    /* target interpolation needs every key of the path to aim at a point (camera.h) */
-    for (int k = 0; k < n && all_targets; k++) all_targets &= sc->cam[k].has_look_at;
+    int lo = i > 0 ? i - 1 : 0, hi = i + 2 < n ? i + 2 : n - 1;
 
     if (n == 1) {
+        key_angles_near(sc, 0, 0, &ks);
         for (int c = 0; c < 3; c++) pos[c] = key_value(&ks, 0, CH_POS + c);
         ww_camera_dir(ks.yaw[0], ks.pitch[0], fwd);
         *fov = key_value(&ks, 0, CH_FOV);
@@ -116,6 +117,10 @@ void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], 
     for (int c = 0; c < 3; c++) pos[c] = channel_at(&ks, i, u, h, CH_POS + c);
     *fov = channel_at(&ks, i, u, h, CH_FOV);
 
+    /* target interpolation needs every key of the path to aim at a point (camera.h); then the
+     * keys' angles are not needed */
+    int all_targets = 1;
+    for (int k = 0; k < n && all_targets; k++) all_targets &= sc->cam[k].has_look_at;
     double target[3], d[3];
     if (all_targets) {
         for (int c = 0; c < 3; c++) target[c] = channel_at(&ks, i, u, h, CH_TARGET + c);
@@ -126,6 +131,7 @@ void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], 
             return;
         }
     }
+    key_angles_near(sc, lo, hi, &ks);
     double pitch = ww_m_clamp(channel_at(&ks, i, u, h, CH_PITCH), ww_m_rad(-89.9), ww_m_rad(89.9));
     ww_camera_dir(channel_at(&ks, i, u, h, CH_YAW), pitch, fwd);
 }

@@ -162,7 +162,7 @@ static void forces_archimedes(const ww_scene *sc, ww_state *st, int i, cube_forc
     /* the ripples' slope force */
     double grad[2] = {0.0, 0.0};
     if (sc->ripples_on && w->volume > 0.0)
-        ww_ripples_height(sc, st->ripple, st->t, c[0], c[2], grad, NULL);
+        ww_ripples_height_n(sc, st->ripple, st->ripple_slots[0], st->t, c[0], c[2], grad, NULL);
     double push = d->nudge * WW_WATER_RHO * WW_G * w->volume / m;
     F->m.ah[0] = -push * grad[0];
     F->m.ah[1] = -push * grad[1];
@@ -194,7 +194,8 @@ static void forces_spring(const ww_scene *sc, ww_state *st, int i, cube_forces *
     F->m.drag_q = 0.0;
 
     double grad[2] = {0.0, 0.0};
-    if (sc->ripples_on) ww_ripples_height(sc, st->ripple, st->t, c[0], c[2], grad, NULL);
+    if (sc->ripples_on)
+        ww_ripples_height_n(sc, st->ripple, st->ripple_slots[0], st->t, c[0], c[2], grad, NULL);
     F->m.ah[0] = -d->nudge * WW_G * grad[0];
     F->m.ah[1] = -d->nudge * WW_G * grad[1];
 }

@@ -281,12 +281,20 @@ static void separation(const ww_scene *sc, const ww_state *st, int i, double pus
     }
 }
 
+/* what every fish's step reads the same: the lowest the surface reaches (nothing in the fish's
+ * step adds a ripple) and the velocity filter's rate without fear */
+typedef struct fish_step_consts {
+    double lowest;      /* ww_water_lowest, m */
+    double calm_filter; /* 1 - e^(-response dt) */
+} fish_step_consts;
+
 /* y into the bounds at the fish's (x, z); the velocity into a bound is removed. A fish deeper
  * than the margin below the lowest the surface reaches anywhere needs no query: the bound
  * under the surface cannot act on it, nor can a trough squeeze the bounds (its lower bound is
  * the seabed's, as ww_fish_depth_bounds gives it for any surface at or above that) */
-static void keep_in_water(const ww_scene *sc, const ww_state *st, double p[3], double v[3]) {
-    double lo, hi, low = ww_water_lowest(sc, st);
+static void keep_in_water(const ww_scene *sc, const ww_state *st, const fish_step_consts *ks,
+                          double p[3], double v[3]) {
+    double lo, hi, low = ks->lowest;
     ww_fish_depth_bounds(sc, low, &lo, &hi);
     if (!(p[1] <= hi && hi > lo)) ww_fish_depth_bounds(sc, surface(sc, st, p[0], p[2]), &lo, &hi);
     if (p[1] > hi) {
@@ -299,7 +307,7 @@ static void keep_in_water(const ww_scene *sc, const ww_state *st, double p[3], d
     }
 }
 
-static void swim(const ww_scene *sc, ww_state *st, int i) {
+static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i, dt = sc->dt;
     double g[2], fl[3];
@@ -348,7 +356,8 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
 
     /* seed 000's first-order filter (quicker when frightened), the change of velocity bounded
      * by WW_FISH_MAX_ACCEL dt, then move */
-    double a = -expm1(-(f->response + FLEE_RESPONSE * alarm) * dt), dv[3];
+    double a = alarm == 0.0 ? ks->calm_filter
+                            : -expm1(-(f->response + FLEE_RESPONSE * alarm) * dt), dv[3];
     for (int k = 0; k < 3; k++) dv[k] = (want_v[k] - v[k]) * a;
     double dvn = ww_m_len3(dv);
     if (dvn > WW_FISH_MAX_ACCEL * dt)
@@ -357,7 +366,7 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
         v[k] += dv[k];
         p[k] += v[k] * dt;
     }
-    keep_in_water(sc, st, p, v);
+    keep_in_water(sc, st, ks, p, v);
 
     /* a coordinated turn's bank from the yaw rate */
     st->fish_yaw_rate[i] = turn / dt;
@@ -368,7 +377,8 @@ static void swim(const ww_scene *sc, ww_state *st, int i) {
 /* the mouth toward the hook, the heading wiggling about the bite's direction, tau into the
  * fight: the fish dashes there at WW_FISH_DASH from where it bit (a fish 2.5 m under the lure
  * used to be there in one frame), then holds it */
-static void anchor(const ww_scene *sc, ww_state *st, int i, double tau) {
+static void anchor(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i,
+                   double tau) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i;
     double yaw0 = st->fish_yaw[i];
@@ -382,13 +392,13 @@ static void anchor(const ww_scene *sc, ww_state *st, int i, double tau) {
         v[k] = u * d[k] / sc->dt;
         p[k] += u * d[k];
     }
-    keep_in_water(sc, st, p, v);
+    keep_in_water(sc, st, ks, p, v);
     st->fish_yaw[i] = yaw;
     st->fish_yaw_rate[i] = wrap_pi(yaw - yaw0) / sc->dt;
     st->fish_bank[i] = 0.0;
 }
 
-static void bite(const ww_scene *sc, ww_state *st, int i) {
+static void bite(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i) {
     const ww_fish_desc *f = &sc->fish;
     const double *p = st->fish_pos + 3 * i;
     st->fish_mode[i] = WW_FISH_FIGHTING;
@@ -398,14 +408,14 @@ static void bite(const ww_scene *sc, ww_state *st, int i) {
     st->rod_fish[0] = (double)i;
     st->lure_state[0] = WW_LURE_HOOKED;
     ww_emit(sc, st, WW_SE_BITE, i, p, 0.0, (double)i);
-    anchor(sc, st, i, 0.0);
+    anchor(sc, st, ks, i, 0.0);
 }
 
 /* fighting on the line; caught when the fight's time is up */
-static void fight(const ww_scene *sc, ww_state *st, int i) {
+static void fight(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i) {
     const ww_fish_desc *f = &sc->fish;
     double tau = st->fish_timer[i] += sc->dt;
-    anchor(sc, st, i, tau);
+    anchor(sc, st, ks, i, tau);
     if (tau < st->fish_fight[i]) return;
 
     st->fish_caught[0] += 1.0;
@@ -417,6 +427,9 @@ static void fight(const ww_scene *sc, ww_state *st, int i) {
 
 void ww_fish_step(const ww_scene *sc, ww_state *st) {
     const ww_fish_desc *f = &sc->fish;
+    /* the calm filter as swim works it out at alarm 0, to the bit */
+    fish_step_consts ks = {.lowest = ww_water_lowest(sc, st),
+                           .calm_filter = -expm1(-(f->response + FLEE_RESPONSE * 0.0) * sc->dt)};
     for (int i = 0; i < f->count; i++) {
         switch ((int)st->fish_mode[i]) {
         case WW_FISH_AWAY:
@@ -426,7 +439,7 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
         case WW_FISH_FIGHTING:
             if (sc->rod.on && (int)st->lure_state[0] == WW_LURE_HOOKED &&
                 (int)st->rod_fish[0] == i) {
-                fight(sc, st, i);
+                fight(sc, st, &ks, i);
                 break;
             }
             /* the line was reeled in under it */
@@ -434,11 +447,11 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
             ww_emit(sc, st, WW_SE_FISH_ESCAPE, i, st->fish_pos + 3 * i, 0.0, 0.0);
             break;
         default:
-            swim(sc, st, i);
+            swim(sc, st, &ks, i);
             if (lure_free(sc, st) &&
                 len2(st->lure_pos[0] - st->fish_pos[3 * i],
                      st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius)
-                bite(sc, st, i);
+                bite(sc, st, &ks, i);
             break;
         }
     }

@@ -138,7 +138,7 @@ static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
 
     double grad[2] = {0.0, 0.0};
     if (sc->ripples_on && w->volume > 0.0)
-        ww_ripples_height(sc, st->ripple, st->t, c[0], c[2], grad, NULL);
+        ww_ripples_height_n(sc, st->ripple, st->ripple_slots[0], st->t, c[0], c[2], grad, NULL);
     double push = d->nudge * WW_WATER_RHO * WW_G * w->volume / m;
     F->m.ah[0] = -push * grad[0];
     F->m.ah[1] = -push * grad[1];

@@ -629,7 +629,9 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, const lane_waves 
                 for (int k = 0; k < 3; k++) velocity[3 * c + k] = ws.velocity[k];
             continue;
         }
-        double rdt, rh = ww_ripples_height_n(sc, rip, rslots, st->t, x[c], z[c], NULL, &rdt);
+        /* where no ripple reaches the block their sum is 0, as ww_ripples_height_n gives it */
+        double rdt = 0.0, rh = 0.0;
+        if (rip) rh = ww_ripples_height_n(sc, rip, rslots, st->t, x[c], z[c], NULL, &rdt);
         height[c] = sc->water_level + y[c] + rh;
         if (velocity) {
             velocity[3 * c] = v[0][c];
