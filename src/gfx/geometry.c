@@ -552,7 +552,8 @@ static const geom_prog *use(ww_geometry *g, const ww_gl *gl, int kind) {
 }
 
 static int is_lit(int kind) {
-    return kind == GEOM_LIT || kind == GEOM_LIT_MAP || kind == GEOM_LIT_FISH || kind >= GEOM_SUNLESS;
+    return kind == GEOM_LIT || kind == GEOM_LIT_MAP || kind == GEOM_LIT_FISH ||
+           kind >= GEOM_SUNLESS;
 }
 
 /* while a lit program is in use, switches to the lit build `kind` (GEOM_LIT, _MAP, _FISH) when
@@ -1155,7 +1156,6 @@ static int draw_obj(ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode mode) {
         }
     }
     set_material(g, gl, NULL);
-    if (g->sway) gl->Uniform4f(g->cur->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f);
     return 1;
 }
 
