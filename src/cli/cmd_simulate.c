@@ -269,7 +269,7 @@ ww_result ww_cmd_simulate(int argc, char **argv, ww_error *err) {
             fputs("}\n", o.tf);
         }
     }
-    ww_steps_progress_end(&pg);
+    ww_steps_progress_end(&pg, st->step);
     r = close_outputs(&o, r, err);
     double wall = ww_now_seconds() - t0;
     if (!r && want_hash) printf("%016" PRIx64 "\n", ww_state_hash(sc, st));

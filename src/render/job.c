@@ -338,7 +338,7 @@ static ww_result step_prefix(const ww_scene *sc, job *j, ww_error *err) {
                             "simulating the prefix", j->st->step, o->first * sc->steps_per_frame);
     r = ww_prefix_advance(sc, j->st, o->first * sc->steps_per_frame, j->audio ? hear_step : NULL,
                           j->audio, &p, &job_signal, err);
-    ww_steps_progress_end(&p);
+    ww_steps_progress_end(&p, j->st->step);
     return r;
 }
 

@@ -30,8 +30,10 @@ void ww_steps_progress_show(ww_steps_progress *p, int64_t step, int final) {
     fflush(stderr);
 }
 
-void ww_steps_progress_end(ww_steps_progress *p) {
-    if (!p->on || p->width == 0) return;
+void ww_steps_progress_end(ww_steps_progress *p, int64_t step) {
+    if (!p->on) return;
+    /* the last count always, so a log of a stretch shorter than the period still holds it */
+    ww_steps_progress_show(p, step, 1);
     fprintf(stderr, "\r%*s\r", p->width, "");
     fflush(stderr);
     p->width = 0;

@@ -6,7 +6,7 @@
  *   ww_steps_progress_begin(&p, on, "simulating the prefix", from_step, to_step);
  *   ww_prefix_advance(sc, st, to_step, hook, ctx, &p, &stop_flag, &err);  // or steps of your own
  *   ww_steps_progress_show(&p, st->step, 0);                              // and this
- *   ww_steps_progress_end(&p);                                            // clears the line
+ *   ww_steps_progress_end(&p, st->step);          // the last count, then clears the line
  *
  * The line is rewritten at most every WW_STEPS_PROGRESS_PERIOD_S, like the frame progress of a
  * render (render/job.c), and only when `on` (stderr a terminal, or --progress; never --quiet).
@@ -34,7 +34,9 @@ typedef struct ww_steps_progress {
 void ww_steps_progress_begin(ww_steps_progress *p, int on, const char *what, int64_t from, int64_t to);
 /* the line for st->step == step (final: whatever the time since the last) */
 void ww_steps_progress_show(ww_steps_progress *p, int64_t step, int final);
-void ww_steps_progress_end(ww_steps_progress *p);
+/* the line for `step` whatever the time (a stretch shorter than the period still shows its
+ * count in a log), then cleared */
+void ww_steps_progress_end(ww_steps_progress *p, int64_t step);
 
 /* called after each step (e.g. the sound track hearing it) */
 typedef void (*ww_step_hook)(void *ctx, const ww_scene *sc, const ww_state *st);
