@@ -591,11 +591,7 @@ static ww_result material_texture(ww_geometry *g, const ww_gl *gl, const ww_scen
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
     gl->TexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, im->width, im->height, 0, GL_RGBA,
                    GL_UNSIGNED_BYTE, rgba);
-    gl->GenerateMipmap(GL_TEXTURE_2D);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    ww_gfx_mipmap_tiled(gl, GL_TEXTURE_2D);
     gl->BindTexture(GL_TEXTURE_2D, 0);
     ww_assets_pixels_free(rgba);
     return WW_OK;
@@ -628,11 +624,7 @@ static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene
     free(pair);
     free(g->cset.texel); /* the GL copy is all the frames need; the set keeps its geometry */
     g->cset.texel = NULL;
-    gl->GenerateMipmap(GL_TEXTURE_2D_ARRAY);
-    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    gl->TexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    ww_gfx_mipmap_tiled(gl, GL_TEXTURE_2D_ARRAY);
     gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
     GLenum e = gl->GetError();
     if (e != GL_NO_ERROR)

@@ -229,6 +229,9 @@ ww_result ww_gfx_fbo_single(const ww_gl *gl, GLuint tex, const char *pass, int s
 GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt);
 /* the depth attachment, with or without stencil; 0 when there is none */
 GLuint ww_gfx_rt_depth(const ww_rt *rt);
+/* the bound texture of `target` (GL_TEXTURE_2D, _2D_ARRAY) made a tile: its mip chain
+ * generated, sampled trilinearly, repeating in both directions */
+void ww_gfx_mipmap_tiled(const ww_gl *gl, GLenum target);
 
 /* program.c: vertex + fragment shader files with includes (NULL-terminated list, prepended in
  * order after #version; may be NULL); WW_E_GL names the file and carries the info log */

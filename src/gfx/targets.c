@@ -173,3 +173,11 @@ ww_result ww_gfx_fbo_single(const ww_gl *gl, GLuint tex, const char *pass, int s
                             pass, side, (unsigned)status);
     return WW_OK;
 }
+
+void ww_gfx_mipmap_tiled(const ww_gl *gl, GLenum target) {
+    gl->GenerateMipmap(target);
+    gl->TexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl->TexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl->TexParameteri(target, GL_TEXTURE_WRAP_T, GL_REPEAT);
+}

@@ -157,11 +157,7 @@ static ww_result dudv_texture(ww_water *w, const ww_gl *gl, ww_error *err) {
     gl->GenTextures(1, &w->dudv_tex);
     gl->BindTexture(GL_TEXTURE_2D, w->dudv_tex);
     gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RG16F, n, n, 0, GL_RG, GL_FLOAT, t);
-    gl->GenerateMipmap(GL_TEXTURE_2D);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    ww_gfx_mipmap_tiled(gl, GL_TEXTURE_2D);
     gl->BindTexture(GL_TEXTURE_2D, 0);
     free(t);
     return WW_OK;
