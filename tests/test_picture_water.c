@@ -4,6 +4,7 @@
  * Each test prints its figures, so a change in the look shows as numbers.
  *   submerged      what lies under water seen through the surface is darker than its part
  *                  above it, and bluer the deeper it lies (Beer-Lambert, red absorbed first)
+ *   rim            what rises above the water is not refracted into the water around it
  *   underwater     a diver sees the seabed: texture (caustics, shading) survives the fog
  *   cubemap        no dark streaks where wave backs reflect the cubemap's lower half
  *   high view      from 300 m: no hard band where the water ends, little pixel-scale noise
@@ -50,6 +51,9 @@
                                   * luma: fine detail, not smooth plastic, whatever the exposure
                                   * (0.0059 at exposure 1.1 into the sun, 0.0062 at 0.7) */
 #define SHIMMER_MAX 3.0          /* mean 8-bit luminance change of the far water between frames */
+#define RIM_MAX_PIXELS 10        /* pixels around a floating cube's top half that its colour
+                                  * reaches through the refraction, at most: the rim of its top
+                                  * bled into the water behind it measured 139 */
 
 typedef struct img {
     ww_image im;
@@ -193,6 +197,68 @@ TEST_IMAGE(picture_water_submerged_darker_and_bluer) {
         img_free(&with);
         img_free(&without);
     }
+}
+
+/* ---- no rim: what rises above the water is not refracted ----------------------------------- */
+
+/* a 1 m cube floating on the lake's two longest waves, seen from 1.6 m up and 5 m away, with
+ * reflection and post effects off. Its pixels are the ones that change when it is moved 4 km
+ * away; with refraction off, only its part above the water. Whatever else changes with
+ * refraction on is its colour carried into the water by the refraction: the submerged part seen
+ * through the surface (below the waterline), and, if the refracted image held the cube's top, a
+ * pale rim along the top and the upper sides, where nothing of it can be seen through water. */
+static const char *const RIM_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 1}\n"
+    "render: {size: [640, 360], shadows: false, reflection: false, bloom: false, god_rays: false,\n"
+    "         fxaa: false, seabed: {on: true, color: [0.25, 0.3, 0.3]}}\n"
+    "sky: {time_of_day: 15}\n"
+    "water:\n"
+    "  depth: 4\n"
+    "  waves: {model: gerstner, list: [{direction: 20, wavelength: 12, amplitude: 0.2, steepness: 0.6},\n"
+    "                                  {direction: -35, wavelength: 5, amplitude: 0.06, steepness: 0.4}]}\n"
+    "  look: {foam: false, caustics: false}\n"
+    "objects:\n"
+    "  cubes: [{position: [0, 0, 0], size: 1, density: 500}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 1.6, -5], look_at: [0, 0.2, 0]}]\n";
+
+TEST_IMAGE(picture_water_no_rim_around_what_floats) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_rim", RIM_SCENE);
+    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
+    char off_away[200];
+    snprintf(off_away, sizeof off_away, "--set render.refraction=false %s", away);
+    img on = render_frame(scene, 0, NULL, "pw_rim_on");
+    img on0 = render_frame(scene, 0, away, "pw_rim_on_away");
+    img off = render_frame(scene, 0, "--set render.refraction=false", "pw_rim_off");
+    img off0 = render_frame(scene, 0, off_away, "pw_rim_off_away");
+    if (on.ok && on0.ok && off.ok && off0.ok) {
+        /* the rows of the part above the water */
+        int top = H, bottom = -1;
+        long above = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++)
+                if (max_diff(&off, &off0, x, y) > MASK_THRESH) {
+                    top = y < top ? y : top;
+                    bottom = y > bottom ? y : bottom;
+                    above++;
+                }
+        ENSURE_MSG(above > 1000, "the cube was not found: %ld pixels", above);
+        long rim = 0;
+        for (int y = 0; y < (top + bottom) / 2; y++)
+            for (int x = 0; x < W; x++)
+                rim += max_diff(&on, &on0, x, y) > MASK_THRESH &&
+                       max_diff(&off, &off0, x, y) <= MASK_THRESH;
+        printf("  the cube above the water: rows %d..%d, %ld px; its colour in the water around "
+               "its top half: %ld px\n", top, bottom, above, rim);
+        ENSURE_MSG(rim <= RIM_MAX_PIXELS, "a rim of %ld pixels around the cube (at most %d)", rim,
+                   RIM_MAX_PIXELS);
+    }
+    img_free(&on);
+    img_free(&on0);
+    img_free(&off);
+    img_free(&off0);
 }
 
 /* ---- submerged outlines: straight, not stairs ------------------------------------------- */

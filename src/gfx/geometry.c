@@ -152,7 +152,7 @@ static const int GEOM_MODE[GEOM_PROGS] = {
 typedef struct geom_prog {
     GLuint prog; /* 0: the scene never draws this kind */
     ww_sky_locs sky;
-    GLint view_proj, clip, ambient, eye, mirrored, water_y, fog_color, fog_density,
+    GLint view_proj, clip, clip_surface, ambient, eye, mirrored, water_y, fog_color, fog_density,
         fog_below_color, fog_below_density, extinction, caustics_loc, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
     GLint scatter_through;
@@ -184,11 +184,12 @@ struct ww_geometry {
     int draws;         /* instanced draws of the last ww_geometry_draw (tests) */
     int glow_clip;     /* the last ww_geometry_draw had a clip plane (the glow draws with it) */
     float glow_cyl[6]; /* the glow column, camera-relative: axis x, z, radius, bottom y, top y */
-    ww_water_waves waves; /* caustics: the wave field's phases at the camera */
+    ww_water_waves waves; /* caustics and the surface clip: the wave field's phases at the camera */
     float detail[WW_WATER_NDETAIL][4]; /* ... and the surface's detail at the camera */
     float dudv_m[2][4], dudv_o[2][2];  /* ... and its DuDv ripples (ww_water_dudv) */
     ww_water_ubos ubos;
     int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
+    int surface_clip;  /* the prepass cuts its geometry at the wave surface, not at a plane */
     GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
@@ -508,6 +509,7 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     ww_sky_locs_init(gl, p, sc, &v->sky);
     v->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
     v->clip = ww_gfx_uniform(gl, p, "u_clip");
+    v->clip_surface = ww_gfx_uniform(gl, p, "u_clip_surface");
     v->ambient = ww_gfx_uniform(gl, p, "u_ambient");
     v->eye = ww_gfx_uniform(gl, p, "u_eye");
     v->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
@@ -640,6 +642,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->uploaded = -1;
     g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
+    g->surface_clip = sc->render.refraction && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     for (int i = 0; i < sc->models.count; i++)
         if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
     g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||
@@ -647,7 +650,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
                                                     WW_SHADOW_VOLUMES_VISIBLE);
     ww_result rc = make_program(g, gl, sc, GEOM_LIT, err);
     if (rc == WW_OK) rc = make_program(g, gl, sc, GEOM_DEPTH, err);
-    if (rc == WW_OK && g->caustics == 1) {
+    if (rc == WW_OK && (g->caustics == 1 || g->surface_clip)) {
         ww_water_waves_init(sc, &g->waves);
         rc = ww_water_ubos_new(gl, sc, &g->waves, &g->ubos, err);
     }
@@ -1061,7 +1064,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         (void)i1; /* layer i0 holds frame i1 too */
         g->cset_frame[0] = (float)i0;
         g->cset_frame[1] = (float)w;
-    } else if (g->caustics) {
+    } else if (g->caustics || g->surface_clip) {
         /* the wave field's phases at the camera: the shader's positions are camera-relative;
          * the surface's fine detail focuses the light too */
         double centre[2] = {cam[0], cam[2]};
@@ -1167,6 +1170,13 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
     gl->UniformMatrix4fv(v->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
     if (clip) gl->Uniform4f(v->clip, clip[0], clip[1], clip[2], clip[3]);
     else gl->Uniform4f(v->clip, 0.0f, 0.0f, 0.0f, 1.0f);
+    /* the prepass keeps what lies on the far side of the wave surface itself (geometry.vert.glsl):
+     * cut at the plane of the highest crest, a cube's top above the water stayed in the image the
+     * water refracts, and the bilinear lookups bled it into the water around the cube as a pale
+     * rim */
+    float side = clip && mode == WW_GEOM_PREPASS && g->surface_clip ? (f->underwater ? -1.0f : 1.0f)
+                                                                     : 0.0f;
+    gl->Uniform2f(v->clip_surface, side, (float)(sc->water_level - f->cam_pos[1]));
     float water_y = (float)(f->surface_y - f->cam_pos[1]);
     gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
     /* reflections see the world from the camera mirrored about the water plane */
@@ -1224,7 +1234,7 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
         gl->Uniform1i(v->cset_loc, WW_TEX_CAUSTIC_SET);
         gl->Uniform4fv(v->cset_at_loc, 1, g->cset_at);
         gl->Uniform2fv(v->cset_frame_loc, 1, g->cset_frame);
-    } else if (g->caustics) {
+    } else if (g->caustics || g->surface_clip) {
         gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
         gl->Uniform4fv(v->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
         gl->Uniform4fv(v->dudv_m_loc, 2, &g->dudv_m[0][0]);

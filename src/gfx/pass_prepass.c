@@ -1,8 +1,10 @@
 /* pass_prepass.c - the scene prepass: lit colour + depth of the solid geometry on the far side of
  * the water from the camera, for refraction (the water samples the colour) and light shafts
- * (they read the depth). From above, what lies under the water, kept by a clip plane at the
- * rest level plus the largest crest (so nothing is cut where the surface dips) and cleared to the
- * under-water fog colour; from below, what lies above it, cleared to the sky's horizon colour.
+ * (they read the depth). From above, what lies under the water, cleared to the under-water fog
+ * colour; from below, what lies above it, cleared to the sky's horizon colour. The geometry cuts
+ * its solids at the wave surface (geometry.vert.glsl); the clip plane given here, at the rest
+ * level plus the largest crest (so nothing is cut where the surface dips), is the cut of flat
+ * water and of the draws that do not follow the waves.
  * Publishes r->shared.scene_color and scene_depth.
  */
 #include <math.h>
