@@ -4,7 +4,7 @@
  * colour; from below, what lies above it, cleared to the sky's horizon colour. The geometry cuts
  * its solids at the wave surface (geometry.vert.glsl); the clip plane given here, at the rest
  * level plus the largest crest (so nothing is cut where the surface dips), is the cut of flat
- * water and of the draws that do not follow the waves.
+ * water and of the stencilled shadows' volumes.
  * Publishes r->shared.scene_color and scene_depth.
  */
 #include <math.h>
