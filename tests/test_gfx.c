@@ -442,6 +442,46 @@ TEST_IMAGE(gfx_water_wedge_culling_changes_no_pixel) {
     world_free(w);
 }
 
+/* the water's rings beyond the radius where the vertex shader fades every wave out are drawn as
+ * one flat band: no pixel may move by more than the float rounding of interpolating across the
+ * larger triangles. Poses looking level at the horizon (where the band lies), from high up,
+ * steeply down and over a long swell, whose flat radius lies farther out */
+#define BAND_LDR_TOL 1            /* 8-bit levels the band's rounding may move a value */
+#define BAND_BAD_FRACTION 1e-4    /* of the values, at most, moved by that much */
+TEST_IMAGE(gfx_water_flat_band_changes_no_pixel) {
+    REQUIRE_GL();
+    world *w = world_new(GFX_W, GFX_H);
+    add_wave(w->sc, 20.0, 12.0, 0.2, 0.6);
+    add_wave(w->sc, -35.0, 5.0, 0.06, 0.4);
+    world_set_time(w, 3.0);
+    static const double poses[][6] = {
+        {0.0, 2.5, 6.0, 0.0, 2.3, -100.0},  {3.0, 1.2, 0.0, -100.0, 1.0, -20.0},
+        {0.0, 60.0, 0.0, 0.0, 0.0, -200.0}, {0.0, 4.0, 0.0, 1.0, 0.0, -8.0},
+    };
+    ww_image a, b;
+    ENSURE(ww_image_alloc(&a, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ENSURE(ww_image_alloc(&b, GFX_W, GFX_H, 3, WW_PIX_U8) == 0);
+    ww_error err = {0};
+    for (int swell = 0; swell < 2; swell++) {
+        if (swell) add_wave(w->sc, 60.0, 60.0, 0.5, 0.3);
+        for (size_t i = 0; i < sizeof poses / sizeof poses[0]; i++) {
+            const double *p = poses[i];
+            world_look_at(w, p[0], p[1], p[2], p[3], p[4], p[5]);
+            setenv("WW_WATER_BAND", "0", 1);
+            ENSURE(render(WW_BACKEND_AUTO, w, &a, NULL, &err) == WW_OK);
+            unsetenv("WW_WATER_BAND");
+            ENSURE(render(WW_BACKEND_AUTO, w, &b, NULL, &err) == WW_OK);
+            size_t moved = count_diff(&a, &b, 0), far = count_diff(&a, &b, BAND_LDR_TOL);
+            ENSURE_MSG(far == 0 && moved <= BAND_BAD_FRACTION * GFX_W * GFX_H * 3,
+                       "swell %d, pose %zu: %zu values moved, %zu by more than %d", swell, i,
+                       moved, far, BAND_LDR_TOL);
+        }
+    }
+    ww_image_free(&a);
+    ww_image_free(&b);
+    world_free(w);
+}
+
 /* copy every built-in shader into dir, then break `broken` */
 static int write_shader_dir(const char *dir, const char *broken) {
     for (const ww_shader_file *f = ww_shader_files; f->name; f++) {
@@ -717,6 +757,8 @@ TEST(gfx_plan_fade_distances) {
     }
     ENSURE(pw->vertex.beyond[0] == 0.0); /* the 0.7 m wave */
     ENSURE(pw->vertex.start == 0.0);
+    /* flat where the last of them, the longest, is gone */
+    ENSURE(pw->flat_beyond == pw->vertex.beyond[pw->vertex.nsteps - 1]);
 
     /* fragment: the footprint across the view, d x pixel angle, reaches half the wavelength */
     double pa = 2.0 * tan(0.5 * w->sc->fov) / GFX_H;

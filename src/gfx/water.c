@@ -51,6 +51,7 @@ struct ww_water {
     int nseg;           /* segments around the mesh (render.grid) */
     double inner_r;     /* radius of the inner disc's outer ring, m */
     int cull;           /* draw only the segments in view (WW_WATER_CULL=0 turns it off) */
+    int band;           /* the flat rings as one band (WW_WATER_BAND=0 keeps every ring) */
     float grid[3]; /* (s0, q - 1, angular step) for the shaders' spacing estimate */
     GLuint dudv_tex; /* water.look.detail: texture: the DuDv noise's gradient, tiled; 0: exact */
     int foam_n;                      /* components foam's memory re-evaluates, 0: none */
@@ -163,10 +164,13 @@ static ww_result dudv_texture(ww_water *w, const ww_gl *gl, ww_error *err) {
     return WW_OK;
 }
 
-/* the two triangles between rings j and j + 1 in segment i */
-static size_t quad(GLuint *idx, size_t k, int nseg, int j, int i) {
+/* a ring counts as flat from this fraction beyond the radius where the fade ends */
+#define FLAT_MARGIN 1e-3
+
+/* the two triangles between rings j and j2 (> j) in segment i */
+static size_t quad(GLuint *idx, size_t k, int nseg, int j, int j2, int i) {
     GLuint a = (GLuint)(1 + j * nseg + i), b = (GLuint)(1 + j * nseg + (i + 1) % nseg);
-    GLuint c = a + (GLuint)nseg, d = b + (GLuint)nseg;
+    GLuint c = a + (GLuint)((j2 - j) * nseg), d = b + (GLuint)((j2 - j) * nseg);
     idx[k++] = a; idx[k++] = b; idx[k++] = c;
     idx[k++] = b; idx[k++] = d; idx[k++] = c;
     return k;
@@ -175,12 +179,13 @@ static size_t quad(GLuint *idx, size_t k, int nseg, int j, int i) {
 /* centre vertex, then m.rings rings of m.segments vertices; indexed triangles in
  * two blocks: the inner disc (a fan and the rings within WW_WATER_INNER_R), then the outer rings
  * one angular segment after another, so that a wedge of segments is one contiguous range and the
- * draw can skip what lies outside the view (water_draw). The layout is the plan's (scene/plan.h),
- * which reports where the spacing fades each wave. */
-static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, double grid,
-                            ww_error *err) {
+ * draw can skip what lies outside the view (water_draw). Beyond the radius where the mesh lies
+ * flat, one band stands for the rings (their vertices stay in the buffer, unused). The layout is
+ * the plan's (scene/plan.h), which reports where the spacing fades each wave. */
+static ww_result build_mesh(ww_water *w, const ww_gl *gl, const ww_scene *sc, ww_error *err) {
     ww_water_mesh m;
-    ww_water_mesh_layout(far_clip, grid, &m);
+    ww_water_mesh_layout(sc->far_clip, sc->render.grid, &m);
+    double far_clip = sc->far_clip;
     const int nseg = m.segments, nring = m.rings;
     w->nseg = nseg;
     double q = m.q, s0 = m.s0, dtheta = m.dtheta;
@@ -205,6 +210,17 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, doubl
      * far clip (the vertex shader keeps the skirt's depth inside the far plane) */
     int skirt = far_clip >= WATER_SKIRT_MIN_FAR && nring > 2 && m.reach < WATER_SKIRT_R;
     w->skirt_r = skirt ? (float)(0.5 * WATER_SKIRT_R) : 1e30f;
+    /* beyond the flat radius the vertex shader moves no vertex, so the rings there lie in the
+     * rest plane and one band from the first of them to the last ring before the skirt draws
+     * what they drew, its position and rest offset interpolated across it exactly as across
+     * theirs (both are affine over a plane). Their rings grow with the distance, so from tens of
+     * metres out each was a fraction of a pixel tall on screen, and llvmpipe shaded each 4x4 block
+     * near the horizon once for every one of the many thin triangles crossing it (the margin keeps
+     * the shader's float spacing clear of the fade's end) */
+    double flat_r = w->fade && w->band ? ww_water_flat_beyond(sc, &m) * (1.0 + FLAT_MARGIN)
+                                       : INFINITY;
+    int last = skirt ? nring - 2 : nring - 1; /* the last ring before the skirt */
+    int first_flat = nring;                   /* the first ring at or beyond flat_r */
     v[0] = v[1] = 0.0f;
     double r = 0.0, step = s0;
     int ninner = 1; /* rings in the inner disc */
@@ -216,6 +232,7 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, doubl
             ninner = j + 1;
             w->inner_r = r;
         }
+        if (r >= flat_r && j < first_flat) first_flat = j;
         for (int i = 0; i < nseg; i++) {
             size_t at = 1 + (size_t)j * (size_t)nseg + (size_t)i;
             v[2 * at] = (float)(r * cos(i * dtheta));
@@ -231,12 +248,25 @@ static ww_result build_mesh(ww_water *w, const ww_gl *gl, double far_clip, doubl
         idx[k++] = (GLuint)(1 + i);
     }
     for (int j = 0; j + 1 < ninner; j++)
-        for (int i = 0; i < nseg; i++) k = quad(idx, k, nseg, j, i);
+        for (int i = 0; i < nseg; i++) k = quad(idx, k, nseg, j, j + 1, i);
     w->ninner = (GLsizei)k;
+    /* the outer rings each segment's quads join, in order: every ring up to the first flat one
+     * (never one inside the disc), then the last before the skirt, then the skirt */
+    int *chain = malloc((size_t)nring * sizeof *chain), n = 0;
+    if (!chain) {
+        free(v);
+        free(idx);
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory for the mesh");
+    }
+    if (first_flat < ninner - 1) first_flat = ninner - 1;
+    for (int j = ninner - 1; j < nring; j++)
+        if (j <= first_flat || j >= last) chain[n++] = j;
     for (int i = 0; i < nseg; i++)
-        for (int j = ninner - 1; j + 1 < nring; j++) k = quad(idx, k, nseg, j, i);
-    w->per_seg = (GLsizei)(6 * (nring - ninner));
-    WW_ASSERT(k == nidx);
+        for (int c = 0; c + 1 < n; c++) k = quad(idx, k, nseg, chain[c], chain[c + 1], i);
+    free(chain);
+    w->per_seg = (GLsizei)(6 * (n - 1));
+    WW_ASSERT(k <= nidx);
+    nidx = k;
 
     gl->GenVertexArrays(1, &w->vao);
     gl->GenBuffers(1, &w->vbo);
@@ -360,8 +390,10 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     ww_water *w = calloc(1, sizeof *w);
     if (!w) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory");
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
+    const char *band = getenv("WW_WATER_BAND");
     w->cull = !(cull && strcmp(cull, "0") == 0);
     w->fade = !(fade && strcmp(fade, "0") == 0);
+    w->band = !(band && strcmp(band, "0") == 0);
     ww_water_waves_init(sc, &w->waves);
     foam_components(sc, w);
     scene_defines(sc, w->foam_n, w->defines, sizeof w->defines);
@@ -369,7 +401,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
      * shader that does not compile fails here rather than in the middle of a run */
     int first = (sc->render.reflection.on ? WATER_REFL : 0) | (sc->render.refraction ? WATER_REFR : 0);
     ww_result rc = build_variant(w, gl, sc, first, err);
-    if (rc == WW_OK) rc = build_mesh(w, gl, sc->far_clip, sc->render.grid, err);
+    if (rc == WW_OK) rc = build_mesh(w, gl, sc, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
     if (rc == WW_OK && sc->render.water.detail == WW_DETAIL_TEXTURE) rc = dudv_texture(w, gl, err);
     if (rc != WW_OK) {

@@ -108,7 +108,7 @@ double ww_water_mesh_spacing(const ww_water_mesh *m, double r) {
 
 /* the smallest distance from the mesh centre where the spacing reaches s (both of its terms
  * grow with r, so the max reaches s where the first of them does); INFINITY past the mesh */
-static double mesh_distance_for(const ww_water_mesh *m, double s) {
+double ww_water_mesh_distance_for(const ww_water_mesh *m, double s) {
     if (m->s0 >= s) return 0.0;
     double r = s / m->dtheta;
     if (m->q > 1.0) {
@@ -159,14 +159,15 @@ static void plan_water(const ww_scene *sc, int height, ww_plan_water *w) {
         if (!(sc->waves[i].k > 0.0)) continue; /* as the shaders: no wave to draw */
         if (L < w->shortest) w->shortest = L;
         if (L > w->longest) w->longest = L;
-        vert[n] = mesh_distance_for(&w->mesh, L / WW_FADE_END_SAMPLES);
+        vert[n] = ww_water_mesh_distance_for(&w->mesh, L / WW_FADE_END_SAMPLES);
         frag[n] = L / (WW_FADE_END_SAMPLES * w->pixel_angle);
         if (frag[n] > w->mesh.reach) frag[n] = INFINITY;
         n++;
     }
     w->components = n;
+    w->flat_beyond = ww_water_flat_beyond(sc, &w->mesh);
     double s = w->shortest;
-    fade_ladder(&w->vertex, n ? mesh_distance_for(&w->mesh, s / WW_FADE_START_SAMPLES) : INFINITY,
+    fade_ladder(&w->vertex, n ? ww_water_mesh_distance_for(&w->mesh, s / WW_FADE_START_SAMPLES) : INFINITY,
                 vert, n);
     double fs = n ? s / (WW_FADE_START_SAMPLES * w->pixel_angle) : INFINITY;
     fade_ladder(&w->fragment, fs <= w->mesh.reach ? fs : INFINITY, frag, n);
@@ -175,10 +176,22 @@ static void plan_water(const ww_scene *sc, int height, ww_plan_water *w) {
     if (w->ripple_pool > 0 && sc->ripples.wavenumber > 0.0) {
         double L = 2.0 * 3.14159265358979323846 / sc->ripples.wavenumber;
         w->ripple_wavelength = L;
-        w->ripple_vertex_out = mesh_distance_for(&w->mesh, L / WW_FADE_END_SAMPLES);
+        w->ripple_vertex_out = ww_water_mesh_distance_for(&w->mesh, L / WW_FADE_END_SAMPLES);
         w->ripple_fragment_out = L / (WW_FADE_END_SAMPLES * w->pixel_angle);
         if (w->ripple_fragment_out > w->mesh.reach) w->ripple_fragment_out = INFINITY;
     }
+}
+
+double ww_water_flat_beyond(const ww_scene *sc, const ww_water_mesh *m) {
+    double longest = 0.0;
+    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
+        if (sc->waves[i].k > 0.0 && sc->waves[i].wavelength > longest)
+            longest = sc->waves[i].wavelength;
+    if (sc->ripples_on && sc->ripples.max > 0 && sc->ripples.wavenumber > 0.0) {
+        double L = 2.0 * 3.14159265358979323846 / sc->ripples.wavenumber;
+        if (L > longest) longest = L;
+    }
+    return longest > 0.0 ? ww_water_mesh_distance_for(m, longest / WW_FADE_END_SAMPLES) : 0.0;
 }
 
 int ww_sky_map_on(const ww_scene *sc) {
@@ -325,6 +338,12 @@ static void print_water(const ww_scene *sc, const ww_plan_water *w, FILE *to) {
                 sc->ripples.lifetime, w->ripple_wavelength);
         print_ripple_fade("vertex shader", w->ripple_vertex_out, to);
         print_ripple_fade("fragment shader", w->ripple_fragment_out, to);
+    }
+    if (isfinite(w->flat_beyond) && w->flat_beyond < w->mesh.reach) {
+        fputs("  mesh       flat beyond ", to);
+        put_m(w->flat_beyond, to);
+        fputs(" from its centre, where the vertex shader moves nothing: the rings there are one "
+              "band\n", to);
     }
 }
 

@@ -94,6 +94,12 @@ void ww_water_mesh_layout(double far_clip, double grid, ww_water_mesh *m);
 /* sample spacing of the mesh at distance r from its centre: rings s0 + (q - 1) r apart, r dtheta
  * around a ring; the larger one */
 double ww_water_mesh_spacing(const ww_water_mesh *m, double r);
+/* the smallest distance from the mesh centre where the spacing reaches s; INFINITY past the mesh */
+double ww_water_mesh_distance_for(const ww_water_mesh *m, double s);
+/* the distance from the mesh centre beyond which the water vertex shader fades every wave and
+ * ripple out (gerstner.glsl: a component is gone where the spacing reaches half its wavelength),
+ * so the mesh lies flat at the rest level there; INFINITY if it never does within the mesh */
+double ww_water_flat_beyond(const ww_scene *sc, const ww_water_mesh *m);
 
 /* how one consumer of the wave field thins it with distance: each component is evaluated whole
  * up to where it starts to fade and not at all beyond where it is faded out */
@@ -120,6 +126,7 @@ typedef struct ww_plan_water {
     int ripple_pool;        /* pool entries (0: no ripples) */
     double ripple_wavelength;               /* m */
     double ripple_vertex_out, ripple_fragment_out; /* m: ripples faded out beyond */
+    double flat_beyond;     /* m: the mesh lies flat beyond (ww_water_flat_beyond) */
 } ww_plan_water;
 
 typedef struct ww_plan {
