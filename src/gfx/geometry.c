@@ -22,6 +22,7 @@
 #define SEABED_CELLS 64      /* grid cells per side */
 #define SEABED_HALF 400.0    /* half its side, m (snapped to the camera) */
 #define SEABED_SNAP 16.0     /* the plane moves on this grid, m */
+#define CUT_MARGIN 0.05f     /* m beyond the crest a draw still takes the cut at the surface */
 
 /* sizes and looks of the things the state moves (the simulation has no sizes for them) */
 #define FISH_LENGTH 0.45          /* m, nose to tail */
@@ -111,6 +112,8 @@ typedef struct gmesh {
     GLsizei nindex;
     int ninst, cap;
     struct instance *copy; /* casters of stencil shadow volumes: this frame's instances; or NULL */
+    float lo[3], hi[3];    /* the mesh's bounding box, mesh units */
+    float ylo, yhi;        /* this frame's instances reach these camera-relative heights, m */
 } gmesh;
 
 typedef struct instance {
@@ -151,6 +154,7 @@ static const int GEOM_MODE[GEOM_PROGS] = {
 
 typedef struct geom_prog {
     GLuint prog; /* 0: the scene never draws this kind */
+    float cut_set; /* the side its u_clip_surface holds (set_uniforms, apply_cut) */
     ww_sky_locs sky;
     GLint view_proj, clip, clip_surface, ambient, eye, mirrored, water_y, fog_color, fog_density,
         fog_below_color, fog_below_density, extinction, caustics_loc, glow, glow_y;
@@ -190,6 +194,11 @@ struct ww_geometry {
     ww_water_ubos ubos;
     int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
     int surface_clip;  /* the prepass cuts its geometry at the wave surface, not at a plane */
+    double crest;      /* m: the most the surface rises above or sinks below its rest level */
+    float cut_side;    /* this pass's side of the cut (geometry.vert.glsl: u_clip_surface) */
+    float cut_level;   /* the rest level, camera-relative, m */
+    float cut_now;     /* the side the next draw needs: cut_side, or 0 for a draw that cannot
+                        * reach the surface */
     GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
@@ -339,6 +348,15 @@ static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert
     gl->GenBuffers(1, &m->vbo);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->vbo);
     gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)nvert * 8 * sizeof(float), verts, GL_STATIC_DRAW);
+    for (int k = 0; k < 3; k++) {
+        m->lo[k] = INFINITY;
+        m->hi[k] = -INFINITY;
+    }
+    for (int i = 0; i < nvert; i++)
+        for (int k = 0; k < 3; k++) {
+            m->lo[k] = fminf(m->lo[k], verts[8 * i + k]);
+            m->hi[k] = fmaxf(m->hi[k], verts[8 * i + k]);
+        }
     GLsizei stride = 8 * sizeof(float);
     gl->EnableVertexAttribArray(0);
     gl->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (void *)0);
@@ -547,10 +565,29 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
 }
 
 /* makes kind's program current */
+/* the program in use takes the side of the cut the draw needs, if it holds another */
+static void apply_cut(ww_geometry *g, const ww_gl *gl) {
+    geom_prog *v = &g->var[g->cur - g->var];
+    if (v->cut_set == g->cut_now) return;
+    gl->Uniform2f(v->clip_surface, g->cut_now, g->cut_level);
+    v->cut_set = g->cut_now;
+}
+
 static const geom_prog *use(ww_geometry *g, const ww_gl *gl, int kind) {
     g->cur = &g->var[kind];
     gl->UseProgram(g->cur->prog);
+    apply_cut(g, gl);
     return g->cur;
+}
+
+/* the cut at the wave surface costs each vertex the waves a few times over: only a draw whose
+ * instances reach the band the surface moves in pays it; the rest keep the plane, which they
+ * lie wholly on the kept side of */
+static void cut_for(ww_geometry *g, const ww_gl *gl, const gmesh *m) {
+    float reach = (float)g->crest + CUT_MARGIN;
+    int near = m->yhi >= g->cut_level - reach && m->ylo <= g->cut_level + reach;
+    g->cut_now = near ? g->cut_side : 0.0f;
+    apply_cut(g, gl);
 }
 
 static int is_lit(int kind) {
@@ -643,6 +680,9 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
     g->surface_clip = sc->render.refraction && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
+    /* every component at its crest at once, and the largest ripple on top (as the prepass) */
+    for (int i = 0; i < sc->nwaves; i++) g->crest += 2.0 * fabs(sc->waves[i].amplitude);
+    if (sc->ripples_on) g->crest += fabs(sc->ripples.amplitude);
     for (int i = 0; i < sc->models.count; i++)
         if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
     g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||
@@ -772,6 +812,23 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     WW_ASSERT(n <= m->cap);
     m->ninst = n;
     if (n <= 0) return;
+    /* the heights the instances reach: the mesh's box through each one's matrix (its second
+     * row), the box's z widened by the tail's beat (geometry.vert.glsl bends mesh z by up to
+     * its amplitude) */
+    m->ylo = INFINITY;
+    m->yhi = -INFINITY;
+    for (int i = 0; i < n; i++) {
+        const float *a = in[i].model;
+        float beat = fabsf(in[i].extra[1]), ylo = a[13], yhi = a[13];
+        for (int c = 0; c < 3; c++) {
+            float w = c == 2 ? beat : 0.0f;
+            float e0 = a[4 * c + 1] * (m->lo[c] - w), e1 = a[4 * c + 1] * (m->hi[c] + w);
+            ylo += fminf(e0, e1);
+            yhi += fmaxf(e0, e1);
+        }
+        m->ylo = fminf(m->ylo, ylo);
+        m->yhi = fmaxf(m->yhi, yhi);
+    }
     if (m->copy) memcpy(m->copy, in, (size_t)n * sizeof *in);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)n * (GLsizeiptr)sizeof *in, in);
@@ -1176,7 +1233,10 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
      * rim */
     float side = clip && mode == WW_GEOM_PREPASS && g->surface_clip ? (f->underwater ? -1.0f : 1.0f)
                                                                      : 0.0f;
-    gl->Uniform2f(v->clip_surface, side, (float)(sc->water_level - f->cam_pos[1]));
+    g->cut_side = g->cut_now = side;
+    g->cut_level = (float)(sc->water_level - f->cam_pos[1]);
+    gl->Uniform2f(v->clip_surface, side, g->cut_level);
+    g->var[v - g->var].cut_set = side;
     float water_y = (float)(f->surface_y - f->cam_pos[1]);
     gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
     /* reflections see the world from the camera mirrored about the water plane */
@@ -1277,10 +1337,14 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
         if (g->slot[s].ninst <= 0) continue;
         use_lit(g, gl, slot_patterned(s) ? GEOM_LIT_FISH : GEOM_LIT);
+        cut_for(g, gl, &g->slot[s]);
         draws += draw_mesh(gl, &g->slot[s]);
     }
-    for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++)
+    for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++) {
+        cut_for(g, gl, &g->obj[i]);
         draws += draw_obj(g, gl, i, mode);
+    }
+    g->cut_now = g->cut_side;
     if (g->sway) gl->Uniform4f(g->cur->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* later draws are rigid */
     if ((parts & WW_GEOM_PART_BUBBLES) && mode == WW_GEOM_MAIN && g->slot[SLOT_BUBBLE].ninst > 0) {
         /* over everything already drawn, the sky included; tested against depth, never written */
