@@ -70,6 +70,7 @@ typedef struct adjacency {
     float *pos;               /* welded positions, 3 per vertex */
     int *tri;                 /* 3 welded corners per triangle */
     float *normal;            /* 3 per triangle, unnormalised (b - a) x (c - a) */
+    float *centre;            /* 3 per triangle, the mean of its corners */
     edge *edges;
 } adjacency;
 
@@ -88,6 +89,10 @@ struct ww_stencil_shadows {
     int finite;    /* the volumes end at `bottom` (a seabed), else at infinity */
     float bottom;  /* camera-relative y they end at */
     int lost;      /* out of memory building a volume: casters left out */
+    unsigned char *dark; /* scratch: each face of the caster being built turned from the light */
+    int dark_cap;
+    float *corners;      /* scratch: its welded corners' three points each (corner_points) */
+    int corner_cap;
 };
 
 /* ---- adjacency, once per mesh ---- */
@@ -121,6 +126,7 @@ static void adjacency_free(adjacency *a) {
     free(a->pos);
     free(a->tri);
     free(a->normal);
+    free(a->centre);
     free(a->edges);
     memset(a, 0, sizeof *a);
 }
@@ -138,8 +144,9 @@ static int adjacency_build(const ww_mesh_data *m, adjacency *a) {
     a->pos = malloc((size_t)nv * 3 * sizeof *a->pos);
     a->tri = malloc((size_t)nt * 3 * sizeof *a->tri);
     a->normal = malloc((size_t)nt * 3 * sizeof *a->normal);
+    a->centre = malloc((size_t)nt * 3 * sizeof *a->centre);
     a->edges = malloc((size_t)nt * 3 * sizeof *a->edges);
-    int ok = keys && remap && he && a->pos && a->tri && a->normal && a->edges;
+    int ok = keys && remap && he && a->pos && a->tri && a->normal && a->centre && a->edges;
     if (ok) {
         for (int i = 0; i < nv; i++) {
             memcpy(keys[i].p, m->vertex + 8 * i, sizeof keys[i].p);
@@ -163,6 +170,10 @@ static int adjacency_build(const ww_mesh_data *m, adjacency *a) {
             n[0] = u[1] * v[2] - u[2] * v[1];
             n[1] = u[2] * v[0] - u[0] * v[2];
             n[2] = u[0] * v[1] - u[1] * v[0];
+            float *ce = a->centre + 3 * t;
+            ce[0] = ce[1] = ce[2] = 0.0f;
+            for (int k = 0; k < 3; k++)
+                for (int r = 0; r < 3; r++) ce[r] += a->pos[3 * c[k] + r] / 3.0f;
             for (int k = 0; k < 3; k++) {
                 int x = c[k], y = c[(k + 1) % 3];
                 he[3 * t + k] = (half_edge){x < y ? x : y, x < y ? y : x, t, x < y};
@@ -228,9 +239,7 @@ static int is_dark(const adjacency *a, int t, const vec3 Lm, float side) {
  * refracted (Um) below it, by the height of its centre (camera-relative) */
 static int face_dark(const ww_stencil_shadows *s, const adjacency *a, int t, const float model[16],
                      const vec3 Lm, const vec3 Um, float side) {
-    float c[3] = {0.0f, 0.0f, 0.0f};
-    for (int k = 0; k < 3; k++)
-        for (int r = 0; r < 3; r++) c[r] += a->pos[3 * a->tri[3 * t + k] + r] / 3.0f;
+    const float *c = a->centre + 3 * t;
     float y = model[1] * c[0] + model[5] * c[1] + model[9] * c[2] + model[13];
     return is_dark(a, t, y < s->level ? Um : Lm, side);
 }
@@ -245,12 +254,6 @@ static void corner(const ww_stencil_shadows *s, const adjacency *a, int v, const
     const double *l = w[1] < s->level ? s->under : s->sun;
     for (int r = 0; r < 3; r++) w[r] -= (float)(VOLUME_START * l[r]);
     w[3] = 1.0f;
-}
-
-static void put_corner(ww_stencil_shadows *s, const adjacency *a, int v, const float model[16]) {
-    float w[4];
-    corner(s, a, v, model, w);
-    put4(s, w);
 }
 
 /* where the sun's ray through w (above the water) meets the surface; w itself under it */
@@ -272,16 +275,39 @@ static void to_bottom(const ww_stencil_shadows *s, const float w[4], float out[4
     out[1] = s->bottom;
 }
 
+/* room for a caster of n faces and v welded corners in the scratch arrays */
+static int reserve_scratch(ww_stencil_shadows *s, int n, int v) {
+    if (n > s->dark_cap) {
+        unsigned char *d = realloc(s->dark, (size_t)n);
+        if (!d) return 0;
+        s->dark = d;
+        s->dark_cap = n;
+    }
+    if (v > s->corner_cap) {
+        float *c = realloc(s->corners, (size_t)v * 12 * sizeof *c);
+        if (!c) return 0;
+        s->corners = c;
+        s->corner_cap = v;
+    }
+    return 1;
+}
+
+/* the three points every volume takes from welded corner v: the corner itself (near cap), where
+ * the sun's ray from it meets the surface, and where the refracted ray from there meets the
+ * bottom (far cap); 12 floats */
+static void corner_points(const ww_stencil_shadows *s, const adjacency *a, int v,
+                          const float model[16], float out[12]) {
+    corner(s, a, v, model, out);
+    to_surface(s, out, out + 4);
+    to_bottom(s, out + 4, out + 8);
+}
+
 /* the side of edge p -> q (reversed when `flip`) along the sunlight: above the water down the
  * sun's ray to the surface, then (and under the water from the start) down the refracted ray to
  * the bottom, or to the point at infinity */
-static void put_side(ww_stencil_shadows *s, const adjacency *a, int p, int q, int flip,
-                     const float model[16], const float inf[4]) {
-    float w0[4], w1[4], s0[4], s1[4];
-    corner(s, a, flip ? q : p, model, w0);
-    corner(s, a, flip ? p : q, model, w1);
-    to_surface(s, w0, s0);
-    to_surface(s, w1, s1);
+static void put_side(ww_stencil_shadows *s, int p, int q, int flip, const float inf[4]) {
+    const float *c0 = s->corners + 12 * (flip ? q : p), *c1 = s->corners + 12 * (flip ? p : q);
+    const float *w0 = c0, *w1 = c1, *s0 = c0 + 4, *s1 = c1 + 4, *b0 = c0 + 8, *b1 = c1 + 8;
     if (w0[1] > s->level || w1[1] > s->level) { /* the stretch in the air, as two triangles */
         put4(s, w0);
         put4(s, w1);
@@ -296,9 +322,6 @@ static void put_side(ww_stencil_shadows *s, const adjacency *a, int p, int q, in
         put4(s, inf);
         return;
     }
-    float b0[4], b1[4];
-    to_bottom(s, s0, b0);
-    to_bottom(s, s1, b1);
     put4(s, s0);
     put4(s, s1);
     put4(s, b1);
@@ -307,14 +330,6 @@ static void put_side(ww_stencil_shadows *s, const adjacency *a, int p, int q, in
     put4(s, b0);
 }
 
-/* the far cap's corner of welded corner v: its near cap corner carried as the sides carry it */
-static void put_bottom(ww_stencil_shadows *s, const adjacency *a, int v, const float model[16]) {
-    float w[4], sf[4], b[4];
-    corner(s, a, v, model, w);
-    to_surface(s, w, sf);
-    to_bottom(s, sf, b);
-    put4(s, b);
-}
 
 /* one caster instance's volume: the faces turned from the sun (model space: n . L_m < 0, with
  * L_m = A^-1 L, since n_world . L = n . A^-1 L for n_world = A^-T n) are the near cap, wound
@@ -348,35 +363,45 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
         s->lost = 1;
         return;
     }
+    if (!reserve_scratch(s, a->ntri, a->nvert)) {
+        s->lost = 1;
+        return;
+    }
+    for (int v = 0; v < a->nvert; v++) corner_points(s, a, v, model, s->corners + 12 * v);
+    /* which faces are turned from the light: once each, read by the caps and by the three edges
+     * each face has */
+    unsigned char *dk = s->dark;
+    for (int t = 0; t < a->ntri; t++) dk[t] = (unsigned char)face_dark(s, a, t, model, Lm, Um, side);
     float inf[4] = {-U[0], -U[1], -U[2], 0.0f};
     for (int t = 0; t < a->ntri; t++) {
-        int dark = face_dark(s, a, t, model, Lm, Um, side);
+        int dark = dk[t];
         if (!dark && a->closed) continue;
         /* the cap faces the sun: a dark face reversed, an open mesh's lit face as it is (and a
          * mirroring matrix has reversed both already) */
         static const int order[2][3] = {{0, 2, 1}, {0, 1, 2}};
         const int *o = order[!dark != (side < 0.0f)];
-        for (int k = 0; k < 3; k++) put_corner(s, a, a->tri[3 * t + o[k]], model);
-        /* the far cap, turned the other way, where the sides end */
-        for (int k = 2; s->finite && k >= 0; k--) put_bottom(s, a, a->tri[3 * t + o[k]], model);
+        for (int k = 0; k < 3; k++) put4(s, s->corners + 12 * a->tri[3 * t + o[k]]);
+        /* the far cap, turned the other way, where the sides end: the corners carried as the
+         * sides carry them */
+        for (int k = 2; s->finite && k >= 0; k--) put4(s, s->corners + 12 * a->tri[3 * t + o[k]] + 8);
     }
     for (int e = 0; e < a->nedge; e++) {
         const edge *ed = &a->edges[e];
-        int dark0 = face_dark(s, a, ed->t0, model, Lm, Um, side);
+        int dark0 = dk[ed->t0];
         if (ed->t1 < 0) {
             /* an open edge: its face's side (turned away from the sun when it is lit) */
             if (dark0 || !a->closed)
-                put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model, inf);
+                put_side(s, ed->v0, ed->v1, !dark0 != (side < 0.0f), inf);
             continue;
         }
-        int dark1 = face_dark(s, a, ed->t1, model, Lm, Um, side);
+        int dark1 = dk[ed->t1];
         if (dark0 == dark1) continue; /* not on the silhouette */
         /* the side runs along the edge as the dark face does (v0 -> v1 in t0, v1 -> v0 in t1);
          * an open mesh's lit face, turned away from the sun, gives a side of its own too */
         if (dark0 || !a->closed)
-            put_side(s, a, ed->v0, ed->v1, !dark0 != (side < 0.0f), model, inf);
+            put_side(s, ed->v0, ed->v1, !dark0 != (side < 0.0f), inf);
         if (dark1 || !a->closed)
-            put_side(s, a, ed->v1, ed->v0, !dark1 != (side < 0.0f), model, inf);
+            put_side(s, ed->v1, ed->v0, !dark1 != (side < 0.0f), inf);
     }
 }
 
@@ -455,6 +480,8 @@ void ww_stencil_shadows_free(ww_stencil_shadows *s, const ww_gl *gl) {
     if (s->vbo) gl->DeleteBuffers(1, &s->vbo);
     for (int i = 0; i < s->nmesh; i++) adjacency_free(&s->mesh[i]);
     free(s->verts);
+    free(s->dark);
+    free(s->corners);
     free(s);
 }
 
