@@ -564,7 +564,6 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     return WW_OK;
 }
 
-/* makes kind's program current */
 /* the program in use takes the side of the cut the draw needs, if it holds another */
 static void apply_cut(ww_geometry *g, const ww_gl *gl) {
     geom_prog *v = &g->var[g->cur - g->var];
@@ -573,6 +572,7 @@ static void apply_cut(ww_geometry *g, const ww_gl *gl) {
     v->cut_set = g->cut_now;
 }
 
+/* makes kind's program current */
 static const geom_prog *use(ww_geometry *g, const ww_gl *gl, int kind) {
     g->cur = &g->var[kind];
     gl->UseProgram(g->cur->prog);
