@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "core/mathx.h"
+#include "core/lanes.h"
 #include "core/sincos.h"
 #include "sim/ripples.h"
 #include "sim/waves.h"
@@ -410,7 +411,7 @@ typedef struct lane_probe {
 
 /* F = a + D - x and |F| of every lane, as close_probe; d: the displacements. The root has its
  * own loop: with errno kept, sqrt is a call the loops around it could not be vectorised over */
-static void lanes_close(lane_probe *p, double x[2][LANES], double d[2][LANES]) {
+WW_LANE_STEP void lanes_close(lane_probe *p, double x[2][LANES], double d[2][LANES]) {
     double n2[LANES];
     for (int c = 0; c < LANES; c++) {
         p->F[0][c] = p->a[0][c] + d[0][c] - x[0][c];
@@ -421,7 +422,7 @@ static void lanes_close(lane_probe *p, double x[2][LANES], double d[2][LANES]) {
 }
 
 /* the Gerstner sum at every lane's rest point p->a, as evaluate */
-static void lanes_evaluate(const lane_waves *lw, const double *phase, double x[2][LANES],
+WW_LANE_STEP void lanes_evaluate(const lane_waves *lw, const double *phase, double x[2][LANES],
                            lane_probe *p) {
     double d[2][LANES] = {{0.0}};
     for (int i = 0; i < lw->n; i++) {
@@ -442,7 +443,7 @@ static void lanes_evaluate(const lane_waves *lw, const double *phase, double x[2
 
 /* the trial at t->a from the probe p by angle addition, as evaluate_near; far[c] becomes 1 where
  * a phase of lane c turns by more than NEAR_TURN (its trial is then evaluate's) */
-static void lanes_near(const lane_waves *lw, double x[2][LANES], const lane_probe *p,
+WW_LANE_STEP void lanes_near(const lane_waves *lw, double x[2][LANES], const lane_probe *p,
                        lane_probe *t, double far[LANES]) {
     double d[2][LANES] = {{0.0}}, da[2][LANES];
     for (int c = 0; c < LANES; c++) {
@@ -471,7 +472,7 @@ static void lanes_near(const lane_waves *lw, double x[2][LANES], const lane_prob
 }
 
 /* the damped Newton direction of every lane, as direction */
-static void lanes_direction(const lane_waves *lw, const lane_probe *p, double d[2][LANES]) {
+WW_LANE_STEP void lanes_direction(const lane_waves *lw, const lane_probe *p, double d[2][LANES]) {
     double jxx[LANES], jxz[LANES], jzz[LANES];
     for (int c = 0; c < LANES; c++) {
         jxx[c] = 1.0;
@@ -500,7 +501,7 @@ static void lanes_direction(const lane_waves *lw, const lane_probe *p, double d[
 }
 
 /* lane c of p <- lane c of q where take[c] is not 0 */
-static void lanes_take(const lane_waves *lw, lane_probe *p, const lane_probe *q,
+WW_LANE_STEP void lanes_take(const lane_waves *lw, lane_probe *p, const lane_probe *q,
                        const double take[LANES]) {
     for (int c = 0; c < LANES; c++) {
         int k = take[c] != 0.0;
@@ -523,7 +524,7 @@ static void lanes_take(const lane_waves *lw, lane_probe *p, const lane_probe *q,
  * best so far then is; a point where that fails, or far from the origin, is left to
  * ww_water_at_warm (alone[c]). Then finish's height and velocity, and the ripples; velocity
  * may be NULL. */
-static int lanes_query(const ww_scene *sc, const ww_state *st, const lane_waves *lw,
+WW_LANE_STEP int lanes_query(const ww_scene *sc, const ww_state *st, const lane_waves *lw,
                        double minL, int m, const double *x, const double *z, double *warm,
                        double *height, double *velocity) {
     lane_probe P[3];
@@ -648,7 +649,7 @@ static int lanes_query(const ww_scene *sc, const ww_state *st, const lane_waves 
     return converged;
 }
 
-int ww_water_at_warm_n(const ww_scene *sc, const ww_state *st, int n, const double *x,
+WW_LANES int ww_water_at_warm_n(const ww_scene *sc, const ww_state *st, int n, const double *x,
                        const double *z, double min_wavelength, double *warm, double *height,
                        double *velocity) {
     int converged = 0;
