@@ -680,9 +680,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
     g->surface_clip = sc->render.refraction && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
-    /* every component at its crest at once, and the largest ripple on top (as the prepass) */
-    for (int i = 0; i < sc->nwaves; i++) g->crest += 2.0 * fabs(sc->waves[i].amplitude);
-    if (sc->ripples_on) g->crest += fabs(sc->ripples.amplitude);
+    g->crest = ww_water_crest(sc);
     for (int i = 0; i < sc->models.count; i++)
         if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
     g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||

@@ -7,7 +7,6 @@
  * water and of the stencilled shadows' volumes.
  * Publishes r->shared.scene_color and scene_depth.
  */
-#include <math.h>
 #include <stdlib.h>
 
 #include "gfx/render_impl.h"
@@ -46,10 +45,7 @@ static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     r->gl->BindTexture(GL_TEXTURE_2D, 0);
-    /* every component at its crest at once, and the largest ripple on top */
-    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
-        p->crest += 2.0 * fabs(sc->waves[i].amplitude);
-    if (sc->ripples_on) p->crest += fabs(sc->ripples.amplitude);
+    p->crest = ww_water_crest(sc);
     *self = p;
     return WW_OK;
 }

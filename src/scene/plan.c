@@ -182,6 +182,14 @@ static void plan_water(const ww_scene *sc, int height, ww_plan_water *w) {
     }
 }
 
+double ww_water_crest(const ww_scene *sc) {
+    double crest = 0.0;
+    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
+        crest += 2.0 * fabs(sc->waves[i].amplitude);
+    if (sc->ripples_on) crest += fabs(sc->ripples.amplitude);
+    return crest;
+}
+
 double ww_water_flat_beyond(const ww_scene *sc, const ww_water_mesh *m) {
     double longest = 0.0;
     for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)

@@ -96,6 +96,9 @@ void ww_water_mesh_layout(double far_clip, double grid, ww_water_mesh *m);
 double ww_water_mesh_spacing(const ww_water_mesh *m, double r);
 /* the smallest distance from the mesh centre where the spacing reaches s; INFINITY past the mesh */
 double ww_water_mesh_distance_for(const ww_water_mesh *m, double s);
+/* the most the surface can rise above or sink below its rest level, m: every component at its
+ * crest at once, and the largest ripple on top */
+double ww_water_crest(const ww_scene *sc);
 /* the distance from the mesh centre beyond which the water vertex shader fades every wave and
  * ripple out (gerstner.glsl: a component is gone where the spacing reaches half its wavelength),
  * so the mesh lies flat at the rest level there; INFINITY if it never does within the mesh */
