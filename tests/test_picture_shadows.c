@@ -36,6 +36,9 @@
 #define FOG_TOL 3.0           /* levels: a shadow deep in fog may change the frame at most this */
 #define FOG_NAIVE_MIN 12.0    /* a final-colour darkening by the near ratio would move it this */
 #define TINT_TOP 0.08         /* rows above this fraction: water surface, no volume reaches */
+#define COUNT_TOL 8           /* levels: depth-pass against depth-fail, a channel moving more ... */
+#define COUNT_MAX_SHARE 0.003 /* ... on at most this share of the pixels (depth-fail's specks on
+                               * the seams where a volume's side meets its caster's surface) */
 
 typedef ww_test_pic pic;
 
@@ -275,37 +278,102 @@ TEST_IMAGE(shadow_volumes_from_an_open_sheet) {
                j, VOLUME_MAP_IOU);
 }
 
-/* the camera inside the hull's volume (1.5 m from the hull's middle away from the sun), then
- * 2.5 m aside, outside it: depth-fail counting with the volume unclipped gives the same shadows
- * both times (an inverted count would light the shadow and shade the rest: IoU near 0) */
-TEST_IMAGE(shadow_volumes_camera_inside_a_volume) {
-    REQUIRE_GL();
+/* --set arguments for a camera inside the hull's volume of the volumes' scene (1.5 m from the
+ * hull's middle away from the sun) and 2.5 m aside, outside it, both looking at the seabed */
+static int hull_volume_cameras(char *inside, char *outside, size_t size) {
     ww_scene *sc = NULL;
     ww_error err = {0};
     ENSURE_MSG(ww_scene_load(VOLUMES, NULL, 0, &sc, &err) == WW_OK, "%s", err.msg);
-    if (!sc) return;
+    if (!sc) return 0;
     ww_state *st = ww_state_new(sc);
     ENSURE(st != NULL);
     if (!st) {
         ww_scene_free(sc);
-        return;
+        return 0;
     }
     double in[3], side[3] = {-sin(st->boat_heading[0]), 0.0, cos(st->boat_heading[0])};
     for (int i = 0; i < 3; i++) in[i] = st->boat_pos[i] - 1.5 * st->sun_dir[i];
     const char *fmt = "--set 'camera.path=[{t: 0, position: [%.3f, %.3f, %.3f], "
                       "look_at: [%.3f, -4, %.3f]}]'";
-    char inside[256], outside[256];
-    snprintf(inside, sizeof inside, fmt, in[0], in[1], in[2], in[0] + 1.0, in[2] + 4.5);
-    snprintf(outside, sizeof outside, fmt, in[0] + 2.5 * side[0], in[1], in[2] + 2.5 * side[2],
+    snprintf(inside, size, fmt, in[0], in[1], in[2], in[0] + 1.0, in[2] + 4.5);
+    snprintf(outside, size, fmt, in[0] + 2.5 * side[0], in[1], in[2] + 2.5 * side[2],
              in[0] + 1.0, in[2] + 4.5);
     ww_state_free(st);
     ww_scene_free(sc);
+    return 1;
+}
+
+/* the camera inside the hull's volume, then outside it: the shadows are the same both times
+ * (an inverted count would light the shadow and shade the rest: IoU near 0) */
+TEST_IMAGE(shadow_volumes_camera_inside_a_volume) {
+    REQUIRE_GL();
+    char inside[256], outside[256];
+    if (!hull_volume_cameras(inside, outside, sizeof inside)) return;
     double ji, jo;
     volumes_against_map(inside, "sv_inside", &ji);
     volumes_against_map(outside, "sv_outside", &jo);
     ENSURE_MSG(ji >= VOLUME_MAP_IOU && jo >= VOLUME_MAP_IOU,
                "volumes against a 4096 map: IoU %.3f inside the volume, %.3f outside (>= %.2f)", ji,
                jo, VOLUME_MAP_IOU);
+}
+
+/* pixels where a channel of a and b differs by more than tol */
+static long pixels_apart(const pic *a, const pic *b, int tol) {
+    long n = 0;
+    for (int y = 0; y < a->h; y++)
+        for (int x = 0; x < a->w; x++) {
+            const uint8_t *p = ww_test_pixel(&a->im, x, y), *q = ww_test_pixel(&b->im, x, y);
+            for (int c = 0; c < 3; c++)
+                if (abs(p[c] - q[c]) > tol) {
+                    n++;
+                    break;
+                }
+        }
+    return n;
+}
+
+/* a volume the eye lies outside is counted depth-pass, its sides alone; one that may hold the
+ * eye (or the near plane), or whose caster is blended or cut at the surface by the prepass, is
+ * counted depth-fail with both caps (stencil_shadows.c). Against every volume counted
+ * depth-fail, the frame keeps its shadows: from the feature's view; from inside the hull's
+ * volume (counted depth-pass it would invert: most of the frame changes); and from above the
+ * water, where the prepass cuts the floating hull at the surface and the volume would leak
+ * through the cut-away part */
+TEST_IMAGE(shadow_volumes_depth_pass_counts_as_depth_fail) {
+    REQUIRE_GL();
+    char inside[256], outside[256];
+    if (!hull_volume_cameras(inside, outside, sizeof inside)) return;
+    const char *views[][2] = {
+        {"view", ""},
+        {"inside", inside},
+        {"above", "--set 'camera.path=[{t: 0, position: [2.5, 3, 0], look_at: [0, -3.5, -6]}]'"},
+    };
+    for (size_t v = 0; v < sizeof views / sizeof views[0]; v++) {
+        char args[512], name[3][64];
+        const char *what[3] = {"off", "fail", "pass"};
+        pic f[3];
+        memset(f, 0, sizeof f);
+        int ok = 1;
+        for (int k = 0; k < 3 && ok; k++) {
+            snprintf(args, sizeof args, "%s --set render.shadows=%s", views[v][1],
+                     k == 0 ? "off" : "volumes");
+            snprintf(name[k], sizeof name[k], "dp_%s_%s", views[v][0], what[k]);
+            if (k == 1) setenv("WW_SHADOW_DEPTH_FAIL", "1", 1);
+            ok = render(VOLUMES, args, name[k], &f[k]);
+            unsetenv("WW_SHADOW_DEPTH_FAIL");
+        }
+        if (ok) {
+            long n = (long)f[0].w * f[0].h, shadow = pixels_apart(&f[0], &f[1], COUNT_TOL),
+                 apart = pixels_apart(&f[1], &f[2], COUNT_TOL);
+            ENSURE_MSG(shadow >= MIN_SHADOW_PX, "%s: the volumes shade %ld pixels only",
+                       views[v][0], shadow);
+            ENSURE_MSG(apart <= COUNT_MAX_SHARE * n,
+                       "%s: depth-pass against depth-fail: %ld of %ld pixels apart by more than "
+                       "%d levels (at most %.1f%%)",
+                       views[v][0], apart, n, COUNT_TOL, 100.0 * COUNT_MAX_SHARE);
+        }
+        free_pics(f, 3);
+    }
 }
 
 /* volumes_visible adds the volumes' violet tint and nothing else: every pixel it changes gains

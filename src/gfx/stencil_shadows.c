@@ -6,14 +6,17 @@
  *              with REPLACE 1 where they land on the visible seabed, so two overlapping shadows
  *              mark a pixel once and never darken it twice;
  *   volumes    stencil shadow volumes (Crow, "Shadow Algorithms for Computer Graphics", SIGGRAPH
- *              1977) counted depth-fail ("Carmack's reverse"; Everitt and Kilgard, "Practical and
- *              Robust Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002): each
- *              caster's silhouette edges, found per frame in its model space from an edge
- *              adjacency built once per mesh, extruded away from the sun to infinity (w = 0),
- *              closed by a cap on the caster's faces turned from the sun; GL_DEPTH_CLAMP keeps
- *              the near and far planes from cutting the volume, so the count stays right with
- *              the camera inside a volume. A directional light's extruded points all meet at one
- *              point at infinity, so the far cap has no area and is left out.
+ *              1977): each caster's silhouette edges, found per frame in its model space from an
+ *              edge adjacency built once per mesh, extruded away from the sun to infinity (w = 0)
+ *              or to a far cap under the seabed. A volume that may hold the eye is counted
+ *              depth-fail ("Carmack's reverse"; Everitt and Kilgard, "Practical and Robust
+ *              Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002), closed by a
+ *              cap on the caster's faces turned from the sun and the far cap; GL_DEPTH_CLAMP keeps
+ *              the near and far planes from cutting it, so the count stays right with the camera
+ *              inside. Every other volume is counted depth-pass with its sides alone (the
+ *              caster's own surface, opaque and drawn whole, stands where its near cap would),
+ *              a third of the triangles: the reef's 223 k volume corners a frame become 63 k.
+ *              Which one is decided per caster and frame from its box (counts_depth_pass).
  *
  * Both follow the sunlight as it bends at the water (Snell): under the water it comes down the
  * refracted ray, steeper than the sun's ray in air. The projected casters are flattened along
@@ -52,6 +55,9 @@
  * no longer fills the whole screen between each silhouette edge and that point: in the reef's
  * wreck view the volumes' fill was 140 of a 540 CPU ms main pass */
 #define VOLUME_BOTTOM_MARGIN 0.5
+/* m: the sphere around the eye that must lie outside a volume counted depth-pass reaches this
+ * far past the near plane's corners (float rounding of the volumes' corners) */
+#define EYE_MARGIN 0.05
 /* volumes_visible: the volume's faces, premultiplied HDR colour and cover (seed 003's "show the
  * shadow volume": a violet glass) */
 static const float VOLUME_TINT[4] = {0.05f, 0.03f, 0.12f, 0.12f};
@@ -72,7 +78,21 @@ typedef struct adjacency {
     float *normal;            /* 3 per triangle, unnormalised (b - a) x (c - a) */
     float *centre;            /* 3 per triangle, the mean of its corners */
     edge *edges;
+    float lo[3], hi[3];       /* the box of its positions, model space */
+    int blended;              /* a part of it is drawn blended, without depth */
 } adjacency;
+
+/* a list of volume triangles, camera-relative, 4 floats per corner */
+typedef struct vlist {
+    float *v;
+    size_t n, cap;
+} vlist;
+
+/* a volume is counted depth-fail, with both caps (right wherever the eye is), or depth-pass,
+ * with its sides alone, where the eye lies outside it (a third of the triangles, less fill). The
+ * vertex buffer holds, in this order, the depth-pass volumes' sides, their caps (volumes_visible
+ * shows them; nothing counts them) and the depth-fail volumes */
+enum { LIST_PASS = 0, LIST_PASS_CAPS, LIST_FAIL, LIST_COUNT };
 
 struct ww_stencil_shadows {
     ww_shadow_technique technique;
@@ -80,8 +100,15 @@ struct ww_stencil_shadows {
     GLint view_proj, tint, clip;
     int nmesh;
     adjacency mesh[MAX_MESHES];
-    float *verts; /* this frame's volume triangles, camera-relative, 4 floats per corner */
-    size_t nverts, cap;
+    vlist list[LIST_COUNT]; /* this frame's volumes, by how they are counted */
+    size_t first[LIST_COUNT]; /* where each list starts in the vertex buffer, corners */
+    vlist *cur;        /* the list put4 writes to */
+    int pass_ok;       /* volumes may be counted depth-pass (WW_SHADOW_DEPTH_FAIL unset) */
+    int show;          /* volumes_visible: the volumes are drawn, caps and all */
+    int eye_above;     /* the camera is above the water's rest level, where the volumes bend */
+    int cut;           /* the prepass draws the volumes, over solids cut at the surface */
+    float eye_r;       /* m: a sphere around the eye that holds the near plane's corners */
+    float crest;       /* m: the highest the surface rises above its rest level */
     int64_t built; /* frame whose volumes are in vbo; -1 none */
     double sun[3]; /* toward the sun, world, unit: the direction they were built for */
     double under[3]; /* toward the sun under the water (refracted), world, unit */
@@ -197,6 +224,20 @@ static int adjacency_build(const ww_mesh_data *m, adjacency *a) {
         a->closed = 1;
         for (int e = 0; e < a->nedge; e++)
             if (a->edges[e].t1 < 0) a->closed = 0;
+        for (int r = 0; r < 3; r++) {
+            a->lo[r] = a->nvert ? a->pos[r] : 0.0f;
+            a->hi[r] = a->lo[r];
+        }
+        for (int v = 1; v < a->nvert; v++)
+            for (int r = 0; r < 3; r++) {
+                float x = a->pos[3 * v + r];
+                if (x < a->lo[r]) a->lo[r] = x;
+                if (x > a->hi[r]) a->hi[r] = x;
+            }
+        for (int k = 0; k < m->nsub; k++) {
+            int mi = m->sub[k].material;
+            if (mi >= 0 && mi < m->nmaterial && m->material[mi].opacity < 1.0f) a->blended = 1;
+        }
     }
     free(keys);
     free(remap);
@@ -214,19 +255,20 @@ static adjacency *adjacency_of(ww_stencil_shadows *s, const ww_mesh_data *m) {
 
 /* ---- volumes, per frame ---- */
 
-static int reserve(ww_stencil_shadows *s, size_t more) {
-    if (s->nverts + more <= s->cap) return 1;
-    size_t cap = s->cap ? s->cap : 4096;
-    while (cap < s->nverts + more) cap *= 2;
-    float *v = realloc(s->verts, cap * 4 * sizeof *v);
+static int reserve(vlist *l, size_t more) {
+    if (l->n + more <= l->cap) return 1;
+    size_t cap = l->cap ? l->cap : 4096;
+    while (cap < l->n + more) cap *= 2;
+    float *v = realloc(l->v, cap * 4 * sizeof *v);
     if (!v) return 0;
-    s->verts = v;
-    s->cap = cap;
+    l->v = v;
+    l->cap = cap;
     return 1;
 }
 
 static void put4(ww_stencil_shadows *s, const float p[4]) {
-    memcpy(s->verts + 4 * s->nverts++, p, 4 * sizeof *p);
+    vlist *l = s->cur;
+    memcpy(l->v + 4 * l->n++, p, 4 * sizeof *p);
 }
 
 /* a face turned from the sun (model space; side -1 under a mirroring matrix) */
@@ -331,6 +373,74 @@ static void put_side(ww_stencil_shadows *s, int p, int q, int flip, const float 
 }
 
 
+/* does o + t d, t0 <= t <= t1, meet the box [lo, hi]? (Kay and Kajiya's slabs) */
+static int segment_meets_box(const double o[3], const double d[3], double t0, double t1,
+                             const float lo[3], const float hi[3]) {
+    for (int r = 0; r < 3; r++) {
+        if (fabs(d[r]) < 1e-12) {
+            if (o[r] < lo[r] || o[r] > hi[r]) return 0;
+            continue;
+        }
+        double a = (lo[r] - o[r]) / d[r], b = (hi[r] - o[r]) / d[r];
+        if (a > b) {
+            double x = a;
+            a = b;
+            b = x;
+        }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        if (t0 > t1) return 0;
+    }
+    return 1;
+}
+
+/* may the eye (the camera-relative origin) lie in a volume cast by what lies in the box [lo, hi]?
+ * A point is in the volume when the sunlight reaching it passed through the caster: traced back
+ * from the eye toward the sun, up the refracted ray to the surface (from under the water) and
+ * then up the sun's ray, the path meets the caster's box. The box is widened by the sphere
+ * around the eye and the volume's start, and by half again for how a point off the path bends
+ * elsewhere at the surface (at most tan 48.6 deg, the critical angle, per metre of height) */
+static int eye_in_column(const ww_stencil_shadows *s, const float lo[3], const float hi[3]) {
+    float grow = 1.5f * (s->eye_r + (float)VOLUME_START), wlo[3], whi[3];
+    for (int r = 0; r < 3; r++) {
+        wlo[r] = lo[r] - grow;
+        whi[r] = hi[r] + grow;
+    }
+    double o[3] = {0.0, 0.0, 0.0};
+    if (s->eye_above) return segment_meets_box(o, s->sun, 0.0, INFINITY, wlo, whi);
+    double t = s->level / s->under[1];
+    if (segment_meets_box(o, s->under, 0.0, t, wlo, whi)) return 1;
+    double b[3] = {t * s->under[0], s->level, t * s->under[2]};
+    return segment_meets_box(b, s->sun, 0.0, INFINITY, wlo, whi);
+}
+
+/* the box of a's positions through the instance's matrix, camera-relative */
+static void world_box(const adjacency *a, const float model[16], float lo[3], float hi[3]) {
+    for (int c = 0; c < 8; c++) {
+        float p[3] = {(c & 1) ? a->hi[0] : a->lo[0], (c & 2) ? a->hi[1] : a->lo[1],
+                      (c & 4) ? a->hi[2] : a->lo[2]};
+        for (int r = 0; r < 3; r++) {
+            float w = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r];
+            if (c == 0 || w < lo[r]) lo[r] = w;
+            if (c == 0 || w > hi[r]) hi[r] = w;
+        }
+    }
+}
+
+/* may this caster's volume be counted depth-pass, with its sides alone? That count is right
+ * when nothing between the eye and a receiver lies inside the volume unseen: the eye outside it
+ * (its near plane too: the caster is not clipped), and the caster's surface, which closes the
+ * volume where the caps would, drawn whole into depth: not blended, and (from above the water)
+ * not cut by the prepass, which cuts what reaches the band the surface moves in */
+static int counts_depth_pass(const ww_stencil_shadows *s, const adjacency *a,
+                             const float model[16]) {
+    if (!s->pass_ok || a->blended) return 0;
+    float lo[3], hi[3];
+    world_box(a, model, lo, hi);
+    if (s->cut && hi[1] >= s->level - s->crest) return 0;
+    return !eye_in_column(s, lo, hi);
+}
+
 /* one caster instance's volume: the faces turned from the sun (model space: n . L_m < 0, with
  * L_m = A^-1 L, since n_world . L = n . A^-1 L for n_world = A^-T n) are the near cap, wound
  * to face the sun; each edge between such a face and a face toward the sun (or none) is a
@@ -358,8 +468,14 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
     glm_mat3_mulv(Ai, L, Lm);
     glm_mat3_mulv(Ai, U, Um);
     float side = det > 0.0f ? 1.0f : -1.0f; /* a mirroring matrix turns the windings */
+    int pass = counts_depth_pass(s, a, model);
+    vlist *sides = &s->list[pass ? LIST_PASS : LIST_FAIL];
+    vlist *caps = !pass ? sides : s->show ? &s->list[LIST_PASS_CAPS] : NULL;
     /* two cap corners per face (near and far), and per edge up to two sides of twelve corners */
-    if (!reserve(s, (size_t)a->ntri * 6 + (size_t)a->nedge * 24)) {
+    size_t ncap = (size_t)a->ntri * 6, nside = (size_t)a->nedge * 24;
+    int room = caps == sides ? reserve(sides, ncap + nside)
+                             : (!caps || reserve(caps, ncap)) && reserve(sides, nside);
+    if (!room) {
         s->lost = 1;
         return;
     }
@@ -373,7 +489,8 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
     unsigned char *dk = s->dark;
     for (int t = 0; t < a->ntri; t++) dk[t] = (unsigned char)face_dark(s, a, t, model, Lm, Um, side);
     float inf[4] = {-U[0], -U[1], -U[2], 0.0f};
-    for (int t = 0; t < a->ntri; t++) {
+    s->cur = caps;
+    for (int t = 0; caps && t < a->ntri; t++) {
         int dark = dk[t];
         if (!dark && a->closed) continue;
         /* the cap faces the sun: a dark face reversed, an open mesh's lit face as it is (and a
@@ -385,6 +502,7 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
          * sides carry them */
         for (int k = 2; s->finite && k >= 0; k--) put4(s, s->corners + 12 * a->tri[3 * t + o[k]] + 8);
     }
+    s->cur = sides;
     for (int e = 0; e < a->nedge; e++) {
         const edge *ed = &a->edges[e];
         int dark0 = dk[ed->t0];
@@ -409,7 +527,7 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
 static void build_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *f) {
     if (s->built == f->frame) return;
     s->built = f->frame;
-    s->nverts = 0;
+    for (int l = 0; l < LIST_COUNT; l++) s->list[l].n = 0;
     for (int i = 0; i < 3; i++) s->sun[i] = f->st->sun_dir[i];
     ww_m_normalize3(s->sun);
     ww_sun_in_water(s->sun, s->under);
@@ -417,16 +535,29 @@ static void build_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame 
     s->finite = f->sc->render.seabed;
     s->bottom = (float)(f->sc->water_level - f->sc->water_depth - VOLUME_BOTTOM_MARGIN -
                         f->cam_pos[1]);
+    s->eye_above = s->level <= 0.0f;
+    s->cut = !f->underwater;
+    const double *t = f->tan_half;
+    s->eye_r = (float)(f->sc->near_clip * sqrt(1.0 + t[0] * t[0] + t[1] * t[1]) + EYE_MARGIN);
     ww_geometry_each_caster(r->geometry, add_caster, s);
     const ww_gl *gl = r->gl;
+    size_t corner = 4 * sizeof(float), total = 0;
+    for (int l = 0; l < LIST_COUNT; l++) {
+        s->first[l] = total;
+        total += s->list[l].n;
+    }
     gl->BindBuffer(GL_ARRAY_BUFFER, s->vbo);
-    gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(s->nverts * 4 * sizeof(float)), s->verts,
-                   GL_STREAM_DRAW);
+    gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(total * corner), NULL, GL_STREAM_DRAW);
+    for (int l = 0; l < LIST_COUNT; l++)
+        if (s->list[l].n)
+            gl->BufferSubData(GL_ARRAY_BUFFER, (GLintptr)(s->first[l] * corner),
+                              (GLsizeiptr)(s->list[l].n * corner), s->list[l].v);
     gl->BindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 static void draw_volumes(const ww_stencil_shadows *s, const ww_gl *gl, mat4 view_proj,
-                         const float *clip) {
+                         const float *clip, size_t first, size_t count) {
+    if (count == 0) return;
     gl->UseProgram(s->prog);
     gl->UniformMatrix4fv(s->view_proj, 1, GL_FALSE, (const GLfloat *)view_proj);
     if (clip) {
@@ -436,7 +567,7 @@ static void draw_volumes(const ww_stencil_shadows *s, const ww_gl *gl, mat4 view
         gl->Uniform4f(s->clip, 0.0f, 0.0f, 0.0f, 1.0f);
     }
     gl->BindVertexArray(s->vao);
-    gl->DrawArrays(GL_TRIANGLES, 0, (GLsizei)s->nverts);
+    gl->DrawArrays(GL_TRIANGLES, (GLint)first, (GLsizei)count);
     gl->BindVertexArray(0);
     gl->Disable(GL_CLIP_DISTANCE0);
 }
@@ -450,6 +581,11 @@ ww_result ww_stencil_shadows_new(ww_renderer *r, const ww_scene *sc, ww_stencil_
     if (!s) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "stencil shadows: out of memory");
     s->technique = sc->render.shadows.technique;
     s->built = -1;
+    /* WW_SHADOW_DEPTH_FAIL=1 counts every volume depth-fail, to compare */
+    const char *fail = getenv("WW_SHADOW_DEPTH_FAIL");
+    s->pass_ok = !(fail && strcmp(fail, "1") == 0);
+    s->show = s->technique == WW_SHADOW_VOLUMES_VISIBLE;
+    s->crest = (float)ww_water_crest(sc);
     if (s->technique != WW_SHADOW_PROJECTED) {
         ww_result rc = ww_gfx_program(gl, "shadow_volume.vert.glsl", "shadow_volume.frag.glsl",
                                       NULL, &s->prog, err);
@@ -479,7 +615,7 @@ void ww_stencil_shadows_free(ww_stencil_shadows *s, const ww_gl *gl) {
     if (s->vao) gl->DeleteVertexArrays(1, &s->vao);
     if (s->vbo) gl->DeleteBuffers(1, &s->vbo);
     for (int i = 0; i < s->nmesh; i++) adjacency_free(&s->mesh[i]);
-    free(s->verts);
+    for (int l = 0; l < LIST_COUNT; l++) free(s->list[l].v);
     free(s->dark);
     free(s->corners);
     free(s);
@@ -522,15 +658,19 @@ static void mark_volumes(ww_stencil_shadows *s, ww_renderer *r, const ww_frame *
     const ww_gl *gl = r->gl;
     build_volumes(s, r, f);
     gl->StencilFunc(GL_ALWAYS, 0, 0xFF);
-    /* depth-fail: a volume face behind what is drawn counts +1 leaving (back), -1 entering */
-    gl->StencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
-    gl->StencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
     gl->DepthMask(GL_FALSE);
     gl->Disable(GL_CULL_FACE);
     gl->Enable(GL_DEPTH_CLAMP);
-    draw_volumes(s, gl, view_proj, NULL);
+    /* depth-pass: a side in front of what is drawn counts +1 entering (front), -1 leaving */
+    gl->StencilOpSeparate(GL_FRONT, GL_KEEP, GL_KEEP, GL_INCR_WRAP);
+    gl->StencilOpSeparate(GL_BACK, GL_KEEP, GL_KEEP, GL_DECR_WRAP);
+    draw_volumes(s, gl, view_proj, NULL, s->first[LIST_PASS], s->list[LIST_PASS].n);
+    /* depth-fail: a volume face behind what is drawn counts +1 leaving (back), -1 entering */
+    gl->StencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
+    gl->StencilOpSeparate(GL_FRONT, GL_KEEP, GL_DECR_WRAP, GL_KEEP);
+    draw_volumes(s, gl, view_proj, NULL, s->first[LIST_FAIL], s->list[LIST_FAIL].n);
     gl->Disable(GL_DEPTH_CLAMP);
     gl->DepthMask(GL_TRUE);
 }
@@ -574,7 +714,7 @@ void ww_stencil_shadows_draw_visible(ww_stencil_shadows *s, ww_renderer *r, cons
     gl->Enable(GL_DEPTH_CLAMP);
     gl->Enable(GL_BLEND);
     gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied */
-    draw_volumes(s, gl, view_proj, clip);
+    draw_volumes(s, gl, view_proj, clip, 0, s->first[LIST_FAIL] + s->list[LIST_FAIL].n);
     gl->Disable(GL_BLEND);
     gl->Disable(GL_DEPTH_CLAMP);
     gl->DepthMask(GL_TRUE);
