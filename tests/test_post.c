@@ -1,8 +1,8 @@
-/* test_post.c - the post-processing passes (bloom, light shafts, FXAA, MSAA, HUD): a golden per
- * feature scene (scenes/features/NAME.yaml), and toggle tests: the feature switched off changes
- * the picture where the feature acts and nowhere else, and removes its pass from `plan`.
- * The regions are computed from the pictures themselves: the bright areas for bloom, an edge
- * mask of the input for FXAA and MSAA, the HUD's boxes for the HUD.
+/* test_post.c - the post-processing passes (bloom, light shafts, FXAA, MSAA, HUD, the frame's
+ * scale): a golden per feature scene (scenes/features/NAME.yaml), and toggle tests: the feature
+ * switched off changes the picture where the feature acts and nowhere else, and removes its pass
+ * from `plan`. The regions are computed from the pictures themselves: the bright areas for
+ * bloom, an edge mask of the input for FXAA and MSAA, the HUD's boxes for the HUD.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -38,6 +38,10 @@
 #define HUD_BOX_RECT_PY 44
 static const double HUD_MARKER_RECT[4] = {0.35, 0.7, 0.65, 1.0}; /* x0 y0 x1 y1, image fractions */
 #define HUD_MARKER_MIN_PX 60       /* the diamond, its glow and the arrow */
+#define SCALE_BLIT_TOL 1           /* levels: GL's bilinear blit of 8-bit texels against a float
+                                    * bilinear of the same texels, rounded */
+#define SCALE_ALPHA_ROWS 2         /* --alpha read nearest from the smaller depth: at most this many
+                                    * rows' worth of pixels differ from the full-size coverage */
 
 
 /* render frame 0 of scene with args into tmp dir `name`; the PNG's path in out */
@@ -359,6 +363,71 @@ TEST_IMAGE(post_hud_toggle) {
 done:
     ww_image_free(&a.im);
     ww_image_free(&b.im);
+}
+
+/* render.scale 0.5 at 320x180: the frame drawn at 160x90 (the same pixels as a 160x90 frame),
+ * then scaled up bilinearly between texel centres; the HUD drawn after it, at 320x180; --alpha
+ * read from the smaller depth keeps the full-size frame's coverage but for the rows at an edge */
+TEST_IMAGE(post_frame_scale_draws_smaller_and_scales_up) {
+    REQUIRE_GL();
+    const char *scene = "scenes/lake.yaml";
+    char small[1024], big[1024], hud[1024], cov[1024], cov1[1024];
+    if (render_to(scene, "--size 160x90", "post_scale_small", small, sizeof small) ||
+        render_to(scene, "--size 320x180 --set render.scale=0.5", "post_scale_big", big,
+                  sizeof big) ||
+        render_to(scene, "--size 320x180 --set render.scale=0.5 --set render.hud=[clock,counters]",
+                  "post_scale_hud", hud, sizeof hud) ||
+        render_to(scene, "--size 320x180 --set render.scale=0.5 --alpha", "post_scale_alpha",
+                  cov, sizeof cov) ||
+        render_to(scene, "--size 320x180 --alpha", "post_scale_alpha1", cov1, sizeof cov1))
+        return;
+    pic a = {0}, b = {0}, h = {0}, c = {0}, c1 = {0};
+    if (!ww_test_pic_load(small, &a) || !ww_test_pic_load(big, &b) || !ww_test_pic_load(hud, &h) ||
+        !ww_test_pic_load(cov, &c) || !ww_test_pic_load(cov1, &c1))
+        goto done;
+    ENSURE_EQ_INT(b.w, 320);
+    ENSURE_EQ_INT(b.h, 180);
+    int worst = 0;
+    for (int y = 0; y < b.h; y++) {
+        double fy = fmin(fmax((y + 0.5) * a.h / b.h - 0.5, 0.0), a.h - 1.0);
+        int y0 = (int)fy, y1 = y0 + 1 < a.h ? y0 + 1 : y0;
+        for (int x = 0; x < b.w; x++) {
+            double fx = fmin(fmax((x + 0.5) * a.w / b.w - 0.5, 0.0), a.w - 1.0);
+            int x0 = (int)fx, x1 = x0 + 1 < a.w ? x0 + 1 : x0;
+            double tx = fx - x0, ty = fy - y0;
+            for (int k = 0; k < 3; k++) {
+                double v = (1 - ty) * ((1 - tx) * ww_test_pixel(&a.im, x0, y0)[k] +
+                                       tx * ww_test_pixel(&a.im, x1, y0)[k]) +
+                           ty * ((1 - tx) * ww_test_pixel(&a.im, x0, y1)[k] +
+                                 tx * ww_test_pixel(&a.im, x1, y1)[k]);
+                int e = abs((int)lround(v) - ww_test_pixel(&b.im, x, y)[k]);
+                if (e > worst) worst = e;
+            }
+        }
+    }
+    ENSURE_MSG(worst <= SCALE_BLIT_TOL, "scaled frame against the small one scaled up: %d levels",
+               worst);
+    /* the text box lies at the top left in frame pixels: outside it nothing changes */
+    double box[4] = {0.0, 0.0, (double)HUD_BOX_RECT_PX / b.w, (double)HUD_BOX_RECT_PY / b.h};
+    ww_test_region d;
+    ENSURE(ww_test_region_diff(hud, big, box, 0, &d) == 0);
+    ENSURE_MSG(d.inside > d.inside_px / 2 && d.outside == 0, "HUD: %ld inside, %ld outside",
+               d.inside, d.outside);
+    long apart = 0;
+    ENSURE(c.im.channels == 4 && c1.im.channels == 4);
+    for (int y = 0; c.im.channels == 4 && c1.im.channels == 4 && y < c.h; y++)
+        for (int x = 0; x < c.w; x++)
+            apart += ww_test_pixel(&c.im, x, y)[3] != ww_test_pixel(&c1.im, x, y)[3];
+    ENSURE_MSG(apart <= (long)SCALE_ALPHA_ROWS * c.w, "--alpha at scale 0.5: %ld pixels apart",
+               apart);
+    ENSURE(plan_lists(scene, "--set render.scale=0.5", "scaled up to the frame"));
+    ENSURE(!plan_lists(scene, NULL, "scaled up to the frame"));
+done:
+    ww_image_free(&a.im);
+    ww_image_free(&b.im);
+    ww_image_free(&h.im);
+    ww_image_free(&c.im);
+    ww_image_free(&c1.im);
 }
 
 /* MSAA 4 against none: only pixels on or next to edges change (the resolve averages samples

@@ -81,7 +81,7 @@ TEST(render_keys_plan_follows_switches) {
     static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
                                "render: {shadows: true, refraction: true, reflection: true,"
                                " bloom: true, god_rays: true, fxaa: true, hud: [clock],"
-                               " seabed: true}\n"
+                               " seabed: true, scale: 0.5}\n"
                                "objects: {cubes: [{position: [0, 0, 0]}]}\n";
     static const struct {
         const char *set;
@@ -91,6 +91,7 @@ TEST(render_keys_plan_follows_switches) {
         {"render.reflection=false", WW_PASS_REFLECTION}, {"render.bloom=false", WW_PASS_BLOOM},
         {"render.god_rays=false", WW_PASS_SHAFTS},  {"render.fxaa=false", WW_PASS_FXAA},
         {"render.hud=[]", WW_PASS_HUD},     {"sky.model=gradient", WW_PASS_SKYMAP},
+        {"render.scale=1", WW_PASS_UPSCALE},
     };
     ww_scene *sc = load(text, NULL, 0);
     if (!sc) return;
@@ -159,6 +160,37 @@ TEST(render_keys_plan_target_sizes) {
         ENSURE_EQ_INT(s->targets[0].height, 512);
     }
     ww_scene_free(sc);
+}
+
+/* render.scale: every pass draws at that fraction of the frame (its own scales taken of that),
+ * and the last target, which the frame is read from, is the frame's size */
+TEST(render_keys_plan_frame_scale) {
+    const char *sets[] = {"render.scale=0.75", "render.refraction={scale: 0.5}",
+                          "objects.cubes=[{position: [0, 0, 0]}]"};
+    ww_scene *sc = load(BASE, sets, 3);
+    if (!sc) return;
+    ww_plan p;
+    ww_plan_build(sc, 320, 180, &p);
+    const ww_pass_desc *m = ww_plan_pass(&p, WW_PASS_MAIN), *q = ww_plan_pass(&p, WW_PASS_PREPASS);
+    const ww_pass_desc *t = ww_plan_pass(&p, WW_PASS_TONEMAP), *u = ww_plan_pass(&p, WW_PASS_UPSCALE);
+    ENSURE(m && q && t && u);
+    if (m && q && t && u) {
+        ENSURE_EQ_INT(m->targets[0].width, 240);
+        ENSURE_EQ_INT(m->targets[0].height, 135);
+        ENSURE_EQ_INT(q->targets[0].width, 120);
+        ENSURE_EQ_INT(t->targets[0].width, 240);
+        ENSURE_EQ_INT(u->targets[0].width, 320);
+        ENSURE_EQ_INT(u->targets[0].height, 180);
+        ENSURE_EQ_INT(p.passes[p.npasses - 1].id, WW_PASS_UPSCALE);
+    }
+    ww_scene_free(sc);
+    /* below a quarter the frame would be mostly guessed: refused, the key named */
+    ww_set bad[1] = {{.text = "render.scale=0.1"}};
+    ww_scene *none = NULL;
+    ww_error err = {0};
+    ENSURE(ww_scene_load_string("keys.yaml", BASE, strlen(BASE), bad, 1, &none, &err) != WW_OK);
+    ENSURE_MSG(strstr(err.msg, "scale") != NULL, "%s", err.msg);
+    ww_scene_free(none);
 }
 
 /* render.shadows: the word forms and the mapping's technique pick the technique; only the map

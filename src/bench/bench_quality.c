@@ -1,8 +1,9 @@
 /* bench_quality.c - `waterworld bench quality`: each render quality knob (reflection
- * resolution, shadow map size, bloom passes, shaft samples, MSAA, water grid density) against the
- * ms it costs and the error it leaves: the final RGB8 frame of one scene is rendered with every
- * knob at its best (the reference), then once per value of each knob with the others kept at
- * their best, and compared with the reference (PSNR and the largest channel difference).
+ * resolution, shadow map size, bloom passes, shaft samples, MSAA, water grid density, the frame's
+ * scale) against the ms it costs and the error it leaves: the final RGB8 frame of one scene is
+ * rendered with every knob at its best (the reference), then once per value of each knob with
+ * the others kept at their best, and compared with the reference (PSNR and the largest channel
+ * difference).
  * A knob's feature is switched on for the bench when this build has its pass; a knob whose pass
  * is absent renders the same and is reported as having no effect. Table and out/bench/quality.png.
  */
@@ -81,6 +82,12 @@ static void set_grid(ww_scene *sc, double v, int on) {
 }
 static double get_grid(const ww_scene *sc) { return sc->render.grid; }
 
+static void set_frame_scale(ww_scene *sc, double v, int on) {
+    (void)on;
+    sc->render.scale = v;
+}
+static double get_frame_scale(const ww_scene *sc) { return sc->render.scale; }
+
 /* 1: water.look.caustics.method texture (cheaper per frame, a one-off set-up); 0: analytic */
 static void set_caustics_method(ww_scene *sc, double v, int on) {
     sc->render.water.caustics_method = v > 0.5 ? WW_CAUSTICS_TEXTURE : WW_CAUSTICS_ANALYTIC;
@@ -105,6 +112,9 @@ static const ww_quality_knob KNOBS[] = {
      get_shaft_samples},
     {"render.msaa", WW_PASS_MAIN, 4, {0, 2, 4, 8}, set_msaa, get_msaa},
     {"render.grid", WW_PASS_MAIN, 5, {0.5, 0.75, 1.0, 1.5, 2.0}, set_grid, get_grid},
+    /* the whole frame drawn smaller and scaled up: every pass gains; the main pass's time
+     * stands for them */
+    {"render.scale", WW_PASS_MAIN, 4, {0.5, 0.75, 0.9, 1.0}, set_frame_scale, get_frame_scale},
     {"water.look.caustics.method", WW_PASS_MAIN, 2, {1, 0}, set_caustics_method,
      get_caustics_method},
 };
@@ -301,7 +311,7 @@ static const char *pass_name(ww_pass_id id) {
         [WW_PASS_SKYMAP] = "skymap", [WW_PASS_SHADOW] = "shadow", [WW_PASS_PREPASS] = "prepass",
         [WW_PASS_REFLECTION] = "reflection", [WW_PASS_MAIN] = "main", [WW_PASS_BLOOM] = "bloom",
         [WW_PASS_SHAFTS] = "shafts", [WW_PASS_TONEMAP] = "tonemap", [WW_PASS_FXAA] = "fxaa",
-        [WW_PASS_HUD] = "hud"};
+        [WW_PASS_UPSCALE] = "upscale", [WW_PASS_HUD] = "hud"};
     return id >= 0 && id < WW_PASS_COUNT && names[id] ? names[id] : "?";
 }
 

@@ -62,7 +62,8 @@ static ww_result hud_create(ww_renderer *r, const ww_scene *sc, const ww_pass_de
     (void)sc;
     (void)rt;
     const ww_gl *gl = r->gl;
-    const ww_rt *target = ww_renderer_output(r, WW_PASS_FXAA);
+    const ww_rt *target = ww_renderer_output(r, WW_PASS_UPSCALE);
+    if (!target) target = ww_renderer_output(r, WW_PASS_FXAA);
     if (!target) target = ww_renderer_output(r, WW_PASS_TONEMAP);
     if (!target || !ww_gfx_rt_texture(target, WW_FMT_RGBA8))
         return ww_error_set(err, WW_E_GL, NULL, 0, 0, "pass %s: no RGBA8 image to draw into",

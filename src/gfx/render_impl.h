@@ -80,6 +80,7 @@ extern const ww_pass_ops ww_pass_reflection_ops; /* pass_reflection.c */
 extern const ww_pass_ops ww_pass_bloom_ops;   /* pass_bloom.c */
 extern const ww_pass_ops ww_pass_shafts_ops;  /* pass_shafts.c */
 extern const ww_pass_ops ww_pass_fxaa_ops;    /* pass_fxaa.c */
+extern const ww_pass_ops ww_pass_upscale_ops; /* pass_upscale.c */
 extern const ww_pass_ops ww_pass_hud_ops;     /* pass_hud.c */
 
 /* pass_bloom.c: the blur of `passes` (render.bloom.passes) rounds of the 9-tap binomial kernel,

@@ -24,6 +24,7 @@ static const ww_pass_ops *const pass_table[WW_PASS_COUNT] = {
     [WW_PASS_SHAFTS] = &ww_pass_shafts_ops,
     [WW_PASS_TONEMAP] = &ww_pass_tonemap_ops,
     [WW_PASS_FXAA] = &ww_pass_fxaa_ops,
+    [WW_PASS_UPSCALE] = &ww_pass_upscale_ops,
     [WW_PASS_HUD] = &ww_pass_hud_ops,
 };
 
@@ -341,20 +342,53 @@ ww_result ww_renderer_read_ldr(ww_renderer *r, ww_image *im, ww_error *err) {
                        GL_UNSIGNED_BYTE, im->u8, im, err);
 }
 
+/* src scaled to dst's size, bilinear between texel centres (edges clamped), RGBA floats */
+static void scale_bilinear_f32(const ww_image *src, ww_image *dst) {
+    double sx = (double)src->width / dst->width, sy = (double)src->height / dst->height;
+    for (int y = 0; y < dst->height; y++) {
+        double fy = ww_m_clamp((y + 0.5) * sy - 0.5, 0.0, src->height - 1.0);
+        int y0 = (int)fy, y1 = y0 + 1 < src->height ? y0 + 1 : y0;
+        double ty = fy - y0;
+        for (int x = 0; x < dst->width; x++) {
+            double fx = ww_m_clamp((x + 0.5) * sx - 0.5, 0.0, src->width - 1.0);
+            int x0 = (int)fx, x1 = x0 + 1 < src->width ? x0 + 1 : x0;
+            double tx = fx - x0;
+            const float *a = src->f32 + ((size_t)y0 * src->width + x0) * 4;
+            const float *b = src->f32 + ((size_t)y0 * src->width + x1) * 4;
+            const float *c = src->f32 + ((size_t)y1 * src->width + x0) * 4;
+            const float *d = src->f32 + ((size_t)y1 * src->width + x1) * 4;
+            float *o = dst->f32 + ((size_t)y * dst->width + x) * 4;
+            for (int k = 0; k < 4; k++)
+                o[k] = (float)((1.0 - ty) * ((1.0 - tx) * a[k] + tx * b[k]) +
+                               ty * ((1.0 - tx) * c[k] + tx * d[k]));
+        }
+    }
+}
+
+/* the main pass's HDR image; drawn smaller (render.scale), scaled up to im's size */
 ww_result ww_renderer_read_hdr(ww_renderer *r, ww_image *im, ww_error *err) {
     const ww_rt *rt = ww_renderer_output(r, WW_PASS_MAIN);
     WW_ASSERT(rt);
     WW_ASSERT(im->type == WW_PIX_F32 && im->f32 && im->channels == 4);
-    WW_ASSERT(im->width == rt->width && im->height == rt->height);
-    return read_target(r, rt, WW_FMT_RGBA16F, GL_RGBA, GL_FLOAT, im->f32, im, err);
+    WW_ASSERT(im->width >= rt->width && im->height >= rt->height);
+    if (im->width == rt->width && im->height == rt->height)
+        return read_target(r, rt, WW_FMT_RGBA16F, GL_RGBA, GL_FLOAT, im->f32, im, err);
+    ww_image small;
+    if (ww_image_alloc(&small, rt->width, rt->height, 4, WW_PIX_F32) != 0)
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "renderer: out of memory");
+    ww_result rc = read_target(r, rt, WW_FMT_RGBA16F, GL_RGBA, GL_FLOAT, small.f32, &small, err);
+    if (rc == WW_OK) scale_bilinear_f32(&small, im);
+    ww_image_free(&small);
+    return rc;
 }
 
 /* [frames] --alpha: coverage from the main pass's depth. The sky is drawn on the far plane and
- * the clear leaves depth 1 there, so a pixel whose depth is below 1 shows water or geometry. */
+ * the clear leaves depth 1 there, so a pixel whose depth is below 1 shows water or geometry.
+ * depth holds im's pixels; a main pass drawn smaller (render.scale) is read nearest. */
 ww_result ww_renderer_read_coverage(ww_renderer *r, ww_image *im, float *depth, ww_error *err) {
     const ww_rt *rt = ww_renderer_output(r, WW_PASS_MAIN);
     WW_ASSERT(rt && depth && im->channels == 4);
-    WW_ASSERT(im->width == rt->width && im->height == rt->height);
+    WW_ASSERT(im->width >= rt->width && im->height >= rt->height);
     const ww_gl *gl = r->gl;
     gl->BindFramebuffer(GL_READ_FRAMEBUFFER, rt->fbo);
     gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -365,12 +399,13 @@ ww_result ww_renderer_read_coverage(ww_renderer *r, ww_image *im, float *depth, 
         return ww_error_set(err, WW_E_GL, NULL, 0, 0, "renderer: depth read-back raised 0x%04x",
                             (unsigned)e);
     /* GL rows run bottom up, the image's top down */
-    size_t w = (size_t)rt->width;
-    for (size_t y = 0; y < (size_t)rt->height; y++) {
-        const float *d = depth + ((size_t)rt->height - 1 - y) * w;
-        for (size_t x = 0; x < w; x++) {
-            size_t i = (y * w + x) * 4 + 3;
-            int covered = d[x] < 1.0f;
+    size_t w = (size_t)rt->width, W = (size_t)im->width, H = (size_t)im->height;
+    for (size_t y = 0; y < H; y++) {
+        size_t sy = (2 * y + 1) * (size_t)rt->height / (2 * H); /* the nearest row */
+        const float *d = depth + ((size_t)rt->height - 1 - sy) * w;
+        for (size_t x = 0; x < W; x++) {
+            size_t i = (y * W + x) * 4 + 3;
+            int covered = d[(2 * x + 1) * w / (2 * W)] < 1.0f;
             if (im->type == WW_PIX_U8) im->u8[i] = covered ? 255 : 0;
             else im->f32[i] = covered ? 1.0f : 0.0f;
         }

@@ -34,6 +34,7 @@ static const rule R_SHAFT_WEIGHT = CLOSED(0, 10, "");
 static const rule R_SHAFT_EXPOSURE = CLOSED(0, 100, "");
 static const rule R_MSAA = WHOLE(0, 16, "samples");
 static const rule R_GRID = CLOSED(0.25, 4, "");
+static const rule R_FRAME_SCALE = CLOSED(0.25, 1, "");
 static const rule R_INTENSITY = CLOSED(0, 1e6, "");
 static const rule R_TURBIDITY = CLOSED(1.7, 10, ""); /* where Preetham's fit holds */
 static const rule R_CLOUD_SPEED = CLOSED(0, 100, "cells/s");
@@ -119,6 +120,7 @@ void ww_render_defaults(ww_render_desc *d) {
     d->fxaa = 1;
     d->msaa = 0;
     d->grid = 1.0;
+    d->scale = 1.0;
     d->sky = WW_SKY_PREETHAM;
     for (int i = 0; i < 6; i++) d->cubemap_image[i] = -1;
     d->dome_image = -1;
@@ -226,7 +228,7 @@ static ww_result compile_hud(ctx *c, const section *s, ww_hud_desc *d) {
 ww_result wwc_render(ctx *c, const section *top) {
     static const char *const keys[] = {"size", "quality", "tonemap", "shadows", "refraction",
                                        "reflection", "bloom", "god_rays", "fxaa", "msaa", "grid",
-                                       "hud", "seabed", NULL};
+                                       "scale", "hud", "seabed", NULL};
     static const char *const tonemap_keys[] = {"operator", "exposure", "gamma", NULL};
     static const char *const reflection_keys[] = {"on", "scale", NULL};
     static const char *const refraction_keys[] = {"on", "scale", NULL};
@@ -286,6 +288,7 @@ ww_result wwc_render(ctx *c, const section *top) {
     TRY(wwc_get_number(c, &s, "msaa", &R_MSAA, OPTIONAL, &msaa));
     d->msaa = (int)msaa;
     TRY(wwc_get_number(c, &s, "grid", &R_GRID, OPTIONAL, &d->grid));
+    TRY(wwc_get_number(c, &s, "scale", &R_FRAME_SCALE, OPTIONAL, &d->scale));
     TRY(compile_hud(c, &s, &d->hud));
 
     TRY(get_feature(c, &s, "seabed", seabed_keys, &d->seabed, &f));

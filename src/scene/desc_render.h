@@ -137,6 +137,7 @@ typedef struct ww_render_desc {
     int fxaa;
     int msaa;                    /* samples of the main pass (0 or 1: none) */
     double grid;                 /* water mesh density factor (1: the default rings and segments) */
+    double scale;                /* the frame is drawn at this fraction of its size, then scaled up */
     ww_hud_desc hud;
 
     /* sky */

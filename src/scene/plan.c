@@ -209,9 +209,13 @@ int ww_sky_map_on(const ww_scene *sc) {
     return rd->sky == WW_SKY_PREETHAM || (rd->sky == WW_SKY_DOME && rd->dome_image < 0);
 }
 
-void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
+void ww_plan_build(const ww_scene *sc, int frame_width, int frame_height, ww_plan *p) {
     *p = (ww_plan){0};
     for (int s = 0; s < WW_SYS_COUNT; s++) p->system_on[s] = sc->system_on[s];
+    /* render.scale: every pass draws at this size, and one last pass scales the sRGB8 image up
+     * to the frame's */
+    double fs = sc->render.scale > 0.0 ? sc->render.scale : 1.0;
+    int width = scaled(frame_width, fs), height = scaled(frame_height, fs);
 
     /* solid geometry: what casts shadows and what refraction and shafts see under the water;
      * it also holds the frame's lights, which the water and the sky take from it */
@@ -275,6 +279,10 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p) {
     if (rd->fxaa) {
         add_pass(p, WW_PASS_FXAA, "fxaa", "edge anti-aliasing of the sRGB8 image");
         add_target(p, "ldr", WW_FMT_RGBA8, width, height);
+    }
+    if (width != frame_width || height != frame_height) {
+        add_pass(p, WW_PASS_UPSCALE, "upscale", "the sRGB8 image scaled up to the frame, bilinear");
+        add_target(p, "ldr", WW_FMT_RGBA8, frame_width, frame_height);
     }
     if (rd->hud.clock || rd->hud.counters || rd->hud.chest_marker)
         add_pass(p, WW_PASS_HUD, "hud", "text and markers over the final image");

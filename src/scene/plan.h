@@ -22,6 +22,7 @@ typedef enum ww_pass_id {
     WW_PASS_SHAFTS,     /* radial blur toward the sun over the depth-masked scene */
     WW_PASS_TONEMAP,    /* HDR (+ bloom + shafts) -> sRGB8 */
     WW_PASS_FXAA,       /* edge anti-aliasing of the sRGB8 image */
+    WW_PASS_UPSCALE,    /* the sRGB8 image scaled up to the frame's size (render.scale < 1) */
     WW_PASS_HUD,        /* text and markers drawn into the last sRGB8 image (no target) */
     WW_PASS_COUNT
 } ww_pass_id;
@@ -140,6 +141,8 @@ typedef struct ww_plan {
     ww_plan_water water;
 } ww_plan;
 
+/* the passes for frames of width x height: drawn at render.scale of that size, the last
+ * sRGB8 image scaled up to it */
 void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p);
 /* 1 when the scene's sky is drawn from the sky map (pass skymap): Preetham's sky (sky.model
  * preetham, or dome without a picture), unless the environment sets WW_SKY_EXACT=1, which
