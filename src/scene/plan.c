@@ -406,7 +406,7 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
     size_t total = 0;
     for (int i = 0; i < p->npasses; i++) {
         const ww_pass_desc *d = &p->passes[i];
-        fprintf(to, "  %d %-10s %s\n", i + 1, d->name, d->what);
+        fprintf(to, "  %2d %-10s %s\n", i + 1, d->name, d->what);
         for (int t = 0; t < d->ntargets; t++) {
             const ww_target_desc *td = &d->targets[t];
             size_t bytes = (size_t)td->width * (size_t)td->height * ww_format_bytes_per_pixel(td->format);
