@@ -1438,7 +1438,8 @@ void ww_geometry_each_caster(ww_geometry *g, ww_caster_fn fn, void *user) {
     for (int s = 0; s < SLOT_COUNT; s++) {
         const gmesh *m = &g->slot[s];
         if (!m->copy || !g->caster_mesh[s].vertex) continue;
-        for (int i = 0; i < m->ninst; i++) fn(user, s, &g->caster_mesh[s], m->copy[i].model);
+        int rigid = s != SLOT_FISH && !slot_patterned(s); /* fish swim: their bodies bend */
+        for (int i = 0; i < m->ninst; i++) fn(user, s, &g->caster_mesh[s], m->copy[i].model, rigid);
     }
     /* a swaying plant is bent in the vertex shader; a volume from its rigid mesh would stand
      * still under it, so plants cast no stencilled shadow (the shadow map, drawn through the
@@ -1446,5 +1447,5 @@ void ww_geometry_each_caster(ww_geometry *g, ww_caster_fn fn, void *user) {
     for (int i = 0; i < g->nobj; i++)
         if (g->obj[i].copy && g->obj[i].ninst > 0 && g->obj_data[i] &&
             !(g->sway && g->obj_sway[i][0] > 0.0f))
-            fn(user, SLOT_COUNT + i, g->obj_data[i], g->obj[i].copy[0].model);
+            fn(user, SLOT_COUNT + i, g->obj_data[i], g->obj[i].copy[0].model, 1);
 }

@@ -188,9 +188,10 @@ typedef enum ww_geom_stage {
 void ww_geometry_set_stage(ww_geometry *g, ww_geom_stage stage);
 /* each caster of shadow volumes this frame (scenes with render.shadows volumes keep them): a
  * mesh id stable over the renderer's life, its data (positions in vertex[8 k..8 k+2], CCW
- * triangles) and its camera-relative model matrix (column-major) */
+ * triangles), its camera-relative model matrix (column-major), and whether it is drawn as that
+ * mesh under that matrix (0: the vertex shader bends it, as a fish's swimming body) */
 typedef void (*ww_caster_fn)(void *user, int mesh_id, const ww_mesh_data *mesh,
-                             const float model[16]);
+                             const float model[16], int rigid);
 void ww_geometry_each_caster(ww_geometry *g, ww_caster_fn fn, void *user);
 void ww_geometry_free(ww_geometry *g, const ww_gl *gl);
 /* instanced draws the last ww_geometry_draw made (one per mesh with instances; tests) */

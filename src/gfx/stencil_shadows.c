@@ -15,8 +15,9 @@
  *              the near and far planes from cutting it, so the count stays right with the camera
  *              inside. Every other volume is counted depth-pass with its sides alone (the
  *              caster's own surface, opaque and drawn whole, stands where its near cap would),
- *              a third of the triangles: the reef's 223 k volume corners a frame become 63 k.
- *              Which one is decided per caster and frame from its box (counts_depth_pass).
+ *              a third of the triangles; the reef's 223 k volume corners a frame become 117 k
+ *              (its fish stay depth-fail). Which one is decided per caster and frame from its box
+ *              (counts_depth_pass).
  *
  * Both follow the sunlight as it bends at the water (Snell): under the water it comes down the
  * refracted ray, steeper than the sun's ray in air. The projected casters are flattened along
@@ -430,11 +431,12 @@ static void world_box(const adjacency *a, const float model[16], float lo[3], fl
 /* may this caster's volume be counted depth-pass, with its sides alone? That count is right
  * when nothing between the eye and a receiver lies inside the volume unseen: the eye outside it
  * (its near plane too: the caster is not clipped), and the caster's surface, which closes the
- * volume where the caps would, drawn whole into depth: not blended, and (from above the water)
- * not cut by the prepass, which cuts what reaches the band the surface moves in */
+ * volume where the caps would, drawn whole into depth as the volume was built from it: not
+ * blended, not bent by the vertex shader (a swimming fish), and (from above the water) not cut
+ * by the prepass, which cuts what reaches the band the surface moves in */
 static int counts_depth_pass(const ww_stencil_shadows *s, const adjacency *a,
-                             const float model[16]) {
-    if (!s->pass_ok || a->blended) return 0;
+                             const float model[16], int rigid) {
+    if (!s->pass_ok || a->blended || !rigid) return 0;
     float lo[3], hi[3];
     world_box(a, model, lo, hi);
     if (s->cut && hi[1] >= s->level - s->crest) return 0;
@@ -448,7 +450,8 @@ static int counts_depth_pass(const ww_stencil_shadows *s, const adjacency *a,
  * edges (a sheet, a leaf) may show the sun either side: each of its faces casts, a lit one
  * turned over, so a sheet facing the sun casts as one facing away does (the count is then the
  * number of faces above a point, never 0 in a shadow) */
-static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const float model[16]) {
+static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const float model[16],
+                       int rigid) {
     (void)mesh_id;
     ww_stencil_shadows *s = user;
     adjacency *a = adjacency_of(s, m);
@@ -468,7 +471,7 @@ static void add_caster(void *user, int mesh_id, const ww_mesh_data *m, const flo
     glm_mat3_mulv(Ai, L, Lm);
     glm_mat3_mulv(Ai, U, Um);
     float side = det > 0.0f ? 1.0f : -1.0f; /* a mirroring matrix turns the windings */
-    int pass = counts_depth_pass(s, a, model);
+    int pass = counts_depth_pass(s, a, model, rigid);
     vlist *sides = &s->list[pass ? LIST_PASS : LIST_FAIL];
     vlist *caps = !pass ? sides : s->show ? &s->list[LIST_PASS_CAPS] : NULL;
     /* two cap corners per face (near and far), and per edge up to two sides of twelve corners */
