@@ -36,6 +36,11 @@
 #define FOG_TOL 3.0           /* levels: a shadow deep in fog may change the frame at most this */
 #define FOG_NAIVE_MIN 12.0    /* a final-colour darkening by the near ratio would move it this */
 #define TINT_TOP 0.08         /* rows above this fraction: water surface, no volume reaches */
+#define SLIVER_STEP 3         /* px: a sliver pixel has shadow this far below it and a much ... */
+#define SLIVER_DARKER 30.0    /* ... darker pixel (the rock, the shadow) this far above it */
+#define SLIVER_LIT 12.0       /* luma: within this of the shadows-off frame counts as lit */
+#define SLIVER_FAIL_MIN 100   /* depth-fail draws the sliver on at least this many pixels ... */
+#define SLIVER_MAX 20         /* ... and the counting used now on at most this many */
 #define COUNT_TOL 8           /* levels: depth-pass against depth-fail, a channel moving more ... */
 #define COUNT_MAX_SHARE 0.003 /* ... on at most this share of the pixels (depth-fail's specks on
                                * the seams where a volume's side meets its caster's surface) */
@@ -374,6 +379,50 @@ TEST_IMAGE(shadow_volumes_depth_pass_counts_as_depth_fail) {
         }
         free_pics(f, 3);
     }
+}
+
+/* lit pixels of vol forming a thin line inside darkness: lit (within SLIVER_LIT of the frame with
+ * shadows off), with shadow SLIVER_STEP rows below and something SLIVER_DARKER darker the same
+ * distance above */
+static long sliver_pixels(const pic *off, const pic *vol) {
+    long n = 0;
+    for (int y = SLIVER_STEP; y + SLIVER_STEP < vol->h; y++)
+        for (int x = 0; x < vol->w; x++) {
+            double v = ww_test_pic_luma(vol, x, y);
+            int lit = v >= ww_test_pic_luma(off, x, y) - SLIVER_LIT;
+            int below = ww_test_pic_luma(vol, x, y + SLIVER_STEP) <=
+                        ww_test_pic_luma(off, x, y + SLIVER_STEP) - 2.0 * SHADOW_DROP;
+            int above = ww_test_pic_luma(vol, x, y - SLIVER_STEP) <= v - SLIVER_DARKER;
+            n += lit && below && above;
+        }
+    return n;
+}
+
+/* the reef's boulder seen from its shadow side, sunk into the sand (frame 382's pose): counted
+ * depth-fail, its volume let the sunlight through in a bright sliver between the rock and its
+ * shadow on the sand (a closed caster: it is now counted depth-pass, the sliver gone; the map
+ * draws none either) */
+TEST_IMAGE(shadow_volumes_no_lit_sliver_under_a_rock) {
+    REQUIRE_GL();
+    static const char *const scene = "scenes/reef.yaml";
+    static const char *const pose = "--size 640x360 --set time.start=1528/120";
+    char args[256];
+    pic f[3];
+    memset(f, 0, sizeof f);
+    snprintf(args, sizeof args, "%s --set render.shadows=off", pose);
+    int ok = render(scene, args, "sliver_off", &f[0]);
+    setenv("WW_SHADOW_DEPTH_FAIL", "1", 1);
+    ok = ok && render(scene, pose, "sliver_fail", &f[1]);
+    unsetenv("WW_SHADOW_DEPTH_FAIL");
+    ok = ok && render(scene, pose, "sliver_now", &f[2]);
+    if (ok) {
+        long fail = sliver_pixels(&f[0], &f[1]), now = sliver_pixels(&f[0], &f[2]);
+        ENSURE_MSG(fail >= SLIVER_FAIL_MIN, "depth-fail's sliver: %ld pixels (the pose shows it "
+                   "on at least %d)", fail, SLIVER_FAIL_MIN);
+        ENSURE_MSG(now <= SLIVER_MAX, "a lit sliver under the rock: %ld pixels (at most %d; "
+                   "depth-fail %ld)", now, SLIVER_MAX, fail);
+    }
+    free_pics(f, 3);
 }
 
 /* volumes_visible adds the volumes' violet tint and nothing else: every pixel it changes gains

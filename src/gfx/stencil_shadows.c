@@ -13,11 +13,11 @@
  *              Stenciled Shadow Volumes for Hardware-Accelerated Rendering", 2002), closed by a
  *              cap on the caster's faces turned from the sun and the far cap; GL_DEPTH_CLAMP keeps
  *              the near and far planes from cutting it, so the count stays right with the camera
- *              inside. Every other volume is counted depth-pass with its sides alone (the
- *              caster's own surface, opaque and drawn whole, stands where its near cap would),
- *              a third of the triangles; the reef's 223 k volume corners a frame become 117 k
- *              (its fish stay depth-fail). Which one is decided per caster and frame from its box
- *              (counts_depth_pass).
+ *              inside. A closed, rigid, opaque caster's volume that cannot hold the eye is
+ *              counted depth-pass with its sides alone (the caster's own surface, drawn whole,
+ *              stands where its near cap would): fewer triangles, and no light let through
+ *              under a caster sunk into the seabed, which depth-fail's caps there did. Which
+ *              one is decided per caster and frame from its box (counts_depth_pass).
  *
  * Both follow the sunlight as it bends at the water (Snell): under the water it comes down the
  * refracted ray, steeper than the sun's ray in air. The projected casters are flattened along
@@ -431,12 +431,14 @@ static void world_box(const adjacency *a, const float model[16], float lo[3], fl
 /* may this caster's volume be counted depth-pass, with its sides alone? That count is right
  * when nothing between the eye and a receiver lies inside the volume unseen: the eye outside it
  * (its near plane too: the caster is not clipped), and the caster's surface, which closes the
- * volume where the caps would, drawn whole into depth as the volume was built from it: not
- * blended, not bent by the vertex shader (a swimming fish), and (from above the water) not cut
- * by the prepass, which cuts what reaches the band the surface moves in */
+ * volume where the caps would, drawn whole into depth as the volume was built from it: closed,
+ * not blended, not bent by the vertex shader (a swimming fish), and (from above the water) not
+ * cut by the prepass, which cuts what reaches the band the surface moves in. An open mesh,
+ * whose every face casts, stays depth-fail: counted depth-pass the reef's coral branches went
+ * darker on their sunlit sides than depth-fail and the shadow map draw them */
 static int counts_depth_pass(const ww_stencil_shadows *s, const adjacency *a,
                              const float model[16], int rigid) {
-    if (!s->pass_ok || a->blended || !rigid) return 0;
+    if (!s->pass_ok || !a->closed || a->blended || !rigid) return 0;
     float lo[3], hi[3];
     world_box(a, model, lo, hi);
     if (s->cut && hi[1] >= s->level - s->crest) return 0;
