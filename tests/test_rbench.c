@@ -172,8 +172,8 @@ TEST_PROC(rbench_quality_knob_defaults_and_reference) {
 
 /* ---- the commands ---------------------------------------------------------------------------- */
 
-/* water and sky with every switchable pass off, so the bench tests stay quick and their pass list
- * (main, tonemap) does not move with the defaults */
+/* water and sky with every switchable pass off (the gradient sky needs no sky map), so the bench
+ * tests stay quick and their pass list (main, tonemap) does not move with the defaults */
 static const char *bare_scene(const char *dir) {
     static char path[600];
     snprintf(path, sizeof path, "%s/bare.yaml", dir);
@@ -182,6 +182,7 @@ static const char *bare_scene(const char *dir) {
                               "render: {size: [256, 144], shadows: false, refraction: false, "
                               "reflection: false, bloom: false, god_rays: false, fxaa: false, "
                               "seabed: false}\n"
+                              "sky: {model: gradient}\n"
                               "water:\n  waves:\n    model: gerstner\n    list:\n"
                               "      - {direction: 20, wavelength: 12, amplitude: 0.25, steepness: 0.6}\n"
                               "camera:\n  path:\n"
@@ -260,6 +261,21 @@ TEST_LONG(rbench_bench_render_table) {
     ENSURE(ww_test_file_contains(out, " tonemap "));
     ENSURE(ww_test_file_contains(out, "targets (render / floor"));
     ENSURE(ww_test_file_contains(out, "water and sky"));
+
+    /* scenes named lake.yaml and reef.yaml: the reef's render ms against the lake's, per backend
+     * (the same bare scene twice: about 1x, met) */
+    char lake[700], reef[700];
+    char *text = ww_test_read_file(bare_scene(dir), NULL);
+    ENSURE(text != NULL);
+    snprintf(lake, sizeof lake, "%s/lake.yaml", dir);
+    snprintf(reef, sizeof reef, "%s/reef.yaml", dir);
+    ENSURE(text && ww_test_write_text(lake, text) == 0 && ww_test_write_text(reef, text) == 0);
+    free(text);
+    char both[1600];
+    snprintf(both, sizeof both, "bench render --frames 2 --size 1280x720 %s %s", lake, reef);
+    ENSURE_EQ_INT(ww_test_ww(both, out, errf), 0);
+    ENSURE(ww_test_file_contains(out, "reef / lake     render "));
+    ENSURE(ww_test_file_contains(out, "target <= 1.5  met"));
 
     /* options that belong to another bench */
     ENSURE_EQ_INT(ww_test_ww("bench sim --size 64x36", NULL, NULL), 2);

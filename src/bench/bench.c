@@ -169,8 +169,42 @@ typedef struct {
     double x, target;
 } target_row;
 
+/* the reef against the lake, each backend at the targets' size: the reef (models, shadow
+ * volumes, the lantern's glow, caustics) should cost at most REEF_OVER_LAKE times the lake
+ * there (at small sizes its fixed costs, the volumes and the vertices, weigh more) */
+#define REEF_OVER_LAKE 1.5
+typedef struct {
+    int kind, w, h;
+    int scene; /* 0 lake, 1 reef */
+    double ms;
+} ratio_row;
+
+static int lake_or_reef(const char *base) {
+    return strcmp(base, "lake.yaml") == 0 ? 0 : strcmp(base, "reef.yaml") == 0 ? 1 : -1;
+}
+
+static void print_reef_ratio(FILE *to, const ratio_row *r, int n, const char *const *kind_names,
+                             int nkinds) {
+    for (int k = 0; k < nkinds; k++) {
+        const ratio_row *lake = NULL, *reef = NULL;
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++)
+                if (r[i].kind == k && r[j].kind == k && r[i].scene == 0 && r[j].scene == 1 &&
+                    r[i].w == TARGET_WIDTH && r[i].h == TARGET_HEIGHT && r[j].w == TARGET_WIDTH &&
+                    r[j].h == TARGET_HEIGHT) {
+                    lake = &r[i];
+                    reef = &r[j];
+                }
+        if (lake && reef && lake->ms > 0.0)
+            fprintf(to, "  %-7s reef / lake     render %.2fx (%.1f / %.1f ms)  target <= %.1f  %s\n",
+                    kind_names[k], reef->ms / lake->ms, reef->ms, lake->ms, REEF_OVER_LAKE,
+                    reef->ms <= REEF_OVER_LAKE * lake->ms ? "met" : "missed");
+    }
+}
+
 ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
-    static const char *const default_scenes[] = {"scenes/demo.yaml", "scenes/lake.yaml", NULL};
+    static const char *const default_scenes[] = {"scenes/demo.yaml", "scenes/lake.yaml",
+                                                 "scenes/reef.yaml", NULL};
     int sizes[2][2] = {{256, 144}, {1280, 720}};
     size_t nsizes = 2;
     if (o->width > 0) {
@@ -187,6 +221,8 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
     snprintf(dir, sizeof dir, "/tmp/waterworld-bench.%ld", (long)getpid());
     target_row targets[NKINDS * 4];
     int ntargets = 0;
+    ratio_row ratios[NKINDS * 8];
+    int nratios = 0;
 
     if (!o->json)
         fprintf(to, "%-7s %-15s %-9s %6s | %8s %8s %8s %8s %8s | %8s %8s %6s %7s | %8s %8s\n", "backend",
@@ -216,6 +252,9 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
                 }
                 any = 1;
                 row_figures f = figures(&rep, w, h);
+                int lr = lake_or_reef(base_name(scenes[s]));
+                if (lr >= 0 && nratios < (int)(sizeof ratios / sizeof ratios[0]))
+                    ratios[nratios++] = (ratio_row){(int)k, w, h, lr, f.ren};
                 if (f.target > 0 && ntargets < (int)(sizeof targets / sizeof targets[0]))
                     targets[ntargets++] = (target_row){kinds[k].name, base_name(scenes[s]),
                                                        rep.full_world, f.x, f.target};
@@ -240,13 +279,17 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
                     "x: render / floor; fps: 1000 / render (render only); rss: peak resident memory of\n"
                     "the whole render process; passes: ms per pass in plan order\n");
         if (ntargets > 0)
-            fprintf(to, "\ntargets (render / floor at %dx%d)\n", TARGET_WIDTH, TARGET_HEIGHT);
+            fprintf(to, "\ntargets (render / floor at %dx%d; the reef against the lake)\n",
+                    TARGET_WIDTH, TARGET_HEIGHT);
         for (int i = 0; i < ntargets; i++) {
             const target_row *t = &targets[i];
             fprintf(to, "  %-7s %-15s %-14s x %6.1f  target <= %4.1f  %s\n", t->backend, t->scene,
                     t->full_world ? "full world" : "water and sky", t->x, t->target,
                     t->x > 0 && t->x <= t->target ? "met" : "missed");
         }
+        const char *kind_names[NKINDS];
+        for (size_t k = 0; k < NKINDS; k++) kind_names[k] = kinds[k].name;
+        print_reef_ratio(to, ratios, nratios, kind_names, NKINDS);
     }
     if (!any) return ww_error_set(err, WW_E_BACKEND, NULL, 0, 0, "no configuration could run");
     return WW_OK;
