@@ -188,13 +188,10 @@ static void print_reef_ratio(FILE *to, const ratio_row *r, int n, const char *co
     for (int k = 0; k < nkinds; k++) {
         const ratio_row *lake = NULL, *reef = NULL;
         for (int i = 0; i < n; i++)
-            for (int j = 0; j < n; j++)
-                if (r[i].kind == k && r[j].kind == k && r[i].scene == 0 && r[j].scene == 1 &&
-                    r[i].w == TARGET_WIDTH && r[i].h == TARGET_HEIGHT && r[j].w == TARGET_WIDTH &&
-                    r[j].h == TARGET_HEIGHT) {
-                    lake = &r[i];
-                    reef = &r[j];
-                }
+            if (r[i].kind == k && r[i].w == TARGET_WIDTH && r[i].h == TARGET_HEIGHT) {
+                if (r[i].scene == 0) lake = &r[i];
+                else reef = &r[i];
+            }
         if (lake && reef && lake->ms > 0.0)
             fprintf(to, "  %-7s reef / lake     render %.2fx (%.1f / %.1f ms)  target <= %.1f  %s\n",
                     kind_names[k], reef->ms / lake->ms, reef->ms, lake->ms, REEF_OVER_LAKE,

@@ -816,14 +816,10 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     m->ylo = INFINITY;
     m->yhi = -INFINITY;
     for (int i = 0; i < n; i++) {
-        const float *a = in[i].model;
-        float beat = fabsf(in[i].extra[1]), ylo = a[13], yhi = a[13];
-        for (int c = 0; c < 3; c++) {
-            float w = c == 2 ? beat : 0.0f;
-            float e0 = a[4 * c + 1] * (m->lo[c] - w), e1 = a[4 * c + 1] * (m->hi[c] + w);
-            ylo += fminf(e0, e1);
-            yhi += fmaxf(e0, e1);
-        }
+        float beat = fabsf(in[i].extra[1]), ylo, yhi;
+        float lo[3] = {m->lo[0], m->lo[1], m->lo[2] - beat}, hi[3] = {m->hi[0], m->hi[1],
+                                                                       m->hi[2] + beat};
+        ww_gfx_box_row(in[i].model, 1, lo, hi, &ylo, &yhi);
         m->ylo = fminf(m->ylo, ylo);
         m->yhi = fmaxf(m->yhi, yhi);
     }

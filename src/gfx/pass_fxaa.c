@@ -65,11 +65,7 @@ static ww_result fxaa_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     fxaa_pass *p = self;
     const ww_gl *gl = r->gl;
     ww_gfx_begin_pass(gl, p->rt);
-    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, p->in->fbo);
-    gl->ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl->BlitFramebuffer(0, 0, p->in->width, p->in->height, 0, 0, p->rt->width, p->rt->height,
-                        GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, p->rt->fbo);
+    ww_gfx_blit_color(gl, p->in, p->rt, GL_NEAREST);
     gl->UseProgram(p->prog);
     gl->ActiveTexture(GL_TEXTURE0);
     gl->BindTexture(GL_TEXTURE_2D, p->ldr_tex);

@@ -219,6 +219,13 @@ void ww_gfx_begin_pass(const ww_gl *gl, const ww_rt *rt);
 /* renderer.c: the bound framebuffer of a pass that draws the scene cleared: colour (to the
  * clear colour set), depth to 1, and the stencil where the scene's shadows keep one */
 void ww_gfx_clear_scene(const ww_renderer *r);
+/* renderer.c: to's framebuffer bound, with from's first colour image copied into it (scaled by
+ * `filter` where the sizes differ) */
+void ww_gfx_blit_color(const ww_gl *gl, const ww_rt *from, const ww_rt *to, GLenum filter);
+/* the range row r of a model matrix (column-major) takes over the box [lo, hi]: the box's
+ * extent along that row of the world, where a mesh's instance reaches */
+void ww_gfx_box_row(const float model[16], int r, const float lo[3], const float hi[3],
+                    float *rlo, float *rhi);
 
 /* targets.c: textures and a framebuffer for a pass description; WW_E_GL when incomplete */
 ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww_error *err);

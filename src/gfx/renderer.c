@@ -50,6 +50,27 @@ void ww_gfx_begin_pass(const ww_gl *gl, const ww_rt *rt) {
     gl->Disable(GL_FRAMEBUFFER_SRGB);
 }
 
+void ww_gfx_blit_color(const ww_gl *gl, const ww_rt *from, const ww_rt *to, GLenum filter) {
+    gl->BindFramebuffer(GL_READ_FRAMEBUFFER, from->fbo);
+    gl->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, to->fbo);
+    gl->BlitFramebuffer(0, 0, from->width, from->height, 0, 0, to->width, to->height,
+                        GL_COLOR_BUFFER_BIT, filter);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, to->fbo);
+}
+
+void ww_gfx_box_row(const float model[16], int r, const float lo[3], const float hi[3],
+                    float *rlo, float *rhi) {
+    float a = model[12 + r], b = model[12 + r];
+    for (int c = 0; c < 3; c++) {
+        float e0 = model[4 * c + r] * lo[c], e1 = model[4 * c + r] * hi[c];
+        a += fminf(e0, e1);
+        b += fmaxf(e0, e1);
+    }
+    *rlo = a;
+    *rhi = b;
+}
+
 void ww_gfx_clear_scene(const ww_renderer *r) {
     const ww_gl *gl = r->gl;
     gl->ClearDepth(1.0);

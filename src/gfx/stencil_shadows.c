@@ -415,19 +415,6 @@ static int eye_in_column(const ww_stencil_shadows *s, const float lo[3], const f
     return segment_meets_box(b, s->sun, 0.0, INFINITY, wlo, whi);
 }
 
-/* the box of a's positions through the instance's matrix, camera-relative */
-static void world_box(const adjacency *a, const float model[16], float lo[3], float hi[3]) {
-    for (int c = 0; c < 8; c++) {
-        float p[3] = {(c & 1) ? a->hi[0] : a->lo[0], (c & 2) ? a->hi[1] : a->lo[1],
-                      (c & 4) ? a->hi[2] : a->lo[2]};
-        for (int r = 0; r < 3; r++) {
-            float w = model[r] * p[0] + model[4 + r] * p[1] + model[8 + r] * p[2] + model[12 + r];
-            if (c == 0 || w < lo[r]) lo[r] = w;
-            if (c == 0 || w > hi[r]) hi[r] = w;
-        }
-    }
-}
-
 /* may this caster's volume be counted depth-pass, with its sides alone? That count is right
  * when nothing between the eye and a receiver lies inside the volume unseen: the eye outside it
  * (its near plane too: the caster is not clipped), and the caster's surface, which closes the
@@ -439,8 +426,8 @@ static void world_box(const adjacency *a, const float model[16], float lo[3], fl
 static int counts_depth_pass(const ww_stencil_shadows *s, const adjacency *a,
                              const float model[16], int rigid) {
     if (!s->pass_ok || !a->closed || a->blended || !rigid) return 0;
-    float lo[3], hi[3];
-    world_box(a, model, lo, hi);
+    float lo[3], hi[3]; /* the box of a's positions through the instance's matrix */
+    for (int r = 0; r < 3; r++) ww_gfx_box_row(model, r, a->lo, a->hi, &lo[r], &hi[r]);
     if (s->cut && hi[1] >= s->level - s->crest) return 0;
     return !eye_in_column(s, lo, hi);
 }
