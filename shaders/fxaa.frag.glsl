@@ -42,9 +42,14 @@ void main() {
     float hi = max(max(max(N, S), max(E, W)), M);
     float lo = min(min(min(N, S), min(E, W)), M);
     float range = hi - lo;
-    // no edge: the pixel keeps the copy of the tone-mapped image already in the target
-    // (pass_fxaa.c), and where a whole block has none llvmpipe skips the rest
+#ifdef WW_FXAA_MARK
+    // the marking draw (pass_fxaa.c) writes depth where there is an edge, and nothing else; a
+    // pixel without one keeps the copy of the tone-mapped image already in the target. The
+    // shading draw runs only where this one wrote, so it needs no test of its own.
     if (range < max(EDGE_THRESHOLD_MIN, hi * EDGE_THRESHOLD)) discard;
+    o_color = vec4(0.0);
+    return;
+#endif
     float NW = luma_px(px + ivec2(-1, 1)), NE = luma_px(px + ivec2(1, 1));
     float SW = luma_px(px + ivec2(-1, -1)), SE = luma_px(px + ivec2(1, -1));
 

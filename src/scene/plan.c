@@ -279,6 +279,7 @@ void ww_plan_build(const ww_scene *sc, int frame_width, int frame_height, ww_pla
     if (rd->fxaa) {
         add_pass(p, WW_PASS_FXAA, "fxaa", "edge anti-aliasing of the sRGB8 image");
         add_target(p, "ldr", WW_FMT_RGBA8, width, height);
+        add_target(p, "edges", WW_FMT_DEPTH24, width, height);
     }
     if (width != frame_width || height != frame_height) {
         add_pass(p, WW_PASS_UPSCALE, "upscale", "the sRGB8 image scaled up to the frame, bilinear");
