@@ -69,8 +69,12 @@ uniform vec2 u_clip_range;  // near, far clip, m
 // and u_scene_depth hold the prepass), WW_DISTORT (the DuDv distorts them). Per scene:
 // WW_SKY_CUBE (the sky is u_sky_cube times u_sky_intensity), WW_ALPHA_BLEND (seed 004's blend),
 // WW_FOAM (foam on), WW_FRESNEL_SCHLICK (Schlick's Fresnel, else bias + scale (1 - c)^power).
+// Per pass: WW_WATER_RESOLVE (drawn over the screen from the G-buffer, not with the mesh).
 #ifndef WW_UNDERWATER
 #define WW_UNDERWATER 0
+#endif
+#ifndef WW_WATER_RESOLVE
+#define WW_WATER_RESOLVE 0
 #endif
 #ifndef WW_REFLECT_TEX
 #define WW_REFLECT_TEX 0
@@ -130,8 +134,20 @@ uniform vec4 u_foam_memory;
 #define WW_FOAM_N int(u_foam_memory.x)
 #endif
 
+#if WW_WATER_RESOLVE
+// shaded over the screen from the G-buffer the mesh wrote (gfx/water.c), where the stencil marks
+// the water's pixels: its inputs are read, not interpolated
+uniform sampler2D u_water_pos;  // surface point relative to the camera (m), window depth
+uniform sampler2D u_water_rest; // rest offset (m), the tag of the frame that wrote it
+uniform float u_water_tag;      // this frame's tag
+vec2 v_local;
+vec3 v_pos;
+float frag_z;
+#else
 in vec2 v_local;
 in vec3 v_pos;
+#define frag_z gl_FragCoord.z
+#endif
 out vec4 o_color;
 
 const float SPEC_POWER = 600.0;   // Blinn-Phong exponent of a calm surface
@@ -274,7 +290,42 @@ float ww_linear_depth(float z) {
     return 2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n));
 }
 
+#if WW_WATER_RESOLVE
+// This pixel's inputs from the G-buffer. Pixels are shaded in 2x2 blocks, and derivatives (which
+// choose the reflection's and the sky's mip levels) are differences across a block; a pixel of
+// the block that is not water this frame runs only for them, and holds another frame's values
+// or none. So a value this frame did not write is zeroed, then replaced by its neighbour's
+// along the row (0 + the difference: exact), else along the column: a water pixel's derivative
+// toward it is 0, no other frame's value reaches the picture, and a frame draws the same
+// whatever was drawn before it.
+void read_gbuffer() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec4 a = texelFetch(u_water_pos, px, 0), b = texelFetch(u_water_rest, px, 0);
+    float stale = b.z == u_water_tag ? 0.0 : 1.0;
+    a *= 1.0 - stale;
+    b *= 1.0 - stale;
+    // the neighbour across the row is at +dFdx from the left pixel, -dFdx from the right one
+    float sx = (px.x & 1) == 0 ? 1.0 : -1.0, sy = (px.y & 1) == 0 ? 1.0 : -1.0;
+    vec4 da = dFdx(a), db = dFdx(b);
+    float take = stale * (1.0 - (stale + sx * dFdx(stale))); // stale, its neighbour is not
+    a += take * sx * da;
+    b += take * sx * db;
+    stale -= take;
+    da = dFdy(a);
+    db = dFdy(b);
+    take = stale * (1.0 - (stale + sy * dFdy(stale)));
+    a += take * sy * da;
+    b += take * sy * db;
+    v_pos = a.xyz;
+    frag_z = a.w;
+    v_local = b.xy;
+}
+#endif
+
 void main() {
+#if WW_WATER_RESOLVE
+    read_gbuffer();
+#endif
     float dist = length(v_pos);
     vec3 v = -v_pos / max(dist, 1e-6); // toward the camera
 
@@ -419,7 +470,7 @@ void main() {
     vec3 refr = deep;
 #if WW_REFRACT_TEX && !WW_ALPHA_BLEND
     {
-        float zw = ww_linear_depth(gl_FragCoord.z), ray = dist / zw; // eye depth -> ray length
+        float zw = ww_linear_depth(frag_z), ray = dist / zw; // eye depth -> ray length
         float zs = ww_linear_depth(texture(u_scene_depth, uv0).r);
         float shore = 1.0 - exp(-max(zs - zw, 0.0) * ray / SHORE_DEPTH);
         vec2 uv = clamp(uv0 + off * shore, EDGE, 1.0 - EDGE);

@@ -10,6 +10,8 @@
  *   high view      from 300 m: no hard band where the water ends, little pixel-scale noise
  *   foam           soft-edged coverage that grows with the waves' steepness
  *   open sea       colour and contrast in the water, and no shimmer far away
+ *   G-buffer       the water shaded once a pixel from its G-buffer looks as the mesh shaded it,
+ *                  and a frame does not depend on the frames drawn before it
  */
 #include <math.h>
 #include <stdio.h>
@@ -51,6 +53,13 @@
                                   * luma: fine detail, not smooth plastic, whatever the exposure
                                   * (0.0059 at exposure 1.1 into the sun, 0.0062 at 0.7) */
 #define SHIMMER_MAX 3.0          /* mean 8-bit luminance change of the far water between frames */
+#define GBUF_PSNR_MIN 44.0       /* the water shaded from its G-buffer against shaded with its
+                                  * mesh, dB at least: the mip levels of the reflection and the
+                                  * sky differ on the pixels where a crest hides the water behind
+                                  * it (46.7 dB on the cubemap scene's steep waves, 97.5 on the
+                                  * open sea, the lake and the reef identical at 320x180) */
+#define GBUF_LEVELS 8            /* a pixel more than this many levels apart counts ... */
+#define GBUF_APART_MAX 0.01      /* ... and such pixels are at most this share (0.45% there) */
 #define RIM_MAX_PIXELS 10        /* pixels around a floating cube's top half that its colour
                                   * reaches through the refraction, at most: the rim of its top
                                   * bled into the water behind it measured 139 */
@@ -780,4 +789,86 @@ TEST_IMAGE(picture_water_open_sea_colour_no_shimmer) {
     }
     img_free(&a);
     img_free(&b);
+}
+
+/* The water drawn as the mesh's G-buffer and shaded once a pixel (gfx/water.c) against the same
+ * frames shaded per fragment of the mesh (WW_WATER_FORWARD=1): the same picture but for the mip
+ * levels chosen where a crest hides the water behind it */
+TEST_IMAGE(picture_water_gbuffer_shades_as_the_mesh_did) {
+    REQUIRE_GL();
+    static const struct {
+        const char *scene;
+        int frame;
+    } cases[] = {{"scenes/lake.yaml", 0},            /* cubes at the waterline */
+                 {"scenes/demo.yaml", 240},          /* the sun's glitter */
+                 {"scenes/reef.yaml", 560},          /* under water: Snell's window */
+                 {"scenes/features/skybox.yaml", 0}}; /* the cubemap's mips on steep waves */
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        ww_test_pic g, m;
+        unsetenv("WW_WATER_FORWARD");
+        int ok = ww_test_render_pic(cases[i].scene, cases[i].frame, "320x180", NULL, "gbuf_g", &g);
+        setenv("WW_WATER_FORWARD", "1", 1);
+        ok = ww_test_render_pic(cases[i].scene, cases[i].frame, "320x180", NULL, "gbuf_m", &m) &&
+             ok;
+        unsetenv("WW_WATER_FORWARD");
+        if (ok) {
+            int maxd = 0;
+            double db = ww_test_pic_psnr(&m, &g, &maxd);
+            long apart = 0;
+            for (int y = 0; y < g.h; y++)
+                for (int x = 0; x < g.w; x++)
+                    for (int c = 0; c < 3; c++)
+                        if (abs((int)ww_test_pixel(&g.im, x, y)[c] -
+                                (int)ww_test_pixel(&m.im, x, y)[c]) > GBUF_LEVELS) {
+                            apart++;
+                            break;
+                        }
+            double share = (double)apart / ((double)g.w * g.h);
+            printf("  %s %d: %.1f dB, largest %d levels, %.3f%% of pixels over %d\n",
+                   cases[i].scene, cases[i].frame, db, maxd, 100.0 * share, GBUF_LEVELS);
+            ENSURE_MSG(db >= GBUF_PSNR_MIN, "%s %d: %.1f dB < %.1f", cases[i].scene,
+                       cases[i].frame, db, GBUF_PSNR_MIN);
+            ENSURE_MSG(share <= GBUF_APART_MAX, "%s %d: %.3f%% of pixels over %d levels apart",
+                       cases[i].scene, cases[i].frame, 100.0 * share, GBUF_LEVELS);
+        }
+        ww_image_free(&g.im);
+        ww_image_free(&m.im);
+    }
+}
+
+/* The G-buffer's pixels that are not water this frame hold an earlier frame's values; they must
+ * not reach the picture: a frame rendered after others is the same, byte for byte, as the frame
+ * rendered alone (a moving camera, cubes at the waterline, steep cubemap waves) */
+TEST_IMAGE(picture_water_gbuffer_frame_does_not_depend_on_the_frames_before) {
+    REQUIRE_GL();
+    static const struct {
+        const char *scene;
+        int frame;
+    } cases[] = {{"scenes/lake.yaml", 90}, {"scenes/features/skybox.yaml", 12}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char seq[768], one[768], args[1200], a[1024], b[1024];
+        snprintf(seq, sizeof seq, "%s", ww_test_tmpdir("gbuf_seq"));
+        snprintf(one, sizeof one, "%s", ww_test_tmpdir("gbuf_one"));
+        int f = cases[i].frame;
+        snprintf(args, sizeof args, "render %s --frames %d:%d --size 320x180 -o %s --quiet",
+                 cases[i].scene, f - 6, f + 1, seq);
+        int rc = ww_test_ww(args, NULL, NULL);
+        snprintf(args, sizeof args, "render %s --frames %d:%d --size 320x180 -o %s --quiet",
+                 cases[i].scene, f, f + 1, one);
+        rc |= ww_test_ww(args, NULL, NULL);
+        ENSURE_MSG(rc == 0, "%s: a render failed", cases[i].scene);
+        if (rc != 0) continue;
+        snprintf(a, sizeof a, "%s/frame_%05d.png", seq, f);
+        snprintf(b, sizeof b, "%s/frame_%05d.png", one, f);
+        ww_test_pic p = {0}, q = {0};
+        if (ww_test_pic_load(a, &p) && ww_test_pic_load(b, &q)) {
+            int maxd = 0;
+            double db = ww_test_pic_psnr(&p, &q, &maxd);
+            printf("  %s %d after %d others against alone: largest difference %d levels\n",
+                   cases[i].scene, f, 6, maxd);
+            ENSURE_MSG(maxd == 0, "%s %d: %.1f dB, %d levels apart", cases[i].scene, f, db, maxd);
+        }
+        ww_image_free(&p.im);
+        ww_image_free(&q.im);
+    }
 }

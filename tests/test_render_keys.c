@@ -194,8 +194,8 @@ TEST(render_keys_plan_frame_scale) {
 }
 
 /* render.shadows: the word forms and the mapping's technique pick the technique; only the map
- * has a shadow pass, and only the stencilled ones give the prepass and the main pass a stencil
- * (every other scene keeps its plain depth targets) */
+ * has a shadow pass, and only the stencilled ones give the prepass a stencil (the main pass has
+ * one in every scene that shades its water from the G-buffer, this one among them) */
 static ww_format depth_format(const ww_plan *p, ww_pass_id id) {
     const ww_pass_desc *d = ww_plan_pass(p, id);
     for (int i = 0; d && i < d->ntargets; i++)
@@ -237,10 +237,51 @@ TEST(render_keys_shadow_techniques) {
         int map = cases[i].on && cases[i].technique == WW_SHADOW_MAP;
         ENSURE_MSG(has_pass(&p, WW_PASS_SHADOW) == map, "%s: shadow pass", cases[i].set);
         ww_format want = cases[i].stencil ? WW_FMT_DEPTH24_STENCIL8 : WW_FMT_DEPTH24;
-        ENSURE_MSG(depth_format(&p, WW_PASS_MAIN) == want, "%s: main depth", cases[i].set);
+        ENSURE_MSG(depth_format(&p, WW_PASS_MAIN) == WW_FMT_DEPTH24_STENCIL8, "%s: main depth",
+                   cases[i].set);
         ENSURE_MSG(depth_format(&p, WW_PASS_PREPASS) == want, "%s: prepass depth", cases[i].set);
         ENSURE_MSG(depth_format(&p, WW_PASS_REFLECTION) == WW_FMT_DEPTH24, "%s: reflection",
                    cases[i].set);
+        ww_scene_free(sc);
+    }
+}
+
+/* the water's G-buffer: two RGBA32F targets of the main pass that its framebuffer does not hold,
+ * and a stencil in its depth; not with MSAA, nor with the water blended (seed 004), where the
+ * main depth is plain again unless the shadows are stencilled */
+TEST(render_keys_plan_water_gbuffer) {
+    static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
+                               "render: {size: [320, 180]}\n";
+    static const struct {
+        const char *set;
+        int gbuffer;
+    } cases[] = {
+        {"render.fxaa=true", 1},
+        {"render.msaa=4", 0},
+        {"water.look.alpha_blend={on: true}", 0},
+        {"render.scale=0.5", 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        ww_scene *sc = load(text, &cases[i].set, 1);
+        if (!sc) return;
+        ww_plan p;
+        ww_plan_build(sc, 320, 180, &p);
+        const ww_pass_desc *d = ww_plan_pass(&p, WW_PASS_MAIN);
+        int n32 = 0, attached32 = 0;
+        for (int t = 0; d && t < d->ntargets; t++) {
+            if (d->targets[t].format != WW_FMT_RGBA32F) continue;
+            n32++;
+            attached32 += !d->unattached[t];
+            ENSURE_MSG(d->targets[t].width == d->targets[0].width &&
+                           d->targets[t].height == d->targets[0].height,
+                       "%s: G-buffer %dx%d, main %dx%d", cases[i].set, d->targets[t].width,
+                       d->targets[t].height, d->targets[0].width, d->targets[0].height);
+        }
+        ENSURE_MSG(n32 == 2 * cases[i].gbuffer, "%s: %d rgba32f targets", cases[i].set, n32);
+        ENSURE_MSG(attached32 == 0, "%s: %d G-buffer targets attached", cases[i].set, attached32);
+        ENSURE_MSG(depth_format(&p, WW_PASS_MAIN) ==
+                       (cases[i].gbuffer ? WW_FMT_DEPTH24_STENCIL8 : WW_FMT_DEPTH24),
+                   "%s: main depth", cases[i].set);
         ww_scene_free(sc);
     }
 }

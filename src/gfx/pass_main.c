@@ -1,5 +1,5 @@
 /* pass_main.c - the main HDR pass: clears its RGBA16F colour + depth targets, draws the water
- * surface and the solid geometry (in a scene with boats the solids first, then the lid over each
+ * surface (through its G-buffer where the plan gives one: gfx/water.c) and the solid geometry (in a scene with boats the solids first, then the lid over each
  * boat's inside into depth so no water is drawn inside a hull, then the water and the seabed),
  * then the sky on the far plane behind it (sky.c, water.c, geometry.c). With MSAA (render.msaa)
  * it draws into the multisampled framebuffer and resolves colour and depth into its textures at
@@ -55,7 +55,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
     ww_gfx_begin_pass(gl, p->rt);
     if (p->rt->fbo_ms) gl->BindFramebuffer(GL_FRAMEBUFFER, p->rt->fbo_ms); /* post: MSAA */
     gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
-    ww_gfx_clear_scene(r);
+    ww_gfx_clear_scene(r, p->rt);
     if (f->sc->render.water.alpha_blend && !f->underwater) {
         /* seed 004: the water blends over whatever lies behind it, the sky included */
         if (r->geometry) {

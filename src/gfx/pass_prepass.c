@@ -73,7 +73,7 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         plane[0] = 0.0f; plane[1] = 1.0f; plane[2] = 0.0f;
         plane[3] = (float)(-(level - p->crest));
     }
-    ww_gfx_clear_scene(r);
+    ww_gfx_clear_scene(r, p->rt);
     if (r->geometry)
         ww_geometry_draw(r->geometry, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
     /* the shadows seen through the surface from above. From below, the prepass holds what

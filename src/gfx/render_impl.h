@@ -27,6 +27,7 @@ typedef struct ww_rt {
     int ntex;
     GLuint tex[WW_PLAN_MAX_TARGETS];
     ww_format fmt[WW_PLAN_MAX_TARGETS];
+    int unattached[WW_PLAN_MAX_TARGETS]; /* 1: not in fbo (the plan's unattached targets) */
     /* post: the multisampled targets (samples > 1) as renderbuffers of a second framebuffer,
      * which the pass draws into and resolves into fbo (MSAA); fbo_ms 0 when there are none */
     GLuint fbo_ms;
@@ -216,9 +217,9 @@ const ww_rt *ww_renderer_output(const ww_renderer *r, ww_pass_id id);
 /* renderer.c: the state every pass starts from: its framebuffer bound, viewport, no blending,
  * culling, dithering or depth test */
 void ww_gfx_begin_pass(const ww_gl *gl, const ww_rt *rt);
-/* renderer.c: the bound framebuffer of a pass that draws the scene cleared: colour (to the
- * clear colour set), depth to 1, and the stencil where the scene's shadows keep one */
-void ww_gfx_clear_scene(const ww_renderer *r);
+/* renderer.c: the bound framebuffer of a pass that draws the scene into rt cleared: colour (to
+ * the clear colour set), depth to 1, and the stencil where rt has one */
+void ww_gfx_clear_scene(const ww_renderer *r, const ww_rt *rt);
 /* renderer.c: to's framebuffer bound, with from's first colour image copied into it (scaled by
  * `filter` where the sizes differ) */
 void ww_gfx_blit_color(const ww_gl *gl, const ww_rt *from, const ww_rt *to, GLenum filter);
@@ -236,6 +237,8 @@ ww_result ww_gfx_fbo_single(const ww_gl *gl, GLuint tex, const char *pass, int s
                             ww_error *err);
 /* the first attachment of format fmt, 0 when there is none */
 GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt);
+/* the n-th (from 0) texture of rt in format fmt, 0 when there is none */
+GLuint ww_gfx_rt_texture_nth(const ww_rt *rt, ww_format fmt, int n);
 /* the depth attachment, with or without stencil; 0 when there is none */
 GLuint ww_gfx_rt_depth(const ww_rt *rt);
 /* the bound texture of `target` (GL_TEXTURE_2D, _2D_ARRAY) made a tile: its mip chain

@@ -71,11 +71,12 @@ void ww_gfx_box_row(const float model[16], int r, const float lo[3], const float
     *rhi = b;
 }
 
-void ww_gfx_clear_scene(const ww_renderer *r) {
+void ww_gfx_clear_scene(const ww_renderer *r, const ww_rt *rt) {
     const ww_gl *gl = r->gl;
     gl->ClearDepth(1.0);
     gl->DepthMask(GL_TRUE);
-    if (r->stencil) { /* stencilled shadows: only their scenes have a stencil to clear */
+    if (ww_gfx_rt_texture(rt, WW_FMT_DEPTH24_STENCIL8)) {
+        /* stencilled shadows, the water's pixels: only those targets have a stencil */
         gl->ClearStencil(0);
         gl->StencilMask(0xFF);
         gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -335,7 +336,9 @@ static ww_result read_target(ww_renderer *r, const ww_rt *rt, ww_format fmt, GLe
     int color = 0, found = -1;
     for (int i = 0; i < rt->ntex && found < 0; i++) {
         if (rt->fmt[i] == fmt) found = color;
-        if (rt->fmt[i] != WW_FMT_DEPTH24 && rt->fmt[i] != WW_FMT_DEPTH24_STENCIL8) color++;
+        if (rt->fmt[i] != WW_FMT_DEPTH24 && rt->fmt[i] != WW_FMT_DEPTH24_STENCIL8 &&
+            !rt->unattached[i])
+            color++;
     }
     WW_ASSERT(found >= 0);
     gl->BindFramebuffer(GL_READ_FRAMEBUFFER, rt->fbo);

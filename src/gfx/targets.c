@@ -21,6 +21,7 @@ static tex_format format_of(ww_format f) {
     case WW_FMT_RGBA8: return (tex_format){GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, 0};
     case WW_FMT_DEPTH24_STENCIL8:
         return (tex_format){GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, 2};
+    case WW_FMT_RGBA32F: return (tex_format){GL_RGBA32F, GL_RGBA, GL_FLOAT, 0};
     }
     WW_ASSERT(!"unknown ww_format");
     return (tex_format){0, 0, 0, 0};
@@ -103,14 +104,16 @@ ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww
         gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        rt->tex[rt->ntex] = tex;
+        rt->fmt[rt->ntex] = t->format;
+        rt->unattached[rt->ntex] = d->unattached[i];
+        rt->ntex++;
+        if (d->unattached[i]) continue; /* the pass attaches it to a framebuffer of its own */
         GLenum attach = tf.is_depth == 2 ? GL_DEPTH_STENCIL_ATTACHMENT
                         : tf.is_depth  ? GL_DEPTH_ATTACHMENT
                                        : GL_COLOR_ATTACHMENT0 + (GLenum)ncolor;
         if (!tf.is_depth) draw[ncolor++] = attach;
         gl->FramebufferTexture2D(GL_FRAMEBUFFER, attach, GL_TEXTURE_2D, tex, 0);
-        rt->tex[rt->ntex] = tex;
-        rt->fmt[rt->ntex] = t->format;
-        rt->ntex++;
     }
     gl->BindTexture(GL_TEXTURE_2D, 0);
     gl->DrawBuffers(ncolor, draw);
@@ -147,6 +150,12 @@ void ww_gfx_rt_destroy(const ww_gl *gl, ww_rt *rt) {
 GLuint ww_gfx_rt_texture(const ww_rt *rt, ww_format fmt) {
     for (int i = 0; i < rt->ntex; i++)
         if (rt->fmt[i] == fmt) return rt->tex[i];
+    return 0;
+}
+
+GLuint ww_gfx_rt_texture_nth(const ww_rt *rt, ww_format fmt, int n) {
+    for (int i = 0; i < rt->ntex; i++)
+        if (rt->fmt[i] == fmt && n-- == 0) return rt->tex[i];
     return 0;
 }
 

@@ -37,12 +37,31 @@ typedef struct water_prog {
     GLint reflection, scene_color, scene_depth, sky_cube, sky_dome;
     GLint sky_intensity, murk, foam, fog_below_color, fog_below_density, alpha;
     GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
+    GLint gbuf_pos, gbuf_rest, gbuf_tag; /* the resolve's G-buffer (WW_WATER_RESOLVE) */
 } water_prog;
 
 enum { WATER_UNDER = 1, WATER_REFL = 2, WATER_REFR = 4, WATER_VARIANTS = 8 };
 
+/* The water shaded once a pixel, where the main pass plans a G-buffer (its water_pos and
+ * water_rest targets): the mesh draws only what the shading reads (the camera-relative surface
+ * point and window depth, the rest offset, and the frame's tag) and sets a stencil bit where it
+ * is in front; then one full-screen draw of the variant's resolve build shades the pixels with
+ * the bit, and clears it. llvmpipe shades a block of pixels once for every triangle that
+ * crosses it, and the rings beyond a few tens of metres are thinner than a pixel, so the mesh
+ * drawn with the full shading paid for it many times over; the stencil test is what llvmpipe
+ * skips blocks by (a discard would not be). WW_WATER_FORWARD=1 shades the mesh's fragments
+ * instead, to compare. */
+#define GBUF_BIT 0x80 /* the stencil bit of the water's pixels, clear again before the shadows
+                       * count in the same stencil */
+#define GBUF_TAG_WRAP 16777215.0f /* tags 1 .. 2^24 - 1: exact in a float */
+
 struct ww_water {
     water_prog var[WATER_VARIANTS]; /* by the WATER_* bits; prog 0: not built yet */
+    water_prog resolve[WATER_VARIANTS]; /* the same, shading from the G-buffer */
+    int forward;                        /* WW_WATER_FORWARD=1: no G-buffer */
+    GLuint gbuf_prog, gbuf_fbo;         /* the mesh into the G-buffer; 0: not made yet */
+    GLint gbuf_view_proj, gbuf_origin, gbuf_grid, gbuf_skirt, gbuf_tag;
+    float tag;                          /* this frame's, written with the values */
     char defines[1024];             /* the scene's own, shared by every variant */
     int fade;                       /* WW_FADE (WW_WATER_FADE=0 turns it off) */
     GLuint vao, vbo, ibo;
@@ -332,20 +351,21 @@ static void scene_defines(const ww_scene *sc, int foam_n, char *out, size_t size
              ww_sky_defines(sc));
 }
 
-/* builds variant `bits` (WATER_*) of the program and finds its uniforms */
+/* builds variant `bits` (WATER_*) of the program, drawn with the mesh or (resolve) over the
+ * screen from the G-buffer, and finds its uniforms */
 static ww_result build_variant(ww_water *w, const ww_gl *gl, const ww_scene *sc, int bits,
-                               ww_error *err) {
-    water_prog *v = &w->var[bits];
+                               int resolve, ww_error *err) {
+    water_prog *v = resolve ? &w->resolve[bits] : &w->var[bits];
     /* DuDv distorts and details only what there is a texture of to distort */
     int distort = sc->render.water.distortion > 0.0 && (bits & (WATER_REFL | WATER_REFR));
     char defs[1400];
     snprintf(defs, sizeof defs,
              "#define WW_UNDERWATER %d\n#define WW_REFLECT_TEX %d\n#define WW_REFRACT_TEX %d\n"
-             "#define WW_DISTORT %d\n%s",
+             "#define WW_DISTORT %d\n#define WW_WATER_RESOLVE %d\n%s",
              (bits & WATER_UNDER) != 0, (bits & WATER_REFL) != 0, (bits & WATER_REFR) != 0,
-             distort != 0, w->defines);
-    ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water.frag.glsl", w->fade, defs,
-                                    &v->prog, err);
+             distort != 0, resolve, w->defines);
+    ww_result rc = ww_water_program(gl, sc, resolve ? "fullscreen.vert.glsl" : "water.vert.glsl",
+                                    "water.frag.glsl", w->fade, defs, &v->prog, err);
     if (rc != WW_OK) return rc;
     GLuint p = v->prog;
     ww_sky_locs_init(gl, p, sc, &v->sky);
@@ -383,6 +403,45 @@ static ww_result build_variant(ww_water *w, const ww_gl *gl, const ww_scene *sc,
     v->foam_step = ww_gfx_uniform(gl, p, "u_foam_step");
     v->foam_memory = ww_gfx_uniform(gl, p, "u_foam_memory");
     v->dudv_grad = ww_gfx_uniform(gl, p, "u_dudv_grad");
+    v->gbuf_pos = ww_gfx_uniform(gl, p, "u_water_pos");
+    v->gbuf_rest = ww_gfx_uniform(gl, p, "u_water_rest");
+    v->gbuf_tag = ww_gfx_uniform(gl, p, "u_water_tag");
+    return WW_OK;
+}
+
+/* the G-buffer's program and its framebuffer over the main pass's targets, made at the first
+ * frame that uses them */
+static ww_result gbuf_new(ww_water *w, const ww_gl *gl, const ww_scene *sc, const ww_rt *main,
+                          ww_error *err) {
+    ww_result rc = ww_water_program(gl, sc, "water.vert.glsl", "water_gbuf.frag.glsl", w->fade,
+                                    w->defines, &w->gbuf_prog, err);
+    if (rc != WW_OK) return rc;
+    w->gbuf_view_proj = ww_gfx_uniform(gl, w->gbuf_prog, "u_view_proj");
+    w->gbuf_origin = ww_gfx_uniform(gl, w->gbuf_prog, "u_origin");
+    w->gbuf_grid = ww_gfx_uniform(gl, w->gbuf_prog, "u_grid");
+    w->gbuf_skirt = ww_gfx_uniform(gl, w->gbuf_prog, "u_skirt_r");
+    w->gbuf_tag = ww_gfx_uniform(gl, w->gbuf_prog, "u_water_tag");
+    gl->GenFramebuffers(1, &w->gbuf_fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, w->gbuf_fbo);
+    for (int i = 0; i < 2; i++)
+        gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + (GLenum)i, GL_TEXTURE_2D,
+                                 ww_gfx_rt_texture_nth(main, WW_FMT_RGBA32F, i), 0);
+    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                             ww_gfx_rt_texture(main, WW_FMT_DEPTH24_STENCIL8), 0);
+    GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl->DrawBuffers(2, bufs);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    /* tag 0 is no frame's: a pixel no frame has written is never taken for this frame's
+     * (the main pass clears its colour after setting its own clear colour) */
+    if (status == GL_FRAMEBUFFER_COMPLETE) {
+        gl->ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        gl->Clear(GL_COLOR_BUFFER_BIT);
+    }
+    gl->BindFramebuffer(GL_FRAMEBUFFER, main->fbo);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "water: the G-buffer's framebuffer is incomplete (0x%04x)",
+                            (unsigned)status);
     return WW_OK;
 }
 
@@ -400,7 +459,9 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     /* the variant seen from above with the images the scene's passes make: built now, so a
      * shader that does not compile fails here rather than in the middle of a run */
     int first = (sc->render.reflection.on ? WATER_REFL : 0) | (sc->render.refraction ? WATER_REFR : 0);
-    ww_result rc = build_variant(w, gl, sc, first, err);
+    const char *fwd = getenv("WW_WATER_FORWARD");
+    w->forward = fwd && strcmp(fwd, "1") == 0;
+    ww_result rc = build_variant(w, gl, sc, first, 0, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
     if (rc == WW_OK && sc->render.water.detail == WW_DETAIL_TEXTURE) rc = dudv_texture(w, gl, err);
@@ -457,7 +518,7 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
 
 /* texture units of the water program */
 enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SKY_CUBE, UNIT_SKY_DOME,
-       UNIT_DUDV };
+       UNIT_DUDV, UNIT_GBUF_POS, UNIT_GBUF_REST };
 
 static void bind_unit(const ww_gl *gl, int unit, GLenum target, GLuint tex) {
     gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
@@ -528,6 +589,95 @@ static void unbind_optics(const ww_gl *gl) {
     for (int u = UNIT_SCENE_DEPTH; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
 }
 
+/* the mesh's visible part: the inner disc whole, the outer rings' segments in view */
+static void draw_mesh(const ww_water *w, const ww_gl *gl, const ww_frame *f,
+                      const double centre[2]) {
+    gl->BindVertexArray(w->vao);
+    gl->DrawElements(GL_TRIANGLES, w->ninner, GL_UNSIGNED_INT, NULL);
+    int first, count;
+    visible_segments(w, f, centre, &first, &count);
+    draw_segments(w, gl, first, count < w->nseg - first ? count : w->nseg - first);
+    if (first + count > w->nseg) draw_segments(w, gl, 0, first + count - w->nseg);
+    gl->BindVertexArray(0);
+}
+
+/* the shading's uniforms and textures on the bound build v */
+static void set_shading(const ww_water *w, const water_prog *v, int bits, const ww_renderer *r,
+                        const ww_frame *f, const double centre[2]) {
+    const ww_gl *gl = r->gl;
+    const ww_scene *sc = f->sc;
+    const ww_state *st = f->st;
+    /* fog colour: the scene's, or the sky at the horizon so the far water meets the sky */
+    double hz[3];
+    ww_sky_horizon(sc, st, hz); /* the sky's haze: gfx/sky.c */
+    const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
+    ww_sky_locs_set(gl, &v->sky, st);
+    ww_geometry_lights_set(r->geometry, gl, f, v->prog); /* lights[] */
+    gl->Uniform3fv(v->ugrid, 1, w->grid);
+    gl->Uniform3f(v->water_color, (float)sc->water_color[0], (float)sc->water_color[1],
+                  (float)sc->water_color[2]);
+    gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
+    gl->Uniform3f(v->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
+    gl->Uniform1f(v->fog_density, (float)sc->fog_density);
+    gl->Uniform1f(v->pixel_angle, f->pixel_angle);
+    set_optics(w, v, bits, r, f, centre);
+}
+
+/* the mesh's placement on the bound program: view, origin, spacing, skirt */
+static void set_mesh(const ww_water *w, const ww_gl *gl, const ww_frame *f, const double centre[2],
+                     GLint view_proj, GLint origin, GLint grid, GLint skirt) {
+    gl->UniformMatrix4fv(view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
+    gl->Uniform3f(origin, (float)(centre[0] - f->cam_pos[0]),
+                  (float)(f->sc->water_level - f->cam_pos[1]), (float)(centre[1] - f->cam_pos[2]));
+    gl->Uniform3fv(grid, 1, w->grid);
+    gl->Uniform1f(skirt, w->skirt_r);
+}
+
+/* the G-buffer path (see GBUF_BIT): the mesh into the G-buffer, then the marked pixels shaded */
+static ww_result draw_gbuf(ww_water *w, const ww_renderer *r, const ww_frame *f, int bits,
+                           const ww_rt *main, const double centre[2], ww_error *err) {
+    const ww_gl *gl = r->gl;
+    ww_result rc = WW_OK;
+    if (!w->gbuf_prog && (rc = gbuf_new(w, gl, f->sc, main, err))) return rc;
+    if (!w->resolve[bits].prog && (rc = build_variant(w, gl, f->sc, bits, 1, err))) return rc;
+    const water_prog *v = &w->resolve[bits];
+    w->tag = w->tag >= GBUF_TAG_WRAP ? 1.0f : w->tag + 1.0f;
+
+    gl->BindFramebuffer(GL_FRAMEBUFFER, w->gbuf_fbo);
+    gl->Enable(GL_STENCIL_TEST);
+    gl->StencilMask(GBUF_BIT);
+    gl->StencilFunc(GL_ALWAYS, GBUF_BIT, GBUF_BIT);
+    gl->StencilOpSeparate(GL_FRONT_AND_BACK, GL_KEEP, GL_KEEP, GL_REPLACE);
+    gl->UseProgram(w->gbuf_prog);
+    set_mesh(w, gl, f, centre, w->gbuf_view_proj, w->gbuf_origin, w->gbuf_grid, w->gbuf_skirt);
+    gl->Uniform1f(w->gbuf_tag, w->tag);
+    draw_mesh(w, gl, f, centre);
+
+    /* every marked pixel shaded once, its bit cleared for the shadows' counts */
+    gl->BindFramebuffer(GL_FRAMEBUFFER, main->fbo);
+    gl->Disable(GL_DEPTH_TEST);
+    gl->StencilFunc(GL_EQUAL, GBUF_BIT, GBUF_BIT);
+    gl->StencilOpSeparate(GL_FRONT_AND_BACK, GL_KEEP, GL_KEEP, GL_ZERO);
+    gl->UseProgram(v->prog);
+    set_shading(w, v, bits, r, f, centre);
+    gl->Uniform1i(v->gbuf_pos, UNIT_GBUF_POS);
+    gl->Uniform1i(v->gbuf_rest, UNIT_GBUF_REST);
+    gl->Uniform1f(v->gbuf_tag, w->tag);
+    bind_unit(gl, UNIT_GBUF_POS, GL_TEXTURE_2D, ww_gfx_rt_texture_nth(main, WW_FMT_RGBA32F, 0));
+    bind_unit(gl, UNIT_GBUF_REST, GL_TEXTURE_2D, ww_gfx_rt_texture_nth(main, WW_FMT_RGBA32F, 1));
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindVertexArray(r->empty_vao);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    gl->BindVertexArray(0);
+    bind_unit(gl, UNIT_GBUF_REST, GL_TEXTURE_2D, 0);
+    bind_unit(gl, UNIT_GBUF_POS, GL_TEXTURE_2D, 0);
+    unbind_optics(gl);
+    gl->StencilMask(0xFF);
+    gl->Disable(GL_STENCIL_TEST);
+    gl->Enable(GL_DEPTH_TEST);
+    return WW_OK;
+}
+
 ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww_error *err) {
     const ww_gl *gl = r->gl;
     const ww_scene *sc = f->sc;
@@ -536,11 +686,6 @@ ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww
     int bits = (f->underwater ? WATER_UNDER : 0) |
                (sh->reflection && sh->reflection_tex ? WATER_REFL : 0) |
                (sh->scene_color && sh->scene_depth ? WATER_REFR : 0);
-    if (!w->var[bits].prog) {
-        ww_result rc = build_variant(w, gl, sc, bits, err);
-        if (rc != WW_OK) return rc;
-    }
-    const water_prog *v = &w->var[bits];
 
     /* the mesh follows the camera in whole grid steps, so its vertices do not swim */
     double centre[2] = {WW_WATER_SNAP * floor(f->cam_pos[0] / WW_WATER_SNAP + 0.5),
@@ -548,15 +693,21 @@ ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww
     ww_water_waves_phases(sc, st, centre, &w->waves);
     if (sc->ripples_on) ww_water_pack_ripples(sc, st, centre, &w->ripples);
     ww_water_ubos_upload(gl, &w->ubos, &w->waves, sc->ripples_on ? &w->ripples : NULL, 0);
-
-    /* fog colour: the scene's, or the sky at the horizon so the far water meets the sky */
-    double hz[3];
-    ww_sky_horizon(sc, st, hz); /* the sky's haze: gfx/sky.c */
-    const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
+    ww_water_ubos_bind(gl, &w->ubos);
 
     gl->Enable(GL_DEPTH_TEST);
     gl->DepthFunc(GL_LESS);
     gl->DepthMask(GL_TRUE);
+    /* the main pass plans the G-buffer where it can be used (not with MSAA, nor blending) */
+    const ww_rt *main = ww_renderer_output(r, WW_PASS_MAIN);
+    if (!w->forward && main && ww_gfx_rt_texture_nth(main, WW_FMT_RGBA32F, 1))
+        return draw_gbuf(w, r, f, bits, main, centre, err);
+
+    if (!w->var[bits].prog) {
+        ww_result rc = build_variant(w, gl, sc, bits, 0, err);
+        if (rc != WW_OK) return rc;
+    }
+    const water_prog *v = &w->var[bits];
     /* seed 004's mode: blended over what is already drawn below (water.frag.glsl's alpha) */
     int blend = sc->render.water.alpha_blend && !f->underwater;
     if (blend) {
@@ -564,29 +715,9 @@ ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww
         gl->BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
     gl->UseProgram(v->prog);
-    ww_sky_locs_set(gl, &v->sky, st);
-    ww_geometry_lights_set(r->geometry, gl, f, v->prog); /* lights[] */
-    gl->UniformMatrix4fv(v->view_proj, 1, GL_FALSE, (const GLfloat *)f->view_proj);
-    gl->Uniform3f(v->origin, (float)(centre[0] - f->cam_pos[0]),
-                  (float)(sc->water_level - f->cam_pos[1]), (float)(centre[1] - f->cam_pos[2]));
-    ww_water_ubos_bind(gl, &w->ubos);
-    gl->Uniform3fv(v->ugrid, 1, w->grid);
-    gl->Uniform1f(v->skirt, w->skirt_r);
-    gl->Uniform3f(v->water_color, (float)sc->water_color[0], (float)sc->water_color[1],
-                  (float)sc->water_color[2]);
-    gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
-    gl->Uniform3f(v->fog_color, (float)fog[0], (float)fog[1], (float)fog[2]);
-    gl->Uniform1f(v->fog_density, (float)sc->fog_density);
-    gl->Uniform1f(v->pixel_angle, f->pixel_angle);
-    set_optics(w, v, bits, r, f, centre);
-
-    gl->BindVertexArray(w->vao);
-    gl->DrawElements(GL_TRIANGLES, w->ninner, GL_UNSIGNED_INT, NULL);
-    int first, count;
-    visible_segments(w, f, centre, &first, &count);
-    draw_segments(w, gl, first, count < w->nseg - first ? count : w->nseg - first);
-    if (first + count > w->nseg) draw_segments(w, gl, 0, first + count - w->nseg);
-    gl->BindVertexArray(0);
+    set_mesh(w, gl, f, centre, v->view_proj, v->origin, v->ugrid, v->skirt);
+    set_shading(w, v, bits, r, f, centre);
+    draw_mesh(w, gl, f, centre);
     unbind_optics(gl);
     if (blend) gl->Disable(GL_BLEND);
     return WW_OK;
@@ -594,8 +725,12 @@ ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww
 
 void ww_water_free(ww_water *w, const ww_gl *gl) {
     if (!w) return;
-    for (int i = 0; i < WATER_VARIANTS; i++)
+    for (int i = 0; i < WATER_VARIANTS; i++) {
         if (w->var[i].prog) gl->DeleteProgram(w->var[i].prog);
+        if (w->resolve[i].prog) gl->DeleteProgram(w->resolve[i].prog);
+    }
+    if (w->gbuf_prog) gl->DeleteProgram(w->gbuf_prog);
+    if (w->gbuf_fbo) gl->DeleteFramebuffers(1, &w->gbuf_fbo);
     if (w->vao) gl->DeleteVertexArrays(1, &w->vao);
     if (w->vbo) gl->DeleteBuffers(1, &w->vbo);
     if (w->ibo) gl->DeleteBuffers(1, &w->ibo);

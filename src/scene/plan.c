@@ -28,6 +28,7 @@ size_t ww_format_bytes_per_pixel(ww_format f) {
     case WW_FMT_DEPTH24: return 4; /* stored as 24+8 */
     case WW_FMT_RGBA8: return 4;
     case WW_FMT_DEPTH24_STENCIL8: return 4;
+    case WW_FMT_RGBA32F: return 16;
     }
     return 0;
 }
@@ -38,6 +39,7 @@ const char *ww_format_name(ww_format f) {
     case WW_FMT_DEPTH24: return "depth24";
     case WW_FMT_RGBA8: return "rgba8";
     case WW_FMT_DEPTH24_STENCIL8: return "d24s8";
+    case WW_FMT_RGBA32F: return "rgba32f";
     }
     return "?";
 }
@@ -60,12 +62,19 @@ static void add_pass(ww_plan *p, ww_pass_id id, const char *name, const char *wh
     d->name = name;
     d->what = what;
     d->ntargets = 0;
-    for (int t = 0; t < WW_PLAN_MAX_TARGETS; t++) d->samples[t] = 0;
+    for (int t = 0; t < WW_PLAN_MAX_TARGETS; t++) d->samples[t] = d->unattached[t] = 0;
 }
 
 static void add_target(ww_plan *p, const char *name, ww_format f, int w, int h) {
     ww_pass_desc *d = &p->passes[p->npasses - 1];
     d->targets[d->ntargets++] = (ww_target_desc){name, f, w, h};
+}
+
+/* a texture the pass draws into through a framebuffer of its own */
+static void add_target_unattached(ww_plan *p, const char *name, ww_format f, int w, int h) {
+    add_target(p, name, f, w, h);
+    ww_pass_desc *d = &p->passes[p->npasses - 1];
+    d->unattached[d->ntargets - 1] = 1;
 }
 
 /* post: a multisampled target (render.msaa samples per pixel) */
@@ -250,12 +259,27 @@ void ww_plan_build(const ww_scene *sc, int frame_width, int frame_height, ww_pla
         add_target(p, "color", WW_FMT_RGBA16F, rw, rh);
         add_target(p, "depth", WW_FMT_DEPTH24, rw, rh);
     }
+    /* the water shaded once a pixel: its mesh draws what the shading needs into a G-buffer and
+     * marks its pixels in the stencil, then one full-screen draw shades the marked pixels (a
+     * mesh of thin far triangles had the water shaded once for every triangle crossing a block
+     * of pixels). Not with MSAA, whose samples a pixel's one shading would merge, nor for
+     * water blended over what lies below it (seed 004), whose folds blend layer over layer */
+    int gbuffer = rd->msaa <= 1 && !rd->water.alpha_blend;
     add_pass(p, WW_PASS_MAIN, "main",
-             !p->geometry ? "HDR: sky with sun disc, water"
-             : stencil    ? "HDR: sky, lit geometry, water; stencilled sun shadows"
+             !p->geometry ? (gbuffer ? "HDR: sky with sun disc, water from its G-buffer"
+                                     : "HDR: sky with sun disc, water")
+             : stencil    ? (gbuffer ? "HDR: sky, lit geometry, water from its G-buffer; "
+                                       "stencilled sun shadows"
+                                     : "HDR: sky, lit geometry, water; stencilled sun shadows")
+             : gbuffer    ? "HDR: sky, lit geometry, water from its G-buffer"
                           : "HDR: sky, lit geometry, water");
     add_target(p, "hdr", WW_FMT_RGBA16F, width, height);
-    add_target(p, "depth", depth_fmt, width, height);
+    add_target(p, "depth", gbuffer ? WW_FMT_DEPTH24_STENCIL8 : depth_fmt, width, height);
+    if (gbuffer) {
+        /* the water's surface point (camera-relative) and its window depth; its rest offset */
+        add_target_unattached(p, "water_pos", WW_FMT_RGBA32F, width, height);
+        add_target_unattached(p, "water_rest", WW_FMT_RGBA32F, width, height);
+    }
     if (rd->msaa > 1) {
         /* post: drawn multisampled, resolved into hdr and depth at the end of the pass */
         add_target_ms(p, "hdr_ms", WW_FMT_RGBA16F, width, height, rd->msaa);
@@ -413,7 +437,7 @@ void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to) {
             size_t bytes = (size_t)td->width * (size_t)td->height * ww_format_bytes_per_pixel(td->format);
             if (d->samples[t] > 1) bytes *= (size_t)d->samples[t]; /* post: every sample stored */
             total += bytes;
-            fprintf(to, "      %-8s %-8s %5dx%-5d %10zu bytes", td->name, ww_format_name(td->format),
+            fprintf(to, "      %-10s %-8s %5dx%-5d %10zu bytes", td->name, ww_format_name(td->format),
                     td->width, td->height, bytes);
             if (d->samples[t] > 1) fprintf(to, "  msaa x%d", d->samples[t]);
             fputc('\n', to);

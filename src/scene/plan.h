@@ -27,13 +27,15 @@ typedef enum ww_pass_id {
     WW_PASS_COUNT
 } ww_pass_id;
 
-/* DEPTH24_STENCIL8: the main pass and the prepass take it instead of DEPTH24 only when the sun's
- * shadows are stencilled (render.shadows projected or volumes) */
+/* DEPTH24_STENCIL8: the prepass takes it instead of DEPTH24 only when the sun's shadows are
+ * stencilled (render.shadows projected or volumes); the main pass also when it shades the water
+ * from its G-buffer (the RGBA32F pair, and a stencil bit for the water's pixels) */
 typedef enum ww_format {
     WW_FMT_RGBA16F = 0,
     WW_FMT_DEPTH24,
     WW_FMT_RGBA8,
-    WW_FMT_DEPTH24_STENCIL8
+    WW_FMT_DEPTH24_STENCIL8,
+    WW_FMT_RGBA32F
 } ww_format;
 
 #define WW_PLAN_MAX_TARGETS 4
@@ -53,6 +55,9 @@ typedef struct ww_pass_desc {
     /* per target, > 1: a multisampled buffer that the pass draws into and resolves into its
      * plain targets (MSAA, render.msaa); 0 for the plain ones */
     int samples[WW_PLAN_MAX_TARGETS];
+    /* per target, 1: a texture of the pass that its framebuffer does not hold (the pass draws
+     * into it through a framebuffer of its own: the water's G-buffer) */
+    int unattached[WW_PLAN_MAX_TARGETS];
 } ww_pass_desc;
 
 /* the water mesh (gfx/water.c): a static polar grid re-centred on the camera. Its rings are
