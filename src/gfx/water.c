@@ -449,18 +449,17 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     ww_water *w = calloc(1, sizeof *w);
     if (!w) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory");
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
-    const char *band = getenv("WW_WATER_BAND");
+    const char *band = getenv("WW_WATER_BAND"), *fwd = getenv("WW_WATER_FORWARD");
     w->cull = !(cull && strcmp(cull, "0") == 0);
     w->fade = !(fade && strcmp(fade, "0") == 0);
     w->band = !(band && strcmp(band, "0") == 0);
+    w->forward = fwd && strcmp(fwd, "1") == 0;
     ww_water_waves_init(sc, &w->waves);
     foam_components(sc, w);
     scene_defines(sc, w->foam_n, w->defines, sizeof w->defines);
     /* the variant seen from above with the images the scene's passes make: built now, so a
      * shader that does not compile fails here rather than in the middle of a run */
     int first = (sc->render.reflection.on ? WATER_REFL : 0) | (sc->render.refraction ? WATER_REFR : 0);
-    const char *fwd = getenv("WW_WATER_FORWARD");
-    w->forward = fwd && strcmp(fwd, "1") == 0;
     ww_result rc = build_variant(w, gl, sc, first, 0, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
@@ -613,7 +612,6 @@ static void set_shading(const ww_water *w, const water_prog *v, int bits, const 
     const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
     ww_sky_locs_set(gl, &v->sky, st);
     ww_geometry_lights_set(r->geometry, gl, f, v->prog); /* lights[] */
-    gl->Uniform3fv(v->ugrid, 1, w->grid);
     gl->Uniform3f(v->water_color, (float)sc->water_color[0], (float)sc->water_color[1],
                   (float)sc->water_color[2]);
     gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
@@ -660,6 +658,7 @@ static ww_result draw_gbuf(ww_water *w, const ww_renderer *r, const ww_frame *f,
     gl->StencilOpSeparate(GL_FRONT_AND_BACK, GL_KEEP, GL_KEEP, GL_ZERO);
     gl->UseProgram(v->prog);
     set_shading(w, v, bits, r, f, centre);
+    gl->Uniform3fv(v->ugrid, 1, w->grid); /* the fades' spacing (gerstner.glsl) */
     gl->Uniform1i(v->gbuf_pos, UNIT_GBUF_POS);
     gl->Uniform1i(v->gbuf_rest, UNIT_GBUF_REST);
     gl->Uniform1f(v->gbuf_tag, w->tag);
