@@ -68,7 +68,9 @@ uniform vec2 u_clip_range;  // near, far clip, m
 // WW_REFLECT_TEX (u_reflection holds this frame's mirrored scene), WW_REFRACT_TEX (u_scene_color
 // and u_scene_depth hold the prepass), WW_DISTORT (the DuDv distorts them). Per scene:
 // WW_SKY_CUBE (the sky is u_sky_cube times u_sky_intensity), WW_ALPHA_BLEND (seed 004's blend),
-// WW_FOAM (foam on), WW_FRESNEL_SCHLICK (Schlick's Fresnel, else bias + scale (1 - c)^power).
+// WW_FOAM (foam on), WW_FRESNEL_SCHLICK (Schlick's Fresnel, else bias + scale (1 - c)^power),
+// WW_REFRACT_EDGES (the prepass is smaller than the frame and u_scene_depth_full holds its
+// depth at the frame's size).
 // Per pass: WW_WATER_RESOLVE (drawn over the screen from the G-buffer, not with the mesh).
 #ifndef WW_UNDERWATER
 #define WW_UNDERWATER 0
@@ -97,9 +99,15 @@ uniform vec2 u_clip_range;  // near, far clip, m
 #ifndef WW_FRESNEL_SCHLICK
 #define WW_FRESNEL_SCHLICK 0
 #endif
+#ifndef WW_REFRACT_EDGES
+#define WW_REFRACT_EDGES 0
+#endif
 uniform sampler2D u_reflection;
 uniform sampler2D u_scene_color;
 uniform sampler2D u_scene_depth;
+#if WW_REFRACT_EDGES
+uniform sampler2D u_scene_depth_full; // the prepass's depth at the frame's size
+#endif
 uniform samplerCube u_sky_cube;
 uniform float u_sky_intensity;
 uniform float u_murk;       // extinction, 1/m
@@ -160,6 +168,10 @@ const float WAVE_DISTORT = 1.0;   // lookup offset per unit of the wave normal's
 const float SHORE_DEPTH = 1.0;    // m of water along the ray over which distortion grows in
 const float NO_FOLD = 0.1;        // the DuDv offset's most, in DuDv cells on screen along the view
 const float EDGE = 0.002;         // keep projective lookups off the texture border
+const float OUTLINE_LO = 0.01;    // the prepass's bilinear depth misses the full-size depth by
+const float OUTLINE_HI = 0.03;    // ... this share of it and more: an outline runs there
+const float SAME_SIDE = 0.25;     // a texel within this share of its neighbours' depth spread
+                                  // from the full-size depth lies on the same side of the outline
 const float FOLD_J_FULL = 0.2;    // Jacobian at which the fold foam is whole ...
 const float FOLD_J_NONE = 0.9;    // ... and where it starts: a wide ramp, soft edges
 const float STEEP_LO = 0.1;       // 1 - n.y where slope foam starts ...
@@ -289,6 +301,48 @@ float ww_linear_depth(float z) {
     float n = u_clip_range.x, f = u_clip_range.y;
     return 2.0 * n * f / (f + n - (2.0 * z - 1.0) * (f - n));
 }
+
+#if WW_REFRACT_EDGES
+// The prepass's window depth at uv, at the frame's size (read nearest, a pixel's own), so the
+// shore's fade, the check for what lies in front and the water's thickness change where the
+// frame's pixels put an outline, not along the smaller prepass's texels
+float ww_scene_window_depth(vec2 uv) {
+    ivec2 full = textureSize(u_scene_depth_full, 0);
+    return texelFetch(u_scene_depth_full, min(ivec2(uv * vec2(full)), full - 1), 0).r;
+}
+
+// The prepass's colour at uv, where the prepass is smaller than the frame; df, zf: the window
+// and eye depth there (ww_scene_window_depth). Read bilinear, an outline between a submerged
+// object and what lies behind it steps along the prepass's texels (2-pixel stairs at half
+// size). A window depth is affine across the screen on any plane, so the bilinear mix of the
+// four texels' depths around uv equals the full-size depth wherever they lie on one face, and
+// misses it where an outline runs between them. There the colour is instead that of the
+// nearest texel on the same side as the full-size depth ("nearest-depth upsampling"), so the
+// outline falls where the frame's own pixels put it; elsewhere it is the bilinear colour, to
+// the bit.
+vec3 ww_refracted_color(vec2 uv, float df, float zf) {
+    vec3 c = texture(u_scene_color, uv).rgb;
+    ivec2 half_ = textureSize(u_scene_depth, 0);
+    vec2 t = uv * vec2(half_) - 0.5, fr = fract(t);
+    ivec2 lo = clamp(ivec2(floor(t)), ivec2(0), half_ - 1), hi = min(lo + 1, half_ - 1);
+    ivec2 p1 = ivec2(hi.x, lo.y), p2 = ivec2(lo.x, hi.y);
+    vec4 d = vec4(texelFetch(u_scene_depth, lo, 0).r, texelFetch(u_scene_depth, p1, 0).r,
+                  texelFetch(u_scene_depth, p2, 0).r, texelFetch(u_scene_depth, hi, 0).r);
+    vec4 w = vec4((1.0 - fr.x) * (1.0 - fr.y), fr.x * (1.0 - fr.y), (1.0 - fr.x) * fr.y, fr.x * fr.y);
+    float edge = smoothstep(OUTLINE_LO, OUTLINE_HI, abs(ww_linear_depth(dot(w, d)) - zf) / zf);
+    // the texels on the full-size depth's side: within SAME_SIDE of the depths' spread of the
+    // nearest in depth; of those, the one nearest to uv
+    vec4 dz = abs(d - df);
+    float near = min(min(dz.x, dz.y), min(dz.z, dz.w));
+    float spread = max(max(d.x, d.y), max(d.z, d.w)) - min(min(d.x, d.y), min(d.z, d.w));
+    w = (w + 1e-6) * step(dz, vec4(near + SAME_SIDE * spread));
+    float wm = max(max(w.x, w.y), max(w.z, w.w));
+    ivec2 pick = w.x == wm ? lo : w.y == wm ? p1 : w.z == wm ? p2 : hi;
+    return mix(c, texelFetch(u_scene_color, pick, 0).rgb, edge);
+}
+#else
+float ww_scene_window_depth(vec2 uv) { return texture(u_scene_depth, uv).r; }
+#endif
 
 #if WW_WATER_RESOLVE
 // This pixel's inputs from the G-buffer. Pixels are shaded in 2x2 blocks, and derivatives (which
@@ -471,12 +525,21 @@ void main() {
 #if WW_REFRACT_TEX && !WW_ALPHA_BLEND
     {
         float zw = ww_linear_depth(frag_z), ray = dist / zw; // eye depth -> ray length
-        float zs = ww_linear_depth(texture(u_scene_depth, uv0).r);
+        float ds = ww_scene_window_depth(uv0), zs = ww_linear_depth(ds);
         float shore = 1.0 - exp(-max(zs - zw, 0.0) * ray / SHORE_DEPTH);
         vec2 uv = clamp(uv0 + off * shore, EDGE, 1.0 - EDGE);
-        float zd = ww_linear_depth(texture(u_scene_depth, uv).r);
-        if (zd < zw) uv = uv0; // the distorted lookup found something in front of the water
-        else zs = zd;
+        float dd = ww_scene_window_depth(uv), zd = ww_linear_depth(dd);
+        if (zd < zw) {
+            uv = uv0; // the distorted lookup found something in front of the water
+        } else {
+            zs = zd;
+            ds = dd;
+        }
+#if WW_REFRACT_EDGES
+        vec3 seen = ww_refracted_color(uv, ds, zs);
+#else
+        vec3 seen = texture(u_scene_color, uv).rgb;
+#endif
         // the path through the water to what is seen: its depth below the surface over the
         // refracted ray's cosine (Snell), not the straight view ray, which grazes far longer
         float thick = max(zs - zw, 0.0) * ray;
@@ -484,7 +547,7 @@ void main() {
         float path = thick * abs(v.y) / max(-t.y, 0.2);
         // Beer-Lambert per channel: absorbed red first, plus the murk's grey extinction
         vec3 tr = exp(-(ABSORB + u_murk) * path);
-        refr = mix(deep, texture(u_scene_color, uv).rgb, tr);
+        refr = mix(deep, seen, tr);
     }
 #endif
     vec3 c = mix(refr, refl, fr);

@@ -276,12 +276,14 @@ TEST_IMAGE(picture_water_no_rim_around_what_floats) {
  * the lower right edge of its submerged side, seen through the surface, is a straight line from
  * about (300, 258) to (385, 228) on the 640x360 frame. The refraction prepass is half the
  * frame's size; its depth read nearest, the water's thickness (and the absorption with it)
- * stepped along the outline in 2-pixel stairs; read bilinear, as the colour is, it does not. Per column the edge is where the luma crosses
+ * stepped along the outline in 2-pixel stairs; its colour and depth read bilinear, the outline
+ * still wobbled along the prepass's texels. Per column the edge is where the luma crosses
  * halfway from the cube's to the water's, to a fraction of a pixel; a straight line is fitted
  * and what is left over is the stairs. */
-#define OUTLINE_RMS_MAX 0.45 /* px: rms distance of the edge from its fitted line, at most: the
-                             * stepped depth gave 0.53, read bilinear 0.40; a full-size prepass
-                             * gives 0.29, the pixels' own aliasing */
+#define OUTLINE_RMS_MAX 0.33 /* px: rms distance of the edge from its fitted line, at most: the
+                             * stepped depth gave 0.53, read bilinear 0.40; upsampled by the
+                             * full-size depth 0.287, as a full-size prepass (0.29): the
+                             * pixels' own aliasing */
 static const char *const OUTLINE_SCENE =
     "seed: 1\n"
     "time: {dt: 1/120, fps: 30, duration: 1}\n"
@@ -335,6 +337,35 @@ TEST_IMAGE(picture_water_submerged_outline_not_stepped) {
                    OUTLINE_RMS_MAX);
     }
     img_free(&a);
+}
+
+/* the same cube's submerged outline, at the half-size prepass the frame is drawn with, against
+ * a full-size prepass: read bilinear, the half-size image's outline stood up to 2 pixels off
+ * the full-size one's, 369 pixels more than 32 levels apart (of 230,400); upsampled by the
+ * full-size depth, none are */
+#define OUTLINE_OFF_LEVELS 32 /* levels of a pixel's channel a half-size prepass may move */
+#define OUTLINE_OFF_MAX 20    /* pixels moved more than that, at most */
+TEST_IMAGE(picture_water_submerged_outline_as_a_full_size_prepass) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_outline_full", OUTLINE_SCENE);
+    img half = render_frame(scene, 0, NULL, "pw_outline_half");
+    img full = render_frame(scene, 0, "--set \"render.refraction={scale: 1}\"", "pw_outline_full");
+    if (half.ok && full.ok) {
+        long off = 0;
+        int most = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                int d = max_diff(&half, &full, x, y);
+                off += d > OUTLINE_OFF_LEVELS;
+                most = d > most ? d : most;
+            }
+        printf("  half-size against full-size prepass: %ld px more than %d levels apart, "
+               "largest %d\n", off, OUTLINE_OFF_LEVELS, most);
+        ENSURE_MSG(off <= OUTLINE_OFF_MAX, "%ld px more than %d levels from the full-size "
+                   "prepass's frame (at most %d)", off, OUTLINE_OFF_LEVELS, OUTLINE_OFF_MAX);
+    }
+    img_free(&half);
+    img_free(&full);
 }
 
 /* ---- under water: the seabed is seen ----------------------------------------------------- */

@@ -286,6 +286,46 @@ TEST(render_keys_plan_water_gbuffer) {
     }
 }
 
+/* the prepass smaller than the frame also draws its depth at the frame's size, in a target its
+ * framebuffer does not hold (the water's outlines are upsampled by it); not at full size, nor
+ * for blended water, which refracts nothing */
+TEST(render_keys_plan_prepass_full_depth) {
+    static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
+                               "render: {size: [320, 180]}\n"
+                               "objects: {cubes: [{position: [0, 0, 0]}]}\n";
+    static const struct {
+        const char *set;
+        int full;
+    } cases[] = {
+        {"render.refraction={scale: 0.5}", 1},
+        {"render.quality=draft", 1},
+        {"render.refraction={scale: 1}", 0},
+        {"water.look.alpha_blend={on: true}", 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        ww_scene *sc = load(text, &cases[i].set, 1);
+        if (!sc) return;
+        ww_plan p;
+        ww_plan_build(sc, 320, 180, &p);
+        const ww_pass_desc *d = ww_plan_pass(&p, WW_PASS_PREPASS);
+        ENSURE_MSG(d != NULL, "%s: no prepass", cases[i].set);
+        int found = 0;
+        for (int t = 0; d && t < d->ntargets; t++) {
+            if (strcmp(d->targets[t].name, "depth_full") != 0) continue;
+            found = 1;
+            ENSURE_MSG(d->unattached[t], "%s: depth_full attached", cases[i].set);
+            ENSURE_MSG(d->targets[t].format == WW_FMT_DEPTH24, "%s: depth_full format %d",
+                       cases[i].set, (int)d->targets[t].format);
+            ENSURE_MSG(d->targets[t].width == 320 && d->targets[t].height == 180,
+                       "%s: depth_full %dx%d", cases[i].set, d->targets[t].width,
+                       d->targets[t].height);
+        }
+        ENSURE_MSG(found == cases[i].full, "%s: depth_full %s", cases[i].set,
+                   found ? "present" : "absent");
+        ww_scene_free(sc);
+    }
+}
+
 /* render.quality sets its knobs over the defaults; the scene's own keys override them, in any
  * order in the file; final is the defaults themselves */
 TEST(render_keys_quality_presets) {

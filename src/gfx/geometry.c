@@ -1167,11 +1167,21 @@ static void set_sway(const ww_geometry *g, const ww_gl *gl, int i) {
     gl->Uniform4fv(g->cur->sway_axis_loc, 1, g->obj_sway_axis[i]);
 }
 
+/* whether a model has a part drawn blended (a material's opacity below 1) */
+static int has_blended(const ww_mesh_data *d) {
+    for (int k = 0; d && k < d->nsub; k++) {
+        int m = d->sub[k].material;
+        if (m >= 0 && m < d->nmaterial && d->material[m].opacity < 1.0f) return 1;
+    }
+    return 0;
+}
+
 static int draw_obj(ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode mode) {
     const gmesh *m = &g->obj[i];
     const ww_mesh_data *d = g->obj_data[i];
     if (m->ninst <= 0) return 0;
-    if (mode == WW_GEOM_SHADOW || !d || d->nsub <= 0) {
+    if (mode == WW_GEOM_SHADOW || (mode == WW_GEOM_PREPASS_DEPTH && !has_blended(d)) || !d ||
+        d->nsub <= 0) {
         set_material(g, gl, NULL);
         set_sway(g, gl, i);
         return draw_mesh(gl, m);
@@ -1184,6 +1194,8 @@ static int draw_obj(ww_geometry *g, const ww_gl *gl, int i, ww_geom_mode mode) {
                                         ? &d->material[sub->material] : NULL;
             int blended = mt && mt->opacity < 1.0f;
             if (blended != pass || sub->count == 0) continue;
+            /* the prepass's depth has what it drew opaque, no more */
+            if (blended && mode == WW_GEOM_PREPASS_DEPTH) continue;
             if (blended && g->stage != WW_GEOM_STAGE_NORMAL) continue; /* never blended twice */
             set_material(g, gl, mt);
             set_sway(g, gl, i);
@@ -1225,8 +1237,8 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
      * cut at the plane of the highest crest, a cube's top above the water stayed in the image the
      * water refracts, and the bilinear lookups bled it into the water around the cube as a pale
      * rim */
-    float side = clip && mode == WW_GEOM_PREPASS && g->surface_clip ? (f->underwater ? -1.0f : 1.0f)
-                                                                     : 0.0f;
+    int prepass = mode == WW_GEOM_PREPASS || mode == WW_GEOM_PREPASS_DEPTH;
+    float side = clip && prepass && g->surface_clip ? (f->underwater ? -1.0f : 1.0f) : 0.0f;
     g->cut_side = g->cut_now = side;
     g->cut_level = (float)(sc->water_level - f->cam_pos[1]);
     gl->Uniform2f(v->clip_surface, side, g->cut_level);
@@ -1253,7 +1265,8 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
     gl->Uniform1f(v->caustics_loc, g->caustics ? (float)sc->render.water.caustics_strength : 0.0f);
 
     /* the sun's shadow map, when the shadow pass drew one this frame */
-    int shadowed = mode != WW_GEOM_SHADOW && r->shared.shadow_map != 0;
+    int shadowed = mode != WW_GEOM_SHADOW && mode != WW_GEOM_PREPASS_DEPTH &&
+                   r->shared.shadow_map != 0;
     /* 2: in a stencilled shadow, no sunlight (shadow.glsl) */
     gl->Uniform1i(v->shadow_on, g->stage == WW_GEOM_STAGE_SUNLESS ? 2 : shadowed);
     gl->Uniform1i(v->shadow_map, WW_TEX_SHADOW);
@@ -1280,7 +1293,8 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
         gl->Uniform3f(v->shadow_filter, 1.0f / (float)size, (float)sc->render.shadows.softness,
                       2.0f / (row * (float)size));
     }
-    put_lights(g, gl, &v->lights, mode == WW_GEOM_SHADOW ? 0 : g->nlights);
+    put_lights(g, gl, &v->lights,
+               mode == WW_GEOM_SHADOW || mode == WW_GEOM_PREPASS_DEPTH ? 0 : g->nlights);
     if (g->caustics == 2) {
         gl->ActiveTexture(GL_TEXTURE0 + WW_TEX_CAUSTIC_SET);
         gl->BindTexture(GL_TEXTURE_2D_ARRAY, g->caustic_tex);
@@ -1310,7 +1324,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
      * lids drawn after this with their own programs read them */
     for (int k = 0; k < GEOM_PROGS; k++)
         if (g->var[k].prog) set_uniforms(g, use(g, gl, k), r, f, mode, view_proj, clip);
-    use(g, gl, mode == WW_GEOM_SHADOW ? GEOM_DEPTH : GEOM_LIT);
+    use(g, gl, mode == WW_GEOM_SHADOW || mode == WW_GEOM_PREPASS_DEPTH ? GEOM_DEPTH : GEOM_LIT);
     use_lit(g, gl, GEOM_LIT); /* without the sun in the stencilled shadows' second draw */
     if (clip) gl->Enable(GL_CLIP_DISTANCE0);
     else gl->Disable(GL_CLIP_DISTANCE0);

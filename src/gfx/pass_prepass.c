@@ -4,8 +4,10 @@
  * colour; from below, what lies above it, cleared to the sky's horizon colour. The geometry cuts
  * its solids at the wave surface (geometry.vert.glsl); the clip plane given here, at the rest
  * level plus the largest crest (so nothing is cut where the surface dips), is the cut of flat
- * water and of the stencilled shadows' volumes.
- * Publishes r->shared.scene_color and scene_depth.
+ * water and of the stencilled shadows' volumes. Smaller than the frame (the plan's depth_full
+ * target), it also draws the same geometry's depth alone at the frame's size, which the water
+ * reads to put the outlines of what it refracts where the frame's pixels lie.
+ * Publishes r->shared.scene_color, scene_depth and scene_depth_full.
  */
 #include <stdlib.h>
 
@@ -14,17 +16,38 @@
 typedef struct prepass {
     const ww_rt *rt;
     GLuint color, depth;
+    GLuint depth_full, full_fbo; /* the depth at the frame's size and its framebuffer; 0: none */
     double crest; /* m: the highest the surface can rise above its rest level */
 } prepass;
 
 static void prepass_destroy(void *self, const ww_gl *gl) {
-    (void)gl;
-    free(self);
+    prepass *p = self;
+    if (p && p->full_fbo) gl->DeleteFramebuffers(1, &p->full_fbo);
+    free(p);
+}
+
+/* the framebuffer of the depth at the frame's size: that texture alone, no colour */
+static ww_result full_fbo_new(const ww_gl *gl, prepass *p, ww_error *err) {
+    gl->GenFramebuffers(1, &p->full_fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, p->full_fbo);
+    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, p->depth_full, 0);
+    GLenum none = GL_NONE;
+    gl->DrawBuffers(1, &none);
+    gl->ReadBuffer(GL_NONE);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass prepass: the full-size depth's framebuffer is incomplete (0x%04x)",
+                            (unsigned)status);
+    return WW_OK;
 }
 
 static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
                                 const ww_rt *rt, void **self, ww_error *err) {
-    GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F), depth = ww_gfx_rt_depth(rt);
+    /* the targets in the plan's order: colour, depth, and the unattached full-size depth */
+    GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F);
+    GLuint depth = rt->ntex >= 2 && !rt->unattached[1] ? rt->tex[1] : 0;
     if (!color || !depth)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
                             "pass %s: needs an RGBA16F colour and a depth target", d->name);
@@ -46,6 +69,14 @@ static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     r->gl->BindTexture(GL_TEXTURE_2D, 0);
     p->crest = ww_water_crest(sc);
+    if (rt->ntex >= 3 && rt->unattached[2]) {
+        p->depth_full = rt->tex[2];
+        ww_result rc = full_fbo_new(r->gl, p, err);
+        if (rc != WW_OK) {
+            prepass_destroy(p, r->gl);
+            return rc;
+        }
+    }
     *self = p;
     return WW_OK;
 }
@@ -83,6 +114,17 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
     if (!f->underwater) {
         ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
         ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, plane);
+    }
+    if (p->full_fbo && r->geometry && !f->underwater) { /* from below the water reads none */
+        /* the same cut geometry's depth alone at the frame's size: no shading, so it costs the
+         * vertices again and a depth write a pixel */
+        gl->BindFramebuffer(GL_FRAMEBUFFER, p->full_fbo);
+        gl->Viewport(0, 0, f->width, f->height);
+        gl->DepthMask(GL_TRUE);
+        gl->ClearDepth(1.0);
+        gl->Clear(GL_DEPTH_BUFFER_BIT);
+        ww_geometry_draw(r->geometry, r, f, WW_GEOM_PREPASS_DEPTH, (vec4 *)f->view_proj, plane);
+        r->shared.scene_depth_full = p->depth_full;
     }
     r->shared.scene_color = p->color;
     r->shared.scene_depth = p->depth;

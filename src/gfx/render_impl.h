@@ -60,6 +60,7 @@ typedef struct ww_shared {
     int reflection;      /* reflection pass drew this frame (0 under water or when absent) */
     GLuint reflection_tex; /* its mipmapped colour */
     GLuint scene_color, scene_depth; /* prepass: solid geometry under the water; 0 when absent */
+    GLuint scene_depth_full; /* its depth at the frame's size, when the prepass is smaller; or 0 */
 } ww_shared;
 
 typedef struct ww_pass_ops {
@@ -140,13 +141,15 @@ struct ww_renderer {
  *   PREPASS     lit colour + depth of what lies under the water (clip plane keeps y < level)
  *   REFLECTION  lit colour of what lies above the water, mirrored (clip plane keeps y > level)
  *   MAIN        lit colour, everything
+ *   PREPASS_DEPTH  the prepass's depth alone (its cut and clip plane, no shading)
  * view_proj maps camera-relative world positions to clip space; clip is a world plane
  * (a, b, c, d) in camera-relative coordinates, kept where a x + b y + c z + d >= 0, or NULL. */
 typedef enum ww_geom_mode {
     WW_GEOM_SHADOW = 0,
     WW_GEOM_PREPASS,
     WW_GEOM_REFLECTION,
-    WW_GEOM_MAIN
+    WW_GEOM_MAIN,
+    WW_GEOM_PREPASS_DEPTH
 } ww_geom_mode;
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err);
 void ww_geometry_draw(ww_geometry *g, ww_renderer *r, const ww_frame *f, ww_geom_mode mode,

@@ -91,8 +91,8 @@ ww_result ww_gfx_rt_create(const ww_gl *gl, const ww_pass_desc *d, ww_rt *rt, ww
     for (int i = 0; i < d->ntargets; i++) {
         const ww_target_desc *t = &d->targets[i];
         if (d->samples[i] > 1) continue; /* create_ms: in their own framebuffer */
-        /* one framebuffer means one size for all of a pass's targets */
-        WW_ASSERT(t->width == rt->width && t->height == rt->height);
+        /* one framebuffer means one size for all of a pass's attached targets */
+        WW_ASSERT(d->unattached[i] || (t->width == rt->width && t->height == rt->height));
         WW_ASSERT(t->width > 0 && t->height > 0);
         tex_format tf = format_of(t->format);
         GLuint tex = 0;

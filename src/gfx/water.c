@@ -34,13 +34,14 @@ typedef struct water_prog {
     GLint view_proj, origin, ugrid;
     GLint water_color, ambient, fog_color, fog_density, pixel_angle;
     GLint fresnel, specular, distort, dudv_m, dudv_o, cam_axes, inv_size, clip_range;
-    GLint reflection, scene_color, scene_depth, sky_cube, sky_dome;
+    GLint reflection, scene_color, scene_depth, scene_depth_full, sky_cube, sky_dome;
     GLint sky_intensity, murk, foam, fog_below_color, fog_below_density, alpha;
     GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
     GLint gbuf_pos, gbuf_rest, gbuf_tag; /* the resolve's G-buffer (WW_WATER_RESOLVE) */
 } water_prog;
 
-enum { WATER_UNDER = 1, WATER_REFL = 2, WATER_REFR = 4, WATER_VARIANTS = 8 };
+/* WATER_EDGES: the prepass's depth at the frame's size is there to upsample its colour by */
+enum { WATER_UNDER = 1, WATER_REFL = 2, WATER_REFR = 4, WATER_EDGES = 8, WATER_VARIANTS = 16 };
 
 /* The water shaded once a pixel, where the main pass plans a G-buffer (its water_pos and
  * water_rest targets): the mesh draws only what the shading reads (the camera-relative surface
@@ -361,9 +362,9 @@ static ww_result build_variant(ww_water *w, const ww_gl *gl, const ww_scene *sc,
     char defs[1400];
     snprintf(defs, sizeof defs,
              "#define WW_UNDERWATER %d\n#define WW_REFLECT_TEX %d\n#define WW_REFRACT_TEX %d\n"
-             "#define WW_DISTORT %d\n#define WW_WATER_RESOLVE %d\n%s",
+             "#define WW_DISTORT %d\n#define WW_WATER_RESOLVE %d\n#define WW_REFRACT_EDGES %d\n%s",
              (bits & WATER_UNDER) != 0, (bits & WATER_REFL) != 0, (bits & WATER_REFR) != 0,
-             distort != 0, resolve, w->defines);
+             distort != 0, resolve, (bits & WATER_EDGES) != 0, w->defines);
     ww_result rc = ww_water_program(gl, sc, resolve ? "fullscreen.vert.glsl" : "water.vert.glsl",
                                     "water.frag.glsl", w->fade, defs, &v->prog, err);
     if (rc != WW_OK) return rc;
@@ -388,6 +389,7 @@ static ww_result build_variant(ww_water *w, const ww_gl *gl, const ww_scene *sc,
     v->reflection = ww_gfx_uniform(gl, p, "u_reflection");
     v->scene_color = ww_gfx_uniform(gl, p, "u_scene_color");
     v->scene_depth = ww_gfx_uniform(gl, p, "u_scene_depth");
+    v->scene_depth_full = ww_gfx_uniform(gl, p, "u_scene_depth_full");
     v->sky_cube = ww_gfx_uniform(gl, p, "u_sky_cube");
     v->sky_dome = ww_gfx_uniform(gl, p, "u_sky_dome_image");
     v->sky_intensity = ww_gfx_uniform(gl, p, "u_sky_intensity");
@@ -459,7 +461,11 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     scene_defines(sc, w->foam_n, w->defines, sizeof w->defines);
     /* the variant seen from above with the images the scene's passes make: built now, so a
      * shader that does not compile fails here rather than in the middle of a run */
-    int first = (sc->render.reflection.on ? WATER_REFL : 0) | (sc->render.refraction ? WATER_REFR : 0);
+    int first = (sc->render.reflection.on ? WATER_REFL : 0) |
+                (sc->render.refraction ? WATER_REFR : 0) |
+                (sc->render.refraction && sc->render.refraction_scale < 1.0 &&
+                         !sc->render.water.alpha_blend
+                     ? WATER_EDGES : 0);
     ww_result rc = build_variant(w, gl, sc, first, 0, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);
@@ -516,8 +522,8 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
 }
 
 /* texture units of the water program */
-enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SKY_CUBE, UNIT_SKY_DOME,
-       UNIT_DUDV, UNIT_GBUF_POS, UNIT_GBUF_REST };
+enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SCENE_DEPTH_FULL,
+       UNIT_SKY_CUBE, UNIT_SKY_DOME, UNIT_DUDV, UNIT_GBUF_POS, UNIT_GBUF_REST };
 
 static void bind_unit(const ww_gl *gl, int unit, GLenum target, GLuint tex) {
     gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
@@ -532,6 +538,7 @@ static void set_optics(const ww_water *w, const water_prog *v, int bits, const w
     const ww_water_look *lk = &sc->render.water;
     const ww_shared *sh = &r->shared;
     int refl = (bits & WATER_REFL) != 0, refr = (bits & WATER_REFR) != 0;
+    int edges = (bits & WATER_EDGES) != 0;
 
     gl->Uniform4f(v->fresnel, lk->fresnel == WW_FRESNEL_SCHLICK ? 1.0f : 0.0f,
                   (float)lk->fresnel_bias, (float)lk->fresnel_scale, (float)lk->fresnel_power);
@@ -555,6 +562,7 @@ static void set_optics(const ww_water *w, const water_prog *v, int bits, const w
     gl->Uniform1i(v->reflection, UNIT_REFLECTION);
     gl->Uniform1i(v->scene_color, UNIT_SCENE_COLOR);
     gl->Uniform1i(v->scene_depth, UNIT_SCENE_DEPTH);
+    gl->Uniform1i(v->scene_depth_full, UNIT_SCENE_DEPTH_FULL);
     gl->Uniform1i(v->sky_cube, UNIT_SKY_CUBE);
     gl->Uniform1i(v->sky_dome, UNIT_SKY_DOME);
     gl->Uniform1f(v->sky_intensity, (float)sc->render.sky_intensity);
@@ -572,6 +580,7 @@ static void set_optics(const ww_water *w, const water_prog *v, int bits, const w
     bind_unit(gl, UNIT_REFLECTION, GL_TEXTURE_2D, refl ? sh->reflection_tex : 0);
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);
+    bind_unit(gl, UNIT_SCENE_DEPTH_FULL, GL_TEXTURE_2D, edges ? sh->scene_depth_full : 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
     if (r->sky_dome_image) bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, r->sky_dome_image);
     if (w->dudv_tex) {
@@ -585,7 +594,7 @@ static void unbind_optics(const ww_gl *gl) {
     bind_unit(gl, UNIT_DUDV, GL_TEXTURE_2D, 0);
     bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, 0);
-    for (int u = UNIT_SCENE_DEPTH; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
+    for (int u = UNIT_SCENE_DEPTH_FULL; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
 }
 
 /* the mesh's visible part: the inner disc whole, the outer rings' segments in view */
@@ -684,7 +693,8 @@ ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww
     const ww_shared *sh = &r->shared;
     int bits = (f->underwater ? WATER_UNDER : 0) |
                (sh->reflection && sh->reflection_tex ? WATER_REFL : 0) |
-               (sh->scene_color && sh->scene_depth ? WATER_REFR : 0);
+               (sh->scene_color && sh->scene_depth ? WATER_REFR : 0) |
+               (sh->scene_depth_full && !f->underwater ? WATER_EDGES : 0);
 
     /* the mesh follows the camera in whole grid steps, so its vertices do not swim */
     double centre[2] = {WW_WATER_SNAP * floor(f->cam_pos[0] / WW_WATER_SNAP + 0.5),
