@@ -288,7 +288,7 @@ TEST(render_keys_plan_water_gbuffer) {
 
 /* the prepass smaller than the frame also draws its depth at the frame's size, in a target its
  * framebuffer does not hold (the water's outlines are upsampled by it); not at full size, nor
- * for blended water, which refracts nothing */
+ * for blended water, which refracts nothing, nor with a seabed alone */
 TEST(render_keys_plan_prepass_full_depth) {
     static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
                                "render: {size: [320, 180]}\n"
@@ -301,9 +301,11 @@ TEST(render_keys_plan_prepass_full_depth) {
         {"render.quality=draft", 1},
         {"render.refraction={scale: 1}", 0},
         {"water.look.alpha_blend={on: true}", 0},
+        {"objects={cubes: []}", 0},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        ww_scene *sc = load(text, &cases[i].set, 1);
+        const char *sets[2] = {cases[i].set, "render.seabed=true"};
+        ww_scene *sc = load(text, sets, 2);
         if (!sc) return;
         ww_plan p;
         ww_plan_build(sc, 320, 180, &p);
@@ -348,6 +350,7 @@ TEST(render_keys_quality_presets) {
     ENSURE_EQ_INT(draft->render.fxaa, 0);
     ENSURE(prev->render.reflection.scale < fin->render.reflection.scale);
     ENSURE(prev->render.reflection.scale > draft->render.reflection.scale);
+    ENSURE(prev->render.refraction_scale < fin->render.refraction_scale);
     ENSURE_NEAR(prev->render.grid, fin->render.grid, KNOB_TOL);
     /* the scene's keys win over the preset */
     ENSURE_NEAR(over->render.reflection.scale, 1.0, KNOB_TOL);

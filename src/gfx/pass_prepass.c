@@ -17,6 +17,7 @@ typedef struct prepass {
     const ww_rt *rt;
     GLuint color, depth;
     GLuint depth_full, full_fbo; /* the depth at the frame's size and its framebuffer; 0: none */
+    int full_w, full_h;          /* its size, px */
     double crest; /* m: the highest the surface can rise above its rest level */
 } prepass;
 
@@ -71,6 +72,8 @@ static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     p->crest = ww_water_crest(sc);
     if (rt->ntex >= 3 && rt->unattached[2]) {
         p->depth_full = rt->tex[2];
+        p->full_w = d->targets[2].width;
+        p->full_h = d->targets[2].height;
         ww_result rc = full_fbo_new(r->gl, p, err);
         if (rc != WW_OK) {
             prepass_destroy(p, r->gl);
@@ -119,7 +122,7 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         /* the same cut geometry's depth alone at the frame's size: no shading, so it costs the
          * vertices again and a depth write a pixel */
         gl->BindFramebuffer(GL_FRAMEBUFFER, p->full_fbo);
-        gl->Viewport(0, 0, f->width, f->height);
+        gl->Viewport(0, 0, p->full_w, p->full_h);
         gl->DepthMask(GL_TRUE);
         gl->ClearDepth(1.0);
         gl->Clear(GL_DEPTH_BUFFER_BIT);

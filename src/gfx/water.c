@@ -464,7 +464,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     int first = (sc->render.reflection.on ? WATER_REFL : 0) |
                 (sc->render.refraction ? WATER_REFR : 0) |
                 (sc->render.refraction && sc->render.refraction_scale < 1.0 &&
-                         !sc->render.water.alpha_blend
+                         ww_scene_has_objects(sc) && !sc->render.water.alpha_blend
                      ? WATER_EDGES : 0);
     ww_result rc = build_variant(w, gl, sc, first, 0, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc, err);

@@ -248,15 +248,16 @@ void ww_plan_build(const ww_scene *sc, int frame_width, int frame_height, ww_pla
     }
     if (rd->refraction && p->geometry) {
         int pw = scaled(width, rd->refraction_scale), ph = scaled(height, rd->refraction_scale);
-        int full = (pw != width || ph != height) && !rd->water.alpha_blend;
+        /* smaller than the frame: its depth at the frame's size too, drawn alone, by which the
+         * water puts the outlines of what it refracts where the frame's pixels lie; only where
+         * something lies in the water (a seabed alone has no outlines worth it), and not for
+         * seed 004's blended water, which refracts nothing */
+        int full = (pw != width || ph != height) && casters && !rd->water.alpha_blend;
         add_pass(p, WW_PASS_PREPASS, "prepass",
                  full ? "solid geometry under the water: colour + depth; depth at the frame's size"
                       : "solid geometry under the water: colour + depth");
         add_target(p, "color", WW_FMT_RGBA16F, pw, ph);
         add_target(p, "depth", depth_fmt, pw, ph);
-        /* smaller than the frame: its depth at the frame's size too, drawn alone, by which the
-         * water puts the outlines of what it refracts where the frame's pixels lie (not for
-         * seed 004's blended water, which refracts nothing) */
         if (full)
             add_target_unattached(p, "depth_full", WW_FMT_DEPTH24, width, height);
     }
