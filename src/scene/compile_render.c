@@ -89,8 +89,10 @@ static void apply_quality(ww_render_desc *d, ww_quality q) {
     int draft = q == WW_QUALITY_DRAFT;
     d->reflection.scale = draft ? 0.125 : 0.25; /* the DuDv and the waves blur it anyway */
     d->shafts.samples = draft ? 16 : 32;
+    /* the outlines seen through the water are upsampled by the full-size depth, so a quarter
+     * keeps them where they lie; what it blurs is the seabed's detail under the murk */
+    d->refraction_scale = 0.25;
     if (draft) {
-        d->refraction_scale = 0.25;
         d->grid = 0.75; /* coarser rings fade the short waves nearer: the largest error */
         d->shadows.size = 512;
         d->fxaa = 0;
