@@ -482,7 +482,17 @@ void main() {
         } else {
             // Fresnel on the air side's angle, the larger one: 1 at the window's edge
             float fr = ww_fresnel(max(dot(t, n), 0.0));
-            c = mix(ww_sky_any(t) + ww_sun_disc(t) * sun_up, below, fr);
+            vec3 air = ww_sky_any(t) + ww_sun_disc(t) * sun_up;
+#if WW_REFRACT_TEX
+            // what rises above the water (the prepass from below: a cube's top, a hull), over
+            // the sky by its coverage (the prepass is cleared to nothing there, so its bilinear
+            // colour is premultiplied), distorted as the view down through the surface is. It
+            // stands where the camera's straight ray meets it, not where the bent one would: a
+            // small shift for what floats, whose parts above the water are near the surface
+            vec4 above = texture(u_scene_color, clamp(uv0 + off, EDGE, 1.0 - EDGE));
+            air = above.rgb + (1.0 - above.a) * air;
+#endif
+            c = mix(air, below, fr);
         }
         // the lights below light the underside: the water under it and its mirror (total
         // internal reflection past the critical angle)

@@ -368,6 +368,61 @@ TEST_IMAGE(picture_water_submerged_outline_as_a_full_size_prepass) {
     img_free(&full);
 }
 
+/* ---- under water: what floats is seen through Snell's window ---------------------------- */
+
+/* a 1.5 m cube of density 250 (three quarters of it above the water) seen from 2.5 m down and
+ * 2.5 m off, looking up past its underside into Snell's window. Its pixels are those that change
+ * when it is moved 4 km away. Without the refraction prepass they are its submerged part alone;
+ * with it, its part above the water shows through the window too, over the sky. The water once
+ * read no prepass from below, and both counts were the same (25,005 px) */
+#define ABOVE_SEEN_MIN 2000 /* pixels the part above the water adds through the window, at least
+                             * (measured 4,933 of 230,400) */
+static const char *const UP_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 1}\n"
+    "render: {size: [640, 360], shadows: false, reflection: false, bloom: false, god_rays: false,\n"
+    "         fxaa: false, seabed: false}\n"
+    "sky: {time_of_day: 12}\n"
+    "water:\n"
+    "  depth: 6\n"
+    "  waves: {model: gerstner, list: [{direction: 20, wavelength: 12, amplitude: 0.1, steepness: 0.5}]}\n"
+    "  look: {foam: false, caustics: false}\n"
+    "objects:\n"
+    "  cubes: [{position: [0, 0, 0], size: 1.5, density: 250}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, -2.5, -2.5], look_at: [0, 0.5, 0]}]\n";
+
+static long pixels_apart(const img *a, const img *b) {
+    long n = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) n += max_diff(a, b, x, y) > MASK_THRESH;
+    return n;
+}
+
+TEST_IMAGE(picture_water_what_floats_seen_from_below_through_the_window) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_up", UP_SCENE);
+    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
+    char off_away[200];
+    snprintf(off_away, sizeof off_away, "--set render.refraction=false %s", away);
+    img on = render_frame(scene, 0, NULL, "pw_up_on");
+    img on0 = render_frame(scene, 0, away, "pw_up_on_away");
+    img off = render_frame(scene, 0, "--set render.refraction=false", "pw_up_off");
+    img off0 = render_frame(scene, 0, off_away, "pw_up_off_away");
+    if (on.ok && on0.ok && off.ok && off0.ok) {
+        long with = pixels_apart(&on, &on0), without = pixels_apart(&off, &off0);
+        printf("  the cube's pixels from below: %ld with the prepass, %ld without\n", with,
+               without);
+        ENSURE_MSG(with - without >= ABOVE_SEEN_MIN,
+                   "its part above the water adds %ld px through the window (at least %d)",
+                   with - without, ABOVE_SEEN_MIN);
+    }
+    img_free(&on);
+    img_free(&on0);
+    img_free(&off);
+    img_free(&off0);
+}
+
 /* ---- under water: the seabed is seen ----------------------------------------------------- */
 
 /* RMS difference of luminance between pixels d apart (horizontally and vertically) over rows

@@ -1,7 +1,8 @@
 /* pass_prepass.c - the scene prepass: lit colour + depth of the solid geometry on the far side of
  * the water from the camera, for refraction (the water samples the colour) and light shafts
  * (they read the depth). From above, what lies under the water, cleared to the under-water fog
- * colour; from below, what lies above it, cleared to the sky's horizon colour. The geometry cuts
+ * colour; from below, what lies above it (the water shows it through Snell's window), cleared
+ * to nothing (alpha 0). The geometry cuts
  * its solids at the wave surface (geometry.vert.glsl); the clip plane given here, at the rest
  * level plus the largest crest (so nothing is cut where the surface dips), is the cut of flat
  * water and of the stencilled shadows' volumes. Smaller than the frame (the plan's depth_full
@@ -100,9 +101,9 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         plane[0] = 0.0f; plane[1] = -1.0f; plane[2] = 0.0f;
         plane[3] = (float)(level + p->crest);
     } else {
-        double h[3];
-        ww_sky_horizon(f->sc, f->st, h);
-        gl->ClearColor((float)h[0], (float)h[1], (float)h[2], 1.0f);
+        /* nothing: the water shows the sky through Snell's window where the prepass is clear,
+         * and its colour premultiplied by coverage where an edge's texels are partly clear */
+        gl->ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
         /* keep y >= level - crest */
         plane[0] = 0.0f; plane[1] = 1.0f; plane[2] = 0.0f;
         plane[3] = (float)(-(level - p->crest));
