@@ -232,23 +232,46 @@ static const char *const RIM_SCENE =
     "camera:\n"
     "  path: [{t: 0, position: [0, 1.6, -5], look_at: [0, 0.2, 0]}]\n";
 
+/* frame 0 of a scene whose one cube is at cubes[0], with the refraction prepass on and off, and
+ * each again with the cube moved 4 km away: its pixels are those that change */
+typedef struct cube_frames {
+    img on, on0, off, off0;
+    int ok;
+} cube_frames;
+
+static cube_frames render_cube_frames(const char *scene, const char *tag) {
+    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
+    char off_away[200], t[4][64];
+    snprintf(off_away, sizeof off_away, "--set render.refraction=false %s", away);
+    static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
+    for (int k = 0; k < 4; k++) snprintf(t[k], sizeof t[k], "%s_%s", tag, suffix[k]);
+    cube_frames c;
+    c.on = render_frame(scene, 0, NULL, t[0]);
+    c.on0 = render_frame(scene, 0, away, t[1]);
+    c.off = render_frame(scene, 0, "--set render.refraction=false", t[2]);
+    c.off0 = render_frame(scene, 0, off_away, t[3]);
+    c.ok = c.on.ok && c.on0.ok && c.off.ok && c.off0.ok;
+    return c;
+}
+
+static void cube_frames_free(cube_frames *c) {
+    img_free(&c->on);
+    img_free(&c->on0);
+    img_free(&c->off);
+    img_free(&c->off0);
+}
+
 TEST_IMAGE(picture_water_no_rim_around_what_floats) {
     REQUIRE_GL();
-    const char *scene = scene_file("pw_rim", RIM_SCENE);
-    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
-    char off_away[200];
-    snprintf(off_away, sizeof off_away, "--set render.refraction=false %s", away);
-    img on = render_frame(scene, 0, NULL, "pw_rim_on");
-    img on0 = render_frame(scene, 0, away, "pw_rim_on_away");
-    img off = render_frame(scene, 0, "--set render.refraction=false", "pw_rim_off");
-    img off0 = render_frame(scene, 0, off_away, "pw_rim_off_away");
-    if (on.ok && on0.ok && off.ok && off0.ok) {
+    cube_frames cf = render_cube_frames(scene_file("pw_rim", RIM_SCENE), "pw_rim");
+    const img *on = &cf.on, *on0 = &cf.on0, *off = &cf.off, *off0 = &cf.off0;
+    if (cf.ok) {
         /* the rows of the part above the water */
         int top = H, bottom = -1;
         long above = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++)
-                if (max_diff(&off, &off0, x, y) > MASK_THRESH) {
+                if (max_diff(off, off0, x, y) > MASK_THRESH) {
                     top = y < top ? y : top;
                     bottom = y > bottom ? y : bottom;
                     above++;
@@ -257,17 +280,14 @@ TEST_IMAGE(picture_water_no_rim_around_what_floats) {
         long rim = 0;
         for (int y = 0; y < (top + bottom) / 2; y++)
             for (int x = 0; x < W; x++)
-                rim += max_diff(&on, &on0, x, y) > MASK_THRESH &&
-                       max_diff(&off, &off0, x, y) <= MASK_THRESH;
+                rim += max_diff(on, on0, x, y) > MASK_THRESH &&
+                       max_diff(off, off0, x, y) <= MASK_THRESH;
         printf("  the cube above the water: rows %d..%d, %ld px; its colour in the water around "
                "its top half: %ld px\n", top, bottom, above, rim);
         ENSURE_MSG(rim <= RIM_MAX_PIXELS, "a rim of %ld pixels around the cube (at most %d)", rim,
                    RIM_MAX_PIXELS);
     }
-    img_free(&on);
-    img_free(&on0);
-    img_free(&off);
-    img_free(&off0);
+    cube_frames_free(&cf);
 }
 
 /* ---- submerged outlines: straight, not stairs ------------------------------------------- */
@@ -401,26 +421,16 @@ static long pixels_apart(const img *a, const img *b) {
 
 TEST_IMAGE(picture_water_what_floats_seen_from_below_through_the_window) {
     REQUIRE_GL();
-    const char *scene = scene_file("pw_up", UP_SCENE);
-    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
-    char off_away[200];
-    snprintf(off_away, sizeof off_away, "--set render.refraction=false %s", away);
-    img on = render_frame(scene, 0, NULL, "pw_up_on");
-    img on0 = render_frame(scene, 0, away, "pw_up_on_away");
-    img off = render_frame(scene, 0, "--set render.refraction=false", "pw_up_off");
-    img off0 = render_frame(scene, 0, off_away, "pw_up_off_away");
-    if (on.ok && on0.ok && off.ok && off0.ok) {
-        long with = pixels_apart(&on, &on0), without = pixels_apart(&off, &off0);
+    cube_frames cf = render_cube_frames(scene_file("pw_up", UP_SCENE), "pw_up");
+    if (cf.ok) {
+        long with = pixels_apart(&cf.on, &cf.on0), without = pixels_apart(&cf.off, &cf.off0);
         printf("  the cube's pixels from below: %ld with the prepass, %ld without\n", with,
                without);
         ENSURE_MSG(with - without >= ABOVE_SEEN_MIN,
                    "its part above the water adds %ld px through the window (at least %d)",
                    with - without, ABOVE_SEEN_MIN);
     }
-    img_free(&on);
-    img_free(&on0);
-    img_free(&off);
-    img_free(&off0);
+    cube_frames_free(&cf);
 }
 
 /* ---- under water: the seabed is seen ----------------------------------------------------- */
