@@ -1,13 +1,13 @@
 /* pass_prepass.c - the scene prepass: lit colour + depth of the solid geometry on the far side of
- * the water from the camera, for refraction (the water samples the colour) and light shafts
- * (they read the depth). From above, what lies under the water, cleared to the under-water fog
- * colour; from below, what lies above it (the water shows it through Snell's window), cleared
- * to nothing (alpha 0). The geometry cuts
- * its solids at the wave surface (geometry.vert.glsl); the clip plane given here, at the rest
- * level plus the largest crest (so nothing is cut where the surface dips), is the cut of flat
- * water and of the stencilled shadows' volumes. Smaller than the frame (the plan's depth_full
- * target), it also draws the same geometry's depth alone at the frame's size, which the water
- * reads to put the outlines of what it refracts where the frame's pixels lie.
+ * the water from the camera, which the water shows through its surface (it samples the colour
+ * and reads the depth for the thickness). From above, what lies under the water, cleared to the
+ * under-water fog colour; from below, what lies above it (the water shows it through Snell's
+ * window), cleared to nothing (alpha 0). The geometry cuts its solids at the wave surface
+ * (geometry.vert.glsl); the clip plane given here, at the rest level plus the largest crest (so
+ * nothing is cut where the surface dips), is the cut of flat water and of the stencilled
+ * shadows' volumes. Smaller than the frame (the plan's depth_full target), it also draws the
+ * same geometry's depth alone at the frame's size, which the water reads to put the outlines of
+ * what it refracts where the frame's pixels lie.
  * Publishes r->shared.scene_color, scene_depth and scene_depth_full.
  */
 #include <stdlib.h>

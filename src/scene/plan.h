@@ -15,7 +15,7 @@
 typedef enum ww_pass_id {
     WW_PASS_SKYMAP = 0, /* Preetham's sky and its clouds into a small map the others sample */
     WW_PASS_SHADOW,     /* sun depth map (render.shadows, with geometry to cast) */
-    WW_PASS_PREPASS,    /* colour + depth of solid geometry for refraction and shafts */
+    WW_PASS_PREPASS,    /* colour + depth of solid geometry for the water's refraction */
     WW_PASS_REFLECTION, /* the scene mirrored about the water plane (render.reflection) */
     WW_PASS_MAIN,       /* HDR: sky, lit geometry, water */
     WW_PASS_BLOOM,      /* bright pass + separable Gaussian, half resolution */
