@@ -135,7 +135,7 @@ TEST_PROC(rbench_quality_reference_identical_lower_knob_finite) {
 TEST_PROC(rbench_quality_knob_defaults_and_reference) {
     int nknobs;
     const ww_quality_knob *knobs = ww_quality_knobs(&nknobs);
-    ENSURE_EQ_INT(nknobs, 9);
+    ENSURE_EQ_INT(nknobs, 10);
     ww_scene *sc = NULL;
     ww_error err = {0};
     ENSURE_MSG(ww_scene_load("scenes/lake.yaml", NULL, 0, &sc, &err) == WW_OK, "%s", err.msg);

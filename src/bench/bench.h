@@ -37,7 +37,7 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err);
 /* ---- bench quality (bench_quality.c) -------------------------------------------------------- */
 
 #define WW_QUALITY_MAX_VALUES 8
-#define WW_QUALITY_MAX_KNOBS 9
+#define WW_QUALITY_MAX_KNOBS 10
 #define WW_QUALITY_MAX_ROWS (WW_QUALITY_MAX_VALUES * WW_QUALITY_MAX_KNOBS)
 
 /* one quality knob: a value of the compiled scene that trades speed for image error */

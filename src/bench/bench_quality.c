@@ -39,6 +39,12 @@ static void set_reflection_scale(ww_scene *sc, double v, int on) {
 }
 static double get_reflection_scale(const ww_scene *sc) { return sc->render.reflection.scale; }
 
+static void set_refraction_scale(ww_scene *sc, double v, int on) {
+    sc->render.refraction_scale = v;
+    if (on) sc->render.refraction = 1;
+}
+static double get_refraction_scale(const ww_scene *sc) { return sc->render.refraction_scale; }
+
 static void set_shadow_size(ww_scene *sc, double v, int on) {
     sc->render.shadows.size = (int)v;
     if (on) sc->render.shadows.on = 1;
@@ -101,6 +107,10 @@ static double get_caustics_method(const ww_scene *sc) {
 static const ww_quality_knob KNOBS[] = {
     {"render.reflection.scale", WW_PASS_REFLECTION, 4, {0.125, 0.25, 0.5, 1.0},
      set_reflection_scale, get_reflection_scale},
+    /* the prepass's own time; below full size the water also reads its depth at the frame's
+     * size (docs/rendering.md, "Outlines seen through the water"), a cost of the main pass */
+    {"render.refraction.scale", WW_PASS_PREPASS, 4, {0.125, 0.25, 0.5, 1.0},
+     set_refraction_scale, get_refraction_scale},
     {"render.shadows.size", WW_PASS_SHADOW, 5, {256, 512, 1024, 2048, 4096}, set_shadow_size,
      get_shadow_size},
     {"render.shadows.technique", WW_PASS_MAIN, 3,
