@@ -359,32 +359,39 @@ TEST_IMAGE(picture_water_submerged_outline_not_stepped) {
     img_free(&a);
 }
 
-/* the same cube's submerged outline, at the half-size prepass the frame is drawn with, against
- * a full-size prepass: read bilinear, the half-size image's outline stood up to 2 pixels off
- * the full-size one's, 369 pixels more than 32 levels apart (of 230,400); upsampled by the
- * full-size depth, none are */
-#define OUTLINE_OFF_LEVELS 32 /* levels of a pixel's channel a half-size prepass may move */
+/* the same cube's submerged outline, at the half-size prepass the frame is drawn with and at
+ * the quarter size of the preview preset, against a full-size prepass: read bilinear, the
+ * smaller images' outlines stood up to 2 and 4 pixels off the full-size one's (369 and 568
+ * pixels more than 32 levels apart, of 230,400); upsampled by the full-size depth, none are */
+#define OUTLINE_OFF_LEVELS 32 /* levels of a pixel's channel a smaller prepass may move */
 #define OUTLINE_OFF_MAX 20    /* pixels moved more than that, at most */
 TEST_IMAGE(picture_water_submerged_outline_as_a_full_size_prepass) {
     REQUIRE_GL();
     const char *scene = scene_file("pw_outline_full", OUTLINE_SCENE);
-    img half = render_frame(scene, 0, NULL, "pw_outline_half");
     img full = render_frame(scene, 0, "--set \"render.refraction={scale: 1}\"", "pw_outline_full");
-    if (half.ok && full.ok) {
-        long off = 0;
-        int most = 0;
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++) {
-                int d = max_diff(&half, &full, x, y);
-                off += d > OUTLINE_OFF_LEVELS;
-                most = d > most ? d : most;
-            }
-        printf("  half-size against full-size prepass: %ld px more than %d levels apart, "
-               "largest %d\n", off, OUTLINE_OFF_LEVELS, most);
-        ENSURE_MSG(off <= OUTLINE_OFF_MAX, "%ld px more than %d levels from the full-size "
-                   "prepass's frame (at most %d)", off, OUTLINE_OFF_LEVELS, OUTLINE_OFF_MAX);
+    static const char *const scales[2] = {"0.5", "0.25"};
+    for (int k = 0; k < 2 && full.ok; k++) {
+        char args[80], tag[40];
+        snprintf(args, sizeof args, "--set \"render.refraction={scale: %s}\"", scales[k]);
+        snprintf(tag, sizeof tag, "pw_outline_%d", k);
+        img part = render_frame(scene, 0, args, tag);
+        if (part.ok) {
+            long off = 0;
+            int most = 0;
+            for (int y = 0; y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    int d = max_diff(&part, &full, x, y);
+                    off += d > OUTLINE_OFF_LEVELS;
+                    most = d > most ? d : most;
+                }
+            printf("  prepass at %s against full size: %ld px more than %d levels apart, "
+                   "largest %d\n", scales[k], off, OUTLINE_OFF_LEVELS, most);
+            ENSURE_MSG(off <= OUTLINE_OFF_MAX, "prepass at %s: %ld px more than %d levels from "
+                       "the full-size prepass's frame (at most %d)", scales[k], off,
+                       OUTLINE_OFF_LEVELS, OUTLINE_OFF_MAX);
+        }
+        img_free(&part);
     }
-    img_free(&half);
     img_free(&full);
 }
 
