@@ -32,7 +32,9 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "main pass: out of memory");
     p->rt = rt;
     ww_result rc = ww_sky_new(r, sc, &p->sky, err);
-    if (rc == WW_OK) rc = ww_water_new(r->gl, sc, &p->water, err);
+    /* the water upsamples the refraction by the prepass's full-size depth where the plan has it */
+    int edges = ww_plan_target(ww_plan_pass(&r->plan, WW_PASS_PREPASS), "depth_full") >= 0;
+    if (rc == WW_OK) rc = ww_water_new(r->gl, sc, edges, &p->water, err);
     if (rc != WW_OK) {
         main_destroy(p, r->gl);
         return rc;

@@ -47,9 +47,11 @@ static ww_result full_fbo_new(const ww_gl *gl, prepass *p, ww_error *err) {
 
 static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
                                 const ww_rt *rt, void **self, ww_error *err) {
-    /* the targets in the plan's order: colour, depth, and the unattached full-size depth */
+    /* the targets by their names in the plan (the pass has no multisampled targets, so its
+     * textures are in the plan's order) */
+    int td = ww_plan_target(d, "depth"), tf = ww_plan_target(d, "depth_full");
     GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F);
-    GLuint depth = rt->ntex >= 2 && !rt->unattached[1] ? rt->tex[1] : 0;
+    GLuint depth = td >= 0 ? rt->tex[td] : 0;
     if (!color || !depth)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
                             "pass %s: needs an RGBA16F colour and a depth target", d->name);
@@ -71,10 +73,10 @@ static ww_result prepass_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     r->gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     r->gl->BindTexture(GL_TEXTURE_2D, 0);
     p->crest = ww_water_crest(sc);
-    if (rt->ntex >= 3 && rt->unattached[2]) {
-        p->depth_full = rt->tex[2];
-        p->full_w = d->targets[2].width;
-        p->full_h = d->targets[2].height;
+    if (tf >= 0) {
+        p->depth_full = rt->tex[tf];
+        p->full_w = d->targets[tf].width;
+        p->full_h = d->targets[tf].height;
         ww_result rc = full_fbo_new(r->gl, p, err);
         if (rc != WW_OK) {
             prepass_destroy(p, r->gl);

@@ -385,7 +385,9 @@ void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u);
 /* water.c: the camera-centred polar mesh of the wave field, depth tested; its density is
  * render.grid (scene/plan.h: ww_water_mesh_layout) */
 typedef struct ww_water ww_water;
-ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err);
+/* edges: the plan's prepass draws its depth at the frame's size (its depth_full target) */
+ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, int edges, ww_water **out,
+                       ww_error *err);
 /* uploads the frame's phases and ripples, then draws, reading what earlier passes left in
  * r->shared (reflection, prepass) and r->sky_cubemap; alpha-blended over what the target holds
  * when render.water.alpha_blend */

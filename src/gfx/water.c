@@ -447,7 +447,8 @@ static ww_result gbuf_new(ww_water *w, const ww_gl *gl, const ww_scene *sc, cons
     return WW_OK;
 }
 
-ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_error *err) {
+ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, int edges, ww_water **out,
+                       ww_error *err) {
     ww_water *w = calloc(1, sizeof *w);
     if (!w) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory");
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
@@ -462,10 +463,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, ww_water **out, ww_e
     /* the variant seen from above with the images the scene's passes make: built now, so a
      * shader that does not compile fails here rather than in the middle of a run */
     int first = (sc->render.reflection.on ? WATER_REFL : 0) |
-                (sc->render.refraction ? WATER_REFR : 0) |
-                (sc->render.refraction && sc->render.refraction_scale < 1.0 &&
-                         ww_scene_has_objects(sc) && !sc->render.water.alpha_blend
-                     ? WATER_EDGES : 0);
+                (sc->render.refraction ? WATER_REFR : 0) | (edges ? WATER_EDGES : 0);
     ww_result rc = build_variant(w, gl, sc, first, 0, err);
     if (rc == WW_OK) rc = build_mesh(w, gl, sc, err);
     if (rc == WW_OK) rc = ww_water_ubos_new(gl, sc, &w->waves, &w->ubos, err);

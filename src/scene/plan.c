@@ -56,6 +56,12 @@ const ww_pass_desc *ww_plan_pass(const ww_plan *p, ww_pass_id id) {
     return NULL;
 }
 
+int ww_plan_target(const ww_pass_desc *d, const char *name) {
+    for (int t = 0; d && t < d->ntargets; t++)
+        if (strcmp(d->targets[t].name, name) == 0) return t;
+    return -1;
+}
+
 static void add_pass(ww_plan *p, ww_pass_id id, const char *name, const char *what) {
     ww_pass_desc *d = &p->passes[p->npasses++];
     d->id = id;

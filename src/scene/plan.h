@@ -155,6 +155,8 @@ void ww_plan_build(const ww_scene *sc, int width, int height, ww_plan *p);
 int ww_sky_map_on(const ww_scene *sc);
 /* the planned pass id, or NULL */
 const ww_pass_desc *ww_plan_pass(const ww_plan *p, ww_pass_id id);
+/* the index of d's target called name, or -1 (d may be NULL) */
+int ww_plan_target(const ww_pass_desc *d, const char *name);
 size_t ww_format_bytes_per_pixel(ww_format f);
 const char *ww_format_name(ww_format f);
 void ww_plan_print(const ww_scene *sc, const ww_plan *p, FILE *to);
