@@ -700,10 +700,14 @@ TEST_IMAGE(light_clouds_drift) {
 /* the sky map (pass skymap): the demo's frame 0 (Preetham's sky with clouds over a reflecting
  * sea) drawn from the map against the sky evaluated per pixel (WW_SKY_EXACT=1): close over the
  * frame (the clouds' edges in the water are softer: 44.7 dB measured at 640x360) and closer in
- * the sky itself, whose clouds stay per pixel; the
- * plan lists the pass only where the map is used */
-#define SKY_MAP_PSNR_MIN 40.0 /* dB, the whole frame against the per-pixel sky */
-#define SKY_MAP_SKY_MAX 8     /* 8-bit levels, the top third (sky) of the frame (measured 5) */
+ * the sky itself, whose clouds stay per pixel. There a few pixels right on a cloud's edge, where
+ * the cover's smoothstep is steepest, may land a step apart: 2 pixels of the top third's 76,800
+ * more than SKY_MAP_SKY_LEVELS off with Mesa 22.3 (7 levels at most), 3 with Mesa 26.2 (10),
+ * so the sky's check counts such pixels rather than taking their largest difference. The plan
+ * lists the pass only where the map is used */
+#define SKY_MAP_PSNR_MIN 40.0  /* dB, the whole frame against the per-pixel sky */
+#define SKY_MAP_SKY_LEVELS 2   /* 8-bit levels a sky pixel may be off and count as the same */
+#define SKY_MAP_SKY_PIXELS 12  /* pixels of the top third (sky) further off than that */
 TEST_IMAGE(light_sky_map_matches_exact) {
     REQUIRE_GL();
     pic map, exact;
@@ -713,19 +717,27 @@ TEST_IMAGE(light_sky_map_matches_exact) {
     unsetenv("WW_SKY_EXACT");
     if (!ok) return;
     double se = 0.0;
-    int sky_max = 0;
+    int sky_max = 0, sky_off = 0;
     for (int y = 0; y < map.h; y++)
-        for (int x = 0; x < map.w; x++)
+        for (int x = 0; x < map.w; x++) {
+            int dmax = 0;
             for (int c = 0; c < 3; c++) {
                 int d = abs((int)px(&map, x, y)[c] - (int)px(&exact, x, y)[c]);
                 se += (double)d * d;
-                if (y < map.h / 3 && d > sky_max) sky_max = d;
+                if (d > dmax) dmax = d;
             }
+            if (y < map.h / 3) {
+                sky_off += dmax > SKY_MAP_SKY_LEVELS;
+                if (dmax > sky_max) sky_max = dmax;
+            }
+        }
     double mse = se / (3.0 * map.w * map.h);
     double psnr = mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
-    fprintf(stderr, "    map against per pixel: %.2f dB, sky max %d levels\n", psnr, sky_max);
+    fprintf(stderr, "    map against per pixel: %.2f dB; sky: %d pixels more than %d levels off "
+                    "(at most %d)\n", psnr, sky_off, SKY_MAP_SKY_LEVELS, sky_max);
     ENSURE_MSG(psnr >= SKY_MAP_PSNR_MIN, "%.2f dB", psnr);
-    ENSURE_MSG(sky_max <= SKY_MAP_SKY_MAX, "the sky differs by %d levels", sky_max);
+    ENSURE_MSG(sky_off <= SKY_MAP_SKY_PIXELS, "%d sky pixels more than %d levels off", sky_off,
+               SKY_MAP_SKY_LEVELS);
     ww_image_free(&map.im);
     ww_image_free(&exact.im);
 
