@@ -10,6 +10,7 @@
 
 #include "core/mathx.h"
 #include "core/rng.h"
+#include "core/exp.h"
 #include "core/sincos.h"
 #include "sim/ripples.h"
 #include "scene/spectrum.h"
@@ -24,6 +25,9 @@
 #define SINCOS_TOL 1e-15
 /* ww_sincosf against libm in double, |x| <= 1e3: a couple of float ulps of 1 */
 #define SINCOSF_TOL 2e-7
+/* ww_exp against libm's exp, |x| <= 708: fdlibm's kernel, within one unit in the last place of
+ * the true value, so at most two of libm's (itself within one) */
+#define EXP_ULPS 2.0
 /* a wave one period later: the phases' rounding (a few ulps of 2 pi) times k A */
 #define DISPERSION_TOL 1e-12
 /* central differences with step FD_STEP against analytic partials (dimensionless): truncation
@@ -173,6 +177,34 @@ TEST(waves_sincos_matches_libm) {
     ENSURE_NEAR(worst, 0.0, SINCOS_TOL);
     ENSURE_NEAR(worstf, 0.0, SINCOSF_TOL);
     printf("    sincos max |error| vs libm: double %.3g, float %.3g\n", worst, worstf);
+}
+
+TEST(waves_exp_matches_libm) {
+    ww_rng r;
+    ww_rng_seed(&r, 11, 0);
+    double worst = 0.0, worst_x = 0.0;
+    for (int i = 0; i < 300000; i++) {
+        double u = 2.0 * ww_rng_uniform(&r) - 1.0;
+        double x = i % 3 == 0 ? u * 708.0 : i % 3 == 1 ? u * 2.0 : u * 1e-9;
+        double e = exp(x), ulp = nextafter(e, INFINITY) - e;
+        double d = fabs(ww_exp(x) - e) / ulp;
+        if (d > worst) worst = d, worst_x = x;
+    }
+    /* the reduction's edges: the multiples of ln 2 / 2 and their neighbours */
+    for (int k = -2040; k <= 2040; k++) {
+        double x = k * (0.5 * M_LN2);
+        for (int d = 0; d < 3; d++) {
+            double y = d == 0 ? x : nextafter(x, d == 1 ? -INFINITY : INFINITY);
+            double e = exp(y), q = fabs(ww_exp(y) - e) / (nextafter(e, INFINITY) - e);
+            if (q > worst) worst = q, worst_x = y;
+        }
+    }
+    printf("    exp max error vs libm: %.2f ulp (at x = %.6g)\n", worst, worst_x);
+    ENSURE(ww_exp(0.0) == 1.0);
+    ENSURE(worst <= EXP_ULPS);
+    /* past the clamp: finite and positive, never 0, inf or NaN */
+    ENSURE(ww_exp(-1000.0) == ww_exp(-708.0) && ww_exp(-708.0) > 0.0);
+    ENSURE(isfinite(ww_exp(1000.0)));
 }
 
 /* ---- the field ---- */

@@ -7,11 +7,9 @@
 
 #include "core/mathx.h"
 
-/* a point whose squared distance exceeds the front's squared radius by this factor is beyond
- * it whatever the rounding of the root (a few ulps), so W = 0 there without computing r */
-#define FRONT_MARGIN (1.0 + 1e-12)
 /* a rectangle whose nearest squared distance exceeds the front's squared radius by this factor
- * has every point beyond it by far more than FRONT_MARGIN and the rounding of each point's r^2 */
+ * has every point beyond it by far more than WW_RIPPLE_FRONT_MARGIN and the rounding of each
+ * point's r^2 */
 #define RECT_MARGIN (1.0 + 1e-9)
 
 void ww_ripples_add(const ww_scene *sc, ww_state *st, double x, double z, double amplitude) {
@@ -75,22 +73,14 @@ double ww_ripples_height_n(const ww_scene *sc, const double *pool, int nslots, d
             /* causal front: W = 1 behind r = v age, 0 one wavelength ahead, C1 between. A point
              * surely beyond the front (by far more than rounding) is passed without the root */
             double front = v * age + lambda;
-            if (front <= 0.0 || r2 > FRONT_MARGIN * front * front) continue;
+            if (front <= 0.0 || r2 > WW_RIPPLE_FRONT_MARGIN * front * front) continue;
             double r = sqrt(r2);
             double u = (v * age - r) / lambda + 1.0;
             if (u <= 0.0) continue;
-            double w = 1.0, dw = 0.0;
-            if (u < 1.0) {
-                w = u * u * (3.0 - 2.0 * u);
-                dw = 6.0 * u * (1.0 - u);
-            }
-            double env = e[3] * exp(-d->radial_decay * r - d->time_decay * age);
-            double psi = kr * (r - v * age);
-            double s = sin(psi), c = cos(psi);
-            h += env * s * w;
-            /* dh/dr and dh/dage of env sin(psi) W, then the chain rule through r(x, z) */
-            double dhdr = env * (-d->radial_decay * s * w + kr * c * w - s * dw / lambda);
-            double dhda = env * (-d->time_decay * s * w - kr * v * c * w + s * dw * v / lambda);
+            double th, dhdr, dhda;
+            ww_ripple_term(d, e[3], age, r, u, lambda, &th, &dhdr, &dhda);
+            h += th;
+            /* the chain rule through r(x, z) */
             gx += dhdr * dx / r;
             gz += dhdr * dz / r;
             ht += dhda;
@@ -119,7 +109,8 @@ int ww_ripples_reaching(const ww_scene *sc, const double *pool, int nslots, doub
         /* the rectangle's nearest point to the centre: every point's r^2 is at least this */
         double gx = fmax(fmax(lo[0] - e[0], e[0] - hi[0]), 0.0);
         double gz = fmax(fmax(lo[1] - e[1], e[1] - hi[1]), 0.0);
-        if (gx * gx + gz * gz + r0 * r0 > RECT_MARGIN * FRONT_MARGIN * front * front) continue;
+        double reach = RECT_MARGIN * WW_RIPPLE_FRONT_MARGIN * front * front;
+        if (gx * gx + gz * gz + r0 * r0 > reach) continue;
         for (int k = 0; k < WW_RIPPLE_STRIDE; k++) out[kept * WW_RIPPLE_STRIDE + k] = e[k];
         kept++;
     }

@@ -519,6 +519,34 @@ WW_LANE_STEP void lanes_take(const lane_waves *lw, lane_probe *p, const lane_pro
         }
 }
 
+/* the sum over the ripples of pool (n entries, as ww_ripples_reaching lists them) at every
+ * lane's world point: height rh and dh/dt rdt, as ww_ripples_height_n gives them to the bit (the
+ * same term in the same order; an entry whose front does not reach a lane adds nothing there) */
+WW_LANE_STEP void lanes_ripples(const ww_scene *sc, const double *pool, int n, double t,
+                                double x[2][LANES], double rh[LANES], double rdt[LANES]) {
+    const ww_ripple_desc *rd = &sc->ripples;
+    double kr = rd->wavenumber, v = rd->speed;
+    double lambda = WW_TAU / kr, r0 = 1.0 / kr;
+    for (int i = 0; i < n; i++) {
+        const double *e = pool + i * WW_RIPPLE_STRIDE;
+        double age = t - e[2], front = v * age + lambda;
+        double reach = WW_RIPPLE_FRONT_MARGIN * front * front;
+        double r2[LANES], r[LANES];
+        for (int c = 0; c < LANES; c++) {
+            double dx = x[0][c] - e[0], dz = x[1][c] - e[1];
+            r2[c] = dx * dx + dz * dz + r0 * r0;
+        }
+        for (int c = 0; c < LANES; c++) r[c] = sqrt(r2[c]);
+        for (int c = 0; c < LANES; c++) {
+            double u = (v * age - r[c]) / lambda + 1.0, h, dhdr, dhda;
+            ww_ripple_term(rd, e[3], age, r[c], u, lambda, &h, &dhdr, &dhda);
+            int in = r2[c] <= reach && u > 0.0;
+            rh[c] = in ? rh[c] + h : rh[c];
+            rdt[c] = in ? rdt[c] + dhda : rdt[c];
+        }
+    }
+}
+
 /* the warm queries of up to LANES points (m of them, the block padded with the last): the
  * iteration of invert while every trial is its first step (lambda = 1) and halves |F|, which the
  * best so far then is; a point where that fails, or far from the origin, is left to
@@ -620,6 +648,9 @@ WW_LANE_STEP int lanes_query(const ww_scene *sc, const ww_state *st, const lane_
         rslots = ww_ripples_reaching(sc, rip, rslots, st->t, lo, hi, near);
         rip = rslots > 0 ? near : NULL;
     }
+    /* where no ripple reaches the block their sum is 0, as ww_ripples_height_n gives it */
+    double rh[LANES] = {0.0}, rdt[LANES] = {0.0};
+    if (rip) lanes_ripples(sc, rip, rslots, st->t, xw, rh, rdt);
     for (int c = 0; c < m; c++) {
         double *wm = warm + WW_WARM_STRIDE * c;
         if (alone[c] != 0.0) {
@@ -630,13 +661,10 @@ WW_LANE_STEP int lanes_query(const ww_scene *sc, const ww_state *st, const lane_
                 for (int k = 0; k < 3; k++) velocity[3 * c + k] = ws.velocity[k];
             continue;
         }
-        /* where no ripple reaches the block their sum is 0, as ww_ripples_height_n gives it */
-        double rdt = 0.0, rh = 0.0;
-        if (rip) rh = ww_ripples_height_n(sc, rip, rslots, st->t, x[c], z[c], NULL, &rdt);
-        height[c] = sc->water_level + y[c] + rh;
+        height[c] = sc->water_level + y[c] + rh[c];
         if (velocity) {
             velocity[3 * c] = v[0][c];
-            velocity[3 * c + 1] = v[1][c] + rdt;
+            velocity[3 * c + 1] = v[1][c] + rdt[c];
             velocity[3 * c + 2] = v[2][c];
         }
         for (int k = 0; k < 2; k++) {
