@@ -106,9 +106,10 @@ int ww_ripples_reaching(const ww_scene *sc, const double *pool, int nslots, doub
         if (e[3] == 0.0 || age < 0.0) continue;
         double front = d->speed * age + lambda;
         if (front <= 0.0) continue;
-        /* the rectangle's nearest point to the centre: every point's r^2 is at least this */
-        double gx = fmax(fmax(lo[0] - e[0], e[0] - hi[0]), 0.0);
-        double gz = fmax(fmax(lo[1] - e[1], e[1] - hi[1]), 0.0);
+        /* the rectangle's nearest point to the centre: every point's r^2 is at least this (a
+         * gap is 0 where the centre lies between the sides) */
+        double gx = e[0] < lo[0] ? lo[0] - e[0] : e[0] > hi[0] ? e[0] - hi[0] : 0.0;
+        double gz = e[1] < lo[1] ? lo[1] - e[1] : e[1] > hi[1] ? e[1] - hi[1] : 0.0;
         double reach = RECT_MARGIN * WW_RIPPLE_FRONT_MARGIN * front * front;
         if (gx * gx + gz * gz + r0 * r0 > reach) continue;
         for (int k = 0; k < WW_RIPPLE_STRIDE; k++) out[kept * WW_RIPPLE_STRIDE + k] = e[k];

@@ -641,9 +641,10 @@ WW_LANE_STEP int lanes_query(const ww_scene *sc, const ww_state *st, const lane_
     double near[WW_MAX_RIPPLES * WW_RIPPLE_STRIDE];
     if (rip) {
         double lo[2] = {x[0], z[0]}, hi[2] = {x[0], z[0]};
+        /* ternaries, not fmin and fmax: those are libm calls at -O2, and the points are finite */
         for (int c = 1; c < m; c++) {
-            lo[0] = fmin(lo[0], x[c]), hi[0] = fmax(hi[0], x[c]);
-            lo[1] = fmin(lo[1], z[c]), hi[1] = fmax(hi[1], z[c]);
+            lo[0] = x[c] < lo[0] ? x[c] : lo[0], hi[0] = x[c] > hi[0] ? x[c] : hi[0];
+            lo[1] = z[c] < lo[1] ? z[c] : lo[1], hi[1] = z[c] > hi[1] ? z[c] : hi[1];
         }
         rslots = ww_ripples_reaching(sc, rip, rslots, st->t, lo, hi, near);
         rip = rslots > 0 ? near : NULL;
