@@ -410,7 +410,8 @@ typedef struct lane_probe {
 } lane_probe;
 
 /* F = a + D - x and |F| of every lane, as close_probe; d: the displacements. The root has its
- * own loop: with errno kept, sqrt is a call the loops around it could not be vectorised over */
+ * own loop, which vectorises (the build's -fno-math-errno makes sqrt an instruction, not a call
+ * that may set errno) */
 WW_LANE_STEP void lanes_close(lane_probe *p, double x[2][LANES], double d[2][LANES]) {
     double n2[LANES];
     for (int c = 0; c < LANES; c++) {
