@@ -495,7 +495,7 @@ WW_LANE_STEP void lanes_direction(const lane_waves *lw, const lane_probe *p, dou
     for (int c = 0; c < LANES; c++) {
         double det = jxx[c] * jzz[c] - jxz[c] * jxz[c], F0 = p->F[0][c], F1 = p->F[1][c];
         double n0 = -(jzz[c] * F0 - jxz[c] * F1) / det, n1 = -(jxx[c] * F1 - jxz[c] * F0) / det;
-        int ok = jxx[c] > 0.0 && jzz[c] > 0.0 && det > 0.0;
+        int ok = (jxx[c] > 0.0) & (jzz[c] > 0.0) & (det > 0.0); /* &, not &&: no branch */
         d[0][c] = ok ? n0 : -F0;
         d[1][c] = ok ? n1 : -F1;
     }
@@ -566,17 +566,17 @@ WW_LANE_STEP int lanes_query(const ww_scene *sc, const ww_state *st, const lane_
         xw[1][c] = z[j];
         cur->a[0][c] = x[j] + (wm[0] + wm[2]);
         cur->a[1][c] = z[j] + (wm[1] + wm[3]);
-        alone[c] = fabs(x[j]) > FAR_FROM_ORIGIN || fabs(z[j]) > FAR_FROM_ORIGIN;
+        alone[c] = (fabs(x[j]) > FAR_FROM_ORIGIN) | (fabs(z[j]) > FAR_FROM_ORIGIN) ? 1.0 : 0.0;
     }
     lanes_evaluate(lw, st->wave_phase, xw, cur);
     for (int evals = 1;; evals++) {
         double open[LANES], d[2][LANES], far[LANES], take[LANES];
-        int any = 0;
+        double nopen = 0.0; /* a count, summed without a branch so the loop vectorises */
         for (int c = 0; c < LANES; c++) {
-            open[c] = alone[c] == 0.0 && cur->norm[c] > WW_QUERY_TOLERANCE;
-            any |= open[c] != 0.0;
+            open[c] = alone[c] == 0.0 && cur->norm[c] > WW_QUERY_TOLERANCE ? 1.0 : 0.0;
+            nopen += open[c];
         }
-        if (!any) break;
+        if (nopen == 0.0) break;
         if (evals >= LANE_EVALUATIONS) {
             for (int c = 0; c < LANES; c++) alone[c] = open[c] != 0.0 ? 1.0 : alone[c];
             break;
@@ -587,12 +587,12 @@ WW_LANE_STEP int lanes_query(const ww_scene *sc, const ww_state *st, const lane_
             trial->a[1][c] = cur->a[1][c] + d[1][c];
         }
         lanes_near(lw, xw, cur, trial, far);
-        int anyfar = 0;
+        double nfar = 0.0;
         for (int c = 0; c < LANES; c++) {
             far[c] = open[c] != 0.0 ? far[c] : 0.0;
-            anyfar |= far[c] != 0.0;
+            nfar += far[c];
         }
-        if (anyfar) {
+        if (nfar != 0.0) {
             for (int c = 0; c < LANES; c++) {
                 cold->a[0][c] = trial->a[0][c];
                 cold->a[1][c] = trial->a[1][c];
@@ -602,14 +602,14 @@ WW_LANE_STEP int lanes_query(const ww_scene *sc, const ww_state *st, const lane_
         }
         /* a trial that halves |F| is taken, as invert takes it; any other point goes alone.
          * Where every lane takes its trial (most first steps) the probes swap roles */
-        int all = 1;
+        double ntake = 0.0;
         for (int c = 0; c < LANES; c++) {
             int halves = trial->norm[c] <= RESIDUAL_CUT * cur->norm[c];
-            take[c] = open[c] != 0.0 && halves;
+            take[c] = open[c] != 0.0 && halves ? 1.0 : 0.0;
             alone[c] = open[c] != 0.0 && !halves ? 1.0 : alone[c];
-            all &= take[c] != 0.0;
+            ntake += take[c];
         }
-        if (all) {
+        if (ntake == LANES) {
             lane_probe *was = cur;
             cur = trial;
             trial = was;
