@@ -158,24 +158,30 @@ static int lure_free(const ww_scene *sc, const ww_state *st) {
     return sc->rod.on && (int)st->lure_state[0] == WW_LURE_FLOATING && st->rod_fish[0] < 0.0;
 }
 
-/* add the fear of a threat at q (its surface r from q) within R to fl: ((R/d)^2 - 1) / 3 for
- * the gap d between fish and the threat's surface (inverse-square, zero at R, 1 at R/2,
- * unbounded as d shrinks), along the unit vector away from it: horizontal as the XZ direction
- * (the heading when the threat is straight above or below), vertical as the 3D one */
-static void add_fear(const double p[3], const double q[3], double r, double R, double yaw,
-                     double fl[3]) {
-    double d[3];
-    ww_m_sub3(p, q, d);
-    /* a threat surely farther than R + r (by far more than the rounding of the root) adds
-     * nothing: passed without it. With R at most the least gap nothing is ever near */
-    double reach = R + r;
-    if (!(R > FLEE_MIN_GAP) || ww_m_dot3(d, d) > FAR_THREAT_MARGIN * reach * reach) return;
+/* add_fear past its first test: the threat at offset d (fish less threat) is within reach */
+static void add_fear_near(const double d[3], double r, double R, double yaw, double fl[3]) {
     double dist = ww_m_len3(d), gap = fmax(dist - r, FLEE_MIN_GAP);
     if (!(gap < R)) return;
     double w = ((R / gap) * (R / gap) - 1.0) / FLEE_HALF, h = len2(d[0], d[2]);
     fl[0] += w * (h > 1e-9 ? d[0] / h : cos(yaw));
     fl[1] += w * (dist > 1e-9 ? d[1] / dist : 0.0);
     fl[2] += w * (h > 1e-9 ? d[2] / h : sin(yaw));
+}
+
+/* add the fear of a threat at q (its surface r from q) within R to fl: ((R/d)^2 - 1) / 3 for
+ * the gap d between fish and the threat's surface (inverse-square, zero at R, 1 at R/2,
+ * unbounded as d shrinks), along the unit vector away from it: horizontal as the XZ direction
+ * (the heading when the threat is straight above or below), vertical as the 3D one. Inline:
+ * most threats are far, and their test is a few operations, cheaper than a call */
+static inline void add_fear(const double p[3], const double q[3], double r, double R, double yaw,
+                            double fl[3]) {
+    double d[3];
+    ww_m_sub3(p, q, d);
+    /* a threat surely farther than R + r (by far more than the rounding of the root) adds
+     * nothing: passed without it. With R at most the least gap nothing is ever near */
+    double reach = R + r;
+    if (!(R > FLEE_MIN_GAP) || ww_m_dot3(d, d) > FAR_THREAT_MARGIN * reach * reach) return;
+    add_fear_near(d, r, R, yaw, fl);
 }
 
 /* the fear vector of fish i: the sum over the boat (its sphere), the cubes (their bounding
