@@ -463,6 +463,27 @@ TEST_PROC(simtools_bench_sim_tiny) {
     free(text);
 }
 
+/* the speed row runs the scene's own run (what `simulate SCENE` steps: (frames - 1) x steps a
+ * frame, 2396 on the lake) again and again from step 0, and the lake's is set against the
+ * simulation's target; what the row measures is not asserted, only what it covers and says */
+TEST_PROC(simtools_bench_sim_speed_over_the_scene_run) {
+    const char *dir = ww_test_tmpdir("simtools_bench_sim_run");
+    char out[512], args[2048];
+    snprintf(out, sizeof out, "%s/stdout.txt", dir);
+    snprintf(args, sizeof args, "bench sim --tiny --json scenes/lake.yaml -o %s", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "\"part\":\"speed\",\"scene\":\"lake.yaml\""));
+    ENSURE(ww_test_file_contains(out, "\"run_steps\":2396,"));
+    snprintf(args, sizeof args, "bench sim --tiny scenes/lake.yaml -o %s", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    ENSURE(ww_test_file_contains(out, "target: lake.yaml at >= 2000x real time: "));
+    ENSURE(ww_test_file_contains(out, "x, met\n") || ww_test_file_contains(out, "x, missed\n"));
+    /* a scene without the target prints no target line */
+    snprintf(args, sizeof args, "bench sim --tiny scenes/soak.yaml -o %s", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    ENSURE(!ww_test_file_contains(out, "target: "));
+}
+
 /* ten simulated minutes of the soak scene, every system on, at 120 Hz: no NaN or Inf (exit 3
  * would name it), every step taken; the hour of `make soak` in small */
 TEST_LONG(simtools_soak_ten_minutes) {
