@@ -325,3 +325,45 @@ TEST_LONG(rbench_bench_quality_table_and_figure) {
     ENSURE(im.width > 0 && im.height > 0);
     ww_image_free(&im);
 }
+
+/* the frame-rate targets: on a CPU rasteriser the lake at 1280x720 is held to 66 ms a frame, in
+ * the JSON and the table; a GPU has no such row at 1280x720 (its target is at 1920x1080) */
+TEST_PROC(rbench_bench_render_frame_targets) {
+    REQUIRE_GL();
+    char dir[512], out[600], errf[600], lake[700], args[1600];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_render_frame_targets"));
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    char *text = ww_test_read_file(bare_scene(dir), NULL);
+    ENSURE(text != NULL);
+    snprintf(lake, sizeof lake, "%s/lake.yaml", dir);
+    ENSURE(text && ww_test_write_text(lake, text) == 0);
+    free(text);
+    snprintf(args, sizeof args, "bench render --frames 2 --size 1280x720 --json %s", lake);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    char *s = ww_test_read_file(out, NULL);
+    ENSURE(s != NULL);
+    int cpu_rows = 0, rows = 0;
+    char *save = NULL;
+    for (char *line = s ? strtok_r(s, "\n", &save) : NULL; line; line = strtok_r(NULL, "\n", &save)) {
+        if (strstr(line, "\"error\":")) continue;
+        rows++;
+        int cpu = strstr(line, "llvmpipe") != NULL || strstr(line, "softpipe") != NULL;
+        cpu_rows += cpu;
+        if (cpu)
+            ENSURE_MSG(strstr(line, "\"frame_target_ms\":66.0,\"frame_target_met\":") != NULL,
+                       "no frame target in %s", line);
+        else
+            ENSURE_MSG(strstr(line, "frame_target") == NULL, "a GPU row with a CPU target: %s",
+                       line);
+        ENSURE_MSG(strstr(line, "gpu_target") == NULL, "a GPU target at 1280x720: %s", line);
+    }
+    free(s);
+    ENSURE_MSG(rows == backends_here(), "%d rows", rows);
+    if (cpu_rows > 0) {
+        snprintf(args, sizeof args, "bench render --frames 2 --size 1280x720 %s", lake);
+        ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+        ENSURE(ww_test_file_contains(out, "lake.yaml       1280x720  CPU  render "));
+        ENSURE(ww_test_file_contains(out, "target <= 66.0 ms (15 fps)"));
+    }
+}
