@@ -11,7 +11,8 @@
 // comes down in separate shafts (where the waves focus it) that drift with time; a uniformly
 // bright surface would only blur into a haze.
 // The mask is drawn first into its own texture (MASK defined), then marched over: one
-// bilinear fetch per sample instead of a depth fetch, a view ray and exponentials.
+// bilinear fetch per sample instead of a depth fetch, a view ray and exponentials; then the
+// march's jitter is smoothed (SMOOTH defined).
 // Seed 000 marches the whole way to the light; here the march is at most MARCH_MAX of the
 // screen, so a light far off screen (the refracted sun seen while looking level under water)
 // still gives parallel shafts coming down instead of a few samples spread over the screen.
@@ -72,6 +73,20 @@ vec3 mask(vec2 uv) {
 #ifdef MASK
 // first step: the mask once per texel of the target
 void main() { o_color = vec4(mask(gl_FragCoord.xy * u_inv_size), 1.0); }
+#elif defined(SMOOTH)
+// last step: the march's jitter (below) leaves grain whose pattern repeats every few texels, and
+// the tone mapping's bilinear upsampling draws each texel as a soft diamond, so the grain shows
+// as a lattice where the shafts are bright and change fast (under water at the frame's edge,
+// where half a step decides whether a sample is on screen). The jitter is made to average out
+// over a texel's neighbours (interleaved gradient noise), so a 3 x 3 tent, [1 2 1] / 4 each way,
+// takes it away and leaves the shafts, many texels wide, as they were: four bilinear fetches
+// half a texel off each way (u_mask holds the march here)
+void main() {
+    vec2 uv = gl_FragCoord.xy * u_inv_size, h = 0.5 * u_inv_size;
+    vec3 s = texture(u_mask, uv + vec2(-h.x, -h.y)).rgb + texture(u_mask, uv + vec2(h.x, -h.y)).rgb
+           + texture(u_mask, uv + vec2(-h.x, h.y)).rgb + texture(u_mask, uv + vec2(h.x, h.y)).rgb;
+    o_color = vec4(0.25 * s, 1.0);
+}
 #else
 // second step: the march over the mask, one bilinear fetch per sample, nothing off screen
 vec3 masked(vec2 uv) {

@@ -1,8 +1,9 @@
 /* pass_shafts.c - light shafts (seed 000, after Mitchell, GPU Gems 3 ch. 13): projects the light
  * to the screen, then one full-screen pass into the shafts target (render.god_rays.scale of the
  * frame) marches from each pixel toward it over an occlusion mask built from the main pass's
- * depth and colour (shafts.frag.glsl). The mask is drawn first into the pass's `mask` target,
- * so the march reads one bilinear texel per sample. The tone mapping pass adds the result.
+ * depth and colour (shafts.frag.glsl). The mask is drawn first, so the march reads one bilinear
+ * texel per sample, and the march's jitter is smoothed last: mask into the `shafts` target, the
+ * march into `mask`, the smoothing back into `shafts`, which the tone mapping pass adds.
  * Above water the light is the sun and the mask the sky around it; under water it is the sun
  * refracted into the water (Snell, n = 1.333) and the mask the lit surface seen from below,
  * with exposure x render.god_rays.underwater. The shafts fade out as the light goes behind the
@@ -27,24 +28,29 @@ typedef struct shaft_locs {
         decay, density, weight, exposure, underwater, inv_size, surface_up, cam_xz, phase;
 } shaft_locs;
 
-enum { SHAFT_MASK = 0, SHAFT_BLUR = 1 }; /* programs, and the framebuffers they draw into */
+/* the programs in the order they run; each reads what the one before drew */
+enum { SHAFT_MASK = 0, SHAFT_MARCH = 1, SHAFT_SMOOTH = 2, SHAFT_NPROGS };
+/* the targets: the shafts (what the tone mapping reads) and the second one */
+enum { SHAFT_OUT = 0, SHAFT_TMP = 1 };
+/* where each program draws: mask and smoothing into the shafts target, the march between */
+static const int SHAFT_DRAWS_INTO[SHAFT_NPROGS] = {SHAFT_OUT, SHAFT_TMP, SHAFT_OUT};
 
 typedef struct shafts_pass {
     const ww_rt *rt;
     GLuint depth_tex, hdr_tex;
-    GLuint prog[2];
-    shaft_locs loc[2];
-    GLuint fbo[2];  /* mask -> the mask target; blur -> the shafts target */
+    GLuint prog[SHAFT_NPROGS];
+    shaft_locs loc[SHAFT_NPROGS];
+    GLuint fbo[2]; /* one a target */
     GLuint tex[2];
 } shafts_pass;
 
 static void shafts_destroy(void *self, const ww_gl *gl) {
     shafts_pass *p = self;
     if (!p) return;
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < SHAFT_NPROGS; i++)
         if (p->prog[i]) gl->DeleteProgram(p->prog[i]);
+    for (int i = 0; i < 2; i++)
         if (p->fbo[i]) gl->DeleteFramebuffers(1, &p->fbo[i]);
-    }
     free(p);
 }
 
@@ -87,9 +93,10 @@ static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass
     p->rt = rt;
     p->hdr_tex = hdr;
     p->depth_tex = depth;
-    /* both read bilinearly (the march; the tone mapping's upsample); a framebuffer each */
-    p->tex[SHAFT_BLUR] = rt->tex[0];
-    p->tex[SHAFT_MASK] = rt->tex[1];
+    /* both read bilinearly (the march, the smoothing, the tone mapping's upsample); a
+     * framebuffer each */
+    p->tex[SHAFT_OUT] = rt->tex[0];
+    p->tex[SHAFT_TMP] = rt->tex[1];
     for (int i = 0; i < 2; i++) {
         ww_result frc = ww_gfx_fbo_single(gl, p->tex[i], d->name, i, &p->fbo[i], err);
         if (frc != WW_OK) {
@@ -101,12 +108,15 @@ static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass
                                        "#define MASK 1\n", &p->prog[SHAFT_MASK], err);
     if (rc == WW_OK)
         rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "shafts.frag.glsl", NULL,
-                            &p->prog[SHAFT_BLUR], err);
+                            &p->prog[SHAFT_MARCH], err);
+    if (rc == WW_OK)
+        rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "shafts.frag.glsl", NULL,
+                                 "#define SMOOTH 1\n", &p->prog[SHAFT_SMOOTH], err);
     if (rc != WW_OK) {
         shafts_destroy(p, gl);
         return rc;
     }
-    for (int i = 0; i < 2; i++) shaft_locs_init(gl, p->prog[i], &p->loc[i]);
+    for (int i = 0; i < SHAFT_NPROGS; i++) shaft_locs_init(gl, p->prog[i], &p->loc[i]);
     *self = p;
     return WW_OK;
 }
@@ -134,7 +144,7 @@ static ww_result shafts_run(void *self, ww_renderer *r, const ww_frame *f, ww_er
     const ww_shafts_desc *sd = &f->sc->render.shafts;
     const ww_state *st = f->st;
     ww_gfx_begin_pass(gl, p->rt);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[SHAFT_BLUR]);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[SHAFT_OUT]);
     gl->ClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     gl->Clear(GL_COLOR_BUFFER_BIT);
 
@@ -181,11 +191,12 @@ static ww_result shafts_run(void *self, ww_renderer *r, const ww_frame *f, ww_er
     gl->BindTexture(GL_TEXTURE_2D, p->hdr_tex);
     gl->ActiveTexture(GL_TEXTURE2);
     gl->BindVertexArray(r->empty_vao);
-    for (int i = SHAFT_MASK; i <= SHAFT_BLUR; i++) {
+    for (int i = 0; i < SHAFT_NPROGS; i++) {
         const shaft_locs *l = &p->loc[i];
-        /* the blur reads the mask: unit 2 holds it only then, never while it is drawn */
-        gl->BindTexture(GL_TEXTURE_2D, i == SHAFT_BLUR ? p->tex[SHAFT_MASK] : 0);
-        gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[i]);
+        /* unit 2 holds what the program before drew (none for the mask), never the target
+         * being drawn */
+        gl->BindTexture(GL_TEXTURE_2D, i > 0 ? p->tex[SHAFT_DRAWS_INTO[i - 1]] : 0);
+        gl->BindFramebuffer(GL_FRAMEBUFFER, p->fbo[SHAFT_DRAWS_INTO[i]]);
         gl->UseProgram(p->prog[i]);
         gl->Uniform1i(l->depth, 0);
         gl->Uniform1i(l->hdr, 1);
