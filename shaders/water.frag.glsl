@@ -311,17 +311,18 @@ float ww_scene_window_depth(vec2 uv) {
     return texelFetch(u_scene_depth_full, min(ivec2(uv * vec2(full)), full - 1), 0).r;
 }
 
-// The prepass's colour at uv, where the prepass is smaller than the frame; df, zf: the window
-// and eye depth there (ww_scene_window_depth). Read bilinear, an outline between a submerged
-// object and what lies behind it steps along the prepass's texels (2-pixel stairs at half
-// size). A window depth is affine across the screen on any plane, so the bilinear mix of the
+// The prepass's colour at uv (with its coverage: from below, what rises above the water over
+// nothing), where the prepass is smaller than the frame; df, zf: the window and eye depth there
+// (ww_scene_window_depth). Read bilinear, an outline between a submerged object and what lies
+// behind it, or between what floats and the sky seen from below, steps along the prepass's
+// texels (2-pixel stairs at half size). A window depth is affine across the screen on any plane, so the bilinear mix of the
 // four texels' depths around uv equals the full-size depth wherever they lie on one face, and
 // misses it where an outline runs between them. There the colour is instead that of the
 // nearest texel on the same side as the full-size depth ("nearest-depth upsampling"), so the
 // outline falls where the frame's own pixels put it; elsewhere it is the bilinear colour, to
 // the bit.
-vec3 ww_refracted_color(vec2 uv, float df, float zf) {
-    vec3 c = texture(u_scene_color, uv).rgb;
+vec4 ww_refracted_color(vec2 uv, float df, float zf) {
+    vec4 c = texture(u_scene_color, uv);
     ivec2 half_ = textureSize(u_scene_depth, 0);
     vec2 t = uv * vec2(half_) - 0.5, fr = fract(t);
     ivec2 lo = clamp(ivec2(floor(t)), ivec2(0), half_ - 1), hi = min(lo + 1, half_ - 1);
@@ -338,7 +339,7 @@ vec3 ww_refracted_color(vec2 uv, float df, float zf) {
     w = (w + 1e-6) * step(dz, vec4(near + SAME_SIDE * spread));
     float wm = max(max(w.x, w.y), max(w.z, w.w));
     ivec2 pick = w.x == wm ? lo : w.y == wm ? p1 : w.z == wm ? p2 : hi;
-    return mix(c, texelFetch(u_scene_color, pick, 0).rgb, edge);
+    return mix(c, texelFetch(u_scene_color, pick, 0), edge);
 }
 #else
 float ww_scene_window_depth(vec2 uv) { return texture(u_scene_depth, uv).r; }
@@ -488,8 +489,16 @@ void main() {
             // the sky by its coverage (the prepass is cleared to nothing there, so its bilinear
             // colour is premultiplied), distorted as the view down through the surface is. It
             // stands where the camera's straight ray meets it, not where the bent one would: a
-            // small shift for what floats, whose parts above the water are near the surface
-            vec4 above = texture(u_scene_color, clamp(uv0 + off, EDGE, 1.0 - EDGE));
+            // small shift for what floats, whose parts above the water are near the surface.
+            // Where the prepass is smaller than the frame, its outline against the sky is put
+            // where the frame's pixels lie by the full-size depth, as from above
+            vec2 uva = clamp(uv0 + off, EDGE, 1.0 - EDGE);
+#if WW_REFRACT_EDGES
+            float da = ww_scene_window_depth(uva); // 1 where nothing rises above the water
+            vec4 above = ww_refracted_color(uva, da, ww_linear_depth(da));
+#else
+            vec4 above = texture(u_scene_color, uva);
+#endif
             air = above.rgb + (1.0 - above.a) * air;
 #endif
             c = mix(air, below, fr);
@@ -546,7 +555,7 @@ void main() {
             ds = dd;
         }
 #if WW_REFRACT_EDGES
-        vec3 seen = ww_refracted_color(uv, ds, zs);
+        vec3 seen = ww_refracted_color(uv, ds, zs).rgb;
 #else
         vec3 seen = texture(u_scene_color, uv).rgb;
 #endif

@@ -440,6 +440,38 @@ TEST_IMAGE(picture_water_what_floats_seen_from_below_through_the_window) {
     cube_frames_free(&cf);
 }
 
+/* the same cube from below, at the half-size prepass the frame is drawn with and at the quarter
+ * size of the preview preset, against a full-size prepass: its part above the water stands
+ * against the sky in Snell's window, and read bilinear, the smaller images drew that outline in
+ * their texels' stairs (393 and 601 pixels more than 32 levels from the full-size one's frame,
+ * of 230,400); upsampled by the full-size depth, what is left (100 and 102) lies along the
+ * waterline, where the part above meets the part below */
+#define WINDOW_OFF_MAX 200 /* pixels more than OUTLINE_OFF_LEVELS from the full-size prepass's */
+TEST_IMAGE(picture_water_window_outline_as_a_full_size_prepass) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_window_full", UP_SCENE);
+    img full = render_frame(scene, 0, "--set \"render.refraction={scale: 1}\"", "pw_window_full");
+    static const char *const scales[2] = {"0.5", "0.25"};
+    for (int k = 0; k < 2 && full.ok; k++) {
+        char args[80], tag[40];
+        snprintf(args, sizeof args, "--set \"render.refraction={scale: %s}\"", scales[k]);
+        snprintf(tag, sizeof tag, "pw_window_%d", k);
+        img part = render_frame(scene, 0, args, tag);
+        if (part.ok) {
+            long off = 0;
+            for (int y = 0; y < H; y++)
+                for (int x = 0; x < W; x++) off += max_diff(&part, &full, x, y) > OUTLINE_OFF_LEVELS;
+            printf("  from below, prepass at %s against full size: %ld px more than %d levels "
+                   "apart\n", scales[k], off, OUTLINE_OFF_LEVELS);
+            ENSURE_MSG(off <= WINDOW_OFF_MAX, "prepass at %s: %ld px more than %d levels from the "
+                       "full-size prepass's frame (at most %d)", scales[k], off,
+                       OUTLINE_OFF_LEVELS, WINDOW_OFF_MAX);
+        }
+        img_free(&part);
+    }
+    img_free(&full);
+}
+
 /* ---- under water: the seabed is seen ----------------------------------------------------- */
 
 /* RMS difference of luminance between pixels d apart (horizontally and vertically) over rows

@@ -7,7 +7,7 @@
  * nothing is cut where the surface dips), is the cut of flat water and of the stencilled
  * shadows' volumes. Smaller than the frame (the plan's depth_full target), it also draws the
  * same geometry's depth alone at the frame's size, which the water reads to put the outlines of
- * what it refracts where the frame's pixels lie.
+ * what it refracts, or from below shows through Snell's window, where the frame's pixels lie.
  * Publishes r->shared.scene_color, scene_depth and scene_depth_full.
  */
 #include <stdlib.h>
@@ -121,9 +121,10 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
         ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, plane);
     }
-    if (p->full_fbo && r->geometry && !f->underwater) { /* from below the water reads none */
+    if (p->full_fbo && r->geometry) {
         /* the same cut geometry's depth alone at the frame's size: no shading, so it costs the
-         * vertices again and a depth write a pixel */
+         * vertices again and a depth write a pixel (from below, it places what rises above the
+         * water against the sky, cleared to the far plane) */
         gl->BindFramebuffer(GL_FRAMEBUFFER, p->full_fbo);
         gl->Viewport(0, 0, p->full_w, p->full_h);
         gl->DepthMask(GL_TRUE);

@@ -692,7 +692,7 @@ ww_result ww_water_draw(ww_water *w, const ww_renderer *r, const ww_frame *f, ww
     int bits = (f->underwater ? WATER_UNDER : 0) |
                (sh->reflection && sh->reflection_tex ? WATER_REFL : 0) |
                (sh->scene_color && sh->scene_depth ? WATER_REFR : 0) |
-               (sh->scene_depth_full && !f->underwater ? WATER_EDGES : 0);
+               (sh->scene_depth_full ? WATER_EDGES : 0);
 
     /* the mesh follows the camera in whole grid steps, so its vertices do not swim */
     double centre[2] = {WW_WATER_SNAP * floor(f->cam_pos[0] / WW_WATER_SNAP + 0.5),
