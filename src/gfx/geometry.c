@@ -590,6 +590,17 @@ static void cut_for(ww_geometry *g, const ww_gl *gl, const gmesh *m) {
     apply_cut(g, gl);
 }
 
+/* whether a horizontal clip plane (camera-relative, kept where >= 0) discards every instance
+ * of m: the prepass from below where nothing rises above the water, the reflection of what lies
+ * under it. Such a draw makes no fragment, so it is skipped and costs no vertices. The margin
+ * keeps a draw whose bound only touches the plane, whatever the rounding of its vertices */
+#define CLIPPED_MARGIN 1e-3f /* m */
+static int clipped_away(const float *clip, const gmesh *m) {
+    if (!clip || clip[0] != 0.0f || clip[2] != 0.0f || clip[1] == 0.0f) return 0;
+    float y = clip[1] > 0.0f ? m->yhi : m->ylo; /* the instances' point the plane keeps most */
+    return clip[1] * y + clip[3] < -CLIPPED_MARGIN * fabsf(clip[1]);
+}
+
 static int is_lit(int kind) {
     return kind == GEOM_LIT || kind == GEOM_LIT_MAP || kind == GEOM_LIT_FISH ||
            kind >= GEOM_SUNLESS;
@@ -1343,12 +1354,13 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         if (s == SLOT_COLUMN || s == SLOT_BUBBLE || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW))
             continue;
         if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
-        if (g->slot[s].ninst <= 0) continue;
+        if (g->slot[s].ninst <= 0 || clipped_away(clip, &g->slot[s])) continue;
         use_lit(g, gl, slot_patterned(s) ? GEOM_LIT_FISH : GEOM_LIT);
         cut_for(g, gl, &g->slot[s]);
         draws += draw_mesh(gl, &g->slot[s]);
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++) {
+        if (clipped_away(clip, &g->obj[i])) continue;
         cut_for(g, gl, &g->obj[i]);
         draws += draw_obj(g, gl, i, mode);
     }

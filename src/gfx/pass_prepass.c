@@ -111,8 +111,11 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         plane[3] = (float)(-(level - p->crest));
     }
     ww_gfx_clear_scene(r, p->rt);
-    if (r->geometry)
+    int drew = 0; /* draws the clip plane left */
+    if (r->geometry) {
         ww_geometry_draw(r->geometry, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
+        drew = ww_geometry_draw_count(r->geometry);
+    }
     /* the shadows seen through the surface from above. From below, the prepass holds what
      * rises above the water (a hull, a cube's top), whose sunlit faces cannot be seen through
      * the surface from under it: the volumes there would cost as much as the main pass's and
@@ -121,7 +124,10 @@ static ww_result prepass_run(void *self, ww_renderer *r, const ww_frame *f, ww_e
         ww_stencil_shadows_apply(r->stencil, r, f, WW_GEOM_PREPASS, (vec4 *)f->view_proj, plane);
         ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, plane);
     }
-    if (p->full_fbo && r->geometry) {
+    /* where the clip plane left nothing to draw (from below, nothing rises above the water),
+     * the full-size depth would be the far plane alone, which places no outline: not drawn,
+     * and the water reads the prepass as it is */
+    if (p->full_fbo && drew > 0) {
         /* the same cut geometry's depth alone at the frame's size: no shading, so it costs the
          * vertices again and a depth write a pixel (from below, it places what rises above the
          * water against the sky, cleared to the far plane) */
