@@ -3,7 +3,7 @@
  * frame) marches from each pixel toward it over an occlusion mask built from the main pass's
  * depth and colour (shafts.frag.glsl). The mask is drawn first, so the march reads one bilinear
  * texel per sample, and the march's jitter is smoothed last: mask into the `shafts` target, the
- * march into `mask`, the smoothing back into `shafts`, which the tone mapping pass adds.
+ * march into `march`, the smoothing back into `shafts`, which the tone mapping pass adds.
  * Above water the light is the sun and the mask the sky around it; under water it is the sun
  * refracted into the water (Snell, n = 1.333) and the mask the lit surface seen from below,
  * with exposure x render.god_rays.underwater. The shafts fade out as the light goes behind the
@@ -87,7 +87,7 @@ static ww_result shafts_create(ww_renderer *r, const ww_scene *sc, const ww_pass
         rt->fmt[1] != WW_FMT_RGBA16F)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
                             "pass %s: needs the main pass's colour and depth and two RGBA16F "
-                            "targets (shafts, mask)", d->name);
+                            "targets (shafts, march)", d->name);
     shafts_pass *p = calloc(1, sizeof *p);
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "shafts pass: out of memory");
     p->rt = rt;

@@ -310,7 +310,9 @@ void ww_plan_build(const ww_scene *sc, int frame_width, int frame_height, ww_pla
         int sw = scaled(width, rd->shafts.scale), sh = scaled(height, rd->shafts.scale);
         add_pass(p, WW_PASS_SHAFTS, "shafts", "radial blur toward the sun over the masked scene");
         add_target(p, "shafts", WW_FMT_RGBA16F, sw, sh);
-        add_target(p, "mask", WW_FMT_RGBA16F, sw, sh); /* post: the occlusion mask, made once */
+        /* post: the march before its smoothing (the occlusion mask is drawn into `shafts`
+         * first, and the smoothing back into it) */
+        add_target(p, "march", WW_FMT_RGBA16F, sw, sh);
     }
     add_pass(p, WW_PASS_TONEMAP, "tonemap",
              sc->tonemap == WW_TONEMAP_ACES ? "HDR -> sRGB8, ACES fit" : "HDR -> sRGB8, 1 - exp(-E c)");
