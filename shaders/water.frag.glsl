@@ -315,12 +315,12 @@ float ww_scene_window_depth(vec2 uv) {
 // nothing), where the prepass is smaller than the frame; df, zf: the window and eye depth there
 // (ww_scene_window_depth). Read bilinear, an outline between a submerged object and what lies
 // behind it, or between what floats and the sky seen from below, steps along the prepass's
-// texels (2-pixel stairs at half size). A window depth is affine across the screen on any plane, so the bilinear mix of the
-// four texels' depths around uv equals the full-size depth wherever they lie on one face, and
-// misses it where an outline runs between them. There the colour is instead that of the
-// nearest texel on the same side as the full-size depth ("nearest-depth upsampling"), so the
-// outline falls where the frame's own pixels put it; elsewhere it is the bilinear colour, to
-// the bit.
+// texels (2-pixel stairs at half size). A window depth is affine across the screen on any
+// plane, so the bilinear mix of the four texels' depths around uv equals the full-size depth
+// wherever they lie on one face, and misses it where an outline runs between them. There the
+// colour is instead that of the nearest texel on the same side as the full-size depth
+// ("nearest-depth upsampling"), so the outline falls where the frame's own pixels put it;
+// elsewhere it is the bilinear colour, to the bit.
 vec4 ww_refracted_color(vec2 uv, float df, float zf) {
     vec4 c = texture(u_scene_color, uv);
     ivec2 half_ = textureSize(u_scene_depth, 0);

@@ -1,9 +1,10 @@
 /* test_picture_light.c - light, sky and glow measured on rendered frames: the chest's glow
  * column (no dark row across it, no sky pass eating it, bounded, dimmed by its key), the light
  * shafts (no row banding under water, no grain from the march's jitter, rays past an occluder
- * above), point lights on the water and emissive models, and the sky (Preetham's colour and brightness gradients, contrast and
- * saturation of the demo, deterministic drifting clouds). Each check is a number measured on the
- * picture against a bound named for what it allows, not a golden.
+ * above), point lights on the water and emissive models, and the sky (Preetham's colour and
+ * brightness gradients, contrast and saturation of the demo, deterministic drifting clouds).
+ * Each check is a number measured on the picture against a bound named for what it allows, not
+ * a golden.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -252,7 +253,8 @@ TEST_IMAGE(light_shafts_no_grain) {
     const char *sc = "scenes/features/shafts_edge.yaml";
     if (!ww_test_render_pic(sc, 0, "640x360", NULL, "grain", &a)) return;
     if (!ww_test_render_pic(sc, 0, "640x360",
-                            "--set render.god_rays.samples=240 --set render.god_rays.decay=0.996983 "
+                            "--set render.god_rays.samples=240 "
+                            "--set render.god_rays.decay=0.996983 "
                             "--set render.god_rays.weight=0.07",
                             "grain_fine", &fine)) {
         ww_image_free(&a.im);

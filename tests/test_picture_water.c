@@ -460,7 +460,8 @@ TEST_IMAGE(picture_water_window_outline_as_a_full_size_prepass) {
         if (part.ok) {
             long off = 0;
             for (int y = 0; y < H; y++)
-                for (int x = 0; x < W; x++) off += max_diff(&part, &full, x, y) > OUTLINE_OFF_LEVELS;
+                for (int x = 0; x < W; x++)
+                    off += max_diff(&part, &full, x, y) > OUTLINE_OFF_LEVELS;
             printf("  from below, prepass at %s against full size: %ld px more than %d levels "
                    "apart\n", scales[k], off, OUTLINE_OFF_LEVELS);
             ENSURE_MSG(off <= WINDOW_OFF_MAX, "prepass at %s: %ld px more than %d levels from the "

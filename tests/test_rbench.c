@@ -345,7 +345,8 @@ TEST_PROC(rbench_bench_render_frame_targets) {
     ENSURE(s != NULL);
     int cpu_rows = 0, rows = 0;
     char *save = NULL;
-    for (char *line = s ? strtok_r(s, "\n", &save) : NULL; line; line = strtok_r(NULL, "\n", &save)) {
+    for (char *line = s ? strtok_r(s, "\n", &save) : NULL; line;
+         line = strtok_r(NULL, "\n", &save)) {
         if (strstr(line, "\"error\":")) continue;
         rows++;
         int cpu = strstr(line, "llvmpipe") != NULL || strstr(line, "softpipe") != NULL;

@@ -326,7 +326,8 @@ ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err) {
                                                        rep.full_world, f.x, f.target};
                 frame_row fr;
                 int has_fr = frame_target(kinds[k].name, base_name(scenes[s]), w, h, &rep, &f, &fr);
-                if (has_fr && nframes < (int)(sizeof frows / sizeof frows[0])) frows[nframes++] = fr;
+                if (has_fr && nframes < (int)(sizeof frows / sizeof frows[0]))
+                    frows[nframes++] = fr;
                 if (o->json) {
                     print_json_row(to, kinds[k].name, base_name(scenes[s]), w, h, &rep, &f,
                                    has_fr ? &fr : NULL, rss);
