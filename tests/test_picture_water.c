@@ -365,34 +365,43 @@ TEST_IMAGE(picture_water_submerged_outline_not_stepped) {
  * pixels more than 32 levels apart, of 230,400); upsampled by the full-size depth, none are */
 #define OUTLINE_OFF_LEVELS 32 /* levels of a pixel's channel a smaller prepass may move */
 #define OUTLINE_OFF_MAX 20    /* pixels moved more than that, at most */
-TEST_IMAGE(picture_water_submerged_outline_as_a_full_size_prepass) {
-    REQUIRE_GL();
-    const char *scene = scene_file("pw_outline_full", OUTLINE_SCENE);
-    img full = render_frame(scene, 0, "--set \"render.refraction={scale: 1}\"", "pw_outline_full");
+
+/* the scene's frame 0 with the prepass at half and at a quarter of the frame, each against the
+ * full-size prepass's: at most `most` pixels more than OUTLINE_OFF_LEVELS apart */
+static void prepass_sizes_against_full(const char *name, const char *yaml, long most) {
+    char tag[40];
+    snprintf(tag, sizeof tag, "%s_full", name);
+    const char *scene = scene_file(tag, yaml);
+    img full = render_frame(scene, 0, "--set \"render.refraction={scale: 1}\"", tag);
     static const char *const scales[2] = {"0.5", "0.25"};
     for (int k = 0; k < 2 && full.ok; k++) {
-        char args[80], tag[40];
+        char args[80];
         snprintf(args, sizeof args, "--set \"render.refraction={scale: %s}\"", scales[k]);
-        snprintf(tag, sizeof tag, "pw_outline_%d", k);
+        snprintf(tag, sizeof tag, "%s_%d", name, k);
         img part = render_frame(scene, 0, args, tag);
         if (part.ok) {
             long off = 0;
-            int most = 0;
+            int largest = 0;
             for (int y = 0; y < H; y++)
                 for (int x = 0; x < W; x++) {
                     int d = max_diff(&part, &full, x, y);
                     off += d > OUTLINE_OFF_LEVELS;
-                    most = d > most ? d : most;
+                    largest = d > largest ? d : largest;
                 }
             printf("  prepass at %s against full size: %ld px more than %d levels apart, "
-                   "largest %d\n", scales[k], off, OUTLINE_OFF_LEVELS, most);
-            ENSURE_MSG(off <= OUTLINE_OFF_MAX, "prepass at %s: %ld px more than %d levels from "
-                       "the full-size prepass's frame (at most %d)", scales[k], off,
-                       OUTLINE_OFF_LEVELS, OUTLINE_OFF_MAX);
+                   "largest %d\n", scales[k], off, OUTLINE_OFF_LEVELS, largest);
+            ENSURE_MSG(off <= most, "prepass at %s: %ld px more than %d levels from the "
+                       "full-size prepass's frame (at most %ld)", scales[k], off,
+                       OUTLINE_OFF_LEVELS, most);
         }
         img_free(&part);
     }
     img_free(&full);
+}
+
+TEST_IMAGE(picture_water_submerged_outline_as_a_full_size_prepass) {
+    REQUIRE_GL();
+    prepass_sizes_against_full("pw_outline", OUTLINE_SCENE, OUTLINE_OFF_MAX);
 }
 
 /* ---- under water: what floats is seen through Snell's window ---------------------------- */
@@ -449,28 +458,7 @@ TEST_IMAGE(picture_water_what_floats_seen_from_below_through_the_window) {
 #define WINDOW_OFF_MAX 200 /* pixels more than OUTLINE_OFF_LEVELS from the full-size prepass's */
 TEST_IMAGE(picture_water_window_outline_as_a_full_size_prepass) {
     REQUIRE_GL();
-    const char *scene = scene_file("pw_window_full", UP_SCENE);
-    img full = render_frame(scene, 0, "--set \"render.refraction={scale: 1}\"", "pw_window_full");
-    static const char *const scales[2] = {"0.5", "0.25"};
-    for (int k = 0; k < 2 && full.ok; k++) {
-        char args[80], tag[40];
-        snprintf(args, sizeof args, "--set \"render.refraction={scale: %s}\"", scales[k]);
-        snprintf(tag, sizeof tag, "pw_window_%d", k);
-        img part = render_frame(scene, 0, args, tag);
-        if (part.ok) {
-            long off = 0;
-            for (int y = 0; y < H; y++)
-                for (int x = 0; x < W; x++)
-                    off += max_diff(&part, &full, x, y) > OUTLINE_OFF_LEVELS;
-            printf("  from below, prepass at %s against full size: %ld px more than %d levels "
-                   "apart\n", scales[k], off, OUTLINE_OFF_LEVELS);
-            ENSURE_MSG(off <= WINDOW_OFF_MAX, "prepass at %s: %ld px more than %d levels from the "
-                       "full-size prepass's frame (at most %d)", scales[k], off,
-                       OUTLINE_OFF_LEVELS, WINDOW_OFF_MAX);
-        }
-        img_free(&part);
-    }
-    img_free(&full);
+    prepass_sizes_against_full("pw_window", UP_SCENE, WINDOW_OFF_MAX);
 }
 
 /* ---- under water: the seabed is seen ----------------------------------------------------- */
