@@ -114,6 +114,7 @@ typedef struct gmesh {
     struct instance *copy; /* casters of stencil shadow volumes: this frame's instances; or NULL */
     float lo[3], hi[3];    /* the mesh's bounding box, mesh units */
     float ylo, yhi;        /* this frame's instances reach these camera-relative heights, m */
+    float xlo, xhi, zlo, zhi; /* ... and these x and z: with ylo, yhi their bounding box */
 } gmesh;
 
 typedef struct instance {
@@ -601,6 +602,26 @@ static int clipped_away(const float *clip, const gmesh *m) {
     return clip[1] * y + clip[3] < -CLIPPED_MARGIN * fabsf(clip[1]);
 }
 
+/* whether m's instances lie wholly beyond one side of the view (left, right, bottom or top of
+ * clip space, x or y past -w or w), their box widened by `margin` m across (a plant's sway):
+ * such a draw makes no fragment either. The near and far planes are not tested: the shadow
+ * volumes' pass clamps depth instead of clipping it */
+static int outside_view(vec4 *vp, const gmesh *m, float margin) {
+    float lo[3] = {m->xlo - margin, m->ylo, m->zlo - margin};
+    float hi[3] = {m->xhi + margin, m->yhi, m->zhi + margin};
+    for (int k = 0; k < 4; k++) {
+        int row = k / 2;
+        float s = (k & 1) ? -1.0f : 1.0f; /* w + x >= 0, w - x >= 0, then y */
+        float d = vp[3][3] + s * vp[3][row], most = d;
+        for (int c = 0; c < 3; c++) {
+            float a = vp[c][3] + s * vp[c][row];
+            most += a > 0.0f ? a * hi[c] : a * lo[c];
+        }
+        if (most < 0.0f) return 1;
+    }
+    return 0;
+}
+
 static int is_lit(int kind) {
     return kind == GEOM_LIT || kind == GEOM_LIT_MAP || kind == GEOM_LIT_FISH ||
            kind >= GEOM_SUNLESS;
@@ -821,19 +842,27 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     WW_ASSERT(n <= m->cap);
     m->ninst = n;
     if (n <= 0) return;
-    /* the heights the instances reach: the mesh's box through each one's matrix (its second
-     * row), the box's z widened by the tail's beat (geometry.vert.glsl bends mesh z by up to
-     * its amplitude) */
-    m->ylo = INFINITY;
-    m->yhi = -INFINITY;
+    /* the box the instances fill: the mesh's box through each one's matrix, row by row, the
+     * box's z widened by the tail's beat (geometry.vert.glsl bends mesh z by up to its
+     * amplitude) */
+    float blo[3] = {INFINITY, INFINITY, INFINITY}, bhi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (int i = 0; i < n; i++) {
-        float beat = fabsf(in[i].extra[1]), ylo, yhi;
+        float beat = fabsf(in[i].extra[1]);
         float lo[3] = {m->lo[0], m->lo[1], m->lo[2] - beat}, hi[3] = {m->hi[0], m->hi[1],
                                                                        m->hi[2] + beat};
-        ww_gfx_box_row(in[i].model, 1, lo, hi, &ylo, &yhi);
-        m->ylo = fminf(m->ylo, ylo);
-        m->yhi = fmaxf(m->yhi, yhi);
+        for (int r = 0; r < 3; r++) {
+            float a, b;
+            ww_gfx_box_row(in[i].model, r, lo, hi, &a, &b);
+            blo[r] = fminf(blo[r], a);
+            bhi[r] = fmaxf(bhi[r], b);
+        }
     }
+    m->xlo = blo[0];
+    m->xhi = bhi[0];
+    m->ylo = blo[1];
+    m->yhi = bhi[1];
+    m->zlo = blo[2];
+    m->zhi = bhi[2];
     if (m->copy) memcpy(m->copy, in, (size_t)n * sizeof *in);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)n * (GLsizeiptr)sizeof *in, in);
@@ -1354,13 +1383,17 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         if (s == SLOT_COLUMN || s == SLOT_BUBBLE || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW))
             continue;
         if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
-        if (g->slot[s].ninst <= 0 || clipped_away(clip, &g->slot[s])) continue;
+        if (g->slot[s].ninst <= 0 || clipped_away(clip, &g->slot[s]) ||
+            outside_view(view_proj, &g->slot[s], 0.0f))
+            continue;
         use_lit(g, gl, slot_patterned(s) ? GEOM_LIT_FISH : GEOM_LIT);
         cut_for(g, gl, &g->slot[s]);
         draws += draw_mesh(gl, &g->slot[s]);
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++) {
-        if (clipped_away(clip, &g->obj[i])) continue;
+        if (clipped_away(clip, &g->obj[i]) ||
+            outside_view(view_proj, &g->obj[i], g->sway ? fabsf(g->obj_sway[i][0]) : 0.0f))
+            continue;
         cut_for(g, gl, &g->obj[i]);
         draws += draw_obj(g, gl, i, mode);
     }
