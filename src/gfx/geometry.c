@@ -113,8 +113,7 @@ typedef struct gmesh {
     int ninst, cap;
     struct instance *copy; /* casters of stencil shadow volumes: this frame's instances; or NULL */
     float lo[3], hi[3];    /* the mesh's bounding box, mesh units */
-    float ylo, yhi;        /* this frame's instances reach these camera-relative heights, m */
-    float xlo, xhi, zlo, zhi; /* ... and these x and z: with ylo, yhi their bounding box */
+    float blo[3], bhi[3];  /* this frame's instances' bounding box, camera-relative, m */
 } gmesh;
 
 typedef struct instance {
@@ -586,7 +585,7 @@ static const geom_prog *use(ww_geometry *g, const ww_gl *gl, int kind) {
  * lie wholly on the kept side of */
 static void cut_for(ww_geometry *g, const ww_gl *gl, const gmesh *m) {
     float reach = (float)g->crest + CUT_MARGIN;
-    int near = m->yhi >= g->cut_level - reach && m->ylo <= g->cut_level + reach;
+    int near = m->bhi[1] >= g->cut_level - reach && m->blo[1] <= g->cut_level + reach;
     g->cut_now = near ? g->cut_side : 0.0f;
     apply_cut(g, gl);
 }
@@ -598,7 +597,7 @@ static void cut_for(ww_geometry *g, const ww_gl *gl, const gmesh *m) {
 #define CLIPPED_MARGIN 1e-3f /* m */
 static int clipped_away(const float *clip, const gmesh *m) {
     if (!clip || clip[0] != 0.0f || clip[2] != 0.0f || clip[1] == 0.0f) return 0;
-    float y = clip[1] > 0.0f ? m->yhi : m->ylo; /* the instances' point the plane keeps most */
+    float y = clip[1] > 0.0f ? m->bhi[1] : m->blo[1]; /* the point the plane keeps most */
     return clip[1] * y + clip[3] < -CLIPPED_MARGIN * fabsf(clip[1]);
 }
 
@@ -607,8 +606,8 @@ static int clipped_away(const float *clip, const gmesh *m) {
  * such a draw makes no fragment either. The near and far planes are not tested: the shadow
  * volumes' pass clamps depth instead of clipping it */
 static int outside_view(vec4 *vp, const gmesh *m, float margin) {
-    float lo[3] = {m->xlo - margin, m->ylo, m->zlo - margin};
-    float hi[3] = {m->xhi + margin, m->yhi, m->zhi + margin};
+    float lo[3] = {m->blo[0] - margin, m->blo[1], m->blo[2] - margin};
+    float hi[3] = {m->bhi[0] + margin, m->bhi[1], m->bhi[2] + margin};
     for (int k = 0; k < 4; k++) {
         int row = k / 2;
         float s = (k & 1) ? -1.0f : 1.0f; /* w + x >= 0, w - x >= 0, then y */
@@ -845,7 +844,10 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
     /* the box the instances fill: the mesh's box through each one's matrix, row by row, the
      * box's z widened by the tail's beat (geometry.vert.glsl bends mesh z by up to its
      * amplitude) */
-    float blo[3] = {INFINITY, INFINITY, INFINITY}, bhi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int r = 0; r < 3; r++) {
+        m->blo[r] = INFINITY;
+        m->bhi[r] = -INFINITY;
+    }
     for (int i = 0; i < n; i++) {
         float beat = fabsf(in[i].extra[1]);
         float lo[3] = {m->lo[0], m->lo[1], m->lo[2] - beat}, hi[3] = {m->hi[0], m->hi[1],
@@ -853,16 +855,10 @@ static void slot_upload(const ww_gl *gl, gmesh *m, const instance *in, int n) {
         for (int r = 0; r < 3; r++) {
             float a, b;
             ww_gfx_box_row(in[i].model, r, lo, hi, &a, &b);
-            blo[r] = fminf(blo[r], a);
-            bhi[r] = fmaxf(bhi[r], b);
+            m->blo[r] = fminf(m->blo[r], a);
+            m->bhi[r] = fmaxf(m->bhi[r], b);
         }
     }
-    m->xlo = blo[0];
-    m->xhi = bhi[0];
-    m->ylo = blo[1];
-    m->yhi = bhi[1];
-    m->zlo = blo[2];
-    m->zhi = bhi[2];
     if (m->copy) memcpy(m->copy, in, (size_t)n * sizeof *in);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
     gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)n * (GLsizeiptr)sizeof *in, in);
