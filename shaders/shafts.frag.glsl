@@ -16,6 +16,11 @@
 // Seed 000 marches the whole way to the light; here the march is at most MARCH_MAX of the
 // screen, so a light far off screen (the refracted sun seen while looking level under water)
 // still gives parallel shafts coming down instead of a few samples spread over the screen.
+// The mask is known on screen only. A march that leaves the screen (toward a light beyond it)
+// counts the samples beyond as the mean of its samples on it: the sum is scaled by its whole
+// weight over its weight on screen, at most OFF_SCREEN_MAX times. Counting nothing there faded
+// the shafts toward the edge on the light's side (under water, looking level, the top rows had
+// a tenth of the light of the rows below), so they seemed to start in mid-water.
 
 uniform sampler2D u_mask;   // the occlusion mask at this pass's size (bilinear), MASK undefined
 uniform sampler2D u_depth;  // main pass depth (nearest)
@@ -35,6 +40,9 @@ uniform vec3 u_phase;       // the pattern's three phases at this time, rad
 out vec4 o_color;
 
 const float MARCH_MAX = 0.75;       // longest march, in screen widths
+const float OFF_SCREEN_MAX = 8.0;   // most a march's sum is scaled for its samples off screen:
+                                    // near the edge the few samples left on screen are the raw
+                                    // mask, and more than this draws its blobs along the edge
 const float SUN_CORE = 400.0;       // glow exp((cos - 1) k): k = 2 / sigma^2, sigma 4 deg
 const float SUN_HALO = 40.0;        //   and a halo of sigma 13 deg
 const float HALO_SHARE = 0.15;
@@ -88,10 +96,9 @@ void main() {
     o_color = vec4(0.25 * s, 1.0);
 }
 #else
-// second step: the march over the mask, one bilinear fetch per sample, nothing off screen
-vec3 masked(vec2 uv) {
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return vec3(0.0);
-    return texture(u_mask, uv).rgb;
+// second step: the march over the mask, one bilinear fetch per sample; 1 where uv is on screen
+float on_screen(vec2 uv) {
+    return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) ? 1.0 : 0.0;
 }
 
 // interleaved gradient noise (Jimenez, "Next Generation Post Processing in Call of Duty:
@@ -112,13 +119,20 @@ void main() {
     // weights follow the jittered distance so the mean is unchanged.
     float j = ign(gl_FragCoord.xy);
     uv -= delta * j;
-    vec3 sum = vec3(0.0);
-    float w = u_weight * pow(u_decay, j);
-    for (int i = 0; i < u_samples; i++) {
-        sum += w * masked(uv);
+    // the first sample is taken on screen: the jitter can put it past the edge, and the rows
+    // along the edge would then have none there at all
+    float w = u_weight * pow(u_decay, j), w_on = w, w_all = w;
+    vec3 sum = w * texture(u_mask, clamp(uv, vec2(0.0), vec2(1.0))).rgb;
+    uv -= delta;
+    w *= u_decay;
+    for (int i = 1; i < u_samples; i++) {
+        float on = on_screen(uv);
+        sum += (w * on) * texture(u_mask, uv).rgb;
+        w_on += w * on;
+        w_all += w;
         uv -= delta;
         w *= u_decay;
     }
-    o_color = vec4(u_exposure * sum, 1.0);
+    o_color = vec4(u_exposure * sum * min(w_all / max(w_on, 1e-6), OFF_SCREEN_MAX), 1.0);
 }
 #endif

@@ -273,6 +273,45 @@ TEST_IMAGE(light_shafts_no_grain) {
     ww_image_free(&fine.im);
 }
 
+/* scenes/features/shafts_level.yaml at 640x360: under water looking level, the refracted sun
+ * high above the frame, so every march toward it leaves the frame through its top edge. The
+ * shafts' own light (on minus off, 8-bit luma) in the top 5% of the rows against the rows 30-45%
+ * of the way down: the shafts come down from the surface, so the top rows hold as much light as
+ * those below them. A march that counted nothing off screen left the top rows a fifth of it, and
+ * the shafts seemed to start in mid-water */
+#define SHAFT_TOP_SHARE_MIN 0.6 /* top rows' shaft light over the middle rows': 0.97 with the
+                                 * samples off screen counted as the mean on screen; 0.19 when
+                                 * they counted nothing */
+
+/* mean of on minus off in 8-bit luma over rows [y0, y1) */
+static double rows_added_light(const pic *on, const pic *off, int y0, int y1) {
+    double s = 0.0;
+    for (int y = y0; y < y1; y++)
+        for (int x = 0; x < on->w; x++)
+            s += ww_test_pic_luma(on, x, y) - ww_test_pic_luma(off, x, y);
+    return s / ((double)(y1 - y0) * on->w);
+}
+
+TEST_IMAGE(light_shafts_reach_the_top_edge) {
+    REQUIRE_GL();
+    pic on, off;
+    const char *sc = "scenes/features/shafts_level.yaml";
+    if (!ww_test_render_pic(sc, 0, "640x360", NULL, "level_on", &on)) return;
+    if (!ww_test_render_pic(sc, 0, "640x360", "--set render.god_rays=false", "level_off",
+                            &off)) {
+        ww_image_free(&on.im);
+        return;
+    }
+    double top = rows_added_light(&on, &off, 0, on.h / 20);
+    double mid = rows_added_light(&on, &off, on.h * 30 / 100, on.h * 45 / 100);
+    fprintf(stderr, "    shafts' light: top rows %.2f, middle rows %.2f levels\n", top, mid);
+    ENSURE_MSG(mid > 1.0, "no shafts in the middle rows (%.2f levels)", mid);
+    ENSURE_MSG(top >= SHAFT_TOP_SHARE_MIN * mid, "top rows %.2f < %g x the middle rows' %.2f",
+               top, SHAFT_TOP_SHARE_MIN, mid);
+    ww_image_free(&on.im);
+    ww_image_free(&off.im);
+}
+
 /* scenes/features/shafts_above.yaml at its 640x360: the sun at the centre of the frame, half
  * behind a sign on a pole. The shafts' own light (on minus off) on a ring of radii 140..176 px
  * around the sun over the sky: a glow is much the same at every angle, rays past the sign are
