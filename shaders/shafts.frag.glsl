@@ -96,10 +96,7 @@ void main() {
     o_color = vec4(0.25 * s, 1.0);
 }
 #else
-// second step: the march over the mask, one bilinear fetch per sample; 1 where uv is on screen
-float on_screen(vec2 uv) {
-    return all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))) ? 1.0 : 0.0;
-}
+// second step: the march over the mask, one bilinear fetch per sample
 
 // interleaved gradient noise (Jimenez, "Next Generation Post Processing in Call of Duty:
 // Advanced Warfare", SIGGRAPH 2014): a per-pixel value in [0, 1) whose neighbours differ, so
@@ -121,18 +118,25 @@ void main() {
     uv -= delta * j;
     // the first sample is taken on screen: the jitter can put it past the edge, and the rows
     // along the edge would then have none there at all
-    float w = u_weight * pow(u_decay, j), w_on = w, w_all = w;
+    float w = u_weight * pow(u_decay, j), w_on = w;
     vec3 sum = w * texture(u_mask, clamp(uv, vec2(0.0), vec2(1.0))).rgb;
     uv -= delta;
     w *= u_decay;
-    for (int i = 1; i < u_samples; i++) {
-        float on = on_screen(uv);
-        sum += (w * on) * texture(u_mask, uv).rgb;
-        w_on += w * on;
-        w_all += w;
+    // the rest run on screen for a count of steps (the screen is convex: once off, a march
+    // stays off), then leave it; the weight they would have had beyond is summed in closed form
+    vec2 room = mix(vec2(1.0) - uv, uv, step(0.0, delta)) / abs(delta);
+    vec2 fits = mix(floor(room) + 1.0, vec2(1e9), equal(delta, vec2(0.0)));
+    fits = mix(fits, vec2(0.0), lessThan(room, vec2(0.0)));
+    int n = u_samples - 1, m = int(min(float(n), min(fits.x, fits.y)));
+    for (int i = 0; i < m; i++) {
+        sum += w * texture(u_mask, uv).rgb;
+        w_on += w;
         uv -= delta;
         w *= u_decay;
     }
+    float r = float(n - m); // steps past the edge: their weights sum to w (1 - decay^r) / (1 - decay)
+    float tail = r > 0.0 ? (u_decay < 1.0 ? (1.0 - pow(u_decay, r)) / (1.0 - u_decay) : r) : 0.0;
+    float w_all = w_on + w * tail;
     o_color = vec4(u_exposure * sum * min(w_all / max(w_on, 1e-6), OFF_SCREEN_MAX), 1.0);
 }
 #endif
