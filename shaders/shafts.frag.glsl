@@ -134,7 +134,8 @@ void main() {
         uv -= delta;
         w *= u_decay;
     }
-    float r = float(n - m); // steps past the edge: their weights sum to w (1 - decay^r) / (1 - decay)
+    // the r steps past the edge: their weights sum to w (1 - decay^r) / (1 - decay)
+    float r = float(n - m);
     float tail = r > 0.0 ? (u_decay < 1.0 ? (1.0 - pow(u_decay, r)) / (1.0 - u_decay) : r) : 0.0;
     float w_all = w_on + w * tail;
     o_color = vec4(u_exposure * sum * min(w_all / max(w_on, 1e-6), OFF_SCREEN_MAX), 1.0);
