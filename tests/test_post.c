@@ -365,6 +365,85 @@ done:
     ww_image_free(&b.im);
 }
 
+/* the night sky of scenes/minimal.yaml at 640x360: a gradient of about a level every 16 rows.
+ * Rounded to 8 bits it lies in flat bands a level apart; dithered, it follows the gradient. The
+ * banding is the RMS distance of the sky's profile from a smooth curve: the means of blocks of
+ * 8 rows (the dither's period) over the middle 64 columns and the top 30% of the rows, in
+ * levels of the sky's strongest channel, against the cubic fitted to them by least squares */
+#define BAND_DITHERED_MAX 0.08 /* levels RMS: dithered, 0.024 */
+#define BAND_ROUNDED_MIN 0.12  /* and rounded, 0.20: a band's flat top and its step */
+
+/* the least-squares polynomial of degree 3 through (x_i, y_i), i < n, evaluated at every x_i
+ * (normal equations on x scaled to [-1, 1], solved by Gaussian elimination) */
+static void cubic_fit(const double *y, int n, double *fit) {
+    double a[4][5] = {{0.0}};
+    for (int i = 0; i < n; i++) {
+        double x = n > 1 ? 2.0 * i / (n - 1) - 1.0 : 0.0, p[4] = {1.0, x, x * x, x * x * x};
+        for (int r = 0; r < 4; r++) {
+            for (int c = 0; c < 4; c++) a[r][c] += p[r] * p[c];
+            a[r][4] += p[r] * y[i];
+        }
+    }
+    for (int k = 0; k < 4; k++)
+        for (int r = k + 1; r < 4; r++) {
+            double m = a[r][k] / a[k][k];
+            for (int c = k; c < 5; c++) a[r][c] -= m * a[k][c];
+        }
+    double w[4];
+    for (int k = 3; k >= 0; k--) {
+        w[k] = a[k][4];
+        for (int c = k + 1; c < 4; c++) w[k] -= a[k][c] * w[c];
+        w[k] /= a[k][k];
+    }
+    for (int i = 0; i < n; i++) {
+        double x = n > 1 ? 2.0 * i / (n - 1) - 1.0 : 0.0;
+        fit[i] = w[0] + x * (w[1] + x * (w[2] + x * w[3]));
+    }
+}
+
+static double sky_banding(const pic *p) {
+    enum { COLS = 64, BLOCK = 8, MAX_BLOCKS = 64 };
+    int x0 = p->w / 2 - COLS / 2, n = p->h * 3 / 10 / BLOCK;
+    n = n < MAX_BLOCKS ? n : MAX_BLOCKS;
+    double sum[3] = {0.0, 0.0, 0.0}, prof[MAX_BLOCKS], fit[MAX_BLOCKS], e = 0.0;
+    for (int y = 0; y < n * BLOCK; y++)
+        for (int x = x0; x < x0 + COLS; x++)
+            for (int c = 0; c < 3; c++) sum[c] += ww_test_pixel(&p->im, x, y)[c];
+    int ch = sum[2] >= sum[1] ? (sum[2] >= sum[0] ? 2 : 0) : (sum[1] >= sum[0] ? 1 : 0);
+    for (int b = 0; b < n; b++) {
+        double m = 0.0;
+        for (int y = b * BLOCK; y < (b + 1) * BLOCK; y++)
+            for (int x = x0; x < x0 + COLS; x++) m += ww_test_pixel(&p->im, x, y)[ch];
+        prof[b] = m / (BLOCK * COLS);
+    }
+    cubic_fit(prof, n, fit);
+    for (int b = 0; b < n; b++) e += (prof[b] - fit[b]) * (prof[b] - fit[b]);
+    return n > 0 ? sqrt(e / n) : 0.0;
+}
+
+TEST_IMAGE(post_dither_no_bands_in_the_night_sky) {
+    REQUIRE_GL();
+    const char *sc = "scenes/minimal.yaml";
+    pic on, off;
+    if (!ww_test_render_pic(sc, 0, "640x360", "--set sky.time_of_day=23", "dither_on", &on))
+        return;
+    if (!ww_test_render_pic(sc, 0, "640x360",
+                            "--set sky.time_of_day=23 --set render.tonemap.dither=false",
+                            "dither_off", &off)) {
+        ww_image_free(&on.im);
+        return;
+    }
+    double d = sky_banding(&on), r = sky_banding(&off);
+    fprintf(stderr, "    the sky's banding: dithered %.3f, rounded %.3f levels RMS\n", d, r);
+    ENSURE_MSG(r >= BAND_ROUNDED_MIN, "no bands to take away without the dither (%.3f)", r);
+    ENSURE_MSG(d <= BAND_DITHERED_MAX, "banding %.3f > %g levels RMS", d, BAND_DITHERED_MAX);
+    int most = 0;
+    ww_test_pic_psnr(&on, &off, &most);
+    ENSURE_MSG(most <= 1, "the dither moved a pixel by %d levels", most);
+    ww_image_free(&on.im);
+    ww_image_free(&off.im);
+}
+
 /* render.scale 0.5 at 320x180: the frame drawn at 160x90 (the same pixels as a 160x90 frame),
  * then scaled up bilinearly between texel centres; the HUD drawn after it, at 320x180; --alpha
  * read from the smaller depth keeps the full-size frame's coverage but for the rows at an edge */

@@ -2,8 +2,9 @@
  * (pass_bloom.c's `ping`, times render.bloom.strength) and the light shafts (pass_shafts.c) when
  * those passes exist, applies exposure, the scene's tone curve (exp or ACES) and gamma, and
  * writes RGBA8 with alpha 1, or the luma FXAA reads when the FXAA pass follows
- * (tonemap.frag.glsl). The smaller inputs are upsampled bilinearly. Which inputs there are, the
- * curve and the alpha are #defines of the program (llvmpipe would run every arm per pixel).
+ * (tonemap.frag.glsl), dithered before the 8-bit target rounds it (render.tonemap.dither).
+ * The smaller inputs are upsampled bilinearly. Which inputs there are, the curve, the dither
+ * and the alpha are #defines of the program (llvmpipe would run every arm per pixel).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -49,11 +50,12 @@ static ww_result tonemap_create(ww_renderer *r, const ww_scene *sc, const ww_pas
     p->bloom_tex = bloom ? bloom->tex[0] : 0; /* the blur ends in ping */
     p->shafts_tex = shafts ? shafts->tex[0] : 0;
     /* alpha carries the luma FXAA reads when the FXAA pass follows */
-    char defs[160];
+    char defs[192];
     snprintf(defs, sizeof defs,
-             "#define WW_BLOOM %d\n#define WW_SHAFTS %d\n#define WW_ACES %d\n#define WW_LUMA_ALPHA %d\n",
+             "#define WW_BLOOM %d\n#define WW_SHAFTS %d\n#define WW_ACES %d\n"
+             "#define WW_LUMA_ALPHA %d\n#define WW_DITHER %d\n",
              p->bloom_tex != 0, p->shafts_tex != 0, sc->tonemap == WW_TONEMAP_ACES,
-             sc->render.fxaa != 0);
+             sc->render.fxaa != 0, sc->dither != 0);
     ww_result rc = ww_gfx_program_defs(r->gl, "fullscreen.vert.glsl", "tonemap.frag.glsl", NULL,
                                        defs, &p->prog, err);
     if (rc != WW_OK) {

@@ -1055,6 +1055,7 @@ void ww_scene_defaults(ww_scene *sc) {
     sc->exposure = 1.0;
     sc->gamma = 2.2;
     sc->tonemap = WW_TONEMAP_ACES; /* keeps colour and contrast in the highlights */
+    sc->dither = 1;                /* gradients darker than a few levels a band do not band */
     sc->time_of_day = 16.5;
     sc->day_length = 0.0;
     sc->sun_max_elevation = ww_m_rad(60.0);

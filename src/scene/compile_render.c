@@ -231,7 +231,7 @@ ww_result wwc_render(ctx *c, const section *top) {
     static const char *const keys[] = {"size", "quality", "tonemap", "shadows", "refraction",
                                        "reflection", "bloom", "god_rays", "fxaa", "msaa", "grid",
                                        "scale", "hud", "seabed", NULL};
-    static const char *const tonemap_keys[] = {"operator", "exposure", "gamma", NULL};
+    static const char *const tonemap_keys[] = {"operator", "exposure", "gamma", "dither", NULL};
     static const char *const reflection_keys[] = {"on", "scale", NULL};
     static const char *const refraction_keys[] = {"on", "scale", NULL};
     static const char *const bloom_keys[] = {"on", "threshold", "strength", "passes", "scale",
@@ -257,6 +257,7 @@ ww_result wwc_render(ctx *c, const section *top) {
     sc->tonemap = (ww_tonemap_op)op;
     TRY(wwc_get_number(c, &tm, "exposure", &R_EXPOSURE, OPTIONAL, &sc->exposure));
     TRY(wwc_get_number(c, &tm, "gamma", &R_GAMMA, OPTIONAL, &sc->gamma));
+    TRY(wwc_get_word(c, &tm, "dither", BOOL_WORDS, &sc->dither));
 
     TRY(compile_shadows(c, &s, &d->shadows));
     TRY(get_feature(c, &s, "refraction", refraction_keys, &d->refraction, &f));
