@@ -219,7 +219,7 @@ typedef struct ww_scene {
     double exposure;           /* tone mapping exposure E */
     double gamma;              /* display gamma */
     ww_tonemap_op tonemap;
-    int dither;                /* triangular noise of +-1 level before the 8-bit rounding */
+    int dither;                /* an ordered dither of one level before the 8-bit rounding */
 
     /* sky */
     double time_of_day;        /* hours at start, 0..24 */

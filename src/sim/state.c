@@ -3,13 +3,12 @@
  */
 #include "sim/state.h"
 
-#include "core/lanes.h"
-
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/hash.h"
+#include "core/lanes.h"
 #include "core/numfmt.h"
 
 /* bytes of one field, rounded to 16 so every array starts aligned */
