@@ -283,6 +283,20 @@ TEST_IMAGE(light_shafts_no_grain) {
                                  * samples off screen counted as the mean on screen; 0.19 when
                                  * they counted nothing */
 
+/* scene at 640x360 with its light shafts (tag_on) and without them (tag_off); on failure
+ * nothing is left to free */
+static int render_shafts_on_off(const char *scene, const char *tag, pic *on, pic *off) {
+    char a[64], b[64];
+    snprintf(a, sizeof a, "%s_on", tag);
+    snprintf(b, sizeof b, "%s_off", tag);
+    if (!ww_test_render_pic(scene, 0, "640x360", NULL, a, on)) return 0;
+    if (!ww_test_render_pic(scene, 0, "640x360", "--set render.god_rays=false", b, off)) {
+        ww_image_free(&on->im);
+        return 0;
+    }
+    return 1;
+}
+
 /* mean of on minus off in 8-bit luma over rows [y0, y1) */
 static double rows_added_light(const pic *on, const pic *off, int y0, int y1) {
     double s = 0.0;
@@ -295,13 +309,7 @@ static double rows_added_light(const pic *on, const pic *off, int y0, int y1) {
 TEST_IMAGE(light_shafts_reach_the_top_edge) {
     REQUIRE_GL();
     pic on, off;
-    const char *sc = "scenes/features/shafts_level.yaml";
-    if (!ww_test_render_pic(sc, 0, "640x360", NULL, "level_on", &on)) return;
-    if (!ww_test_render_pic(sc, 0, "640x360", "--set render.god_rays=false", "level_off",
-                            &off)) {
-        ww_image_free(&on.im);
-        return;
-    }
+    if (!render_shafts_on_off("scenes/features/shafts_level.yaml", "level", &on, &off)) return;
     double top = rows_added_light(&on, &off, 0, on.h / 20);
     double mid = rows_added_light(&on, &off, on.h * 30 / 100, on.h * 45 / 100);
     fprintf(stderr, "    shafts' light: top rows %.2f, middle rows %.2f levels\n", top, mid);
@@ -324,10 +332,7 @@ TEST_IMAGE(light_shafts_reach_the_top_edge) {
 TEST_IMAGE(light_shafts_rays_past_occluder) {
     REQUIRE_GL();
     pic on, off;
-    const char *sc = "scenes/features/shafts_above.yaml";
-    if (!ww_test_render_pic(sc, 0, "640x360", NULL, "streak_on", &on)) return;
-    if (!ww_test_render_pic(sc, 0, "640x360", "--set render.god_rays=false", "streak_off",
-                            &off)) return;
+    if (!render_shafts_on_off("scenes/features/shafts_above.yaml", "streak", &on, &off)) return;
     double lo = 1e9, hi = -1e9, cx = 0.5 * on.w, cy = 0.5 * on.h;
     for (int k = 0; k < 36; k++) {
         double th = WW_TEST_PI * (1.0 + k / 36.0), s = 0.0; /* the upper half, y down */
