@@ -19,7 +19,11 @@
 #include "gfx/render_impl.h"
 #include "sim/floaters.h"
 
-#define SEABED_CELLS 64      /* grid cells per side */
+/* grid cells per side. Every attribute is linear across the plane, so the cells only need to keep
+ * the interpolation's rounding small; 100 m cells do. Seen from a few metres up, a fine grid's
+ * far rows are thinner than a pixel, and llvmpipe shades a block of pixels once for every
+ * triangle crossing it: 64 cells cost the lake's frame 9% more for the same picture. */
+#define SEABED_CELLS 8
 #define SEABED_HALF 400.0    /* half its side, m (snapped to the camera) */
 #define SEABED_SNAP 16.0     /* the plane moves on this grid, m */
 #define CUT_MARGIN 0.05f     /* m beyond the crest a draw still takes the cut at the surface */
