@@ -32,9 +32,19 @@ typedef struct blob {
     size_t n;
 } blob;
 
-enum { SET_EMPTY, SET_ONE, SET_RUN, SET_OVERLAP, SET_RANDOM, SET_RAMP, SET_FAR, SET_COUNT };
+enum { SET_EMPTY, SET_ONE, SET_RUN, SET_OVERLAP, SET_RANDOM, SET_RAMP, SET_FAR, SET_CODES, SET_COUNT };
 static const char *SET_NAMES[SET_COUNT] = {"empty", "1 byte", "long run", "distances 1..9",
-                                           "random", "ramp", "distance 32768"};
+                                           "random", "ramp", "distance 32768",
+                                           "every length, distances at both ends of every code"};
+
+/* the first and last distance of each of deflate's 30 distance codes (RFC 1951 3.2.5) */
+static const int CODE_ENDS[] = {1,     2,     3,     4,     5,     6,     7,     8,     9,
+                                12,    13,    16,    17,    24,    25,    32,    33,    48,
+                                49,    64,    65,    96,    97,    128,   129,   192,   193,
+                                256,   257,   384,   385,   512,   513,   768,   769,   1024,
+                                1025,  1536,  1537,  2048,  2049,  3072,  3073,  4096,  4097,
+                                6144,  6145,  8192,  8193,  12288, 12289, 16384, 16385, 24576,
+                                24577, 32768};
 
 static blob make_set(int which) {
     ww_rng r;
@@ -61,6 +71,15 @@ static blob make_set(int which) {
         break;
     case SET_RAMP:
         for (; b.n < 150000; b.n++) b.p[b.n] = (unsigned char)(b.n * 7 / 5);
+        break;
+    case SET_CODES: /* 32 KiB of random bytes, then copies of every length from 3 to 258, each
+                     * from a distance at one end of a distance code, each after a random byte */
+        for (; b.n < 32768; b.n++) b.p[b.n] = (unsigned char)ww_rng_u32(&r);
+        for (int len = 3, k = 0; len <= 258; len++, k++) {
+            size_t dist = (size_t)CODE_ENDS[k % (int)(sizeof CODE_ENDS / sizeof *CODE_ENDS)];
+            for (int i = 0; i < len; i++, b.n++) b.p[b.n] = b.p[b.n - dist];
+            b.p[b.n++] = (unsigned char)ww_rng_u32(&r);
+        }
         break;
     default: /* SET_FAR: 400 random bytes, 32368 others, the first 400 again */
         for (; b.n < 32768; b.n++) b.p[b.n] = (unsigned char)ww_rng_u32(&r);

@@ -22,17 +22,28 @@ typedef struct bits {
     unsigned char *out;
     size_t n;
     uint64_t acc;  /* pending bits, least significant first */
-    int count;
+    int count;     /* below 32 between calls */
 } bits;
 
+/* up to 32 bits: the pending ones leave four bytes at a time (the output keeps 4 bytes of slack) */
 static void put(bits *b, uint32_t value, int count) {
     b->acc |= (uint64_t)value << b->count;
     b->count += count;
-    while (b->count >= 8) {
-        b->out[b->n++] = (unsigned char)b->acc;
-        b->acc >>= 8;
-        b->count -= 8;
+    if (b->count >= 32) {
+        uint32_t w = (uint32_t)b->acc;
+        unsigned char le[4] = {(unsigned char)w, (unsigned char)(w >> 8), (unsigned char)(w >> 16),
+                               (unsigned char)(w >> 24)};
+        memcpy(b->out + b->n, le, 4);
+        b->n += 4;
+        b->acc >>= 32;
+        b->count -= 32;
     }
+}
+
+/* the pending bits to whole bytes, the last one zero-padded */
+static void put_flush(bits *b) {
+    for (; b->count > 0; b->count -= 8, b->acc >>= 8) b->out[b->n++] = (unsigned char)b->acc;
+    b->count = 0;
 }
 
 /* Huffman codes go most significant bit first: reversed into the least-significant-first stream */
@@ -42,26 +53,49 @@ static uint32_t reverse(uint32_t code, int count) {
     return r;
 }
 
-/* the fixed literal/length code of symbol s (RFC 1951 3.2.6) */
-static void put_symbol(bits *b, int s) {
-    if (s < 144)
-        put(b, reverse(0x30u + (uint32_t)s, 8), 8);
-    else if (s < 256)
-        put(b, reverse(0x190u + (uint32_t)(s - 144), 9), 9);
-    else if (s < 280)
-        put(b, reverse((uint32_t)(s - 256), 7), 7);
-    else
-        put(b, reverse(0xC0u + (uint32_t)(s - 280), 8), 8);
+/* the fixed codes (RFC 1951 3.2.6), reversed once a stream rather than bit by bit per symbol:
+ * the literal/length code of each of its 288 symbols with its length, and the 5-bit distance
+ * codes; with the length code of each match length and the distance code of each distance
+ * (distances up to 256 one by one, longer ones by 128s, where every code's range starts on a
+ * multiple of 128, as in zlib's trees.c), instead of a search of the bases per match */
+typedef struct codes {
+    uint16_t sym[288];
+    uint8_t sym_bits[288];
+    uint8_t dist[30];
+    uint8_t len_code[MAX_MATCH + 1];
+    uint8_t dist_code[512];
+} codes;
+
+static void codes_make(codes *c) {
+    for (int s = 0; s < 288; s++) {
+        uint32_t code = s < 144 ? 0x30u + (uint32_t)s
+                        : s < 256 ? 0x190u + (uint32_t)(s - 144)
+                        : s < 280 ? (uint32_t)(s - 256)
+                                  : 0xC0u + (uint32_t)(s - 280);
+        int n = s < 144 ? 8 : s < 256 ? 9 : s < 280 ? 7 : 8;
+        c->sym[s] = (uint16_t)reverse(code, n);
+        c->sym_bits[s] = (uint8_t)n;
+    }
+    for (int d = 0; d < 30; d++) c->dist[d] = (uint8_t)reverse((uint32_t)d, 5);
+    for (int len = 0, l = 0; len <= MAX_MATCH; len++) {
+        while (l < 28 && LEN_BASE[l + 1] <= len) l++;
+        c->len_code[len] = (uint8_t)l;
+    }
+    for (int k = 0, d = 0; k < 512; k++) {
+        int dist = k < 256 ? k + 1 : ((k - 256) << 7) + 1; /* the first distance of the slot */
+        while (d < 29 && DIST_BASE[d + 1] <= dist) d++;
+        c->dist_code[k] = (uint8_t)d;
+    }
 }
 
-static void put_match(bits *b, int len, int dist) {
-    int l = 28;
-    while (LEN_BASE[l] > len) l--;
-    put_symbol(b, 257 + l);
+static void put_symbol(bits *b, const codes *c, int s) { put(b, c->sym[s], c->sym_bits[s]); }
+
+static void put_match(bits *b, const codes *c, int len, int dist) {
+    int l = c->len_code[len];
+    put_symbol(b, c, 257 + l);
     put(b, (uint32_t)(len - LEN_BASE[l]), LEN_EXTRA[l]);
-    int d = 29;
-    while (DIST_BASE[d] > dist) d--;
-    put(b, reverse((uint32_t)d, 5), 5);
+    int d = c->dist_code[dist <= 256 ? dist - 1 : 256 + ((dist - 1) >> 7)];
+    put(b, c->dist[d], 5);
     put(b, (uint32_t)(dist - DIST_BASE[d]), DIST_EXTRA[d]);
 }
 
@@ -71,13 +105,31 @@ static uint32_t hash4(const unsigned char *p) {
     return (v * 2654435761u) >> (32 - HASH_BITS); /* Knuth's multiplicative hash */
 }
 
+/* how many of the first `room` bytes of p and q agree */
+static size_t common_prefix(const unsigned char *p, const unsigned char *q, size_t room) {
+    size_t n = 0;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    /* eight bytes at a time: read little-endian, the first byte that differs is the lowest
+     * nonzero byte of the words' exclusive or */
+    for (; n + 8 <= room; n += 8) {
+        uint64_t x, y;
+        memcpy(&x, p + n, 8);
+        memcpy(&y, q + n, 8);
+        if (x != y) return n + (size_t)__builtin_ctzll(x ^ y) / 8;
+    }
+#endif
+    while (n < room && p[n] == q[n]) n++;
+    return n;
+}
 
 unsigned char *ww_zlib_fast(const unsigned char *data, size_t len, size_t *out_len) {
     if (len >= UINT32_MAX) return NULL; /* positions are kept in 32 bits */
     /* worst case: every byte a 9-bit literal, plus the wrapper and the block's end */
-    size_t cap = len + len / 8 + 16;
+    size_t cap = len + len / 8 + 16 + 4;
     uint32_t *head = calloc((size_t)1 << HASH_BITS, sizeof *head); /* position + 1; 0: empty */
     bits b = {.out = malloc(cap)};
+    codes c;
+    codes_make(&c);
     if (!head || !b.out) {
         free(head);
         free(b.out);
@@ -99,25 +151,23 @@ unsigned char *ww_zlib_fast(const unsigned char *data, size_t len, size_t *out_l
             if (cand && i - (cand - 1) <= WINDOW) {
                 const unsigned char *p = data + cand - 1, *q = data + i;
                 size_t room = len - i < MAX_MATCH ? len - i : MAX_MATCH;
-                size_t n = 0;
-                while (n < room && p[n] == q[n]) n++;
-                best = (int)n;
+                best = (int)common_prefix(p, q, room);
                 dist = i - (cand - 1);
             }
         }
         if (best < MIN_MATCH) {
-            put_symbol(&b, data[i]);
+            put_symbol(&b, &c, data[i]);
             i++;
             continue;
         }
-        put_match(&b, best, (int)dist);
+        put_match(&b, &c, best, (int)dist);
         /* the matched positions enter the table too, so later runs find them */
         size_t end = i + (size_t)best;
         for (i++; i < end && i + MIN_MATCH <= len; i++) head[hash4(data + i)] = (uint32_t)(i + 1);
         i = end;
     }
-    put_symbol(&b, 256); /* end of block */
-    if (b.count > 0) b.out[b.n++] = (unsigned char)b.acc; /* the last partial byte, zero-padded */
+    put_symbol(&b, &c, 256); /* end of block */
+    put_flush(&b);
     uint32_t adler = ww_adler32(1, data, len);
     for (int k = 3; k >= 0; k--) b.out[b.n++] = (unsigned char)(adler >> (8 * k));
     free(head);
