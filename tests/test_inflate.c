@@ -32,7 +32,9 @@ typedef struct blob {
     size_t n;
 } blob;
 
-enum { SET_EMPTY, SET_ONE, SET_RUN, SET_OVERLAP, SET_RANDOM, SET_RAMP, SET_FAR, SET_CODES, SET_COUNT };
+enum {
+    SET_EMPTY, SET_ONE, SET_RUN, SET_OVERLAP, SET_RANDOM, SET_RAMP, SET_FAR, SET_CODES, SET_COUNT
+};
 static const char *SET_NAMES[SET_COUNT] = {"empty", "1 byte", "long run", "distances 1..9",
                                            "random", "ramp", "distance 32768",
                                            "every length, distances at both ends of every code"};

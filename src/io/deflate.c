@@ -25,7 +25,7 @@ typedef struct bits {
     int count;     /* below 32 between calls */
 } bits;
 
-/* up to 32 bits: the pending ones leave four bytes at a time (the output keeps 4 bytes of slack) */
+/* up to 32 bits; the pending ones leave four whole bytes at a time */
 static void put(bits *b, uint32_t value, int count) {
     b->acc |= (uint64_t)value << b->count;
     b->count += count;
@@ -125,7 +125,7 @@ static size_t common_prefix(const unsigned char *p, const unsigned char *q, size
 unsigned char *ww_zlib_fast(const unsigned char *data, size_t len, size_t *out_len) {
     if (len >= UINT32_MAX) return NULL; /* positions are kept in 32 bits */
     /* worst case: every byte a 9-bit literal, plus the wrapper and the block's end */
-    size_t cap = len + len / 8 + 16 + 4;
+    size_t cap = len + len / 8 + 16;
     uint32_t *head = calloc((size_t)1 << HASH_BITS, sizeof *head); /* position + 1; 0: empty */
     bits b = {.out = malloc(cap)};
     codes c;
