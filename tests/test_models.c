@@ -2,9 +2,10 @@
  * and what a scene does with them: each file loads with a sane triangle count and the bounds
  * its shape implies; in scenes/features/wreck.yaml the wreck covers a plausible part of the frame
  * and is redder than the water around it (wood), the starfish redder than the sand under it;
- * kelp sways at its tips and not at its base, the same frame twice byte for byte; the camera is
- * stopped by a tilted hull's own box, passes an empty corner of its axis-aligned box, and swims
- * through kelp. Every figure is measured against a named bound.
+ * a face buried in the seabed's plane stays under the sand; kelp sways at its tips and not at its
+ * base, the same frame twice byte for byte; the camera is stopped by a tilted hull's own box,
+ * passes an empty corner of its axis-aligned box, and swims through kelp. Every figure is
+ * measured against a named bound.
  */
 #include <math.h>
 #include <stdio.h>
@@ -271,6 +272,64 @@ TEST_IMAGE(models_golden_wreck) {
     ENSURE(ww_test_render(WRECK_SCENE, NULL, dir) == 0);
     snprintf(actual, sizeof actual, "%s/frame_00000.png", dir);
     ww_test_check_golden("golden/features/wreck.png", actual);
+}
+
+/* a red crate buried in the sand with its top face in the seabed's plane (the seabed lies at
+ * y = -10), seen from 3 m above it: the sand must cover the face everywhere. Where two surfaces
+ * share a plane, the depths' rounding decides which is in front pixel by pixel, and it decides
+ * differently for each grid the seabed is drawn with and for each Mesa release; the seabed's
+ * depth offset settles it for the sand. Raised 5 cm, the crate shows, and that is its footprint */
+static const char BURIED_SCENE[] =
+    "time: {dt: 1/120, fps: 30, duration: 1}\n"
+    "render: {shadows: false, refraction: false, reflection: false, bloom: false,\n"
+    "         god_rays: false, fxaa: false, msaa: 0, seabed: true}\n"
+    "sky: {time_of_day: 13, day_length: 0}\n"
+    "water: {level: 0, depth: 10, waves: {model: flat}, look: {caustics: false}}\n"
+    "objects:\n"
+    "  models:\n"
+    "    - {name: crate, mesh: box, position: [0.3, -10.5, -4.2], scale: [2.4, 1, 1.6],\n"
+    "       rotation: 23, color: [0.9, 0.1, 0.1]}\n"
+    "camera: {fov: 60, path: [{t: 0, position: [0, -7, -1], look_at: [0, -10, -4.5]}]}\n";
+
+#define BURIED_FOOTPRINT_MIN 0.05 /* the raised crate's share of the frame: the test sees it */
+#define BURIED_SHOWING_MAX 0 /* pixels the buried face may show on (without the seabed's offset:
+                              * 3 with its grid of 8 cells, 156 with 64) */
+
+TEST_IMAGE(models_a_face_in_the_seabed_plane_stays_under_the_sand) {
+    REQUIRE_GL();
+    char scene[1024];
+    snprintf(scene, sizeof scene, "%s/buried.yaml", ww_test_tmpdir("buried"));
+    ENSURE(ww_test_write_text(scene, BURIED_SCENE) == 0);
+    pic buried, raised, bare;
+    if (!ww_test_render_pic(scene, 0, "320x180", NULL, "buried", &buried)) return;
+    if (!ww_test_render_pic(scene, 0, "320x180",
+                            "--set 'objects.models[0].position=[0.3, -10.45, -4.2]'", "raised",
+                            &raised)) {
+        ww_image_free(&buried.im);
+        return;
+    }
+    if (!ww_test_render_pic(scene, 0, "320x180",
+                            "--set 'objects.models[0].position=[0.3, -60, -4.2]'", "bare", &bare)) {
+        ww_image_free(&buried.im);
+        ww_image_free(&raised.im);
+        return;
+    }
+    long footprint = 0, showing = 0;
+    for (int y = 0; y < bare.h; y++)
+        for (int x = 0; x < bare.w; x++) {
+            footprint += changed(&raised, &bare, x, y, MASK_LEVELS);
+            showing += changed(&buried, &bare, x, y, MASK_LEVELS);
+        }
+    double area = (double)bare.w * bare.h;
+    printf("    raised crate: %.3f of the frame; buried: %ld pixels show (%.4f of its footprint)\n",
+           (double)footprint / area, showing, footprint ? (double)showing / (double)footprint : 0.0);
+    ENSURE_MSG((double)footprint / area >= BURIED_FOOTPRINT_MIN, "raised crate covers %.3f",
+               (double)footprint / area);
+    ENSURE_MSG(showing <= BURIED_SHOWING_MAX,
+               "the buried face shows on %ld pixels of a footprint of %ld", showing, footprint);
+    ww_image_free(&buried.im);
+    ww_image_free(&raised.im);
+    ww_image_free(&bare.im);
 }
 
 /* a kelp 7 m in front of the camera in still, flat water (no caustics: only the sway moves),

@@ -25,6 +25,7 @@
  * triangle crossing it: 64 cells cost the lake's frame 9% more for the same picture. */
 #define SEABED_CELLS 8
 #define SEABED_HALF 400.0    /* half its side, m (snapped to the camera) */
+#define SEABED_OFFSET_UNITS -2.0f /* glPolygonOffset of its depth: toward the eye, depth steps */
 #define SEABED_SNAP 16.0     /* the plane moves on this grid, m */
 #define CUT_MARGIN 0.05f     /* m beyond the crest a draw still takes the cut at the surface */
 
@@ -1388,7 +1389,17 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
             continue;
         use_lit(g, gl, slot_patterned(s) ? GEOM_LIT_FISH : GEOM_LIT);
         cut_for(g, gl, &g->slot[s]);
+        /* what rests on the seabed (a starfish, a plant's foot) has faces in its plane, where
+         * the depths' rounding alone decided which was in front, pixel by pixel and differently
+         * from one Mesa release to the next (and from one grid of the seabed to another): the
+         * seabed's depth comes two steps toward the eye, so the sand covers them. Every draw of
+         * it takes the same offset, so the shadows' redraw (GL_EQUAL) still meets its depth */
+        if (s == SLOT_SEABED) {
+            gl->Enable(GL_POLYGON_OFFSET_FILL);
+            gl->PolygonOffset(0.0f, SEABED_OFFSET_UNITS);
+        }
         draws += draw_mesh(gl, &g->slot[s]);
+        if (s == SLOT_SEABED) gl->Disable(GL_POLYGON_OFFSET_FILL);
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++) {
         if (clipped_away(clip, &g->obj[i]) ||
