@@ -10,6 +10,7 @@
 
 #include "core/mathx.h"
 #include "core/rng.h"
+#include "core/atan.h"
 #include "core/exp.h"
 #include "core/sincos.h"
 #include "sim/ripples.h"
@@ -28,6 +29,11 @@
 /* ww_exp against libm's exp, |x| <= 708: fdlibm's kernel, within one unit in the last place of
  * the true value, so at most two of libm's (itself within one) */
 #define EXP_ULPS 2.0
+/* ww_atan and ww_atan2 against libm, in ulps of the true value's magnitude: Cephes's rational
+ * (2.6e-18 relative on its interval) plus the reduction's and the sum's roundings, and for
+ * atan2 the quotient's and the added pi's; libm itself is within one */
+#define ATAN_ULPS 2.0
+#define ATAN2_ULPS 3.0
 /* a wave one period later: the phases' rounding (a few ulps of 2 pi) times k A */
 #define DISPERSION_TOL 1e-12
 /* central differences with step FD_STEP against analytic partials (dimensionless): truncation
@@ -205,6 +211,61 @@ TEST(waves_exp_matches_libm) {
     /* past the clamp: finite and positive, never 0, inf or NaN */
     ENSURE(ww_exp(-1000.0) == ww_exp(-708.0) && ww_exp(-708.0) > 0.0);
     ENSURE(isfinite(ww_exp(1000.0)));
+}
+
+/* |a - b| in ulps of b (b's own spacing; at 0 the smallest normal's) */
+static double ulps_off(double a, double b) {
+    double m = fmax(fabs(b), 0x1p-1022);
+    return fabs(a - b) / (nextafter(m, INFINITY) - m);
+}
+
+TEST(waves_atan_matches_libm) {
+    ww_rng r;
+    ww_rng_seed(&r, 13, 0);
+    double worst = 0.0, worst_x = 0.0, worst2 = 0.0, worst_y = 0.0, worst_x2 = 0.0;
+    for (int i = 0; i < 300000; i++) {
+        double u = 2.0 * ww_rng_uniform(&r) - 1.0, v = 2.0 * ww_rng_uniform(&r) - 1.0;
+        /* every reduction: |x| below 0.66, up to tan(3 pi/8), beyond; tiny and huge */
+        double x = i % 4 == 0 ? u * 0.66 : i % 4 == 1 ? u * 2.5 : i % 4 == 2 ? u * 1e6 : u * 1e-9;
+        double q = ulps_off(ww_atan(x), atan(x));
+        if (q > worst) worst = q, worst_x = x;
+        /* atan2 over every quadrant, magnitudes apart by up to 1e6 either way */
+        double y = v * pow(10.0, 6.0 * ww_rng_uniform(&r) - 3.0);
+        q = ulps_off(ww_atan2(y, x), atan2(y, x));
+        if (q > worst2) worst2 = q, worst_y = y, worst_x2 = x;
+    }
+    /* the reductions' edges and their neighbours */
+    const double edges[] = {0.66, 2.41421356237309504880, 1.0};
+    for (int e = 0; e < 3; e++)
+        for (int d = -2; d <= 2; d++) {
+            double x = edges[e];
+            for (int k = 0; k < abs(d); k++) x = nextafter(x, d < 0 ? 0.0 : INFINITY);
+            for (int sg = -1; sg <= 1; sg += 2) {
+                double q = ulps_off(ww_atan(sg * x), atan(sg * x));
+                if (q > worst) worst = q, worst_x = sg * x;
+            }
+        }
+    printf("    atan max error vs libm: %.2f ulp (at x = %.6g); atan2 %.2f ulp (at %.6g, %.6g)\n",
+           worst, worst_x, worst2, worst_y, worst_x2);
+    ENSURE(worst <= ATAN_ULPS);
+    ENSURE(worst2 <= ATAN2_ULPS);
+    /* the special values the header lists */
+    ENSURE(ww_atan(0.0) == 0.0 && !signbit(ww_atan(0.0)) && signbit(ww_atan(-0.0)));
+    ENSURE(ww_atan(INFINITY) == atan(INFINITY) && ww_atan(-INFINITY) == atan(-INFINITY));
+    ENSURE(isnan(ww_atan(NAN)) && isnan(ww_atan2(NAN, 1.0)) && isnan(ww_atan2(1.0, NAN)));
+    const double zs[][2] = {{0.0, 0.0}, {-0.0, 0.0}, {0.0, -0.0}, {-0.0, -0.0}, {0.0, -1.0},
+                            {-0.0, -1.0}, {1.0, 0.0}, {-1.0, -0.0}, {0.0, 1.0}};
+    for (int k = 0; k < 9; k++) {
+        double a = ww_atan2(zs[k][0], zs[k][1]), b = atan2(zs[k][0], zs[k][1]);
+        ENSURE(a == b && signbit(a) == signbit(b));
+    }
+    /* a heading round trip: the angle of (cos t, sin t) is t, within the sine and cosine's own
+     * error (SINCOS_TOL, far above atan2's) */
+    for (int k = -100; k <= 100; k++) {
+        double t = k * (WW_PI / 100.5), s, c;
+        ww_sincos(t, &s, &c);
+        ENSURE_NEAR(ww_atan2(s, c), t, 2.0 * SINCOS_TOL);
+    }
 }
 
 /* ---- the field ---- */

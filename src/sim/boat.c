@@ -25,7 +25,9 @@
 
 #include <math.h>
 
+#include "core/atan.h"
 #include "core/mathx.h"
+#include "core/sincos.h"
 #include "sim/events.h"
 #include "sim/water.h"
 
@@ -39,12 +41,18 @@
 static double wrap_pi(double a) { return ww_m_wrap_tau(a + WW_PI) - WW_PI; }
 
 /* sin(x) / x */
-static double sinc(double x) { return fabs(x) < 1e-4 ? 1.0 - x * x / 6.0 : sin(x) / x; }
+static double sinc(double x) {
+    double s, c;
+    ww_sincos(x, &s, &c);
+    return fabs(x) < 1e-4 ? 1.0 - x * x / 6.0 : s / x;
+}
 
 void ww_boat_frame(double heading, double pitch, double roll, double fwd[3], double up[3],
                    double stbd[3]) {
-    double ch = cos(heading), sh = sin(heading), cp = cos(pitch), sp = sin(pitch);
-    double cr = cos(roll), sr = sin(roll);
+    double ch, sh, cp, sp, cr, sr;
+    ww_sincos(heading, &sh, &ch);
+    ww_sincos(pitch, &sp, &cp);
+    ww_sincos(roll, &sr, &cr);
     /* level frame: forward (cos h, 0, sin h), up +y, starboard = forward x up = (-sin h, 0, cos h);
      * pitch turns forward toward up about starboard, roll turns up toward starboard about forward */
     double f0[3] = {ch, 0.0, sh}, u0[3] = {0.0, 1.0, 0.0}, r0[3] = {-sh, 0.0, ch};
@@ -70,8 +78,8 @@ static void surface_targets(const ww_scene *sc, ww_state *st, double x, double z
     double pz[5] = {z, z + hl * fz, z - hl * fz, z - hb * fx, z + hb * fx}, h[5];
     ww_water_at_warm_n(sc, st, 5, px, pz, minL, st->boat_warm, h, NULL);
     out[0] = h[0] + b->ride_height;
-    out[1] = atan2(h[1] - h[2], b->length);
-    out[2] = atan2(h[3] - h[4], b->beam);
+    out[1] = ww_atan2(h[1] - h[2], b->length);
+    out[2] = ww_atan2(h[3] - h[4], b->beam);
 }
 
 /* y follows u through dy/dt = (u - y) / tau over a step in which u goes linearly from u0 to u1:
@@ -110,7 +118,8 @@ static void move(const ww_scene *sc, ww_state *st, double dt) {
     double h0 = st->boat_heading[0], dh = b->turn_rate * steer * dt, hm = h0 + 0.5 * dh;
     double slip = -b->slip * steer; /* starboard speed per forward speed: outward */
     double arc = dt * sinc(0.5 * dh);
-    double fx = cos(hm), fz = sin(hm);
+    double fx, fz;
+    ww_sincos(hm, &fz, &fx);
     if (sc->integrator == WW_INTEGRATE_EULER) {
         /* seed 000's update, the baseline of time.integrator: v += a u dt, v <- v e^(-k dt),
          * then a straight move along the new heading */
@@ -118,15 +127,15 @@ static void move(const ww_scene *sc, ww_state *st, double dt) {
                         -b->reverse_speed, b->max_speed);
         mean = v1;
         arc = dt;
-        fx = cos(h0 + dh);
-        fz = sin(h0 + dh);
+        ww_sincos(h0 + dh, &fz, &fx);
     }
     p[0] += arc * mean * (fx - slip * fz);
     p[2] += arc * mean * (fz + slip * fx);
     double h1 = wrap_pi(h0 + dh);
     st->boat_heading[0] = h1;
     st->boat_speed[0] = v1;
-    double c1 = cos(h1), s1 = sin(h1);
+    double c1, s1;
+    ww_sincos(h1, &s1, &c1);
     v[0] = v1 * (c1 - slip * s1);
     v[2] = v1 * (s1 + slip * c1);
 

@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "core/mathx.h"
+#include "core/atan.h"
 #include "core/rng.h"
 #include "core/sincos.h"
 #include "sim/events.h"
@@ -45,6 +46,11 @@ static double wrap_pi(double a) {
 
 /* |(x, z)|: the fish's lengths are metres, far from hypot's overflow and underflow */
 static double len2(double x, double z) { return sqrt(x * x + z * z); }
+static double sine(double x) {
+    double s, c;
+    ww_sincos(x, &s, &c);
+    return s;
+}
 
 void ww_fish_depth_bounds(const ww_scene *sc, double h, double *lo, double *hi) {
     *lo = sc->water_level - sc->water_depth + sc->fish.margin;
@@ -102,9 +108,11 @@ static void region_point(const ww_scene *sc, const ww_state *st, int i, uint64_t
     cruise_band(sc, i, &lo, &hi);
     const double *center = school_center(f, i);
     double a = WW_TAU * draw(sc, st, i, ka), r = school_radius(f, i) * sqrt(draw(sc, st, i, kr));
-    p[0] = center[0] + r * cos(a);
+    double sa, ca;
+    ww_sincos(a, &sa, &ca);
+    p[0] = center[0] + r * ca;
     p[1] = lo + (hi - lo) * draw(sc, st, i, ky);
-    p[2] = center[2] + r * sin(a);
+    p[2] = center[2] + r * sa;
 }
 
 static void new_target(const ww_scene *sc, const ww_state *st, int i) {
@@ -139,9 +147,11 @@ static void spawn(const ww_scene *sc, ww_state *st, int i, int others, int first
     st->fish_goal[i] = yaw;
     st->fish_yaw_rate[i] = 0.0;
     st->fish_bank[i] = 0.0;
-    st->fish_vel[3 * i] = cruise_speed(f, i) * cos(yaw);
+    double sy, cy;
+    ww_sincos(yaw, &sy, &cy);
+    st->fish_vel[3 * i] = cruise_speed(f, i) * cy;
     st->fish_vel[3 * i + 1] = 0.0;
-    st->fish_vel[3 * i + 2] = cruise_speed(f, i) * sin(yaw);
+    st->fish_vel[3 * i + 2] = cruise_speed(f, i) * sy;
     st->fish_mode[i] = WW_FISH_SWIMMING;
     st->fish_timer[i] = 0.0;
     st->fish_reached[i] = 0.0;
@@ -163,9 +173,16 @@ static void add_fear_near(const double d[3], double r, double R, double yaw, dou
     double dist = ww_m_len3(d), gap = fmax(dist - r, FLEE_MIN_GAP);
     if (!(gap < R)) return;
     double w = ((R / gap) * (R / gap) - 1.0) / FLEE_HALF, h = len2(d[0], d[2]);
-    fl[0] += w * (h > 1e-9 ? d[0] / h : cos(yaw));
+    double ux, uz; /* the flight's heading: away from the threat, or on if it is straight above */
+    if (h > 1e-9) {
+        ux = d[0] / h;
+        uz = d[2] / h;
+    } else {
+        ww_sincos(yaw, &uz, &ux);
+    }
+    fl[0] += w * ux;
     fl[1] += w * (dist > 1e-9 ? d[1] / dist : 0.0);
-    fl[2] += w * (h > 1e-9 ? d[2] / h : sin(yaw));
+    fl[2] += w * uz;
 }
 
 /* add the fear of a threat at q (its surface r from q) within R to fl: ((R/d)^2 - 1) / 3 for
@@ -220,8 +237,12 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
             ww_m_sub3(t, p, d);
         }
         double h = len2(d[0], d[2]);
-        g[0] = h > 1e-9 ? d[0] / h : cos(st->fish_yaw[i]);
-        g[1] = h > 1e-9 ? d[2] / h : sin(st->fish_yaw[i]);
+        if (h > 1e-9) {
+            g[0] = d[0] / h;
+            g[1] = d[2] / h;
+        } else {
+            ww_sincos(st->fish_yaw[i], &g[1], &g[0]);
+        }
     }
 
     /* a free floating lure nearby wins over wandering */
@@ -250,8 +271,7 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
         g[0] /= n;
         g[1] /= n;
     } else {
-        g[0] = cos(st->fish_yaw[i]);
-        g[1] = sin(st->fish_yaw[i]);
+        ww_sincos(st->fish_yaw[i], &g[1], &g[0]);
     }
 }
 
@@ -278,9 +298,11 @@ static void separation(const ww_scene *sc, const ww_state *st, int i, double pus
             double a = WW_TAU * ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step,
                                             PAIR_BASE + (uint64_t)lo * WW_MAX_FISH + (uint64_t)hi);
             double s = i == lo ? 1.0 : -1.0;
-            u[0] = s * cos(a);
+            double sa, ca;
+            ww_sincos(a, &sa, &ca);
+            u[0] = s * ca;
             u[1] = 0.0;
-            u[2] = s * sin(a);
+            u[2] = s * sa;
         }
         double m = f->max_speed * (1.0 - dist / f->separation);
         for (int k = 0; k < 3; k++) push[k] += m * u[k];
@@ -322,7 +344,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     goal_direction(sc, st, i, fl, g);
 
     /* bounded turn toward the goal, faster when frightened */
-    double yaw0 = st->fish_yaw[i], want = atan2(g[1], g[0]);
+    double yaw0 = st->fish_yaw[i], want = ww_atan2(g[1], g[0]);
     double rate = f->turn_rate * (1.0 + WW_FISH_FLEE_TURN * alarm);
     double turn = ww_m_clamp(wrap_pi(want - yaw0), -rate * dt, rate * dt);
     double yaw = wrap_pi(yaw0 + turn);
@@ -347,7 +369,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     } else {
         double T = f->swim[1] > 0.0 ? f->swim[1] : 1.0;
         y_want = st->fish_cruise[2 * i] +
-                 f->swim[0] * sin(WW_TAU * st->t / T + st->fish_cruise[2 * i + 1]);
+                 f->swim[0] * sine(WW_TAU * st->t / T + st->fish_cruise[2 * i + 1]);
     }
     double vy_max = VERTICAL_MAX * cruise;
     ww_sincos(yaw, &sy, &cy);
@@ -376,7 +398,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
 
     /* a coordinated turn's bank from the yaw rate */
     st->fish_yaw_rate[i] = turn / dt;
-    double bank = atan(len2(v[0], v[2]) * st->fish_yaw_rate[i] / WW_G);
+    double bank = ww_atan(len2(v[0], v[2]) * st->fish_yaw_rate[i] / WW_G);
     st->fish_bank[i] = ww_m_clamp(bank, -f->max_bank, f->max_bank);
 }
 
@@ -388,10 +410,11 @@ static void anchor(const ww_scene *sc, ww_state *st, const fish_step_consts *ks,
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i;
     double yaw0 = st->fish_yaw[i];
-    double yaw = wrap_pi(st->fish_goal[i] + f->wiggle[0] * sin(WW_TAU * f->wiggle[1] * tau));
-    double half = 0.5 * body_length(f, i);
-    double q[3] = {st->lure_pos[0] - half * cos(yaw), st->lure_pos[1] - sc->rod.hook_depth,
-                   st->lure_pos[2] - half * sin(yaw)};
+    double yaw = wrap_pi(st->fish_goal[i] + f->wiggle[0] * sine(WW_TAU * f->wiggle[1] * tau));
+    double half = 0.5 * body_length(f, i), sy, cy;
+    ww_sincos(yaw, &sy, &cy);
+    double q[3] = {st->lure_pos[0] - half * cy, st->lure_pos[1] - sc->rod.hook_depth,
+                   st->lure_pos[2] - half * sy};
     double d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, dn = ww_m_len3(d);
     double reach = WW_FISH_DASH * sc->dt, u = dn > reach ? reach / dn : 1.0;
     for (int k = 0; k < 3; k++) {
@@ -410,7 +433,7 @@ static void bite(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     st->fish_mode[i] = WW_FISH_FIGHTING;
     st->fish_timer[i] = 0.0;
     st->fish_fight[i] = f->fight[0] + (f->fight[1] - f->fight[0]) * draw(sc, st, i, K_FIGHT);
-    st->fish_goal[i] = atan2(st->lure_pos[2] - p[2], st->lure_pos[0] - p[0]);
+    st->fish_goal[i] = ww_atan2(st->lure_pos[2] - p[2], st->lure_pos[0] - p[0]);
     st->rod_fish[0] = (double)i;
     st->lure_state[0] = WW_LURE_HOOKED;
     ww_emit(sc, st, WW_SE_BITE, i, p, 0.0, (double)i);
