@@ -288,20 +288,21 @@ TEST(render_keys_plan_water_gbuffer) {
 
 /* the prepass smaller than the frame also draws its depth at the frame's size, in a target its
  * framebuffer does not hold (the water's outlines are upsampled by it); not at full size, nor
- * for blended water, which refracts nothing, nor with a seabed alone */
+ * for blended water, which refracts nothing, nor with a seabed alone. The frame's size is the
+ * one drawn: draft's, at 0.75 of it, 240x135 */
 TEST(render_keys_plan_prepass_full_depth) {
     static const char text[] = "time: {dt: 1/120, fps: 30, duration: 1}\n"
                                "render: {size: [320, 180]}\n"
                                "objects: {cubes: [{position: [0, 0, 0]}]}\n";
     static const struct {
         const char *set;
-        int full;
+        int full, w, h;
     } cases[] = {
-        {"render.refraction={scale: 0.5}", 1},
-        {"render.quality=draft", 1},
-        {"render.refraction={scale: 1}", 0},
-        {"water.look.alpha_blend={on: true}", 0},
-        {"objects={cubes: []}", 0},
+        {"render.refraction={scale: 0.5}", 1, 320, 180},
+        {"render.quality=draft", 1, 240, 135},
+        {"render.refraction={scale: 1}", 0, 0, 0},
+        {"water.look.alpha_blend={on: true}", 0, 0, 0},
+        {"objects={cubes: []}", 0, 0, 0},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const char *sets[2] = {cases[i].set, "render.seabed=true"};
@@ -318,7 +319,7 @@ TEST(render_keys_plan_prepass_full_depth) {
             ENSURE_MSG(d->unattached[t], "%s: depth_full attached", cases[i].set);
             ENSURE_MSG(d->targets[t].format == WW_FMT_DEPTH24, "%s: depth_full format %d",
                        cases[i].set, (int)d->targets[t].format);
-            ENSURE_MSG(d->targets[t].width == 320 && d->targets[t].height == 180,
+            ENSURE_MSG(d->targets[t].width == cases[i].w && d->targets[t].height == cases[i].h,
                        "%s: depth_full %dx%d", cases[i].set, d->targets[t].width,
                        d->targets[t].height);
         }
@@ -346,12 +347,16 @@ TEST(render_keys_quality_presets) {
     ENSURE(draft->render.refraction_scale < fin->render.refraction_scale);
     ENSURE(draft->render.shadows.size < fin->render.shadows.size);
     ENSURE(draft->render.shafts.samples < fin->render.shafts.samples);
-    ENSURE(draft->render.grid < fin->render.grid);
+    ENSURE(draft->render.scale < fin->render.scale);
     ENSURE_EQ_INT(draft->render.fxaa, 0);
     ENSURE(prev->render.reflection.scale < fin->render.reflection.scale);
     ENSURE(prev->render.reflection.scale > draft->render.reflection.scale);
     ENSURE(prev->render.refraction_scale < fin->render.refraction_scale);
+    ENSURE(prev->render.scale < fin->render.scale);
+    ENSURE(prev->render.scale > draft->render.scale);
+    /* the water mesh keeps its density: the frame's scale is the cheaper trade */
     ENSURE_NEAR(prev->render.grid, fin->render.grid, KNOB_TOL);
+    ENSURE_NEAR(draft->render.grid, fin->render.grid, KNOB_TOL);
     /* the scene's keys win over the preset */
     ENSURE_NEAR(over->render.reflection.scale, 1.0, KNOB_TOL);
     ENSURE_EQ_INT(over->render.fxaa, 1);
