@@ -253,6 +253,7 @@ TEST(waves_atan_matches_libm) {
     ENSURE(ww_atan(0.0) == 0.0 && !signbit(ww_atan(0.0)) && signbit(ww_atan(-0.0)));
     ENSURE(ww_atan(INFINITY) == atan(INFINITY) && ww_atan(-INFINITY) == atan(-INFINITY));
     ENSURE(isnan(ww_atan(NAN)) && isnan(ww_atan2(NAN, 1.0)) && isnan(ww_atan2(1.0, NAN)));
+    ENSURE(isnan(ww_atan2(NAN, 0.0)) && isnan(ww_atan2(NAN, -0.0)) && isnan(ww_atan2(0.0, NAN)));
     const double zs[][2] = {{0.0, 0.0}, {-0.0, 0.0}, {0.0, -0.0}, {-0.0, -0.0}, {0.0, -1.0},
                             {-0.0, -1.0}, {1.0, 0.0}, {-1.0, -0.0}, {0.0, 1.0}};
     for (int k = 0; k < 9; k++) {

@@ -51,10 +51,11 @@ static inline double ww_atan(double x) {
 
 static inline double ww_atan2(double y, double x) {
     if (x == 0.0) {
-        if (y != 0.0) return y > 0.0 ? WW_ATAN_PIO2 : -WW_ATAN_PIO2;
+        if (y > 0.0) return WW_ATAN_PIO2;
+        if (y < 0.0) return -WW_ATAN_PIO2;
         /* both zero: the sign of x picks 0 or pi, the sign of y the side, as libm */
-        if (signbit(x)) return signbit(y) ? -WW_ATAN_PI : WW_ATAN_PI;
-        return y;
+        if (y == 0.0 && signbit(x)) return signbit(y) ? -WW_ATAN_PI : WW_ATAN_PI;
+        return y; /* +-0, or NaN */
     }
     double a = ww_atan(y / x);
     if (x > 0.0) return a;

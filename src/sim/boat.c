@@ -42,9 +42,10 @@ static double wrap_pi(double a) { return ww_m_wrap_tau(a + WW_PI) - WW_PI; }
 
 /* sin(x) / x */
 static double sinc(double x) {
+    if (fabs(x) < 1e-4) return 1.0 - x * x / 6.0;
     double s, c;
     ww_sincos(x, &s, &c);
-    return fabs(x) < 1e-4 ? 1.0 - x * x / 6.0 : s / x;
+    return s / x;
 }
 
 void ww_boat_frame(double heading, double pitch, double roll, double fwd[3], double up[3],

@@ -7,8 +7,8 @@
 
 #include <math.h>
 
-#include "core/mathx.h"
 #include "core/atan.h"
+#include "core/mathx.h"
 #include "core/rng.h"
 #include "core/sincos.h"
 #include "sim/events.h"
@@ -46,6 +46,7 @@ static double wrap_pi(double a) {
 
 /* |(x, z)|: the fish's lengths are metres, far from hypot's overflow and underflow */
 static double len2(double x, double z) { return sqrt(x * x + z * z); }
+/* sin x, by ww_sincos: the same on every libm */
 static double sine(double x) {
     double s, c;
     ww_sincos(x, &s, &c);
