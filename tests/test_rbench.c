@@ -286,6 +286,54 @@ TEST_LONG(rbench_bench_render_table) {
     ENSURE_EQ_INT(ww_test_ww("bench render --knob render.grid", NULL, NULL), 2);
 }
 
+/* --set overrides a value in every scene benched: the rows carry it (JSON "sets", the table's
+ * first line, the targets marked) and the frames are drawn with it (render.scale below 1 plans
+ * the upscale pass); one that does not load is bad input named at its place, before any row */
+TEST_PROC(rbench_bench_render_set_overrides_every_scene) {
+    REQUIRE_GL();
+    char dir[512], out[600], errf[600], lake[700], args[1600];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_render_set"));
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    snprintf(args, sizeof args, "bench render --frames 2 --size 64x36 --set render.scale=0.5 --json %s",
+             bare_scene(dir));
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    static const char *const keys[] = {"\"sets\":[\"render.scale=0.5\"],",
+                                       "{\"name\":\"upscale\",\"ms\":", NULL};
+    int nb = backends_here(), n = json_lines_with(out, keys);
+    ENSURE_MSG(n == nb, "%d JSON rows with the override for %d backends", n, nb);
+    /* without it: no sets, no upscale */
+    snprintf(args, sizeof args, "bench render --frames 2 --size 64x36 --json %s", bare_scene(dir));
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    ENSURE(!ww_test_file_contains(out, "\"sets\":"));
+    ENSURE(!ww_test_file_contains(out, "upscale"));
+
+    /* the table names the overrides, and the targets' rows say they were measured with them */
+    char *text = ww_test_read_file(bare_scene(dir), NULL);
+    ENSURE(text != NULL);
+    snprintf(lake, sizeof lake, "%s/lake.yaml", dir);
+    ENSURE(text && ww_test_write_text(lake, text) == 0);
+    free(text);
+    snprintf(args, sizeof args,
+             "bench render --frames 2 --size 1280x720 --set render.scale=0.5 --set render.grid=0.5 %s",
+             lake);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    ENSURE(ww_test_file_contains(out, "every scene with --set render.scale=0.5 --set render.grid=0.5\n"));
+    ENSURE(ww_test_file_contains(out, "water and sky  x "));
+    ENSURE(ww_test_file_contains(out, "  met (with --set)\n") ||
+           ww_test_file_contains(out, "  missed (with --set)\n"));
+
+    /* bad input: exit 2, the override named at its line and column, no table */
+    snprintf(args, sizeof args, "bench render --frames 2 --size 64x36 --set render.scal=0.5 %s",
+             bare_scene(dir));
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 2);
+    ENSURE(ww_test_file_contains(errf, "--set[1]:1:8: error: unknown key 'scal'"));
+    ENSURE(!ww_test_file_contains(out, "backend"));
+    /* the other benches take no --set */
+    ENSURE_EQ_INT(ww_test_ww("bench sim --set render.scale=0.5", NULL, NULL), 2);
+    ENSURE_EQ_INT(ww_test_ww("bench quality --set render.scale=0.5", NULL, NULL), 2);
+}
+
 TEST_LONG(rbench_bench_quality_json) {
     REQUIRE_GL();
     char dir[512], out[600], errf[600], args[1200];

@@ -22,6 +22,7 @@
 
 #include "core/error.h"
 #include "render/job.h"
+#include "scene/scene.h"
 
 typedef struct ww_bench_opts {
     int frames;             /* frames per configuration (0: 20) */
@@ -30,6 +31,8 @@ typedef struct ww_bench_opts {
     const char *out_dir;    /* sim: folder for sim.png (default out/bench) */
     int tiny;               /* sim: a seconds-long run for the tests (no render share) */
     int width, height;      /* render: one size instead of 256x144 and 1280x720 (0: both) */
+    const ww_set *sets;     /* render: scene overrides for every scene (--set), NULL: none */
+    int nsets;
 } ww_bench_opts;
 
 ww_result ww_bench_render(const ww_bench_opts *o, FILE *to, ww_error *err);

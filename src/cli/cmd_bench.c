@@ -9,7 +9,8 @@
 #include "io/outpath.h"
 
 static const char usage[] =
-    "usage: waterworld bench [render] [--frames N] [--size WxH] [--json] [SCENE.yaml...]\n"
+    "usage: waterworld bench [render] [--frames N] [--size WxH] [--set KEY=VALUE]... [--json]\n"
+    "                        [SCENE.yaml...]\n"
     "       waterworld bench sim [--frames N] [--json] [SCENE.yaml...]\n"
     "       waterworld bench quality [--knob NAME] [--size WxH] [--frame N] [--repeats N] [--json]\n"
     "                                [-o DIR] [SCENE.yaml]\n"
@@ -25,7 +26,9 @@ static const char usage[] =
     "                    objects, 3x for water and sky; the reef within 1.5x the lake's render\n"
     "                    ms), the frame rates (on llvmpipe at 1280x720 lake.yaml in 66 ms,\n"
     "                    demo.yaml in 40; on a GPU lake.yaml at 1920x1080 within 8x the floor),\n"
-    "                    peak RSS and the size of the state\n"
+    "                    peak RSS and the size of the state; --set KEY=VALUE overrides a value\n"
+    "                    in every scene (e.g. --set render.quality=draft), the targets' rows then\n"
+    "                    marked '(with --set)'\n"
     "  quality           each quality knob (render.reflection.scale, refraction.scale,\n"
     "                    shadows.size,\n"
     "                    shadows.technique (projected and volumes against a 4096 map), bloom.passes,\n"
@@ -141,6 +144,8 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     const char *size = NULL, *frame = NULL, *repeats = NULL, *knob = NULL; /* bench quality */
     int tiny = 0;
     int nscenes = 0;
+    static ww_set sets[WW_CLI_MAX_SETS]; /* bench render's --set, for every scene */
+    int nsets = 0;
     ww_result r = WW_OK;
     for (int i = 0; i < argc && !r; i++) {
         if (ww_cli_is_help(argv[i])) {
@@ -163,6 +168,15 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         if (ww_cli_opt(argc, argv, &i, "--frame", &frame, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--repeats", &repeats, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--knob", &knob, &r, err)) continue;
+        const char *set = NULL;
+        if (ww_cli_opt(argc, argv, &i, "--set", &set, &r, err)) {
+            if (!r && nsets >= WW_CLI_MAX_SETS)
+                r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "more than %d --set options",
+                                 WW_CLI_MAX_SETS);
+            else if (!r)
+                sets[nsets++].text = set;
+            continue;
+        }
         if (strcmp(argv[i], "render") == 0 || strcmp(argv[i], "sim") == 0 ||
             strcmp(argv[i], "waves") == 0 || strcmp(argv[i], "quality") == 0 ||
             strcmp(argv[i], "compare") == 0 || strcmp(argv[i], "output") == 0) {
@@ -176,6 +190,12 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
         r = ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "bench: unknown argument '%s' (see --help)", argv[i]);
     }
     if (r) return r;
+    if (nsets > 0 && strcmp(what, "render") != 0)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "bench: --set applies to bench render only (bench quality sets its "
+                            "knobs itself)");
+    o.sets = sets;
+    o.nsets = nsets;
     if (frames && (o.frames = (int)parse_whole(frames, 1, BENCH_MAX_FRAMES)) <= 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--frames wants a count in 1..%d, got '%s'",
                             BENCH_MAX_FRAMES, frames);
