@@ -3,7 +3,9 @@
 
 #include <math.h>
 
+#include "core/exp.h"
 #include "core/mathx.h"
+#include "core/sincos.h"
 #include "sim/water.h"
 
 /* unit quaternion q (w x y z) to the rotated local axes: ax[k] = R e_k */
@@ -18,7 +20,9 @@ void ww_box_axes(const double q[4], double ax[3][3]) {
 void ww_box_turn(double q[4], const double w[3], double dt) {
     double ang = ww_m_len3(w) * dt;
     if (!(ang > 0.0)) return;
-    double h = 0.5 * ang, s = sin(h) / ww_m_len3(w), e[4] = {cos(h), w[0] * s, w[1] * s, w[2] * s};
+    double h = 0.5 * ang, sh, ch;
+    ww_sincos(h, &sh, &ch);
+    double s = sh / ww_m_len3(w), e[4] = {ch, w[0] * s, w[1] * s, w[2] * s};
     double r[4] = {e[0] * q[0] - e[1] * q[1] - e[2] * q[2] - e[3] * q[3],
                    e[0] * q[1] + e[1] * q[0] + e[2] * q[3] - e[3] * q[2],
                    e[0] * q[2] - e[1] * q[3] + e[2] * q[0] + e[3] * q[1],
@@ -213,7 +217,7 @@ double ww_box_heave_step(const ww_box_water *w, const double extent[3], double k
 
 void ww_box_move(const ww_box_motion *m, double y, double dt, double p[3], double v[3],
                  double w[3], double q[4]) {
-    double e = exp(-m->gamma * dt);
+    double e = ww_exp(-m->gamma * dt);
     for (int k = 0; k < 3; k += 2) {
         v[k] += m->ah[k / 2] * dt;
         v[k] = m->u[k] + (v[k] - m->u[k]) * e;
