@@ -144,7 +144,7 @@ ww_result ww_cmd_bench(int argc, char **argv, ww_error *err) {
     const char *size = NULL, *frame = NULL, *repeats = NULL, *knob = NULL; /* bench quality */
     int tiny = 0;
     int nscenes = 0;
-    static ww_set sets[WW_CLI_MAX_SETS]; /* bench render's --set, for every scene */
+    ww_set sets[WW_CLI_MAX_SETS]; /* bench render's --set, for every scene */
     int nsets = 0;
     ww_result r = WW_OK;
     for (int i = 0; i < argc && !r; i++) {
