@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "gfx/backend.h"
 #include "gfx/renderer.h"
@@ -332,6 +333,59 @@ TEST_PROC(rbench_bench_render_set_overrides_every_scene) {
     /* the other benches take no --set */
     ENSURE_EQ_INT(ww_test_ww("bench sim --set render.scale=0.5", NULL, NULL), 2);
     ENSURE_EQ_INT(ww_test_ww("bench quality --set render.scale=0.5", NULL, NULL), 2);
+}
+
+/* the presets measured whole: three rows (final, preview, draft), each against the reference
+ * and against the scene's own frame at final, which final itself matches exactly; with --knob
+ * render.quality no knob's rows and no figure */
+TEST_PROC(rbench_bench_quality_presets_rows) {
+    REQUIRE_GL();
+    char dir[512], out[600], errf[600];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("rbench_bench_quality_presets"));
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    char args[1200];
+    snprintf(args, sizeof args, "bench quality --tiny --knob render.quality --json -o %s "
+                                "scenes/lake.yaml", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    char *s = ww_test_read_file(out, NULL);
+    ENSURE(s != NULL);
+    static const char *const names[3] = {"final", "preview", "draft"};
+    int rows = 0, seen[3] = {0, 0, 0};
+    char *save = NULL;
+    for (char *line = s ? strtok_r(s, "\n", &save) : NULL; line;
+         line = strtok_r(NULL, "\n", &save)) {
+        ENSURE_MSG(ww_test_json_valid(line), "not JSON: %s", line);
+        ENSURE_MSG(strstr(line, "\"knob\":") == NULL, "a knob's row: %s", line);
+        rows++;
+        for (int k = 0; k < 3; k++) {
+            char key[40];
+            snprintf(key, sizeof key, "\"preset\":\"%s\"", names[k]);
+            if (!strstr(line, key)) continue;
+            seen[k]++;
+            const char *fin = strstr(line, "\"psnr_final\":");
+            ENSURE(fin != NULL);
+            /* final is the scene's own frame: identical (null); the others differ from it */
+            if (fin && k == 0) ENSURE_MSG(strncmp(fin, "\"psnr_final\":null", 17) == 0, "%s", line);
+            if (fin && k > 0) ENSURE_MSG(fin[13] >= '0' && fin[13] <= '9', "%s", line);
+            ENSURE_MSG(strstr(line, "\"ms\":0.0000,") == NULL, "no time: %s", line);
+        }
+    }
+    free(s);
+    ENSURE_EQ_INT(rows, 3);
+    ENSURE(seen[0] == 1 && seen[1] == 1 && seen[2] == 1);
+    char fig[700];
+    snprintf(fig, sizeof fig, "%s/quality.png", dir);
+    ENSURE(access(fig, F_OK) != 0);
+
+    /* the table's block, and a misspelt name listing the presets' */
+    snprintf(args, sizeof args, "bench quality --tiny --knob render.quality -o %s scenes/lake.yaml",
+             dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, errf), 0);
+    ENSURE(ww_test_file_contains(out, "render.quality (whole)"));
+    ENSURE(ww_test_file_contains(out, "                            draft "));
+    ENSURE_EQ_INT(ww_test_ww("bench quality --knob render.qualit", NULL, errf), 2);
+    ENSURE(ww_test_file_contains(errf, "or render.quality for the presets"));
 }
 
 TEST_LONG(rbench_bench_quality_json) {

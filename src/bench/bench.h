@@ -96,14 +96,29 @@ typedef struct ww_quality_opts {
     ww_backend_kind backend;
 } ww_quality_opts;
 
+/* the render.quality presets, measured whole: the scene as written with the preset set */
+#define WW_QUALITY_PRESETS 3
+/* the pseudo-knob that asks for them alone (--knob) */
+#define WW_QUALITY_PRESET_KNOB "render.quality"
+typedef struct ww_quality_preset {
+    const char *name;        /* final, preview, draft */
+    double ms;               /* render + glFinish, the least of the timed renders */
+    double psnr;             /* dB against the reference (INFINITY: the same frame) */
+    int max_diff;
+    double psnr_final;       /* dB against the scene's frame at final */
+} ww_quality_preset;
+
 typedef struct ww_quality_result {
     char device[64], renderer[128];
     double reference_ms;     /* the reference configuration */
     int nrows;
     ww_quality_row rows[WW_QUALITY_MAX_ROWS];
+    int npresets;            /* 0 when --knob named a knob */
+    ww_quality_preset presets[WW_QUALITY_PRESETS];
 } ww_quality_result;
 
-/* render the reference and each value of each knob (the others at their best); fills res */
+/* render the reference, each value of each knob (the others at their best) and each preset;
+ * fills res */
 ww_result ww_bench_quality_measure(const ww_quality_opts *o, const ww_quality_knob *knobs,
                                    int nknobs, ww_quality_result *res, ww_error *err);
 /* measure the knobs, print the table (or JSON lines) and write DIR/quality.png */

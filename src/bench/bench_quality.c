@@ -161,15 +161,17 @@ static void config_close(config *c) {
     *c = (config){0};
 }
 
-/* build the scene configured so, render frame o->frame once (untimed: it pays for shader
- * compilation) and read it into im (RGB8) */
+/* build the scene configured so (preset: the scene as written with that --set instead, its
+ * knobs untouched), render frame o->frame once (untimed: it pays for shader compilation) and
+ * read it into im (RGB8) */
 static ww_result config_open(config *c, const ww_quality_opts *o, const ww_gl *gl,
                              const ww_quality_knob *knobs, int nknobs, int vary, double v,
-                             ww_image *im, ww_quality_effect *effect, ww_error *err) {
+                             const ww_set *preset, ww_image *im, ww_quality_effect *effect,
+                             ww_error *err) {
     *c = (config){.ms = INFINITY, .pass_ms = INFINITY, .pass = vary >= 0 ? (int)knobs[vary].pass : -1};
-    ww_result rc = ww_scene_load(o->scene, NULL, 0, &c->sc, err);
+    ww_result rc = ww_scene_load(o->scene, preset, preset ? 1 : 0, &c->sc, err);
     if (rc) return rc;
-    configure(c->sc, knobs, nknobs, vary, v);
+    if (!preset) configure(c->sc, knobs, nknobs, vary, v);
     if ((rc = ww_renderer_for_scene(gl, c->sc, o->width, o->height, &c->r, err))) return rc;
     if (vary >= 0) {
         ww_pass_id id = knobs[vary].pass;
@@ -259,12 +261,13 @@ ww_result ww_bench_quality_measure(const ww_quality_opts *opts, const ww_quality
     ww_scene_free(sc);
 
     ww_backend *b = NULL;
-    ww_image ref = {0}, im = {0};
+    ww_image ref = {0}, im = {0}, fin = {0};
     if ((rc = ww_backend_open(o.backend, &b, err))) return rc;
     snprintf(res->device, sizeof res->device, "%s", ww_backend_describe(b));
     snprintf(res->renderer, sizeof res->renderer, "%s", ww_backend_renderer(b));
     if (ww_image_alloc(&ref, o.width, o.height, 3, WW_PIX_U8) ||
-        ww_image_alloc(&im, o.width, o.height, 3, WW_PIX_U8)) {
+        ww_image_alloc(&im, o.width, o.height, 3, WW_PIX_U8) ||
+        ww_image_alloc(&fin, o.width, o.height, 3, WW_PIX_U8)) {
         rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "bench quality: out of memory for frames");
         goto done;
     }
@@ -272,7 +275,7 @@ ww_result ww_bench_quality_measure(const ww_quality_opts *opts, const ww_quality
     int repeats = o.repeats > 0 ? o.repeats : DEFAULT_REPEATS;
     config cfg[WW_QUALITY_MAX_VALUES + 1] = {0};
     ww_quality_effect unused;
-    rc = config_open(&cfg[0], &o, gl, knobs, nknobs, -1, 0.0, &ref, &unused, err);
+    rc = config_open(&cfg[0], &o, gl, knobs, nknobs, -1, 0.0, NULL, &ref, &unused, err);
     for (int t = 0; t < repeats && !rc; t++) rc = config_time(&cfg[0], err);
     res->reference_ms = cfg[0].ms;
     config_close(&cfg[0]);
@@ -290,7 +293,7 @@ ww_result ww_bench_quality_measure(const ww_quality_opts *opts, const ww_quality
             rows[i] = (ww_quality_row){.knob = k, .value = q->value[i],
                                        .is_default = q->value[i] == def[k],
                                        .is_reference = i == q->nvalues - 1};
-            rc = config_open(&cfg[i], &o, gl, knobs, nknobs, k, q->value[i], &im,
+            rc = config_open(&cfg[i], &o, gl, knobs, nknobs, k, q->value[i], NULL, &im,
                              &rows[i].effect, err);
             if (!rc) image_error(&ref, &im, &rows[i].psnr, &rows[i].max_diff);
         }
@@ -306,8 +309,36 @@ ww_result ww_bench_quality_measure(const ww_quality_opts *opts, const ww_quality
         mark_front(res, k);
     }
 
+    /* the presets, each the scene as written with render.quality set: against the reference
+     * and against the scene's own frame at final; built together and timed in turn as a
+     * knob's values are */
+    if (!rc && (!o.knob || strcmp(o.knob, WW_QUALITY_PRESET_KNOB) == 0)) {
+        static const char *const names[WW_QUALITY_PRESETS] = {"final", "preview", "draft"};
+        static const ww_set sets[WW_QUALITY_PRESETS] = {
+            {"render.quality=final"}, {"render.quality=preview"}, {"render.quality=draft"}};
+        ww_quality_effect effect;
+        for (int i = 0; i < WW_QUALITY_PRESETS && !rc; i++) {
+            ww_quality_preset *p = &res->presets[i];
+            *p = (ww_quality_preset){.name = names[i]};
+            /* final's frame stays in fin, the others' come and go in im */
+            rc = config_open(&cfg[i], &o, gl, knobs, nknobs, -1, 0.0, &sets[i], i ? &im : &fin,
+                             &effect, err);
+            if (!rc) image_error(&ref, i ? &im : &fin, &p->psnr, &p->max_diff);
+            int unused_diff;
+            if (!rc) image_error(&fin, i ? &im : &fin, &p->psnr_final, &unused_diff);
+        }
+        for (int t = 0; t < repeats && !rc; t++)
+            for (int i = 0; i < WW_QUALITY_PRESETS && !rc; i++) rc = config_time(&cfg[i], err);
+        for (int i = 0; i < WW_QUALITY_PRESETS; i++) {
+            res->presets[i].ms = cfg[i].ms;
+            config_close(&cfg[i]);
+        }
+        if (!rc) res->npresets = WW_QUALITY_PRESETS;
+    }
+
 done:
     ww_image_free(&ref);
+    ww_image_free(&fin);
     ww_image_free(&im);
     ww_backend_close(b);
     return rc;
@@ -353,6 +384,25 @@ static int knob_without_effect(const ww_quality_result *res, int k, ww_quality_e
     return same;
 }
 
+/* the presets' rows under the knobs' */
+static void print_presets(const ww_quality_result *res, FILE *to) {
+    if (res->npresets == 0) return;
+    fprintf(to, "\n%-24s %8s %9s %9s %8s %14s\n", "render.quality (whole)", "", "frame ms",
+            "PSNR dB", "max diff", "dB from final");
+    for (int i = 0; i < res->npresets; i++) {
+        const ww_quality_preset *p = &res->presets[i];
+        char psnr[16], fin[16];
+        if (isfinite(p->psnr)) snprintf(psnr, sizeof psnr, "%.2f", p->psnr);
+        else snprintf(psnr, sizeof psnr, "inf");
+        if (isfinite(p->psnr_final)) snprintf(fin, sizeof fin, "%.2f", p->psnr_final);
+        else snprintf(fin, sizeof fin, "inf");
+        fprintf(to, "%-24s %8s %9.2f %9s %8d %14s\n", "", p->name, p->ms, psnr, p->max_diff, fin);
+    }
+    fputs("each preset is the scene as written with render.quality set (its other knobs as the "
+          "preset and the scene\nhave them): frame ms the least of the timed renders, its frame "
+          "against the reference (PSNR, max diff)\nand against the scene's frame at final\n", to);
+}
+
 static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, int nknobs,
                         const ww_quality_result *res, FILE *to) {
     fprintf(to, "bench quality: %s, frame %lld at %dx%d, %s (%s), least of %d renders\n",
@@ -362,8 +412,9 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
     for (int k = 0; k < nknobs; k++)
         fprintf(to, "%s%s=%g", k ? " " : "", knobs[k].name, knobs[k].value[knobs[k].nvalues - 1]);
     fprintf(to, "): %.2f ms\n\n", res->reference_ms);
-    fprintf(to, "%-24s %8s %9s %-10s %8s %9s %8s  %s\n", "knob", "value", "frame ms", "pass",
-            "pass ms", "PSNR dB", "max diff", "");
+    if (res->nrows > 0)
+        fprintf(to, "%-24s %8s %9s %-10s %8s %9s %8s  %s\n", "knob", "value", "frame ms", "pass",
+                "pass ms", "PSNR dB", "max diff", "");
     for (int k = 0; k < nknobs; k++) {
         if (!knob_measured(res, k)) continue;
         ww_quality_effect why;
@@ -394,6 +445,8 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
                     r->front ? "on" : "off", r->knee ? ", at the knee" : "");
         }
     }
+    print_presets(res, to);
+    if (res->nrows == 0) return;
     fputs("\nrender.shadows.technique: 0 map, 1 projected, 2 volumes (drawn in the main pass and "
           "the prepass; the map's own pass is in the frame ms)", to);
     fprintf(to, "\nframe ms: render + glFinish of one frame; pass ms: the pass the knob tunes (GL timer "
@@ -427,6 +480,23 @@ static void print_json(const ww_quality_opts *o, const ww_quality_knob *knobs,
                 r->is_reference ? "true" : "false", !none && r->front ? "true" : "false",
                 !none && r->knee ? "true" : "false");
         ww_json_string(to, none ? effect_words(why) : "measured");
+        fputs("}\n", to);
+    }
+    for (int i = 0; i < res->npresets; i++) {
+        const ww_quality_preset *p = &res->presets[i];
+        fputs("{\"scene\":", to);
+        ww_json_string(to, o->scene);
+        fprintf(to, ",\"device\":");
+        ww_json_string(to, res->device);
+        fprintf(to, ",\"width\":%d,\"height\":%d,\"frame\":%lld,\"preset\":\"%s\",\"ms\":%.4f,"
+                    "\"reference_ms\":%.4f,\"psnr\":",
+                o->width, o->height, (long long)o->frame, p->name, p->ms, res->reference_ms);
+        if (isfinite(p->psnr)) fprintf(to, "%.4f", p->psnr);
+        else fputs("null", to);
+        fprintf(to, ",\"identical\":%s,\"max_diff\":%d,\"psnr_final\":",
+                isfinite(p->psnr) ? "false" : "true", p->max_diff);
+        if (isfinite(p->psnr_final)) fprintf(to, "%.4f", p->psnr_final);
+        else fputs("null", to);
         fputs("}\n", to);
     }
 }
@@ -525,7 +595,8 @@ ww_result ww_bench_quality(const ww_quality_opts *opts, FILE *to, ww_error *err)
     }
     int nknobs;
     const ww_quality_knob *knobs = ww_quality_knobs(&nknobs);
-    if (o.knob) {
+    int presets_only = o.knob && strcmp(o.knob, WW_QUALITY_PRESET_KNOB) == 0;
+    if (o.knob && !presets_only) {
         /* one knob (ww_bench_quality_measure skips the others; the reference still has every
          * knob at its best) */
         int k = 0;
@@ -536,7 +607,8 @@ ww_result ww_bench_quality(const ww_quality_opts *opts, FILE *to, ww_error *err)
                 snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s", i ? ", " : "",
                          knobs[i].name);
             return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
-                                "bench quality: no knob '%s' (knobs: %s)", o.knob, names);
+                                "bench quality: no knob '%s' (knobs: %s, or %s for the presets)",
+                                o.knob, names, WW_QUALITY_PRESET_KNOB);
         }
     }
     ww_quality_result *res = malloc(sizeof *res);
@@ -554,7 +626,7 @@ ww_result ww_bench_quality(const ww_quality_opts *opts, FILE *to, ww_error *err)
                         "frames of %dx%d) is made once in %.1f ms\n",
                     WW_CAUSTIC_SET_FRAMES, WW_CAUSTIC_SET_SIZE, WW_CAUSTIC_SET_SIZE, ms);
     }
-    if (!r && !o.no_figure) {
+    if (!r && !o.no_figure && !presets_only) {
         char path[1024];
         r = write_figure(o.out_dir ? o.out_dir : "out/bench", knobs, nknobs, res, path,
                          sizeof path, err);

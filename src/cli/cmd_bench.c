@@ -37,9 +37,12 @@ static const char usage[] =
     "                    one-off ms) against ms per frame and the PSNR and max difference of the\n"
     "                    final frame against a reference with every knob at its best; each\n"
     "                    knob's feature is switched on where this build has its pass;\n"
-    "                    the default, the speed/error front and the knee marked; DIR/quality.png.\n"
+    "                    the default, the speed/error front and the knee marked; DIR/quality.png;\n"
+    "                    then the render.quality presets whole (final, preview, draft: the scene\n"
+    "                    with the preset set), ms and PSNR against the reference and final.\n"
     "                    SCENE default scenes/lake.yaml, --size 640x360, --frame 0, --repeats 5;\n"
-    "                    --knob NAME: that knob only (e.g. --knob render.grid)\n"
+    "                    --knob NAME: that knob only (e.g. --knob render.grid), or\n"
+    "                    --knob render.quality: the presets only\n"
     ;
 /* the rest of the usage (one string may hold at most 4095 characters in ISO C) */
 static const char usage_parts[] =
