@@ -5,7 +5,9 @@
  * the others kept at their best, and compared with the reference (PSNR and the largest channel
  * difference).
  * A knob's feature is switched on for the bench when this build has its pass; a knob whose pass
- * is absent renders the same and is reported as having no effect. Table and out/bench/quality.png.
+ * is absent renders the same and is reported as having no effect. Then the render.quality
+ * presets, each the scene as written with the preset set, against the same reference and against
+ * the scene's frame at final. Table and out/bench/quality.png (the knobs').
  */
 #include <math.h>
 #include <stdlib.h>
