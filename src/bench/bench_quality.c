@@ -386,6 +386,12 @@ static int knob_without_effect(const ww_quality_result *res, int k, ww_quality_e
     return same;
 }
 
+/* a PSNR for the table: "inf" for the same frame */
+static void db_text(char buf[16], double db) {
+    if (isfinite(db)) snprintf(buf, 16, "%.2f", db);
+    else snprintf(buf, 16, "inf");
+}
+
 /* the presets' rows under the knobs' */
 static void print_presets(const ww_quality_result *res, FILE *to) {
     if (res->npresets == 0) return;
@@ -394,10 +400,8 @@ static void print_presets(const ww_quality_result *res, FILE *to) {
     for (int i = 0; i < res->npresets; i++) {
         const ww_quality_preset *p = &res->presets[i];
         char psnr[16], fin[16];
-        if (isfinite(p->psnr)) snprintf(psnr, sizeof psnr, "%.2f", p->psnr);
-        else snprintf(psnr, sizeof psnr, "inf");
-        if (isfinite(p->psnr_final)) snprintf(fin, sizeof fin, "%.2f", p->psnr_final);
-        else snprintf(fin, sizeof fin, "inf");
+        db_text(psnr, p->psnr);
+        db_text(fin, p->psnr_final);
         fprintf(to, "%-24s %8s %9.2f %9s %8d %14s\n", "", p->name, p->ms, psnr, p->max_diff, fin);
     }
     fputs("each preset is the scene as written with render.quality set (its other knobs as the "
@@ -426,8 +430,7 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
             const ww_quality_row *r = &res->rows[i];
             if (r->knob != k) continue;
             char psnr[16], flags[48];
-            if (isfinite(r->psnr)) snprintf(psnr, sizeof psnr, "%.2f", r->psnr);
-            else snprintf(psnr, sizeof psnr, "inf");
+            db_text(psnr, r->psnr);
             snprintf(flags, sizeof flags, "%s%s%s%s", r->is_default ? " default" : "",
                      r->is_reference ? " ref" : "", !none && r->front ? " front" : "",
                      !none && r->knee ? " knee" : "");
@@ -460,22 +463,34 @@ static void print_table(const ww_quality_opts *o, const ww_quality_knob *knobs, 
             WW_QUALITY_GOOD_DB);
 }
 
+/* a JSON row's opening: the scene, device, size and frame it was measured on */
+static void json_row_head(const ww_quality_opts *o, const ww_quality_result *res, FILE *to) {
+    fputs("{\"scene\":", to);
+    ww_json_string(to, o->scene);
+    fprintf(to, ",\"device\":");
+    ww_json_string(to, res->device);
+    fprintf(to, ",\"width\":%d,\"height\":%d,\"frame\":%lld,", o->width, o->height,
+            (long long)o->frame);
+}
+
+/* a PSNR in JSON, which has no infinity: null is "identical" */
+static void json_db(FILE *to, double db) {
+    if (isfinite(db)) fprintf(to, "%.4f", db);
+    else fputs("null", to);
+}
+
 static void print_json(const ww_quality_opts *o, const ww_quality_knob *knobs,
                        const ww_quality_result *res, FILE *to) {
     for (int i = 0; i < res->nrows; i++) {
         const ww_quality_row *r = &res->rows[i];
         ww_quality_effect why;
         int none = knob_without_effect(res, r->knob, &why);
-        fputs("{\"scene\":", to);
-        ww_json_string(to, o->scene);
-        fprintf(to, ",\"device\":");
-        ww_json_string(to, res->device);
-        fprintf(to, ",\"width\":%d,\"height\":%d,\"frame\":%lld,\"knob\":\"%s\",\"value\":%g,"
-                    "\"ms\":%.4f,\"pass\":\"%s\",\"pass_ms\":%.4f,\"reference_ms\":%.4f,\"psnr\":",
-                o->width, o->height, (long long)o->frame, knobs[r->knob].name, r->value, r->ms,
-                pass_name(knobs[r->knob].pass), r->pass_ms, res->reference_ms);
-        if (isfinite(r->psnr)) fprintf(to, "%.4f", r->psnr);
-        else fputs("null", to); /* JSON has no infinity: null is "identical" */
+        json_row_head(o, res, to);
+        fprintf(to, "\"knob\":\"%s\",\"value\":%g,\"ms\":%.4f,\"pass\":\"%s\",\"pass_ms\":%.4f,"
+                    "\"reference_ms\":%.4f,\"psnr\":",
+                knobs[r->knob].name, r->value, r->ms, pass_name(knobs[r->knob].pass), r->pass_ms,
+                res->reference_ms);
+        json_db(to, r->psnr);
         fprintf(to, ",\"identical\":%s,\"max_diff\":%d,\"default\":%s,\"reference\":%s,"
                     "\"front\":%s,\"knee\":%s,\"effect\":",
                 isfinite(r->psnr) ? "false" : "true", r->max_diff, r->is_default ? "true" : "false",
@@ -486,19 +501,13 @@ static void print_json(const ww_quality_opts *o, const ww_quality_knob *knobs,
     }
     for (int i = 0; i < res->npresets; i++) {
         const ww_quality_preset *p = &res->presets[i];
-        fputs("{\"scene\":", to);
-        ww_json_string(to, o->scene);
-        fprintf(to, ",\"device\":");
-        ww_json_string(to, res->device);
-        fprintf(to, ",\"width\":%d,\"height\":%d,\"frame\":%lld,\"preset\":\"%s\",\"ms\":%.4f,"
-                    "\"reference_ms\":%.4f,\"psnr\":",
-                o->width, o->height, (long long)o->frame, p->name, p->ms, res->reference_ms);
-        if (isfinite(p->psnr)) fprintf(to, "%.4f", p->psnr);
-        else fputs("null", to);
+        json_row_head(o, res, to);
+        fprintf(to, "\"preset\":\"%s\",\"ms\":%.4f,\"reference_ms\":%.4f,\"psnr\":", p->name,
+                p->ms, res->reference_ms);
+        json_db(to, p->psnr);
         fprintf(to, ",\"identical\":%s,\"max_diff\":%d,\"psnr_final\":",
                 isfinite(p->psnr) ? "false" : "true", p->max_diff);
-        if (isfinite(p->psnr_final)) fprintf(to, "%.4f", p->psnr_final);
-        else fputs("null", to);
+        json_db(to, p->psnr_final);
         fputs("}\n", to);
     }
 }
