@@ -20,7 +20,14 @@ typedef struct solid {
     double c[3];
     double q[4];   /* unit quaternion w x y z */
     double h[3];
+    double reach2; /* a sphere about c holding it, squared, widened past rounding */
 } solid;
+
+/* the most solids a scene has: the boat, the cubes, the chest, the models */
+#define MAX_SOLIDS (1 + WW_MAX_CUBES + 1 + WW_MAX_MODELS)
+/* the bounding sphere's widening: far more than the rounding of a point turned into a solid's
+ * frame, so a point or a move it leaves out is out of the solid for the exact tests too */
+#define REACH_SLACK (1.0 + 1e-9)
 
 /* v turned by q (or by its inverse when inv): v + 2w (u x v) + 2 u x (u x v), u = q.xyz */
 static void turn(const double q[4], int inv, const double v[3], double out[3]) {
@@ -43,6 +50,7 @@ static void box(solid *s, int what, int index, const double c[3], const double h
         s->c[a] = c[a];
         s->h[a] = half[a] + m;
     }
+    s->reach2 = REACH_SLACK * (s->h[0] * s->h[0] + s->h[1] * s->h[1] + s->h[2] * s->h[2]);
 }
 
 /* a model whose parent chain ends at the boat moves with it: its bounds are in the boat's frame,
@@ -57,6 +65,7 @@ static int rides_boat(const ww_scene *sc, int k) {
 static int get_solid(const ww_scene *sc, const ww_state *st, int k, double m, solid *s) {
     if (sc->boat.on && k-- == 0) {
         *s = (solid){.what = WW_SOLID_BOAT, .sphere = 1, .h = {sc->boat.radius + m}};
+        s->reach2 = REACH_SLACK * s->h[0] * s->h[0];
         for (int a = 0; a < 3; a++) s->c[a] = st->boat_pos[a];
         return 1;
     }
@@ -183,13 +192,29 @@ static int sweep(const solid *s, const double p[3], const double d[3], double *u
     return 1;
 }
 
+/* p is surely outside s: farther from its centre than its bounding sphere */
+static int far_from(const solid *s, const double p[3]) {
+    double e[3];
+    ww_m_sub3(p, s->c, e);
+    return ww_m_dot3(e, e) > s->reach2;
+}
+
+/* the move p + u d (u in [0, 1]) surely misses s: it passes its centre beyond its bounding
+ * sphere (the nearest point of the segment to the centre) */
+static int passes_by(const solid *s, const double p[3], const double d[3]) {
+    double e[3], dd = ww_m_dot3(d, d);
+    ww_m_sub3(s->c, p, e);
+    double u = dd > 0.0 ? ww_m_clamp(ww_m_dot3(e, d) / dd, 0.0, 1.0) : 0.0;
+    for (int a = 0; a < 3; a++) e[a] -= u * d[a];
+    return ww_m_dot3(e, e) > s->reach2;
+}
+
 void ww_camera_collide(const ww_scene *sc, ww_state *st) {
     if (!WW_N_SOLIDS(sc)) return;
     double *prev = st->collide_prev, m = sc->near_clip;
     int32_t *cs = st->collide_state;
     double p1[3] = {st->cam_pos[0], st->cam_pos[1], st->cam_pos[2]};
-    int n = solid_count(sc), what = -1, index = 0;
-    solid s;
+    int what = -1, index = 0;
 
     /* in the boat's seat the camera rides inside the hull's sphere by design (sim/boat.h) */
     if (sc->boat.on && st->boat_camera[0] == 1.0) {
@@ -198,15 +223,22 @@ void ww_camera_collide(const ww_scene *sc, ww_state *st) {
         return;
     }
 
+    /* the solids present now, in order, each built once */
+    solid all[MAX_SOLIDS];
+    int n = 0;
+    for (int k = 0, count = solid_count(sc); k < count && n < MAX_SOLIDS; k++)
+        n += get_solid(sc, st, k, m, &all[n]);
+
     /* 1. start where the camera was, out of anything that moved into it */
     int from_prev = cs[1] != 0 && st->step > 0;
     double p[3];
     for (int a = 0; a < 3; a++) p[a] = from_prev ? prev[a] : p1[a];
     for (int k = 0; k < n; k++) {
-        if (!get_solid(sc, st, k, m, &s) || !inside(&s, p)) continue;
-        push_out(&s, p);
-        what = s.what;
-        index = s.index;
+        const solid *s = &all[k];
+        if (far_from(s, p) || !inside(s, p)) continue;
+        push_out(s, p);
+        what = s->what;
+        index = s->index;
     }
 
     /* 2. sweep to the target; stop at the first entry and slide what is left. Never a jump to
@@ -218,13 +250,11 @@ void ww_camera_collide(const ww_scene *sc, ww_state *st) {
         ww_m_sub3(target, p, d);
         if (ww_m_dot3(d, d) == 0.0) break;
         int hit = -1;
-        solid hs = {0};
         for (int k = 0; k < n; k++) {
             double uk, nk[3];
-            if (!get_solid(sc, st, k, m, &s) || !sweep(&s, p, d, &uk, nk) || uk >= u) continue;
+            if (passes_by(&all[k], p, d) || !sweep(&all[k], p, d, &uk, nk) || uk >= u) continue;
             u = uk;
             hit = k;
-            hs = s;
             for (int a = 0; a < 3; a++) best_n[a] = nk[a];
         }
         if (hit < 0) {
@@ -233,8 +263,8 @@ void ww_camera_collide(const ww_scene *sc, ww_state *st) {
         }
         for (int a = 0; a < 3; a++) p[a] += u * d[a] + COLLIDE_SKIN * best_n[a];
         if (what < 0) {
-            what = hs.what;
-            index = hs.index;
+            what = all[hit].what;
+            index = all[hit].index;
         }
         /* slide: drop the part of the rest of the move that points into the surface */
         double r[3];
