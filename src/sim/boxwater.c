@@ -82,42 +82,51 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
             for (int k = 0; k < 3; k++) vel3[col][k] = ws.velocity[k];
         }
     }
-    /* each column's volume and centroid offset from the centre */
-    double vol[MAXC], ox[MAXC], oy[MAXC], oz[MAXC];
+    /* each column's volume and centroid offset from the centre, and its share of the waterline
+     * (0 where the waterline misses it); the terms first, branch-free, so the loop vectorises,
+     * then the sums in column order */
+    double vol[MAXC], ox[MAXC], oy[MAXC], oz[MAXC], plane[MAXC], plane_r2[MAXC];
     for (int col = 0; col < nc; col++) {
         double wet = (height[col] - (c[1] + ry[col])) / U[1] + h; /* submerged length along U */
         double L = ww_m_clamp(wet, 0.0, s);
         out->wet[col] = wet;
-        if (wet > 0.0 && wet < s) {
-            double r2 = rx[col] * rx[col] + rz[col] * rz[col];
-            out->waterplane += dA / U[1];
-            out->waterplane_moment += dA / U[1] * r2;
-        }
+        int cut = (wet > 0.0) & (wet < s);
+        double r2 = rx[col] * rx[col] + rz[col] * rz[col];
+        plane[col] = cut ? dA / U[1] : 0.0;
+        plane_r2[col] = cut ? dA / U[1] * r2 : 0.0;
         double off = 0.5 * (L - s);
         vol[col] = dA * L;
         ox[col] = rx[col] + off * U[0];
         oy[col] = ry[col] + off * U[1];
         oz[col] = rz[col] + off * U[2];
     }
+    for (int col = 0; col < nc; col++) {
+        out->waterplane += plane[col];
+        out->waterplane_moment += plane_r2[col];
+    }
     /* sums over point-mirrored pairs, so that a symmetric box on flat water feels exactly no
-     * torque (rounding would otherwise seed a tilt that an unstable box amplifies) */
+     * torque (rounding would otherwise seed a tilt that an unstable box amplifies); the middle
+     * column of an odd count last, alone */
     double moment[3] = {0.0, 0.0, 0.0}, vel[3] = {0.0, 0.0, 0.0};
-    for (int a0 = 0; a0 < (nc + 1) / 2; a0++) {
+    for (int a0 = 0; a0 < nc / 2; a0++) {
         int a1 = nc - 1 - a0;
         double v0 = vol[a0], v1 = vol[a1];
-        if (a1 == a0) {
-            out->volume += v0;
-            moment[0] += v0 * ox[a0];
-            moment[1] += v0 * oy[a0];
-            moment[2] += v0 * oz[a0];
-            for (int k = 0; k < 3; k++) vel[k] += v0 * vel3[a0][k];
-            continue;
-        }
         out->volume += v0 + v1;
         moment[0] += v0 * ox[a0] + v1 * ox[a1];
         moment[1] += v0 * oy[a0] + v1 * oy[a1];
         moment[2] += v0 * oz[a0] + v1 * oz[a1];
-        for (int k = 0; k < 3; k++) vel[k] += v0 * vel3[a0][k] + v1 * vel3[a1][k];
+        vel[0] += v0 * vel3[a0][0] + v1 * vel3[a1][0];
+        vel[1] += v0 * vel3[a0][1] + v1 * vel3[a1][1];
+        vel[2] += v0 * vel3[a0][2] + v1 * vel3[a1][2];
+    }
+    if (nc % 2) {
+        int a0 = nc / 2;
+        double v0 = vol[a0];
+        out->volume += v0;
+        moment[0] += v0 * ox[a0];
+        moment[1] += v0 * oy[a0];
+        moment[2] += v0 * oz[a0];
+        for (int k = 0; k < 3; k++) vel[k] += v0 * vel3[a0][k];
     }
     if (out->volume > 0.0) {
         for (int k = 0; k < 3; k++) {
