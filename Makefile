@@ -125,12 +125,15 @@ asan:
 DEMO_SCENE  ?= scenes/tour.yaml
 DEMO_SIZE   ?= 640x360
 DEMO_FRAMES ?=
+# processes the render runs in (render --jobs): on CPU rendering two share the cores better
+# than one process's llvmpipe threads (docs/speed.md)
+DEMO_JOBS   ?= 2
 demo: deps
 	@$(MAKE) --no-print-directory $(BIN)
 	@mkdir -p out/demo
 	@rm -f out/demo/frame_*.png out/demo/sound.wav out/demo.mp4
 	./$(BIN) render $(DEMO_SCENE) --size $(DEMO_SIZE) $(if $(DEMO_FRAMES),--frames $(DEMO_FRAMES)) \
-	    -o out/demo --audio out/demo/sound.wav --progress
+	    -o out/demo --audio out/demo/sound.wav --jobs $(DEMO_JOBS) --progress
 	@fps=$$(./$(BIN) plan $(DEMO_SCENE) | sed -n 's/^frames .* at \([0-9.]*\) fps.*/\1/p'); \
 	if ! command -v ffmpeg >/dev/null 2>&1; then \
 	    echo "video: skipped, ffmpeg is not installed (apt-get install ffmpeg); frames and sound are in out/demo/"; \

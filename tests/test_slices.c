@@ -1,14 +1,16 @@
 /* test_slices.c - a render cut into slices and joined back (render --slices N --emit-jobs,
  * render --slice I/N, join): frames, sound track and stats equal to one process; missing,
  * unfinished and other-run slices listed with their commands; --resume completing the set; bad
- * --slice values exit 2; a sweep's points joined into the one-process sweep.jsonl, sweep.csv and
- * contact sheet.
+ * --slice values exit 2; render --jobs N (the slices in child processes, joined in place) equal
+ * to one process, a failed slice named and finished by --resume; a sweep's points joined into
+ * the one-process sweep.jsonl, sweep.csv and contact sheet.
  * Renders are tiny (64x36, null backend unless said, LP_NUM_THREADS=1) so that these run in the
  * proc tier.
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "io/wav.h"
 #include "render/slices.h"
@@ -27,6 +29,11 @@
 #define MIN_SOUNDING_SHARE 0.5
 
 static char cmdline[8192];
+
+static int exists(const char *path) {
+    struct stat sb;
+    return stat(path, &sb) == 0;
+}
 
 static const char *ww(const char *fmt, const char *a, const char *b) {
     snprintf(cmdline, sizeof cmdline, fmt, a, b);
@@ -284,6 +291,114 @@ TEST_PROC(slices_bad_values_exit_2) {
     }
     ENSURE_EQ_INT(ww_test_ww(ww("join %s/nothing", dir, NULL), NULL, errf), 2);
     ENSURE(ww_test_file_contains(errf, "holds neither slices/"));
+}
+
+/* `render --jobs N`, its sound track and stats named anywhere (here where check_joined reads
+ * them): the frames and track of one process, the stats' summaries one a slice, and nothing of
+ * the slices left in the folder */
+static void render_jobs(const char *dir, const char *backend, const char *more, const char *errf,
+                        int want_exit) {
+    char args[1400];
+    snprintf(args, sizeof args,
+             "render " SCENE " --backend %s --audio %s/sl/audio.wav --stats %s/sl/stats.jsonl "
+             "-o %s/sl --jobs %d %s",
+             backend, dir, dir, dir, NSLICES, more);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), want_exit);
+}
+
+static void check_jobs_left_nothing(const char *dir) {
+    char path[700];
+    const char *gone[] = {"slices", ".jobs-audio.wav", ".jobs-stats.jsonl"};
+    for (size_t i = 0; i < sizeof gone / sizeof gone[0]; i++) {
+        snprintf(path, sizeof path, "%s/sl/%s", dir, gone[i]);
+        ENSURE_MSG(!exists(path), "%s is left", path);
+    }
+}
+
+TEST_PROC(render_jobs_equal_one_process) {
+    char dir[512], errf[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("jobs_eq"));
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    unsetenv("LP_NUM_THREADS");
+    render_full(dir, "null");
+    render_jobs(dir, "null", "", errf, 0);
+    ENSURE(ww_test_file_contains(errf, "rendered 25 frames (0..24) at 64x36 in 3 processes"));
+    ENSURE(ww_test_file_contains(errf, "(LP_NUM_THREADS=1 each)")); /* 1 or 2 cores here */
+    check_joined(dir, 1);
+    check_jobs_left_nothing(dir);
+    /* more processes than frames: one a frame */
+    char args[1024];
+    snprintf(args, sizeof args, "render scenes/lake.yaml --frames 0:2 --size 64x36 --backend null "
+             "-o %s/two --jobs 8", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 0);
+    ENSURE(ww_test_file_contains(errf, "in 2 processes"));
+    setenv("LP_NUM_THREADS", "1", 1);
+}
+
+/* with a GL backend the frames are pictures, and byte-identical too */
+TEST_IMAGE(render_jobs_equal_one_process_gl) {
+    REQUIRE_GL();
+    char dir[512];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("jobs_gl"));
+    setenv("LP_NUM_THREADS", "1", 1);
+    render_full(dir, "auto");
+    render_jobs(dir, "auto", "--quiet", NULL, 0);
+    check_joined(dir, 1);
+    check_jobs_left_nothing(dir);
+    /* --golden checks the joined frames as one process does: one process's frames as goldens */
+    char args[1400], errf[700];
+    snprintf(errf, sizeof errf, "%s/golden.txt", dir);
+    snprintf(args, sizeof args, "render " SCENE " --backend auto -o %s/g --jobs 2 --golden %s/full",
+             dir, dir);
+    ENSURE_EQ_INT(ww_test_ww(args, NULL, errf), 0);
+    ENSURE(ww_test_file_contains(errf, "golden: 25 frames, 25 passed, 0 failed, 0 missing"));
+}
+
+/* a slice that fails is named with its frames and exit code, the others' frames are kept, and
+ * the same command with --resume finishes the run */
+TEST_PROC(render_jobs_failed_slice_named_resume_finishes) {
+    char dir[512], errf[700], path[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("jobs_fail"));
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    setenv("LP_NUM_THREADS", "1", 1);
+    render_full(dir, "null");
+    /* frame 20 (slice 2's) cannot be written: a folder stands in its place */
+    snprintf(path, sizeof path, "%s/sl/frame_00020.png", dir);
+    ENSURE_EQ_INT(ww_test_run(ww("mkdir -p %s", path, NULL), NULL, NULL), 0);
+    render_jobs(dir, "null", "--quiet", errf, 3);
+    ENSURE(ww_test_file_contains(errf, "slice 2/3 (frames 17..24) exited 3"));
+    ENSURE(ww_test_file_contains(errf, "--resume"));
+    snprintf(path, sizeof path, "%s/sl/frame_00000.png", dir);
+    ENSURE_MSG(exists(path), "slice 0's frames are gone");
+    ENSURE_EQ_INT(ww_test_run(ww("rmdir %s/sl/frame_00020.png", dir, NULL), NULL, NULL), 0);
+    render_jobs(dir, "null", "--quiet --resume", errf, 0);
+    check_joined(dir, 0); /* the frames kept were not measured again */
+    check_jobs_left_nothing(dir);
+}
+
+TEST_PROC(render_jobs_bad_values_exit_2) {
+    char dir[512], errf[700], args[1024], out[700];
+    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("jobs_bad"));
+    snprintf(errf, sizeof errf, "%s/err.txt", dir);
+    snprintf(out, sizeof out, "%s/o", dir);
+    const struct { const char *opts, *says; } bad[] = {
+        {"--jobs 0", "--jobs wants 1..64"},
+        {"--jobs 65", "--jobs wants 1..64"},
+        {"--jobs two", "--jobs wants 1..64"},
+        {"--jobs", "--jobs"},
+        {"--jobs 2 --format y4m", "written by one process"},
+        {"--jobs 2 --slice 0/2", "one or the other"},
+        {"--jobs 2 --slices 2 --emit-jobs", "one or the other"},
+        {"--jobs 2 --set water.nope=1", "nope"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        snprintf(args, sizeof args, "render scenes/lake.yaml --size 64x36 --backend null -o %s %s",
+                 out, bad[i].opts);
+        ENSURE_MSG(ww_test_ww(args, NULL, errf) == 2, "%s: not exit 2", bad[i].opts);
+        ENSURE_MSG(ww_test_file_contains(errf, bad[i].says), "%s: message lacks '%s'", bad[i].opts,
+                   bad[i].says);
+        ENSURE_MSG(!exists(out), "%s: %s was made", bad[i].opts, out);
+    }
 }
 
 TEST_PROC(sweep_points_joined_equal_one_process) {

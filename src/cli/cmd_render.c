@@ -9,6 +9,7 @@
 
 #include "check/golden.h"
 #include "cli/cli.h"
+#include "cli/render_jobs.h"
 #include "gfx/backend.h"
 #include "render/checkpoint.h"
 #include "render/job.h"
@@ -35,6 +36,10 @@ static const char usage[] =
     "  --set KEY=VALUE      override a scene value, e.g. --set water.waves.list[0].amplitude=0.4\n"
     "  --script FILE        a YAML file with a script: list, merged with the scene's events\n"
     "  --threads N          encoder threads beside the render thread (default: cores - 1, >= 1)\n"
+    "  --jobs N             render in N processes, each a slice of the frames with llvmpipe's\n"
+    "                       threads shared out (LP_NUM_THREADS = cores / N unless set), then\n"
+    "                       joined: the frames and sound track of one process, byte for byte;\n"
+    "                       png, exr or none (default 1)\n"
     "  --resume             keep frames already complete in DIR, render only the others\n"
     "  --stats FILE.jsonl   one line per frame: simulate, render, read back, encode ms\n"
     "  --audio FILE.wav     the sound track of the frames rendered (44.1 kHz stereo 16-bit)\n"
@@ -46,6 +51,9 @@ static const char usage[] =
     "                       golden: section, with these options over them:\n"
     "                       --threshold T --max M --fail-percent P --fail-pixels N --psnr-min DB\n"
     "                       --yiq Y --yiq-pixels N --ssim-min S --rel-max R --no-aa\n"
+    "";
+/* the rest of the help (one string literal is limited to 4095 characters) */
+static const char usage_slices[] =
     "  --slices N --emit-jobs  print N shell commands, one per slice: this command with\n"
     "                       --slice I/N (for GNU parallel, a Slurm array, a Kubernetes Job)\n"
     "  --slice I/N          render slice I (0-based) of N near-equal pieces of the frames into\n"
@@ -70,6 +78,10 @@ static const char usage[] =
     "Environment: WW_EGL_PLATFORM=device|surfaceless, WW_EGL_DEVICE=N, WW_SHADER_DIR=DIR.\n";
 
 #define MAX_CMP_ARGS 32
+
+/* drop[k]: argv[k] is not repeated by the slices' commands (DROP_SLICES) or by the children of
+ * --jobs (DROP_JOBS), which are given their own -o, --slice, --quiet, --audio and --stats */
+enum { DROP_SLICES = 1, DROP_JOBS = 2 };
 
 /* --slice or --slices anywhere on the line: --audio and --stats then take an optional name */
 static int is_slicing(int argc, char **argv) {
@@ -98,6 +110,52 @@ static ww_result parse_threads(const char *v, int *out, ww_error *err) {
     if (end == v || *end != 0 || n < 1 || n > 64)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--threads wants 1..64, got '%s'", v);
     *out = (int)n;
+    return WW_OK;
+}
+
+static ww_result parse_jobs(const char *v, int *out, ww_error *err) {
+    char *end = NULL;
+    long n = strtol(v, &end, 10);
+    if (end == v || *end != 0 || n < 1 || n > WW_RENDER_MAX_JOBS)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--jobs wants 1..%d, got '%s'",
+                            WW_RENDER_MAX_JOBS, v);
+    *out = (int)n;
+    return WW_OK;
+}
+
+/* --jobs N: the slices in child processes, then joined (cli/render_jobs.h). With goldens, st
+ * gets the renderer that picks them: this binary's backend, as the children opened it */
+static ww_result render_in_jobs(const ww_job_opts *jo, const ww_slice_opts *sl, int njobs,
+                                int golden, ww_job_stats *st, ww_error *err) {
+    if (!sl->exe)
+        return ww_error_set(err, WW_E_IO, "/proc/self/exe", 0, 0,
+                            "render --jobs: cannot find this binary");
+    ww_render_jobs rj = {.jobs = njobs, .exe = sl->exe, .words = sl->words, .nwords = sl->nwords,
+                         .dir = jo->out_dir, .audio_path = jo->audio_path,
+                         .stats_path = jo->stats_path, .resume = jo->resume, .quiet = jo->quiet,
+                         .progress = jo->progress, .first = jo->first, .last = jo->last,
+                         .format = jo->format};
+    ww_render_jobs_stats js;
+    ww_result r = ww_render_jobs_run(&rj, &js, err);
+    if (r) return r;
+    if (golden) {
+        ww_backend *b = NULL;
+        if ((r = ww_backend_open(jo->backend, &b, err))) return r;
+        snprintf(st->renderer, sizeof st->renderer, "%s", ww_backend_renderer(b));
+        snprintf(st->gl_version, sizeof st->gl_version, "%s", ww_backend_version(b));
+        ww_backend_close(b);
+    }
+    if (!jo->quiet) {
+        fprintf(stderr, "rendered %lld frames (%lld..%lld) at %dx%d in %d processes",
+                (long long)(jo->last - jo->first), (long long)jo->first, (long long)jo->last - 1,
+                jo->width, jo->height, js.jobs);
+        if (js.threads) fprintf(stderr, " (LP_NUM_THREADS=%d each)", js.threads);
+        fprintf(stderr, " in %.2f s", js.wall_s);
+        if (jo->format == WW_OUT_PNG || jo->format == WW_OUT_EXR)
+            fprintf(stderr, " -> %s/frame_%05lld.%s ...", jo->out_dir, (long long)jo->first,
+                    ww_out_format_ext(jo->format));
+        fprintf(stderr, "\n");
+    }
     return WW_OK;
 }
 
@@ -142,12 +200,13 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
     ww_result r = WW_OK;
     /* slices: the words every slice repeats are argv less the slicing ones (dropped) */
     ww_slice_opts sl = {.index = -1};
-    const char *slice = NULL, *slices = NULL;
+    const char *slice = NULL, *slices = NULL, *jobs = NULL;
     int emit = 0, slicing = is_slicing(argc, argv);
 
     for (int i = 0; i < argc && !r; i++) {
         if (ww_cli_is_help(argv[i])) {
             fputs(usage, stdout);
+            fputs(usage_slices, stdout);
             return WW_OK;
         }
         /* the slicing options with a value: not repeated by the slices' commands */
@@ -157,28 +216,35 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         int at = i, sliced = 0;
         for (size_t k = 0; k < sizeof slicing_opts / sizeof slicing_opts[0] && !sliced; k++)
             sliced = ww_cli_opt(argc, argv, &i, slicing_opts[k].name, slicing_opts[k].val, &r, err);
-        if (sliced) {
-            for (int k = at; k <= i && k < argc; k++) drop[k] = 1;
+        if (sliced || ww_cli_opt(argc, argv, &i, "--jobs", &jobs, &r, err)) {
+            for (int k = at; k <= i && k < argc; k++) drop[k] = DROP_SLICES | DROP_JOBS;
             continue;
         }
         if (strcmp(argv[i], "--emit-jobs") == 0 || strcmp(argv[i], "--resume") == 0) {
             if (argv[i][2] == 'e') emit = 1;
             else jo.resume = 1; /* join adds it to the commands it prints where it applies */
-            drop[i] = 1;
+            drop[i] = DROP_SLICES | DROP_JOBS;
             continue;
         }
         if (slicing && (opt_name(argc, argv, &i, "--audio", ".wav", WW_SLICE_AUDIO_DEFAULT, &sl.audio_name) ||
                         opt_name(argc, argv, &i, "--stats", ".jsonl", WW_SLICE_STATS_DEFAULT, &sl.stats_name)))
             continue;
-        if (ww_cli_opt(argc, argv, &i, "-o", &out, &r, err)) continue;
-        if (ww_cli_opt(argc, argv, &i, "--output", &out, &r, err)) continue;
+        /* the options --jobs gives its children in its own way */
+        const struct { const char *name; const char **val; } own[] = {
+            {"-o", &out},           {"--output", &out},           {"--stats", &jo.stats_path},
+            {"--audio", &jo.audio_path}, {"--golden", &golden},
+        };
+        int owned = 0;
+        for (size_t k = 0; k < sizeof own / sizeof own[0] && !owned; k++)
+            owned = ww_cli_opt(argc, argv, &i, own[k].name, own[k].val, &r, err);
+        if (owned) {
+            for (int k = at; k <= i && k < argc; k++) drop[k] |= DROP_JOBS;
+            continue;
+        }
         if (ww_cli_opt(argc, argv, &i, "--format", &format, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--backend", &backend, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--threads", &threads, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--exr-compression", &compression, &r, err)) continue;
-        if (ww_cli_opt(argc, argv, &i, "--stats", &jo.stats_path, &r, err)) continue;
-        if (ww_cli_opt(argc, argv, &i, "--audio", &jo.audio_path, &r, err)) continue;
-        if (ww_cli_opt(argc, argv, &i, "--golden", &golden, &r, err)) continue;
         if (ww_cli_opt(argc, argv, &i, "--from-checkpoint", &from, &r, err)) continue;
         const struct { const char *name; int *flag; int value; } flags[] = {
             {"--quiet", &jo.quiet, 1},        {"--alpha", &jo.alpha, 1},
@@ -190,6 +256,7 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
             if (strcmp(argv[i], flags[k].name) == 0) {
                 *flags[k].flag = flags[k].value;
                 flag = 1;
+                if (flags[k].flag == &jo.quiet || flags[k].flag == &progress) drop[i] |= DROP_JOBS;
             }
         }
         if (flag) continue;
@@ -197,7 +264,10 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         int start = i;
         ww_cmp_opts probe = ww_cmp_default_opts();
         if (ww_cmp_opt_arg(argc, argv, &i, &probe, &r, err)) {
-            for (int k = start; k <= i && ncmp < MAX_CMP_ARGS; k++) cmp_words[ncmp++] = argv[k];
+            for (int k = start; k <= i && ncmp < MAX_CMP_ARGS; k++) {
+                cmp_words[ncmp++] = argv[k];
+                drop[k] |= DROP_JOBS;
+            }
             continue;
         }
         if (ww_cli_scene_arg(argc, argv, &i, &so, &r, err)) continue;
@@ -210,6 +280,8 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
     if (backend && (int)(jo.backend = (ww_backend_kind)ww_backend_kind_parse(backend)) < 0)
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0, "--backend wants auto, egl, osmesa or null, got '%s'", backend);
     if (threads && (r = parse_threads(threads, &jo.threads, err))) return r;
+    int njobs = 1;
+    if (jobs && (r = parse_jobs(jobs, &njobs, err))) return r;
     if (compression) {
         static const char *const names[] = {"zip", "none", "piz"};
         int k = 0;
@@ -230,8 +302,17 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
                             "--checkpoints DIR goes with --slices N --emit-jobs (one slice takes "
                             "--from-checkpoint)");
+    if (jobs && (slice || slices))
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--jobs N renders the slices here; --slice and --slices are for a "
+                            "scheduler: give one or the other");
+    if (njobs > 1 && stream)
+        return ww_error_set(err, WW_E_USAGE, NULL, 0, 0,
+                            "--jobs N writes frames (png, exr or none): a %s stream is written "
+                            "by one process",
+                            jo.format == WW_OUT_Y4M ? "y4m" : "raw");
     for (int k = 0; k < argc; k++)
-        if (!drop[k]) words[sl.nwords++] = argv[k];
+        if (!(drop[k] & (njobs > 1 ? DROP_JOBS : DROP_SLICES))) words[sl.nwords++] = argv[k];
     sl.words = words;
     sl.scene_path = so.scene_path;
     sl.script = so.script;
@@ -270,6 +351,12 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
         r = ww_slices_emit(&sl, sc, &jo, stdout, err);
         goto done;
     }
+    ww_job_stats st = {0};
+    if (njobs > 1) {
+        r = render_in_jobs(&jo, &sl, njobs, golden != NULL, &st, err);
+        if (r || !golden) goto done;
+        goto check;
+    }
     /* the checkpoint at or before the first frame rendered here (a slice's own first) */
     int64_t first = jo.first, last = jo.last;
     if (slice) ww_slice_range(jo.first, jo.last, sl.index, sl.count, &first, &last);
@@ -284,7 +371,6 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
                     (long long)jo.first, (long long)jo.last - 1, sl.record);
         goto done;
     }
-    ww_job_stats st;
     r = ww_job_run(sc, &jo, &st, err);
     if (slice && !r) r = ww_slice_end(&sl, sc, &jo, st.renderer, err);
     if (!jo.quiet && (!r || r == WW_E_INTERRUPTED)) {
@@ -301,6 +387,7 @@ static ww_result render(int argc, char **argv, char *drop, char **words, ww_erro
     }
     if (r || !golden) goto done;
 
+check:
     go.first = jo.first;
     go.last = jo.last;
     go.renderer = st.renderer;
