@@ -2,6 +2,7 @@
  * joined in place (model in render_jobs.h). */
 #include "cli/render_jobs.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <signal.h>
 #include <spawn.h>
@@ -96,18 +97,21 @@ static pid_t spawn_slice(const ww_render_jobs *o, int i, char **env, ww_error *e
     return pid;
 }
 
-/* the slices' parts a run of n slices may have left under DIR/slices/, and the folder when it is
- * then empty */
-static void remove_parts(const char *dir, int n) {
-    static const char *const exts[] = {"record", "wav", "stats.jsonl"};
+/* every slice's parts under DIR/slices/ (records, sound tracks, stats: slice_*.*), and the
+ * folder when it is then empty */
+static void remove_parts(const char *dir) {
     char path[1200];
-    for (int i = 0; i < n; i++) {
-        for (size_t k = 0; k < sizeof exts / sizeof exts[0]; k++) {
-            ww_slice_part_path(dir, i, exts[k], path, sizeof path);
-            unlink(path);
-        }
-    }
     snprintf(path, sizeof path, "%s/slices", dir);
+    DIR *d = opendir(path);
+    if (!d) return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (strncmp(e->d_name, "slice_", 6) != 0) continue;
+        char part[1500];
+        snprintf(part, sizeof part, "%s/%s", path, e->d_name);
+        unlink(part);
+    }
+    closedir(d);
     rmdir(path);
 }
 
@@ -233,7 +237,7 @@ ww_result ww_render_jobs_run(const ww_render_jobs *o, ww_render_jobs_stats *st, 
             return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "render --jobs: out of memory");
     }
     /* a fresh run does not mix with parts an earlier one left */
-    if (!o->resume) remove_parts(o->dir, WW_RENDER_MAX_JOBS);
+    if (!o->resume) remove_parts(o->dir);
 
     child c[WW_RENDER_MAX_JOBS] = {{0}};
     struct sigaction sa, old_int, old_term;
@@ -285,7 +289,7 @@ ww_result ww_render_jobs_run(const ww_render_jobs *o, ww_render_jobs_stats *st, 
         if (o->audio_path && (r = move_joined(o->dir, JOBS_AUDIO, o->audio_path, err))) return r;
         if (o->stats_path && (r = move_joined(o->dir, JOBS_STATS, o->stats_path, err))) return r;
     }
-    remove_parts(o->dir, n);
+    remove_parts(o->dir);
     st->wall_s = now_s() - t0;
     return WW_OK;
 }
