@@ -1,9 +1,10 @@
 /* test_slices.c - a render cut into slices and joined back (render --slices N --emit-jobs,
  * render --slice I/N, join): frames, sound track and stats equal to one process; missing,
  * unfinished and other-run slices listed with their commands; --resume completing the set; bad
- * --slice values exit 2; render --jobs N (the slices in child processes, joined in place) equal
- * to one process, a failed slice named and finished by --resume; a sweep's points joined into
- * the one-process sweep.jsonl, sweep.csv and contact sheet.
+ * --slice and --jobs values exit 2 with nothing written; render --jobs N (the slices in child
+ * processes, joined in place) equal to one process, a failed slice named and finished by
+ * --resume; a sweep's points joined into the one-process sweep.jsonl, sweep.csv and contact
+ * sheet.
  * Renders are tiny (64x36, null backend unless said, LP_NUM_THREADS=1) so that these run in the
  * proc tier.
  */
@@ -281,13 +282,24 @@ TEST_PROC(slices_bad_values_exit_2) {
         {"--slice 0/3 --format y4m", "--format png, exr or none"},
         {"--slice 0/3 --audio=sub/x.wav", "plain file name"},
         {"--slice 0/3 --stats=frame_00000.png", "ending in .jsonl"},
+        {"--jobs 0", "--jobs wants 1..64"},
+        {"--jobs 65", "--jobs wants 1..64"},
+        {"--jobs two", "--jobs wants 1..64"},
+        {"--jobs", "--jobs"},
+        {"--jobs 2 --format y4m", "written by one process"},
+        {"--jobs 2 --slice 0/2", "one or the other"},
+        {"--jobs 2 --slices 2 --emit-jobs", "one or the other"},
+        {"--jobs 2 --set water.nope=1", "nope"},
     };
+    char out[700];
+    snprintf(out, sizeof out, "%s/o", dir);
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        snprintf(args, sizeof args, "render scenes/lake.yaml --size 64x36 --backend null -o %s/o %s",
-                 dir, bad[i].opts);
+        snprintf(args, sizeof args, "render scenes/lake.yaml --size 64x36 --backend null -o %s %s",
+                 out, bad[i].opts);
         ENSURE_MSG(ww_test_ww(args, NULL, errf) == 2, "%s: not exit 2", bad[i].opts);
         ENSURE_MSG(ww_test_file_contains(errf, bad[i].says), "%s: message lacks '%s'", bad[i].opts,
                    bad[i].says);
+        ENSURE_MSG(!exists(out), "%s: %s was made", bad[i].opts, out);
     }
     ENSURE_EQ_INT(ww_test_ww(ww("join %s/nothing", dir, NULL), NULL, errf), 2);
     ENSURE(ww_test_file_contains(errf, "holds neither slices/"));
@@ -374,31 +386,6 @@ TEST_PROC(render_jobs_failed_slice_named_resume_finishes) {
     render_jobs(dir, "null", "--quiet --resume", errf, 0);
     check_joined(dir, 0); /* the frames kept were not measured again */
     check_jobs_left_nothing(dir);
-}
-
-TEST_PROC(render_jobs_bad_values_exit_2) {
-    char dir[512], errf[700], args[1024], out[700];
-    snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("jobs_bad"));
-    snprintf(errf, sizeof errf, "%s/err.txt", dir);
-    snprintf(out, sizeof out, "%s/o", dir);
-    const struct { const char *opts, *says; } bad[] = {
-        {"--jobs 0", "--jobs wants 1..64"},
-        {"--jobs 65", "--jobs wants 1..64"},
-        {"--jobs two", "--jobs wants 1..64"},
-        {"--jobs", "--jobs"},
-        {"--jobs 2 --format y4m", "written by one process"},
-        {"--jobs 2 --slice 0/2", "one or the other"},
-        {"--jobs 2 --slices 2 --emit-jobs", "one or the other"},
-        {"--jobs 2 --set water.nope=1", "nope"},
-    };
-    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        snprintf(args, sizeof args, "render scenes/lake.yaml --size 64x36 --backend null -o %s %s",
-                 out, bad[i].opts);
-        ENSURE_MSG(ww_test_ww(args, NULL, errf) == 2, "%s: not exit 2", bad[i].opts);
-        ENSURE_MSG(ww_test_file_contains(errf, bad[i].says), "%s: message lacks '%s'", bad[i].opts,
-                   bad[i].says);
-        ENSURE_MSG(!exists(out), "%s: %s was made", bad[i].opts, out);
-    }
 }
 
 TEST_PROC(sweep_points_joined_equal_one_process) {
