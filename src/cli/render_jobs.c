@@ -277,7 +277,7 @@ ww_result ww_render_jobs_run(const ww_render_jobs *o, ww_render_jobs_stats *st, 
                             i, n, (long long)c[i].first, (long long)c[i].last - 1,
                             WIFEXITED(c[i].status) ? "exited" : "was killed, status", code);
     }
-    if (jobs_signal)
+    if (started < n) /* a signal stopped the starting; every slice started has finished */
         return ww_error_set(err, WW_E_INTERRUPTED, NULL, 0, 0,
                             "render --jobs: interrupted by %s before every slice had started",
                             jobs_signal == SIGTERM ? "SIGTERM" : "SIGINT");
