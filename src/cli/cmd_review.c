@@ -10,12 +10,12 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "check/review.h"
 #include "cli/cli.h"
 #include "io/outpath.h"
+#include "render/job.h"
 
 extern char **environ;
 
@@ -53,12 +53,6 @@ typedef struct job {
     int shot;
     double started;
 } job;
-
-static double now_s(void) {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static ww_result mkdir_p(const char *dir, ww_error *err) {
     char buf[1100];
@@ -177,7 +171,7 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
     int nrun = 0, next = 0, done = 0;
     ww_result first_fail = WW_OK;
     ww_error fail_err = {0};
-    double t0 = now_s();
+    double t0 = ww_now_seconds();
     while (done < l->n) {
         /* start renders up to --jobs */
         if (stop_signal && nrun == 0) break;
@@ -194,7 +188,7 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
                 done++;
                 continue;
             }
-            running[nrun++] = (job){pid, next++, now_s()};
+            running[nrun++] = (job){pid, next++, ww_now_seconds()};
         }
         if (nrun == 0) continue;
         int status = 0;
@@ -213,7 +207,7 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
                 if (!stop_signal) ww_error_print(&e, stderr);
                 if (!first_fail) fail_err = e, first_fail = r;
             } else if (!o->quiet) {
-                fprintf(stderr, "review: [%d/%d] %-22s %5.1f s\n", done, l->n, s->name, now_s() - running[j].started);
+                fprintf(stderr, "review: [%d/%d] %-22s %5.1f s\n", done, l->n, s->name, ww_now_seconds() - running[j].started);
             }
             running[j] = running[--nrun];
             break;
@@ -225,7 +219,7 @@ static ww_result render_all(const opts *o, const ww_review_list *l, ww_error *er
         return ww_error_set(err, WW_E_INTERRUPTED, NULL, 0, 0,
                             "interrupted by %s: %d of %d shots finished, no sheet written",
                             stop_signal == SIGINT ? "SIGINT" : "SIGTERM", done, l->n);
-    if (!o->quiet) fprintf(stderr, "review: %d shots rendered in %.1f s\n", l->n, now_s() - t0);
+    if (!o->quiet) fprintf(stderr, "review: %d shots rendered in %.1f s\n", l->n, ww_now_seconds() - t0);
     if (first_fail) *err = fail_err;
     return first_fail;
 }

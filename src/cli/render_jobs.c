@@ -11,7 +11,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "cli/cli.h"
@@ -30,12 +29,6 @@ extern char **environ;
 /* a signal handler takes no context: the one flag it sets is the file's only static */
 static volatile sig_atomic_t jobs_signal;
 static void on_signal(int sig) { jobs_signal = sig; }
-
-static double now_s(void) {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 typedef struct child {
     pid_t pid;
@@ -166,7 +159,7 @@ static int64_t frames_seen(const ww_render_jobs *o, child *c, int n) {
 
 static void progress_line(const ww_render_jobs *o, child *c, int n, double t0, int final) {
     int64_t all = o->last - o->first, done = frames_seen(o, c, n);
-    double t = now_s() - t0, fps = t > 0.0 ? (double)done / t : 0.0;
+    double t = ww_now_seconds() - t0, fps = t > 0.0 ? (double)done / t : 0.0;
     fprintf(stderr, "\rrender: %lld/%lld frames in %d processes, %.2f fps", (long long)done,
             (long long)all, n, fps);
     if (!final && fps > 0.0 && done < all) fprintf(stderr, ", %.0f s left", (double)(all - done) / fps);
@@ -188,9 +181,9 @@ static void wait_all(const ww_render_jobs *o, child *c, int n, int show, double 
         int status = 0;
         pid_t pid = waitpid(-1, &status, show ? WNOHANG : 0);
         if (pid == 0 || (pid < 0 && errno == EINTR)) {
-            if (show && now_s() - last_line >= PROGRESS_PERIOD) {
+            if (show && ww_now_seconds() - last_line >= PROGRESS_PERIOD) {
                 progress_line(o, c, n, t0, 0);
-                last_line = now_s();
+                last_line = ww_now_seconds();
             }
             if (pid == 0) usleep(50 * 1000);
             continue;
@@ -218,7 +211,7 @@ static ww_result child_result(int status) {
 }
 
 ww_result ww_render_jobs_run(const ww_render_jobs *o, ww_render_jobs_stats *st, ww_error *err) {
-    double t0 = now_s();
+    double t0 = ww_now_seconds();
     int n = o->jobs;
     if (o->last - o->first < n) n = (int)(o->last - o->first);
     if (n < 1) n = 1;
@@ -290,6 +283,6 @@ ww_result ww_render_jobs_run(const ww_render_jobs *o, ww_render_jobs_stats *st, 
         if (o->stats_path && (r = move_joined(o->dir, JOBS_STATS, o->stats_path, err))) return r;
     }
     remove_parts(o->dir);
-    st->wall_s = now_s() - t0;
+    st->wall_s = ww_now_seconds() - t0;
     return WW_OK;
 }
