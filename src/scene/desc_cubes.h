@@ -9,8 +9,15 @@
 #define WW_DESC_CUBES_H
 
 #define WW_MAX_CUBES 64
-#define WW_CUBE_MAX_COLUMNS 8  /* buoyancy columns per side of the box (columns^2 queries) */
+#define WW_CUBE_MAX_COLUMNS 8  /* buoyancy columns per side of the box */
 #define WW_CUBE_DEFAULT_COLUMNS 4
+
+/* exact surface queries per side of a box of n x n buoyancy columns (sim/boxwater.h): the
+ * columns' own centres up to 2 x 2, then the 2 x 2 Gauss-Legendre nodes up to 4 x 4 columns and
+ * the 3 x 3 nodes above, the surface interpolated from them to the columns */
+static inline int ww_box_nodes_per_side(int n) {
+    return n <= 2 ? n : n <= 4 ? 2 : 3;
+}
 
 typedef enum ww_cube_buoyancy {
     WW_CUBE_ARCHIMEDES = 0, /* submerged volume of the box against the exact surface */

@@ -41,14 +41,145 @@ int ww_box_up_axis(double ax[3][3]) {
 
 /* ---- the columns ---------------------------------------------------------------------------- */
 
+/* the box's column frame: U, the local axis nearest the vertical turned upward, and P, Q the
+ * cross-section's axes; returns U's index */
+static int box_frame(const double q[4], double ax[3][3], double U[3], int *ap, int *aq) {
+    ww_box_axes(q, ax);
+    int a = ww_box_up_axis(ax);
+    double sg = ax[a][1] < 0.0 ? -1.0 : 1.0;
+    for (int k = 0; k < 3; k++) U[k] = sg * ax[a][k];
+    *ap = (a + 1) % 3;
+    *aq = (a + 2) % 3;
+    return a;
+}
+
+/* the nodes along one side in units of the side, centred: the columns' centres where there
+ * are as many (m = n <= 2), else Gauss-Legendre's, +-g (m = 2: g = 1 / (2 sqrt 3)) or 0, +-g
+ * (m = 3: g = sqrt(3/5) / 2); t = x / g is the node coordinate, -1, (0,) 1 at the nodes */
+static double node_step(int m) {
+    return m == 2 ? 0.5 / sqrt(3.0) : 0.5 * sqrt(0.6);
+}
+static double node_at(int m, int n, int i) {
+    if (m == n) return (i + 0.5) / n - 0.5;
+    return (2.0 * i / (m - 1) - 1.0) * node_step(m);
+}
+
+void ww_box_node_points(const double c[3], const double q[4], const double extent[3], int n,
+                        double *x, double *z) {
+    double ax[3][3], U[3];
+    int ap, aq, m = ww_box_nodes_per_side(n);
+    box_frame(q, ax, U, &ap, &aq);
+    const double *P = ax[ap], *Q = ax[aq];
+    for (int i = 0; i < m; i++) {
+        double u = node_at(m, n, i) * extent[ap];
+        for (int j = 0; j < m; j++) {
+            double v = node_at(m, n, j) * extent[aq];
+            x[i * m + j] = c[0] + u * P[0] + v * Q[0];
+            z[i * m + j] = c[2] + u * P[2] + v * Q[2];
+        }
+    }
+}
+
+/* the node helpers below are inlined where they are called with a constant node count m, so
+ * their loops over the nodes unroll */
+#define NODE_LOOPS static inline __attribute__((always_inline))
+
+/* the polynomial through m values at the nodes t = -1, (0,) 1, as coefficients of 1, t (, t^2),
+ * written with the values' half-sums and half-differences: where the values are equal (flat
+ * water) every coefficient but the first is 0 exactly and the first is the value */
+NODE_LOOPS void node_poly(int m, const double *f, int stride, double *k) {
+    double lo = f[0], hi = f[(m - 1) * stride];
+    double mean = 0.5 * (lo + hi), half_diff = 0.5 * (hi - lo);
+    if (m == 2) {
+        k[0] = mean, k[1] = half_diff;
+    } else {
+        double mid = f[stride];
+        k[0] = mid, k[1] = half_diff, k[2] = mean - mid;
+    }
+}
+
+/* the polynomial through the m x m node values (stride apart) as coefficients K[i m + j] of
+ * tu^i tv^j: node_poly along Q, then along P */
+NODE_LOOPS void node_coefficients(int m, const double *f, int stride, double *K) {
+    double row[3][3];
+    for (int i = 0; i < m; i++) node_poly(m, f + i * m * stride, stride, row[i]);
+    for (int j = 0; j < m; j++) {
+        double col[3], k[3];
+        for (int i = 0; i < m; i++) col[i] = row[i][j];
+        node_poly(m, col, 1, k);
+        for (int i = 0; i < m; i++) K[i * m + j] = k[i];
+    }
+}
+
+/* the powers 1, t, t^2 of the columns' node coordinate along a side (the same along both: a box
+ * has n columns each way) */
+typedef struct column_powers {
+    double p[WW_CUBE_MAX_COLUMNS][3];
+} column_powers;
+
+/* the polynomial of m x m coefficients K[i m + j] of tu^i tv^j at every column, row by row: the
+ * row's polynomial in tv first, sum_i K[i m + j] tu^i, then its value. The constant term comes
+ * first in each sum, so a polynomial whose other coefficients are 0 gives its constant exactly */
+NODE_LOOPS void poly_at_columns(int m, int n, const double *K, const column_powers *T,
+                                double *out) {
+    for (int iu = 0; iu < n; iu++) {
+        const double *pu = T->p[iu];
+        double row[3];
+        for (int j = 0; j < m; j++) {
+            double r = K[j];
+            for (int i = 1; i < m; i++) r += K[i * m + j] * pu[i];
+            row[j] = r;
+        }
+        for (int iv = 0; iv < n; iv++) {
+            const double *pv = T->p[iv];
+            double y = row[0];
+            for (int j = 1; j < m; j++) y += row[j] * pv[j];
+            out[iu * n + iv] = y;
+        }
+    }
+}
+
+/* bm[i m + j] = sum over the columns of vol tu^i tv^j, row by row */
+NODE_LOOPS void volume_moments(int m, int n, const double *vol, const column_powers *T,
+                               double *bm) {
+    for (int k = 0; k < m * m; k++) bm[k] = 0.0;
+    for (int iu = 0; iu < n; iu++) {
+        double r[3] = {0.0, 0.0, 0.0};
+        for (int iv = 0; iv < n; iv++) {
+            double v = vol[iu * n + iv];
+            for (int j = 0; j < m; j++) r[j] += v * T->p[iv][j];
+        }
+        for (int i = 0; i < m; i++)
+            for (int j = 0; j < m; j++) bm[i * m + j] += T->p[iu][i] * r[j];
+    }
+}
+
 void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
                      const double q[4], const double extent[3], int n, double *warm,
                      ww_box_water *out) {
-    double ax[3][3];
-    ww_box_axes(q, ax);
-    int a = ww_box_up_axis(ax), ap = (a + 1) % 3, aq = (a + 2) % 3;
-    double sg = ax[a][1] < 0.0 ? -1.0 : 1.0;
-    double U[3] = {sg * ax[a][0], sg * ax[a][1], sg * ax[a][2]};
+    enum { MAXN = 9 };
+    int m = ww_box_nodes_per_side(n), nn = m * m;
+    double x[MAXN], z[MAXN], height[MAXN], velocity[MAXN * 3];
+    ww_box_node_points(c, q, extent, n, x, z);
+    if (warm) {
+        ww_water_at_warm_n(sc, st, nn, x, z, 0.0, warm, height, velocity);
+    } else {
+        for (int k = 0; k < nn; k++) {
+            ww_water_sample ws;
+            ww_water_at(sc, st, x[k], z[k], 0.0, &ws);
+            height[k] = ws.height;
+            for (int j = 0; j < 3; j++) velocity[3 * k + j] = ws.velocity[j];
+        }
+    }
+    ww_box_water_from(c, q, extent, n, height, velocity, out);
+}
+
+void ww_box_water_from(const double c[3], const double q[4], const double extent[3], int n,
+                       const double *node_height, const double *node_velocity,
+                       ww_box_water *out) {
+    double ax[3][3], U[3];
+    int ap, aq, m = ww_box_nodes_per_side(n), mm = m * m;
+    int a = box_frame(q, ax, U, &ap, &aq);
     const double *P = ax[ap], *Q = ax[aq];
     double s = extent[a], h = 0.5 * s;
     double cp = extent[ap] / n, cq = extent[aq] / n, dA = cp * cq;
@@ -56,10 +187,9 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
     *out = (ww_box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
                           .cell_area = dA, .length = s};
     enum { MAXC = WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS };
-    /* the columns' centre lines (offsets r from the centre, one array a coordinate) and the
-     * surface over them, the warm queries all at once */
-    double rx[MAXC], ry[MAXC], rz[MAXC], px[MAXC], pz[MAXC], height[MAXC], vel3[MAXC][3];
-    int nc = n * n;
+    int nc = n * n, interpolated = m < n;
+    /* the columns' centre lines (offsets r from the centre, one array a coordinate) */
+    double rx[MAXC], ry[MAXC], rz[MAXC], height[MAXC];
     for (int iu = 0; iu < n; iu++) {
         double u = (iu + 0.5 - 0.5 * n) * cp;
         for (int iv = 0; iv < n; iv++) {
@@ -68,19 +198,29 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
             rx[col] = u * P[0] + v * Q[0];
             ry[col] = u * P[1] + v * Q[1];
             rz[col] = u * P[2] + v * Q[2];
-            px[col] = c[0] + rx[col];
-            pz[col] = c[2] + rz[col];
         }
     }
-    if (warm) {
-        ww_water_at_warm_n(sc, st, nc, px, pz, 0.0, warm, height, &vel3[0][0]);
-    } else {
-        for (int col = 0; col < nc; col++) {
-            ww_water_sample ws;
-            ww_water_at(sc, st, px[col], pz[col], 0.0, &ws);
-            height[col] = ws.height;
-            for (int k = 0; k < 3; k++) vel3[col][k] = ws.velocity[k];
+    /* the surface's height over them: the nodes' own where the nodes are the columns, else the
+     * polynomial through the nodes (Kh; and Kv, each velocity component's, for the mean velocity
+     * below) at the columns' node coordinates */
+    double Kh[9], Kv[3][9];
+    column_powers T;
+    if (interpolated) {
+        for (int i = 0; i < n; i++) {
+            double t = ((i + 0.5) / n - 0.5) / node_step(m);
+            T.p[i][0] = 1.0, T.p[i][1] = t, T.p[i][2] = t * t;
         }
+        if (m == 2) {
+            node_coefficients(2, node_height, 1, Kh);
+            for (int k = 0; k < 3; k++) node_coefficients(2, node_velocity + k, 3, Kv[k]);
+            poly_at_columns(2, n, Kh, &T, height);
+        } else {
+            node_coefficients(3, node_height, 1, Kh);
+            for (int k = 0; k < 3; k++) node_coefficients(3, node_velocity + k, 3, Kv[k]);
+            poly_at_columns(3, n, Kh, &T, height);
+        }
+    } else {
+        for (int col = 0; col < nc; col++) height[col] = node_height[col];
     }
     /* each column's volume and centroid offset from the centre, and its share of the waterline
      * (0 where the waterline misses it); the terms first, branch-free, so the loop vectorises,
@@ -107,7 +247,7 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
     /* sums over point-mirrored pairs, so that a symmetric box on flat water feels exactly no
      * torque (rounding would otherwise seed a tilt that an unstable box amplifies); the middle
      * column of an odd count last, alone */
-    double moment[3] = {0.0, 0.0, 0.0}, vel[3] = {0.0, 0.0, 0.0};
+    double moment[3] = {0.0, 0.0, 0.0};
     for (int a0 = 0; a0 < nc / 2; a0++) {
         int a1 = nc - 1 - a0;
         double v0 = vol[a0], v1 = vol[a1];
@@ -115,9 +255,6 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
         moment[0] += v0 * ox[a0] + v1 * ox[a1];
         moment[1] += v0 * oy[a0] + v1 * oy[a1];
         moment[2] += v0 * oz[a0] + v1 * oz[a1];
-        vel[0] += v0 * vel3[a0][0] + v1 * vel3[a1][0];
-        vel[1] += v0 * vel3[a0][1] + v1 * vel3[a1][1];
-        vel[2] += v0 * vel3[a0][2] + v1 * vel3[a1][2];
     }
     if (nc % 2) {
         int a0 = nc / 2;
@@ -126,13 +263,27 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
         moment[0] += v0 * ox[a0];
         moment[1] += v0 * oy[a0];
         moment[2] += v0 * oz[a0];
-        for (int k = 0; k < 3; k++) vel[k] += v0 * vel3[a0][k];
     }
-    if (out->volume > 0.0) {
-        for (int k = 0; k < 3; k++) {
-            out->centre[k] = c[k] + moment[k] / out->volume;
-            out->velocity[k] = vel[k] / out->volume;
-        }
+    if (!(out->volume > 0.0)) return;
+    /* the water's velocity weighted by the columns' volumes: sum_c V_c u(c). Interpolated,
+     * u(c) = sum_k Kv[k] b_k(c), so it is sum_k Kv[k] (sum_c V_c b_k(c)): a moment of the
+     * volumes a monomial instead of the velocity at every column */
+    double vel[3] = {0.0, 0.0, 0.0};
+    if (interpolated) {
+        double bm[9];
+        if (m == 2)
+            volume_moments(2, n, vol, &T, bm);
+        else
+            volume_moments(3, n, vol, &T, bm);
+        for (int j = 0; j < 3; j++)
+            for (int k = 0; k < mm; k++) vel[j] += Kv[j][k] * bm[k];
+    } else {
+        for (int col = 0; col < nc; col++)
+            for (int j = 0; j < 3; j++) vel[j] += vol[col] * node_velocity[3 * col + j];
+    }
+    for (int k = 0; k < 3; k++) {
+        out->centre[k] = c[k] + moment[k] / out->volume;
+        out->velocity[k] = vel[k] / out->volume;
     }
 }
 

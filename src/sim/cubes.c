@@ -4,14 +4,16 @@
  * Archimedes. The box (edge s, density rho_c, mass m = rho_c s^3) is cut into columns x columns
  * prisms along its local axis U nearest the vertical (U.y >= 1/sqrt 3). A prism with base point
  * b (its middle) and cross-section dA = (s / columns)^2 is submerged for w < (h - b.y) / U.y,
- * h the surface over b (ww_water_at): length L = clamp((h - b.y) / U.y + s/2, 0, s), volume
- * dA L, centroid b + (L - s) / 2 U. This is exact for a plane surface cutting every prism
- * (flat water, any tilt that leaves the corners dry or wet as a whole) and converges as
- * columns^2 otherwise. Buoyancy F = rho_w g V_sub up, at the centre of buoyancy: the torque
- * (c_b - c) x F tilts the box toward the local slope, and a box whose metacentric height
- * GM = s^2 / (12 d) - (s - d) / 2 is negative (0.21 < rho_c / rho_w < 0.79 for a cube, d the
- * draft) turns over, as a real one does (Archimedes, "On Floating Bodies"; the metacentre of
- * Bouguer 1746).
+ * h the surface over b: length L = clamp((h - b.y) / U.y + s/2, 0, s), volume dA L, centroid
+ * b + (L - s) / 2 U. h is the exact surface (ww_water_at) at the Gauss-Legendre nodes of the
+ * cross-section, 2 x 2 up to 4 x 4 columns and 3 x 3 above, interpolated to the prisms by the
+ * polynomial through them (sim/boxwater.h). This is exact for a plane surface cutting every
+ * prism (flat water, any tilt that leaves the corners dry or wet as a whole) and converges as
+ * columns^2 otherwise, up to the interpolation's error. Buoyancy F = rho_w g V_sub up, at the
+ * centre of buoyancy: the torque (c_b - c) x F tilts the box toward the local slope, and a box
+ * whose metacentric height GM = s^2 / (12 d) - (s - d) / 2 is negative (0.21 < rho_c / rho_w <
+ * 0.79 for a cube, d the draft) turns over, as a real one does (Archimedes, "On Floating
+ * Bodies"; the metacentre of Bouguer 1746).
  *
  * Heave. Over one step, with the surface and the tilt held, raising the box by xi changes each
  * column's wet length by -xi / U.y, so the buoyancy is an exact piecewise-linear function of xi
@@ -19,12 +21,13 @@
  * integral of clamp(., 0, s). The heave is advanced by the implicit midpoint rule with the
  * discrete gradient of that potential (Gonzalez 1996, "Time integration and discrete
  * Hamiltonian systems"): xi1 = dt (v0 + v1) / 2, v1 = v0 + dt (rho_w g Vbar / m + a - gamma
- * ((v0 + v1) / 2 - u_y)) with Vbar = (1 / xi1) int_0^xi1 V, solved for xi1 by bisection (the
- * residual is monotone since V decreases with xi). Kinetic plus buoyancy energy is conserved
- * to rounding at any dt without drag (and only lost with it), so a thin light box at dt = 1/15
- * (omega dt > 2, where semi-implicit Euler explodes) and a box leaving the water and falling
- * back cannot gain energy; in the linear range it is the trapezoidal rule, whose period error
- * is (omega dt)^2 / 12 (0.1% for a 0.8 m draft at dt = 1/30).
+ * ((v0 + v1) / 2 - u_y)) with Vbar = (1 / xi1) int_0^xi1 V, solved for xi1 by Newton's method
+ * kept inside its bracket (the residual is monotone since V decreases with xi). Kinetic plus
+ * buoyancy energy is conserved to rounding at any dt without drag (and only lost with it), so a
+ * thin light box at dt = 1/15 (omega dt > 2, where semi-implicit Euler explodes) and a box
+ * leaving the water and falling back cannot gain energy; in the linear range it is the
+ * trapezoidal rule, whose period error is (omega dt)^2 / 12 (0.1% for a 0.8 m draft at
+ * dt = 1/30).
  * The spring mode is linear: it is advanced by the exact solution of its damped oscillator
  * (ww_m_damped_oscillator). Seed 000's explicit update (v += k (y_t - y) dt; v *= e^(-c dt);
  * y += v dt) is first-order and unstable for k dt^2 > 4 (Gaffer on Games, "Spring Physics").
@@ -76,23 +79,45 @@ static void cross3(const double a[3], const double b[3], double out[3]) {
 
 /* ---- water on a cube ----------------------------------------------------------------------- */
 
-/* the columns of cube i against the surface; warm: the cube's warm starts (ww_cube_samples of
- * them, sim/water.h), NULL for cold queries */
-static void cube_water(const ww_scene *sc, const ww_state *st, int i, double *warm,
-                       ww_cube_water *out) {
-    const ww_cube_desc *d = &sc->cubes.cube[i];
-    double e[3] = {d->size, d->size, d->size};
-    int n = d->columns > 0 ? d->columns : WW_CUBE_DEFAULT_COLUMNS;
-    ww_box_water_at(sc, st, st->cube_pos + 3 * i, st->cube_rot + 4 * i, e, n, warm, out);
+/* cube i's columns a side */
+static int cube_columns(const ww_cube_desc *d) {
+    return d->columns > 0 ? d->columns : WW_CUBE_DEFAULT_COLUMNS;
 }
 
+/* the columns of cube i against the surface, cold queries (the step's are warm, below) */
 void ww_cubes_water(const ww_scene *sc, const ww_state *st, int i, ww_cube_water *out) {
-    cube_water(sc, st, i, NULL, out);
+    const ww_cube_desc *d = &sc->cubes.cube[i];
+    double e[3] = {d->size, d->size, d->size};
+    ww_box_water_at(sc, st, st->cube_pos + 3 * i, st->cube_rot + 4 * i, e, cube_columns(d), NULL,
+                    out);
 }
 
 /* cube i's warm starts in the state */
 static double *cube_warm(const ww_scene *sc, ww_state *st, int i) {
-    return st->cube_warm + WW_WARM_STRIDE * ww_cube_samples_before(sc, i);
+    return st->cube_warm + WW_WARM_STRIDE * ww_cube_warm_index(sc, i);
+}
+
+/* the surface at every archimedes cube's nodes at the step's start, asked in one query so that
+ * the lanes of the query (sim/water.h) fill across cubes: heights, and velocities 3 a node, in
+ * the order of the warm starts */
+enum { MAX_NODES = WW_MAX_CUBES * 9 };
+typedef struct cube_nodes {
+    double height[MAX_NODES], velocity[3 * MAX_NODES];
+} cube_nodes;
+
+static void cubes_surface(const ww_scene *sc, ww_state *st, cube_nodes *out) {
+    double x[MAX_NODES], z[MAX_NODES];
+    int k = 0;
+    for (int i = 0; i < WW_N_CUBES(sc); i++) {
+        const ww_cube_desc *d = &sc->cubes.cube[i];
+        if (d->buoyancy == WW_CUBE_SPRING) continue;
+        double e[3] = {d->size, d->size, d->size};
+        ww_box_node_points(st->cube_pos + 3 * i, st->cube_rot + 4 * i, e, cube_columns(d), x + k,
+                           z + k);
+        k += ww_cube_samples(sc, i);
+    }
+    if (k > 0)
+        ww_water_at_warm_n(sc, st, k, x, z, 0.0, st->cube_warm, out->height, out->velocity);
 }
 
 /* ---- reset and events ---------------------------------------------------------------------- */
@@ -112,7 +137,7 @@ void ww_cubes_reset(const ww_scene *sc, ww_state *st) {
         st->cube_submerged[i] = 0.0;
     }
     /* every query starts cold */
-    int nw = WW_WARM_STRIDE * ww_cube_samples_before(sc, WW_N_CUBES(sc));
+    int nw = WW_WARM_STRIDE * ww_cube_samples_all(sc);
     for (int k = 0; k < nw; k++) st->cube_warm[k] = 0.0;
 }
 
@@ -136,12 +161,16 @@ typedef struct cube_forces {
     ww_cube_water water; /* archimedes: the columns, for the heave */
 } cube_forces;
 
-static void forces_archimedes(const ww_scene *sc, ww_state *st, int i, cube_forces *F) {
+static void forces_archimedes(const ww_scene *sc, ww_state *st, int i, const cube_nodes *N,
+                              cube_forces *F) {
     const ww_cube_desc *d = &sc->cubes.cube[i];
     const double *c = st->cube_pos + 3 * i;
     double s = d->size, vol = s * s * s, m = d->density * vol, inertia = m * s * s / 6.0;
     const ww_cube_water *w = &F->water;
-    cube_water(sc, st, i, cube_warm(sc, st, i), &F->water);
+    double e[3] = {s, s, s};
+    int k = ww_cube_warm_index(sc, i);
+    ww_box_water_from(c, st->cube_rot + 4 * i, e, cube_columns(d), N->height + k,
+                      N->velocity + 3 * k, &F->water);
     F->archimedes = 1;
     double fb = WW_WATER_RHO * WW_G * w->volume;
     F->f = w->volume / vol;
@@ -208,7 +237,7 @@ static double seabed_floor(const ww_scene *sc, const double q[4], double size) {
     return sc->water_level - sc->water_depth + ext;
 }
 
-static void step_cube(const ww_scene *sc, ww_state *st, int i) {
+static void step_cube(const ww_scene *sc, ww_state *st, int i, const cube_nodes *N) {
     const ww_cube_desc *d = &sc->cubes.cube[i];
     double dt = sc->dt, *p = st->cube_pos + 3 * i, *v = st->cube_vel + 3 * i;
     double *w = st->cube_omega + 3 * i, *q = st->cube_rot + 4 * i, *press = st->cube_press + 2 * i;
@@ -216,7 +245,7 @@ static void step_cube(const ww_scene *sc, ww_state *st, int i) {
     if (d->buoyancy == WW_CUBE_SPRING)
         forces_spring(sc, st, i, &F);
     else
-        forces_archimedes(sc, st, i, &F);
+        forces_archimedes(sc, st, i, N, &F);
     st->cube_submerged[i] = F.f;
 
     /* press: a downward acceleration while held */
@@ -264,6 +293,8 @@ static void step_cube(const ww_scene *sc, ww_state *st, int i) {
 }
 
 void ww_cubes_step(const ww_scene *sc, ww_state *st) {
+    cube_nodes N;
+    cubes_surface(sc, st, &N);
     /* step 0 is the described start: nothing has moved yet */
     if (st->step == 0) {
         for (int i = 0; i < WW_N_CUBES(sc); i++) {
@@ -271,10 +302,10 @@ void ww_cubes_step(const ww_scene *sc, ww_state *st) {
             if (sc->cubes.cube[i].buoyancy == WW_CUBE_SPRING)
                 forces_spring(sc, st, i, &F);
             else
-                forces_archimedes(sc, st, i, &F);
+                forces_archimedes(sc, st, i, &N, &F);
             st->cube_submerged[i] = F.f;
         }
         return;
     }
-    for (int i = 0; i < WW_N_CUBES(sc); i++) step_cube(sc, st, i);
+    for (int i = 0; i < WW_N_CUBES(sc); i++) step_cube(sc, st, i, &N);
 }

@@ -7,10 +7,14 @@
 
 #define WW_N_FLOATERS(sc) ((sc)->floaters.on ? (sc)->floaters.count : 0)
 
-/* the surface sample points (columns^2) of the floaters before floater j */
+/* the surface sample points (the columns' nodes, sim/boxwater.h) of the floaters before
+ * floater j */
 static inline int ww_floater_samples_before(const ww_scene *sc, int j) {
     int sum = 0;
-    for (int i = 0; i < j; i++) sum += sc->floaters.floater[i].columns * sc->floaters.floater[i].columns;
+    for (int i = 0; i < j; i++) {
+        int m = ww_box_nodes_per_side(sc->floaters.floater[i].columns);
+        sum += m * m;
+    }
     return sum;
 }
 
@@ -20,6 +24,6 @@ static inline int ww_floater_samples_before(const ww_scene *sc, int j) {
     X(double, floater_rot, 4 * WW_N_FLOATERS(sc), "floaters", "orientations, unit quaternion w x y z (4 per floater)") \
     X(double, floater_omega, 3 * WW_N_FLOATERS(sc), "floaters", "angular velocities, world frame, rad/s (3 per floater)") \
     X(double, floater_submerged, WW_N_FLOATERS(sc), "floaters", "submerged fraction of the box, 0..1 (1 per floater)") \
-    X(double, floater_warm, WW_WARM_STRIDE * ww_floater_samples_before(sc, WW_N_FLOATERS(sc)), "floaters", "warm starts of the surface queries (sim/water.h), m: last rest offset a - x and its change (4 per column, columns^2 per floater)")
+    X(double, floater_warm, WW_WARM_STRIDE * ww_floater_samples_before(sc, WW_N_FLOATERS(sc)), "floaters", "warm starts of the surface queries (sim/water.h), m: last rest offset a - x and its change (4 per surface node of a floater, sim/boxwater.h)")
 
 #endif

@@ -38,12 +38,35 @@ static double body_volume(const ww_floater_desc *d) {
 
 /* ---- water on a box ------------------------------------------------------------------------ */
 
-/* floater j's columns against the surface (sim/boxwater.h), warm-started from its state */
-static void box_water_at(const ww_scene *sc, ww_state *st, int j, ww_box_water *out) {
+/* the surface at every floater's nodes (sim/boxwater.h) at the step's start, asked in one query
+ * so that the lanes of the query (sim/water.h) fill across floaters: heights, and velocities 3 a
+ * node, in the order of the warm starts */
+enum { MAX_NODES = WW_MAX_FLOATERS * 9 };
+typedef struct floater_nodes {
+    double height[MAX_NODES], velocity[3 * MAX_NODES];
+} floater_nodes;
+
+static void floaters_surface(const ww_scene *sc, ww_state *st, floater_nodes *out) {
+    double x[MAX_NODES], z[MAX_NODES];
+    int n = WW_N_FLOATERS(sc), k = ww_floater_samples_before(sc, n);
+    for (int j = 0; j < n; j++) {
+        const ww_floater_desc *d = &sc->floaters.floater[j];
+        int at = ww_floater_samples_before(sc, j);
+        ww_box_node_points(st->floater_pos + 3 * j, st->floater_rot + 4 * j, d->extent, d->columns,
+                           x + at, z + at);
+    }
+    if (k > 0)
+        ww_water_at_warm_n(sc, st, k, x, z, 0.0, st->floater_warm, out->height,
+                           out->velocity);
+}
+
+/* floater j's columns against the surface (sim/boxwater.h) from its nodes' samples */
+static void box_water_at(const ww_scene *sc, ww_state *st, int j, const floater_nodes *N,
+                         ww_box_water *out) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
-    double *warm = st->floater_warm + WW_WARM_STRIDE * ww_floater_samples_before(sc, j);
-    ww_box_water_at(sc, st, st->floater_pos + 3 * j, st->floater_rot + 4 * j, d->extent,
-                    d->columns, warm, out);
+    int at = ww_floater_samples_before(sc, j);
+    ww_box_water_from(st->floater_pos + 3 * j, st->floater_rot + 4 * j, d->extent, d->columns,
+                      N->height + at, N->velocity + 3 * at, out);
 }
 
 /* ---- reset, pose --------------------------------------------------------------------------- */
@@ -105,12 +128,13 @@ typedef struct box_forces {
     ww_box_water water;
 } box_forces;
 
-static void forces(const ww_scene *sc, ww_state *st, int j, box_forces *F) {
+static void forces(const ww_scene *sc, ww_state *st, int j, const floater_nodes *N,
+                   box_forces *F) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     const double *c = st->floater_pos + 3 * j, *e = d->extent;
     double vol = body_volume(d), m = d->density * vol;
     const ww_box_water *w = &F->water;
-    box_water_at(sc, st, j, &F->water);
+    box_water_at(sc, st, j, N, &F->water);
     double fb = WW_WATER_RHO * WW_G * w->volume;
     F->f = w->volume / vol;
     F->ay = fb / m - WW_G;
@@ -153,12 +177,12 @@ static double seabed_floor(const ww_scene *sc, const ww_floater_desc *d, const d
     return sc->water_level - sc->water_depth + ext;
 }
 
-static void step_floater(const ww_scene *sc, ww_state *st, int j) {
+static void step_floater(const ww_scene *sc, ww_state *st, int j, const floater_nodes *N) {
     const ww_floater_desc *d = &sc->floaters.floater[j];
     double dt = sc->dt, *p = st->floater_pos + 3 * j, *v = st->floater_vel + 3 * j;
     double *w = st->floater_omega + 3 * j, *q = st->floater_rot + 4 * j;
     box_forces F = {0};
-    forces(sc, st, j, &F);
+    forces(sc, st, j, N, &F);
     st->floater_submerged[j] = F.f;
 
     /* heave: the discrete-gradient midpoint rule, or the seeds' Euler (time.integrator) */
@@ -183,14 +207,16 @@ static void step_floater(const ww_scene *sc, ww_state *st, int j) {
 }
 
 void ww_floaters_step(const ww_scene *sc, ww_state *st) {
+    floater_nodes N;
+    floaters_surface(sc, st, &N);
     /* step 0 is the described start: nothing has moved yet */
     for (int j = 0; j < WW_N_FLOATERS(sc); j++) {
         if (st->step == 0) {
             box_forces F = {0};
-            forces(sc, st, j, &F);
+            forces(sc, st, j, &N, &F);
             st->floater_submerged[j] = F.f;
         } else {
-            step_floater(sc, st, j);
+            step_floater(sc, st, j, &N);
         }
     }
 }
