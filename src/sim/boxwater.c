@@ -80,14 +80,14 @@ void ww_box_node_points(const double c[3], const double q[4], const double exten
     }
 }
 
-/* the node helpers below are inlined where they are called with a constant node count m, so
- * their loops over the nodes unroll */
-#define NODE_LOOPS static inline __attribute__((always_inline))
+/* a helper inlined where it is called with constant counts (nodes or columns a side), so that
+ * its loops over them unroll or vectorise */
+#define FIXED_COUNTS static inline __attribute__((always_inline))
 
 /* the polynomial through m values at the nodes t = -1, (0,) 1, as coefficients of 1, t (, t^2),
  * written with the values' half-sums and half-differences: where the values are equal (flat
  * water) every coefficient but the first is 0 exactly and the first is the value */
-NODE_LOOPS void node_poly(int m, const double *f, int stride, double *k) {
+FIXED_COUNTS void node_poly(int m, const double *f, int stride, double *k) {
     double lo = f[0], hi = f[(m - 1) * stride];
     double mean = 0.5 * (lo + hi), half_diff = 0.5 * (hi - lo);
     if (m == 2) {
@@ -100,7 +100,7 @@ NODE_LOOPS void node_poly(int m, const double *f, int stride, double *k) {
 
 /* the polynomial through the m x m node values (stride apart) as coefficients K[i m + j] of
  * tu^i tv^j: node_poly along Q, then along P */
-NODE_LOOPS void node_coefficients(int m, const double *f, int stride, double *K) {
+FIXED_COUNTS void node_coefficients(int m, const double *f, int stride, double *K) {
     double row[3][3];
     for (int i = 0; i < m; i++) node_poly(m, f + i * m * stride, stride, row[i]);
     for (int j = 0; j < m; j++) {
@@ -120,7 +120,7 @@ typedef struct column_powers {
 /* the polynomial of m x m coefficients K[i m + j] of tu^i tv^j at every column, row by row: the
  * row's polynomial in tv first, sum_i K[i m + j] tu^i, then its value. The constant term comes
  * first in each sum, so a polynomial whose other coefficients are 0 gives its constant exactly */
-NODE_LOOPS void poly_at_columns(int m, int n, const double *K, const column_powers *T,
+FIXED_COUNTS void poly_at_columns(int m, int n, const double *K, const column_powers *T,
                                 double *out) {
     for (int iu = 0; iu < n; iu++) {
         const double *pu = T->p[iu];
@@ -140,7 +140,7 @@ NODE_LOOPS void poly_at_columns(int m, int n, const double *K, const column_powe
 }
 
 /* bm[i m + j] = sum over the columns of vol tu^i tv^j, row by row */
-NODE_LOOPS void volume_moments(int m, int n, const double *vol, const column_powers *T,
+FIXED_COUNTS void volume_moments(int m, int n, const double *vol, const column_powers *T,
                                double *bm) {
     for (int k = 0; k < m * m; k++) bm[k] = 0.0;
     for (int iu = 0; iu < n; iu++) {
@@ -174,9 +174,11 @@ void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
     ww_box_water_from(c, q, extent, n, height, velocity, out);
 }
 
-void ww_box_water_from(const double c[3], const double q[4], const double extent[3], int n,
-                       const double *node_height, const double *node_velocity,
-                       ww_box_water *out) {
+/* ww_box_water_from for n columns a side; inlined with the default n as a constant, so that its
+ * loops over the columns have a known count and vectorise */
+FIXED_COUNTS void water_from(int n, const double c[3], const double q[4], const double extent[3],
+                           const double *node_height, const double *node_velocity,
+                           ww_box_water *out) {
     double ax[3][3], U[3];
     int ap, aq, m = ww_box_nodes_per_side(n), mm = m * m;
     int a = box_frame(q, ax, U, &ap, &aq);
@@ -287,6 +289,15 @@ void ww_box_water_from(const double c[3], const double q[4], const double extent
     }
 }
 
+void ww_box_water_from(const double c[3], const double q[4], const double extent[3], int n,
+                       const double *node_height, const double *node_velocity,
+                       ww_box_water *out) {
+    if (n == WW_CUBE_DEFAULT_COLUMNS)
+        water_from(WW_CUBE_DEFAULT_COLUMNS, c, q, extent, node_height, node_velocity, out);
+    else
+        water_from(n, c, q, extent, node_height, node_velocity, out);
+}
+
 /* ---- the heave ------------------------------------------------------------------------------ */
 
 /* the heave's root is found to this fraction of its bracket's size (rounding) */
@@ -331,8 +342,9 @@ static double volume_mean(const ww_box_water *w, const double *wet_integral, dou
 
 /* the heave over dt by the discrete-gradient midpoint rule: returns xi1, sets *v.
  * R(xi) = (2 / dt + gamma) xi - 2 v0 - dt (kb Vbar(xi) + a + gamma u) = 0, R increasing;
- * Vbar in [0, the box's volume] brackets the root. kb = rho_w g / m. Solved by Newton's method kept inside the
- * bracket, bisecting where a step would leave it (Press et al., "Numerical Recipes", rtsafe):
+ * Vbar in [0, the box's volume] brackets the root. kb = rho_w g / m. Solved by Newton's method
+ * kept inside the bracket, bisecting where a step would leave it (Press et al., "Numerical
+ * Recipes", rtsafe):
  * R is piecewise smooth (its pieces change where a column's wet length reaches 0 or s), so
  * Newton converges in a few steps where bisection took 50 to reach the bracket's rounding. */
 double ww_box_heave_step(const ww_box_water *w, const double extent[3], double kb, double a,
