@@ -18,6 +18,7 @@
 static inline int ww_box_nodes_per_side(int n) {
     return n <= 2 ? n : n <= 4 ? 2 : 3;
 }
+#define WW_BOX_MAX_NODES 9 /* nodes of a box at most: 3 x 3 */
 
 typedef enum ww_cube_buoyancy {
     WW_CUBE_ARCHIMEDES = 0, /* submerged volume of the box against the exact surface */

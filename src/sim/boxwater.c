@@ -157,9 +157,9 @@ FIXED_COUNTS void volume_moments(int m, int n, const double *vol, const column_p
 void ww_box_water_at(const ww_scene *sc, const ww_state *st, const double c[3],
                      const double q[4], const double extent[3], int n, double *warm,
                      ww_box_water *out) {
-    enum { MAXN = 9 };
     int m = ww_box_nodes_per_side(n), nn = m * m;
-    double x[MAXN], z[MAXN], height[MAXN], velocity[MAXN * 3];
+    double x[WW_BOX_MAX_NODES], z[WW_BOX_MAX_NODES], height[WW_BOX_MAX_NODES];
+    double velocity[3 * WW_BOX_MAX_NODES];
     ww_box_node_points(c, q, extent, n, x, z);
     if (warm) {
         ww_water_at_warm_n(sc, st, nn, x, z, 0.0, warm, height, velocity);
@@ -205,7 +205,7 @@ FIXED_COUNTS void water_from(int n, const double c[3], const double q[4], const 
     /* the surface's height over them: the nodes' own where the nodes are the columns, else the
      * polynomial through the nodes (Kh; and Kv, each velocity component's, for the mean velocity
      * below) at the columns' node coordinates */
-    double Kh[9], Kv[3][9];
+    double Kh[WW_BOX_MAX_NODES], Kv[3][WW_BOX_MAX_NODES];
     column_powers T;
     if (interpolated) {
         for (int i = 0; i < n; i++) {
@@ -272,7 +272,7 @@ FIXED_COUNTS void water_from(int n, const double c[3], const double q[4], const 
      * volumes a monomial instead of the velocity at every column */
     double vel[3] = {0.0, 0.0, 0.0};
     if (interpolated) {
-        double bm[9];
+        double bm[WW_BOX_MAX_NODES];
         if (m == 2)
             volume_moments(2, n, vol, &T, bm);
         else

@@ -100,7 +100,7 @@ static double *cube_warm(const ww_scene *sc, ww_state *st, int i) {
 /* the surface at every archimedes cube's nodes at the step's start, asked in one query so that
  * the lanes of the query (sim/water.h) fill across cubes: heights, and velocities 3 a node, in
  * the order of the warm starts */
-enum { MAX_NODES = WW_MAX_CUBES * 9 };
+enum { MAX_NODES = WW_MAX_CUBES * WW_BOX_MAX_NODES };
 typedef struct cube_nodes {
     double height[MAX_NODES], velocity[3 * MAX_NODES];
 } cube_nodes;

@@ -18,7 +18,8 @@ static inline int ww_cube_samples(const ww_scene *sc, int i) {
 static inline int ww_cube_samples_before(const ww_scene *sc, int i) {
     int sum = 0;
     for (int j = 0; j < i; j++)
-        if (sc->cubes.cube[j].buoyancy == sc->cubes.cube[i].buoyancy) sum += ww_cube_samples(sc, j);
+        if (sc->cubes.cube[j].buoyancy == sc->cubes.cube[i].buoyancy)
+            sum += ww_cube_samples(sc, j);
     return sum;
 }
 /* the archimedes cubes' sample points (all their nodes), and all the cubes' */

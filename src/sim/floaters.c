@@ -41,7 +41,7 @@ static double body_volume(const ww_floater_desc *d) {
 /* the surface at every floater's nodes (sim/boxwater.h) at the step's start, asked in one query
  * so that the lanes of the query (sim/water.h) fill across floaters: heights, and velocities 3 a
  * node, in the order of the warm starts */
-enum { MAX_NODES = WW_MAX_FLOATERS * 9 };
+enum { MAX_NODES = WW_MAX_FLOATERS * WW_BOX_MAX_NODES };
 typedef struct floater_nodes {
     double height[MAX_NODES], velocity[3 * MAX_NODES];
 } floater_nodes;
