@@ -509,8 +509,55 @@ TEST_PROC(simtools_bench_sim_tiny) {
     ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     char *text = ww_test_read_file(out, NULL);
     ENSURE(text != NULL);
-    /* one speed line, four dt lines for each of the two integrators, the figure */
-    if (text) ENSURE_EQ_INT(ww_test_json_lines(text), 10);
+    /* one speed line, four dt lines for each of the two integrators, the figure, and a columns
+     * line for each of the seven column counts (the soak has archimedes cubes) */
+    if (text) ENSURE_EQ_INT(ww_test_json_lines(text), 17);
+    free(text);
+}
+
+/* the value of "key": in a JSON line, or -1 when absent */
+static double json_value(const char *line, const char *key) {
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\":", key);
+    const char *p = strstr(line, k);
+    return p ? strtod(p + strlen(k), NULL) : -1.0;
+}
+
+/* the columns table: a row per count with the queries its nodes take, and errors against the
+ * fine grid that shrink from one column to eight (what the speed costs is not asserted) */
+TEST_PROC(simtools_bench_sim_columns_speed_against_error) {
+    const char *dir = ww_test_tmpdir("simtools_bench_sim_columns");
+    char out[512], args[2048];
+    snprintf(out, sizeof out, "%s/stdout.txt", dir);
+    snprintf(args, sizeof args, "bench sim --tiny --json scenes/cubes.yaml -o %s", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    char *text = ww_test_read_file(out, NULL);
+    ENSURE(text != NULL);
+    if (!text) return;
+    static const int counts[] = {1, 2, 3, 4, 5, 6, 8};
+    double volume[7] = {0}, moment[7] = {0};
+    for (int k = 0; k < 7; k++) {
+        char want[96];
+        snprintf(want, sizeof want, "\"part\":\"columns\",\"scene\":\"cubes.yaml\",\"columns\":%d,",
+                 counts[k]);
+        const char *line = strstr(text, want);
+        ENSURE_MSG(line != NULL, "no columns line for %d", counts[k]);
+        if (!line) continue;
+        int m = ww_box_nodes_per_side(counts[k]);
+        ENSURE_EQ_INT((int)json_value(line, "queries"), m * m);
+        volume[k] = json_value(line, "volume_error");
+        moment[k] = json_value(line, "moment_error");
+        ENSURE(volume[k] >= 0.0 && moment[k] >= 0.0 && json_value(line, "us_per_step") > 0.0);
+    }
+    printf("  volume error 1x1 %.2e, 4x4 %.2e, 8x8 %.2e\n", volume[0], volume[3], volume[6]);
+    ENSURE_MSG(volume[6] < volume[3] && volume[3] < volume[0], "volume errors %.2e %.2e %.2e",
+               volume[0], volume[3], volume[6]);
+    ENSURE_MSG(moment[6] < moment[3] && moment[3] < moment[0], "moment errors %.2e %.2e %.2e",
+               moment[0], moment[3], moment[6]);
+    /* a scene without archimedes cubes has no columns table */
+    snprintf(args, sizeof args, "bench sim --tiny scenes/demo.yaml -o %s", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    ENSURE(!ww_test_file_contains(out, "columns: "));
     free(text);
 }
 

@@ -16,6 +16,11 @@
  *           run (cube 0: a press of it, a stone thud on a cube, the boat within reach; a stone:
  *           its first thud), and only while it flies (stones); the table says how long that is.
  *           Crossings of the water (skips, sinks) are solved inside the step and stay in;
+ *   columns for the first scene of the dt table with archimedes cubes, each column count a
+ *           side (objects.cubes[].columns): the exact queries a box takes, the submerged volume
+ *           and its moment against a fine grid of exact queries (sample boxes of 0.6-1.2 m at
+ *           their draft, tilted up to 25 degrees, on the scene's sea), and the scene's run with
+ *           every such cube at that count, in us a step: the knob's speed against its error;
  *   share   the simulation's share of a frame of scenes/demo.yaml (sim ms / render ms, target
  *           under 1%), from one render job in a child process (bench.c).
  * Metrics read state fields by name (render/sim_out.h), so they follow the X-macro tables; a
@@ -29,13 +34,18 @@
 
 #include "bench/bench.h"
 #include "bench/plot.h"
+#include "core/mathx.h"
+#include "core/rng.h"
 #include "io/json.h"
 #include "io/writers.h"
 #include "render/sim_out.h"
 #include "scene/scene.h"
+#include "sim/boxwater.h"
 #include "sim/events.h"
 #include "sim/state.h"
 #include "sim/step.h"
+#include "sim/water.h"
+#include "sim/waves.h"
 
 #define NDT 4
 static const int DT_DIVS[NDT] = {30, 60, 120, 240}; /* dt = 1 / div, s */
@@ -66,6 +76,25 @@ static const char *base_name(const char *path) {
 #define SPEED_TARGET_SCENE "lake.yaml"
 #define SPEED_TARGET_RATIO 2000.0
 
+/* the steps `simulate SCENE` takes (to its last frame), run again from step 0 until budget s of
+ * wall time are spent; the resets between runs are not timed. *steps taken in *wall s */
+static ww_result time_run(const ww_scene *sc, ww_state *st, double budget, double *steps,
+                          double *wall, ww_error *err) {
+    int64_t run = (sc->frame_count - 1) * sc->steps_per_frame;
+    if (run < 1) run = SPEED_CHUNK;
+    ww_result r = WW_OK;
+    *wall = *steps = 0.0;
+    while (!r && *wall < budget) {
+        if (st->step >= run) ww_state_reset(sc, st);
+        int64_t from = st->step, to_step = from + SPEED_CHUNK < run ? from + SPEED_CHUNK : run;
+        double t0 = ww_now_seconds();
+        r = ww_sim_advance_to(sc, st, to_step, err);
+        *wall += ww_now_seconds() - t0;
+        *steps += (double)(st->step - from);
+    }
+    return r;
+}
+
 static ww_result part_speed(const ww_bench_opts *o, const char *const *scenes, FILE *to,
                             ww_error *err) {
     double budget = o->tiny ? SPEED_WALL_S_TINY : SPEED_WALL_S;
@@ -84,19 +113,10 @@ static ww_result part_speed(const ww_bench_opts *o, const char *const *scenes, F
             ww_scene_free(sc);
             return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
         }
-        /* the steps `simulate SCENE` takes (to its last frame), run again from step 0 until the
-         * budget is spent; the resets between runs are not timed */
         int64_t run = (sc->frame_count - 1) * sc->steps_per_frame;
         if (run < 1) run = SPEED_CHUNK;
-        double wall = 0.0, steps = 0.0;
-        while (!r && wall < budget) {
-            if (st->step >= run) ww_state_reset(sc, st);
-            int64_t from = st->step, to_step = from + SPEED_CHUNK < run ? from + SPEED_CHUNK : run;
-            double t0 = ww_now_seconds();
-            r = ww_sim_advance_to(sc, st, to_step, err);
-            wall += ww_now_seconds() - t0;
-            steps += (double)(st->step - from);
-        }
+        double wall, steps;
+        r = time_run(sc, st, budget, &steps, &wall, err);
         double us = 1e6 * wall / steps;
         double ratio = steps * sc->dt / wall;
         if (!r && strcmp(base_name(scenes[s]), SPEED_TARGET_SCENE) == 0) target_ratio = ratio;
@@ -439,6 +459,148 @@ static void part_share(const ww_bench_opts *o, FILE *to) {
                 s.backend, s.renderer, (long long)s.frames, sim, ren, share);
 }
 
+/* ---- columns ------------------------------------------------------------------------------- */
+
+static const int COLUMN_COUNTS[] = {1, 2, 3, 4, 5, 6, 8};
+#define NCOLUMN_COUNTS ((int)(sizeof COLUMN_COUNTS / sizeof COLUMN_COUNTS[0]))
+#define COLUMN_BOXES 60        /* sample boxes of the error (tiny: COLUMN_BOXES_TINY) */
+#define COLUMN_BOXES_TINY 6
+#define COLUMN_FINE 32         /* the reference's exact queries a side (tiny: COLUMN_FINE_TINY) */
+#define COLUMN_FINE_TINY 12
+#define COLUMN_MAX_TILT_DEG 25.0
+#define COLUMN_WALL_S 0.25     /* wall time of a count's speed row (tiny: SPEED_WALL_S_TINY) */
+
+/* the submerged volume V and its moment V (c_b - c) of the box of edge s at c turned by q in
+ * fine x fine columns, each with an exact surface query at its centre: the reference */
+static void fine_volume(const ww_scene *sc, const ww_state *st, int fine, const double c[3],
+                        const double q[4], double s, double *V, double M[3]) {
+    double ax[3][3];
+    ww_box_axes(q, ax);
+    int a = ww_box_up_axis(ax);
+    double sg = ax[a][1] < 0.0 ? -1.0 : 1.0, U[3] = {sg * ax[a][0], sg * ax[a][1], sg * ax[a][2]};
+    const double *P = ax[(a + 1) % 3], *Q = ax[(a + 2) % 3];
+    double dA = s * s / (fine * fine);
+    *V = M[0] = M[1] = M[2] = 0.0;
+    for (int i = 0; i < fine; i++)
+        for (int j = 0; j < fine; j++) {
+            double u = ((i + 0.5) / fine - 0.5) * s, v = ((j + 0.5) / fine - 0.5) * s;
+            double r[3] = {u * P[0] + v * Q[0], u * P[1] + v * Q[1], u * P[2] + v * Q[2]};
+            ww_water_sample ws;
+            ww_water_at(sc, st, c[0] + r[0], c[2] + r[2], 0.0, &ws);
+            double L = ww_m_clamp((ws.height - (c[1] + r[1])) / U[1] + 0.5 * s, 0.0, s);
+            *V += dA * L;
+            for (int k = 0; k < 3; k++) M[k] += dA * L * (r[k] + 0.5 * (L - s) * U[k]);
+        }
+}
+
+/* the largest volume (/ s^3) and moment (/ s^4) error of each column count over the sample
+ * boxes, on sc's sea */
+static void column_errors(const ww_scene *sc, ww_state *st, int tiny, double *ev, double *em) {
+    static const double sizes[4] = {0.6, 0.8, 1.0, 1.2}, dens[3] = {0.4, 0.6, 0.85};
+    int boxes = tiny ? COLUMN_BOXES_TINY : COLUMN_BOXES;
+    int fine = tiny ? COLUMN_FINE_TINY : COLUMN_FINE;
+    for (int k = 0; k < NCOLUMN_COUNTS; k++) ev[k] = em[k] = 0.0;
+    for (int b = 0; b < boxes; b++) {
+        double r[5];
+        for (int k = 0; k < 5; k++)
+            r[k] = ww_rng_draw(sc->seed, WW_RNG_BENCH, (uint64_t)b, (uint64_t)k);
+        st->t = fmax(sc->duration, 1.0) * r[0];
+        ww_waves_phases(sc, st->t, st->wave_phase);
+        double s = sizes[b % 4], c[3] = {-10.0 + 20.0 * r[1], 0.0, -10.0 + 20.0 * r[2]};
+        ww_water_sample ws;
+        ww_water_at(sc, st, c[0], c[2], 0.0, &ws);
+        c[1] = ws.height + 0.5 * s - dens[b % 3] * s;
+        double ang = ww_m_rad(COLUMN_MAX_TILT_DEG) * r[3], az = WW_TAU * r[4];
+        double q[4] = {cos(0.5 * ang), sin(0.5 * ang) * cos(az), 0.0, sin(0.5 * ang) * sin(az)};
+        double Vr, Mr[3], e[3] = {s, s, s};
+        fine_volume(sc, st, fine, c, q, s, &Vr, Mr);
+        for (int k = 0; k < NCOLUMN_COUNTS; k++) {
+            ww_box_water bw;
+            ww_box_water_at(sc, st, c, q, e, COLUMN_COUNTS[k], NULL, &bw);
+            double dm[3];
+            for (int j = 0; j < 3; j++) dm[j] = bw.volume * (bw.centre[j] - c[j]) - Mr[j];
+            ev[k] = fmax(ev[k], fabs(bw.volume - Vr) / (s * s * s));
+            em[k] = fmax(em[k], ww_m_len3(dm) / (s * s * s * s));
+        }
+    }
+}
+
+/* the scene's run with every archimedes cube at n columns a side: *us a step */
+static ww_result columns_speed(const char *path, int n, double budget, double *us,
+                               ww_error *err) {
+    ww_scene *sc = NULL;
+    ww_result r = ww_scene_load(path, NULL, 0, &sc, err);
+    if (r) return r;
+    for (int i = 0; i < sc->cubes.count; i++)
+        if (sc->cubes.cube[i].buoyancy == WW_CUBE_ARCHIMEDES) sc->cubes.cube[i].columns = n;
+    ww_state *st = ww_state_new(sc);
+    if (!st) {
+        ww_scene_free(sc);
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
+    }
+    double wall, steps;
+    r = time_run(sc, st, budget, &steps, &wall, err);
+    ww_state_free(st);
+    ww_scene_free(sc);
+    *us = 1e6 * wall / steps;
+    return r;
+}
+
+/* 1 when the scene has a cube floating by Archimedes */
+static int has_archimedes(const ww_scene *sc) {
+    for (int i = 0; sc->cubes.on && i < sc->cubes.count; i++)
+        if (sc->cubes.cube[i].buoyancy == WW_CUBE_ARCHIMEDES) return 1;
+    return 0;
+}
+
+static ww_result part_columns(const ww_bench_opts *o, const char *path, FILE *to,
+                              ww_error *err) {
+    ww_scene *sc = NULL;
+    ww_result r = ww_scene_load(path, NULL, 0, &sc, err);
+    if (r) return r;
+    ww_state *st = ww_state_new(sc);
+    if (!st) {
+        ww_scene_free(sc);
+        return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
+    }
+    double ev[NCOLUMN_COUNTS], em[NCOLUMN_COUNTS], dt = sc->dt;
+    column_errors(sc, st, o->tiny, ev, em);
+    ww_state_free(st);
+    ww_scene_free(sc);
+    int boxes = o->tiny ? COLUMN_BOXES_TINY : COLUMN_BOXES;
+    int fine = o->tiny ? COLUMN_FINE_TINY : COLUMN_FINE;
+    if (!o->json)
+        fprintf(to, "\ncolumns: %s's archimedes cubes at n x n columns "
+                    "(objects.cubes[].columns);\nerror of the submerged volume and its moment "
+                    "against %d x %d exact queries, largest over\n%d boxes of 0.6-1.2 m at their "
+                    "draft tilted up to %.0f deg on its sea; the scene's run at that count\n"
+                    "%-8s %8s %16s %16s %10s %14s\n",
+                base_name(path), fine, fine, boxes, COLUMN_MAX_TILT_DEG, "columns", "queries",
+                "volume err/s^3", "moment err/s^4", "us/step", "sim s/wall s");
+    double budget = o->tiny ? SPEED_WALL_S_TINY : COLUMN_WALL_S;
+    for (int k = 0; k < NCOLUMN_COUNTS; k++) {
+        int n = COLUMN_COUNTS[k], m = ww_box_nodes_per_side(n);
+        double us = 0.0;
+        if ((r = columns_speed(path, n, budget, &us, err))) return r;
+        if (o->json) {
+            fprintf(to, "{\"part\":\"columns\",\"scene\":\"%s\",\"columns\":%d,\"queries\":%d,"
+                        "\"volume_error\":%.6e,\"moment_error\":%.6e,\"us_per_step\":%.4f,"
+                        "\"sim_s_per_wall_s\":%.2f}\n",
+                    base_name(path), n, m * m, ev[k], em[k], us, 1e6 * dt / us);
+        } else {
+            char cols[16];
+            snprintf(cols, sizeof cols, "%dx%d%s", n, n, n == WW_CUBE_DEFAULT_COLUMNS ? "*" : "");
+            fprintf(to, "%-8s %8d %16.2e %16.2e %10.3f %14.1f\n", cols, m * m, ev[k], em[k], us,
+                    1e6 * dt / us);
+        }
+    }
+    if (!o->json)
+        fputs("queries: exact surface queries a box (its nodes, interpolated to the columns);\n"
+              "*: the default\n",
+              to);
+    return WW_OK;
+}
+
 /* ---- bench sim ----------------------------------------------------------------------------- */
 
 ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err) {
@@ -471,6 +633,17 @@ ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err) {
         } else {
             fprintf(to, "figure: %s\n", path);
         }
+    }
+
+    /* the columns table: the first scene of the dt table with archimedes cubes */
+    for (int s = 0; dt_scenes[s]; s++) {
+        ww_scene *sc = NULL;
+        if ((r = ww_scene_load(dt_scenes[s], NULL, 0, &sc, err))) return r;
+        int cubes = has_archimedes(sc);
+        ww_scene_free(sc);
+        if (!cubes) continue;
+        if ((r = part_columns(o, dt_scenes[s], to, err))) return r;
+        break;
     }
 
     if (o->tiny) {
