@@ -1,6 +1,8 @@
 /* json_check.c - a small JSON validator for the tests (RFC 8259's grammar, no semantics): what
- * the tools print as JSON and JSON lines must parse. */
+ * the tools print as JSON and JSON lines must parse; and a number read from a JSON line by key. */
 #include <ctype.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "test.h"
@@ -102,4 +104,12 @@ int ww_test_json_lines(const char *text) {
 int ww_test_json_valid(const char *text) {
     const char *e = json_value(text, 0);
     return e && *json_ws(e) == 0;
+}
+
+double ww_test_json_number(const char *line, const char *key) {
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\":", key);
+    const char *p = strstr(line, k);
+    if (!p || strncmp(p + strlen(k), "null", 4) == 0) return -1.0;
+    return strtod(p + strlen(k), NULL);
 }

@@ -156,6 +156,9 @@ int ww_test_file_contains(const char *path, const char *needle);
 int ww_test_json_valid(const char *text);
 /* every line of text is one JSON object ending in a newline; the count, or -1 at the first bad */
 int ww_test_json_lines(const char *text);
+/* the number after "key": in a JSON line (the first such key from line on), or -1 when absent
+ * or null */
+double ww_test_json_number(const char *line, const char *key);
 /* 1 when a GL backend can be opened here (the runner asks once, in a child of its own) */
 int ww_test_have_gl(void);
 /* why none opens, when ww_test_have_gl() is 0 */

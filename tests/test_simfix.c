@@ -442,15 +442,6 @@ static const char *CONVERGE =
  * boat, 0.22 .. 0.36 for the other metrics and integrators) */
 #define CONVERGE_TWO_HALVINGS 0.5
 
-/* the value of "key": in a JSON line, or -1 when absent or null */
-static double json_number(const char *line, const char *key) {
-    char k[64];
-    snprintf(k, sizeof k, "\"%s\":", key);
-    const char *p = strstr(line, k);
-    if (!p || strncmp(p + strlen(k), "null", 4) == 0) return -1;
-    return strtod(p + strlen(k), NULL);
-}
-
 TEST_PROC(bench_sim_errors_shrink_as_dt_halves) {
     char dir[512], scene[600], out[600], args[1400];
     snprintf(dir, sizeof dir, "%s", ww_test_tmpdir("converge"));
@@ -474,7 +465,7 @@ TEST_PROC(bench_sim_errors_shrink_as_dt_halves) {
                 snprintf(want, sizeof want, "\"integrator\":\"%s\",%s", integ[g], dts[d]);
                 const char *line = strstr(text, want);
                 ENSURE_MSG(line != NULL, "no line %s", want);
-                if (line) e[d] = json_number(line, keys[m]);
+                if (line) e[d] = ww_test_json_number(line, keys[m]);
             }
             printf("  %s %s: %.3e %.3e %.3e\n", integ[g], keys[m], e[0], e[1], e[2]);
             ENSURE(e[0] >= 0 && e[1] >= 0 && e[2] >= 0);

@@ -515,14 +515,6 @@ TEST_PROC(simtools_bench_sim_tiny) {
     free(text);
 }
 
-/* the value of "key": in a JSON line, or -1 when absent */
-static double json_value(const char *line, const char *key) {
-    char k[64];
-    snprintf(k, sizeof k, "\"%s\":", key);
-    const char *p = strstr(line, k);
-    return p ? strtod(p + strlen(k), NULL) : -1.0;
-}
-
 /* the columns table: a row per count with the queries its nodes take, and errors against the
  * fine grid that shrink from one column to eight (what the speed costs is not asserted) */
 TEST_PROC(simtools_bench_sim_columns_speed_against_error) {
@@ -544,10 +536,11 @@ TEST_PROC(simtools_bench_sim_columns_speed_against_error) {
         ENSURE_MSG(line != NULL, "no columns line for %d", counts[k]);
         if (!line) continue;
         int m = ww_box_nodes_per_side(counts[k]);
-        ENSURE_EQ_INT((int)json_value(line, "queries"), m * m);
-        volume[k] = json_value(line, "volume_error");
-        moment[k] = json_value(line, "moment_error");
-        ENSURE(volume[k] >= 0.0 && moment[k] >= 0.0 && json_value(line, "us_per_step") > 0.0);
+        ENSURE_EQ_INT((int)ww_test_json_number(line, "queries"), m * m);
+        volume[k] = ww_test_json_number(line, "volume_error");
+        moment[k] = ww_test_json_number(line, "moment_error");
+        ENSURE(volume[k] >= 0.0 && moment[k] >= 0.0);
+        ENSURE(ww_test_json_number(line, "us_per_step") > 0.0);
     }
     printf("  volume error 1x1 %.2e, 4x4 %.2e, 8x8 %.2e\n", volume[0], volume[3], volume[6]);
     ENSURE_MSG(volume[6] < volume[3] && volume[3] < volume[0], "volume errors %.2e %.2e %.2e",

@@ -553,11 +553,17 @@ static int has_archimedes(const ww_scene *sc) {
     return 0;
 }
 
-static ww_result part_columns(const ww_bench_opts *o, const char *path, FILE *to,
+/* the columns table of the scene at path, when it has archimedes cubes (*done: it had) */
+static ww_result part_columns(const ww_bench_opts *o, const char *path, FILE *to, int *done,
                               ww_error *err) {
     ww_scene *sc = NULL;
     ww_result r = ww_scene_load(path, NULL, 0, &sc, err);
     if (r) return r;
+    *done = has_archimedes(sc);
+    if (!*done) {
+        ww_scene_free(sc);
+        return WW_OK;
+    }
     ww_state *st = ww_state_new(sc);
     if (!st) {
         ww_scene_free(sc);
@@ -636,15 +642,8 @@ ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err) {
     }
 
     /* the columns table: the first scene of the dt table with archimedes cubes */
-    for (int s = 0; dt_scenes[s]; s++) {
-        ww_scene *sc = NULL;
-        if ((r = ww_scene_load(dt_scenes[s], NULL, 0, &sc, err))) return r;
-        int cubes = has_archimedes(sc);
-        ww_scene_free(sc);
-        if (!cubes) continue;
-        if ((r = part_columns(o, dt_scenes[s], to, err))) return r;
-        break;
-    }
+    for (int s = 0, done = 0; dt_scenes[s] && !done; s++)
+        if ((r = part_columns(o, dt_scenes[s], to, &done, err))) return r;
 
     if (o->tiny) {
         if (!o->json) fprintf(to, "\nshare of a frame: skipped (--tiny)\n");
