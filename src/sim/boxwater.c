@@ -4,6 +4,7 @@
 #include <math.h>
 
 #include "core/exp.h"
+#include "core/lanes.h"
 #include "core/mathx.h"
 #include "core/sincos.h"
 #include "sim/water.h"
@@ -228,14 +229,17 @@ FIXED_COUNTS void water_from(int n, const double c[3], const double q[4], const 
      * (0 where the waterline misses it); the terms first, branch-free, so the loop vectorises,
      * then the sums in column order */
     double vol[MAXC], ox[MAXC], oy[MAXC], oz[MAXC], plane[MAXC], plane_r2[MAXC];
+    /* read once: the stores to out->wet could otherwise alias c[1] for all GCC knows, which
+     * keeps it from vectorising the loop */
+    double cut_area = dA / U[1], cy = c[1]; /* cut_area: a cut column's share of the waterline */
     for (int col = 0; col < nc; col++) {
-        double wet = (height[col] - (c[1] + ry[col])) / U[1] + h; /* submerged length along U */
-        double L = ww_m_clamp(wet, 0.0, s);
+        double wet = (height[col] - (cy + ry[col])) / U[1] + h; /* submerged length along U */
+        double L = wet < 0.0 ? 0.0 : wet; /* clamp(wet, 0, s) as two selects */
+        L = L > s ? s : L;
         out->wet[col] = wet;
-        int cut = (wet > 0.0) & (wet < s);
         double r2 = rx[col] * rx[col] + rz[col] * rz[col];
-        plane[col] = cut ? dA / U[1] : 0.0;
-        plane_r2[col] = cut ? dA / U[1] * r2 : 0.0;
+        plane[col] = wet > 0.0 ? (wet < s ? cut_area : 0.0) : 0.0; /* the waterline cuts it */
+        plane_r2[col] = plane[col] * r2; /* 0 where uncut: r2 is finite and >= 0 */
         double off = 0.5 * (L - s);
         vol[col] = dA * L;
         ox[col] = rx[col] + off * U[0];
@@ -289,9 +293,9 @@ FIXED_COUNTS void water_from(int n, const double c[3], const double q[4], const 
     }
 }
 
-void ww_box_water_from(const double c[3], const double q[4], const double extent[3], int n,
-                       const double *node_height, const double *node_velocity,
-                       ww_box_water *out) {
+WW_LANES void ww_box_water_from(const double c[3], const double q[4], const double extent[3],
+                                int n, const double *node_height, const double *node_velocity,
+                                ww_box_water *out) {
     if (n == WW_CUBE_DEFAULT_COLUMNS)
         water_from(WW_CUBE_DEFAULT_COLUMNS, c, q, extent, node_height, node_velocity, out);
     else
@@ -304,36 +308,63 @@ void ww_box_water_from(const double c[3], const double q[4], const double extent
 #define HEAVE_TOLERANCE 1e-15
 #define HEAVE_MAX_ITERATIONS 100
 
-/* int_0^x clamp(x', 0, s) dx' */
-static double clamp_integral(double x, double s) {
-    if (x <= 0.0) return 0.0;
-    if (x < s) return 0.5 * x * x;
-    return 0.5 * s * s + s * (x - s);
+/* the heave's loops over the columns run in blocks of 8, a count GCC vectorises at -O2 (a count
+ * known only at run time it leaves scalar): the columns past ncolumns in the last block are
+ * worked out (ww_box_water's wet lengths are zero there) and not summed */
+enum { HEAVE_BLOCKS = (WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS + 7) / 8 };
+
+/* clamp(x, 0, s) as two selects */
+WW_LANE_STEP double clamp_length(double x, double s) {
+    double l = x < 0.0 ? 0.0 : x;
+    return l > s ? s : l;
+}
+
+/* int_0^x clamp(x', 0, s) dx' = L^2 / 2 + s max(x - s, 0) with L = clamp(x, 0, s): 0 for x <= 0,
+ * x^2 / 2 below s, s^2 / 2 + s (x - s) above, the same values as those three pieces, written
+ * with selects of values every lane works out, so that the loops over the columns vectorise */
+WW_LANE_STEP double clamp_integral(double x, double s) {
+    double l = clamp_length(x, s), over = x - s;
+    over = over > 0.0 ? over : 0.0;
+    return 0.5 * l * l + s * over;
 }
 
 /* the mean submerged volume over [0, xi], (1 / xi) int_0^xi V (the discrete gradient), and its
  * derivative in xi. With V(xi) = dA sum clamp(w_c - xi / U.y, 0, s):
  * int_0^xi V = dA U.y sum (C(w_c) - C(w_c - xi / U.y)), C = clamp_integral, and
  * d Vbar / d xi = (V(xi) - Vbar) / xi. Below a ten-millionth of the box the secant cancels: there
- * Vbar is V at the midpoint (exact on a linear piece) and its slope half of V's there. */
-static double volume_mean(const ww_box_water *w, const double *wet_integral, double xi,
-                          double *slope) {
-    double s = w->length, lift = xi / w->up_y;
+ * Vbar is V at the midpoint (exact on a linear piece) and its slope half of V's there. Each
+ * column's terms first (vectorised), then their sums in column order */
+WW_LANE_STEP double volume_mean(const ww_box_water *w, const double *wet_integral, double xi,
+                                double *slope) {
+    double s = w->length, lift = xi / w->up_y, term[HEAVE_BLOCKS * 8], length[HEAVE_BLOCKS * 8];
+    int nc = w->ncolumns, nb = (nc + 7) / 8;
     if (fabs(lift) < 1e-7 * s) {
         double v = 0.0, wet = 0.0;
-        for (int c = 0; c < w->ncolumns; c++) {
-            double x = w->wet[c] - 0.5 * lift;
-            v += ww_m_clamp(x, 0.0, s);
-            wet += x > 0.0 && x < s;
+        for (int b = 0; b < nb; b++)
+            for (int j = 0; j < 8; j++) {
+                int c = 8 * b + j;
+                double x = w->wet[c] - 0.5 * lift;
+                length[c] = clamp_length(x, s);
+                term[c] = x > 0.0 ? (x < s ? 1.0 : 0.0) : 0.0;
+            }
+        for (int c = 0; c < nc; c++) {
+            v += length[c];
+            wet += term[c];
         }
         *slope = -0.5 * w->cell_area * wet / w->up_y;
         return w->cell_area * v;
     }
+    for (int b = 0; b < nb; b++)
+        for (int j = 0; j < 8; j++) {
+            int c = 8 * b + j;
+            double x = w->wet[c] - lift;
+            term[c] = wet_integral[c] - clamp_integral(x, s);
+            length[c] = clamp_length(x, s);
+        }
     double acc = 0.0, v = 0.0;
-    for (int c = 0; c < w->ncolumns; c++) {
-        double x = w->wet[c] - lift;
-        acc += wet_integral[c] - clamp_integral(x, s);
-        v += ww_m_clamp(x, 0.0, s);
+    for (int c = 0; c < nc; c++) {
+        acc += term[c];
+        v += length[c];
     }
     double mean = w->cell_area * w->up_y * acc / xi;
     *slope = (w->cell_area * v - mean) / xi;
@@ -347,8 +378,8 @@ static double volume_mean(const ww_box_water *w, const double *wet_integral, dou
  * Recipes", rtsafe):
  * R is piecewise smooth (its pieces change where a column's wet length reaches 0 or s), so
  * Newton converges in a few steps where bisection took 50 to reach the bracket's rounding. */
-double ww_box_heave_step(const ww_box_water *w, const double extent[3], double kb, double a,
-                         double gamma, double u, double dt, double *v) {
+WW_LANES double ww_box_heave_step(const ww_box_water *w, const double extent[3], double kb,
+                                  double a, double gamma, double u, double dt, double *v) {
     double v0 = *v, den = 2.0 / dt + gamma, base = 2.0 * v0 + dt * (a + gamma * u);
     double lo = base / den, hi = (base + dt * kb * extent[0] * extent[1] * extent[2]) / den;
     /* first guess: the root with the buoyancy linear in xi, V = V0 - A_w xi (so Vbar = V0 -
@@ -356,8 +387,10 @@ double ww_box_heave_step(const ww_box_water *w, const double extent[3], double k
     double xi = (base + dt * kb * w->volume) / (den + 0.5 * dt * kb * w->waterplane);
     if (!(xi > lo && xi < hi)) xi = 0.5 * (lo + hi);
     /* C(w_c) of every column, the same at every iterate */
-    double wet_integral[WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS];
-    for (int c = 0; c < w->ncolumns; c++) wet_integral[c] = clamp_integral(w->wet[c], w->length);
+    double wet_integral[HEAVE_BLOCKS * 8];
+    for (int b = 0; b < (w->ncolumns + 7) / 8; b++)
+        for (int j = 0; j < 8; j++)
+            wet_integral[8 * b + j] = clamp_integral(w->wet[8 * b + j], w->length);
     for (int it = 0; it < HEAVE_MAX_ITERATIONS; it++) {
         double slope, r = den * xi - base - dt * kb * volume_mean(w, wet_integral, xi, &slope);
         if (r == 0.0) break;
