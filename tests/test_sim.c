@@ -269,6 +269,59 @@ TEST(sim_nan_guard_names_field_index_and_step) {
     free(sc);
 }
 
+/* one value of a double field made NaN: the guard must fail and name the field and index, and
+ * pass again once the value is back */
+static void nan_guard_sees(const ww_scene *sc, ww_state *st, double *v, const char *name,
+                           long long i) {
+    char want[96];
+    snprintf(want, sizeof want, "%s[%lld]", name, i);
+    double keep = v[i];
+    v[i] = NAN;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_state_check(sc, st, &err), WW_E_NAN);
+    ENSURE_MSG(strstr(err.msg, want) != NULL, "%s: wanted %s in: %s", sc->path, want, err.msg);
+    v[i] = keep;
+    ENSURE_EQ_INT(ww_state_check(sc, st, &err), WW_OK);
+}
+static void nan_guard_ignores_int(const ww_scene *sc, ww_state *st, int32_t *v, const char *name,
+                                  long long i) {
+    (void)sc, (void)st, (void)v, (void)name, (void)i;
+}
+#define NAN_GUARD_SEES(sc, st, v, name, i)                                                        \
+    _Generic((v), double *: nan_guard_sees, int32_t *: nan_guard_ignores_int)(sc, st, v, name, i)
+
+/* the guard's runs of fields (found once a block) cover the first and last value of every
+ * double field of scenes that between them run every system, and the outbox's live events */
+TEST(sim_nan_guard_sees_every_double_field) {
+    static const char *const scenes[] = {"scenes/lake.yaml", "scenes/reef.yaml",
+                                         "scenes/features/floating_models.yaml"};
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; k++) {
+        ww_scene *sc = NULL;
+        ww_error err = {0};
+        ENSURE_EQ_INT(ww_scene_load(scenes[k], NULL, 0, &sc, &err), WW_OK);
+        ww_state *st = ww_state_new(sc);
+        ENSURE_EQ_INT(ww_sim_advance_to(sc, st, 12, &err), WW_OK);
+        int fields = 0;
+#define NAN_GUARD_FIELD(type, name, count, sys, comment)                                          \
+    if ((long long)(count) > 0 && (const void *)&st->name != (const void *)&st->events) {         \
+        NAN_GUARD_SEES(sc, st, st->name, #name, 0);                                               \
+        NAN_GUARD_SEES(sc, st, st->name, #name, (long long)(count) - 1);                          \
+        fields++;                                                                                 \
+    }
+        WW_STATE_FIELDS(NAN_GUARD_FIELD)
+#undef NAN_GUARD_FIELD
+        ENSURE(fields > 10);
+        if (ww_scene_has_objects(sc)) {
+            int32_t live = st->event_count[0];
+            st->event_count[0] = 2;
+            NAN_GUARD_SEES(sc, st, st->events, "events", 2 * WW_SIM_EVENT_STRIDE - 1);
+            st->event_count[0] = live;
+        }
+        ww_state_free(st);
+        ww_scene_free(sc);
+    }
+}
+
 TEST(sim_camera_spinning_path_keeps_turning_one_way) {
     /* yaw keys 0, 120, 240, 0, 120 degrees: each step is +120 the short way, so between the
      * third and fourth key the camera looks at 300 degrees, not back through 120 */

@@ -21,7 +21,29 @@ static size_t header_bytes(void) { return (sizeof(ww_state) + 15u) & ~(size_t)15
 
 size_t ww_state_arrays_offset(void) { return header_bytes(); }
 
-/* point the field pointers into the block that follows the header */
+/* a double field of count values (its padding included) at p onto the NaN guard's runs: the
+ * run before it grows where the field starts at its end, else the field starts a run. An
+ * integer field, or the outbox, adds nothing, and the next double field starts a new run */
+static void runs_bind_double(ww_state *st, const double *p, long long count, int outbox) {
+    if (count <= 0 || outbox) return;
+    uint32_t start = (uint32_t)(p - (const double *)(const void *)st);
+    uint32_t n = (uint32_t)(field_bytes(sizeof(double), count) / sizeof(double));
+    if (st->nruns > 0 && st->runs[st->nruns - 1].start + st->runs[st->nruns - 1].count == start) {
+        st->runs[st->nruns - 1].count += n;
+        return;
+    }
+    WW_ASSERT(st->nruns < WW_STATE_NFIELDS);
+    st->runs[st->nruns].start = start;
+    st->runs[st->nruns].count = n;
+    st->nruns++;
+}
+static void runs_bind_int(ww_state *st, const int32_t *p, long long count, int outbox) {
+    (void)st, (void)p, (void)count, (void)outbox;
+}
+#define RUNS_BIND(st, p, count, outbox)                                                           \
+    _Generic((p), double *: runs_bind_double, int32_t *: runs_bind_int)(st, p, count, outbox)
+
+/* point the field pointers into the block that follows the header, and find the runs */
 static void bind_fields(const ww_scene *sc, ww_state *st) {
     unsigned char *p = (unsigned char *)st + header_bytes();
 #define WW_STATE_BIND(type, name, count, sys, comment)                                            \
@@ -29,6 +51,11 @@ static void bind_fields(const ww_scene *sc, ww_state *st) {
     p += field_bytes(sizeof(type), (long long)(count));
     WW_STATE_FIELDS(WW_STATE_BIND)
 #undef WW_STATE_BIND
+    st->nruns = 0;
+#define WW_STATE_RUN(type, name, count, sys, comment)                                             \
+    RUNS_BIND(st, st->name, (long long)(count), (const void *)&st->name == (const void *)&st->events);
+    WW_STATE_FIELDS(WW_STATE_RUN)
+#undef WW_STATE_RUN
 }
 
 static size_t state_bytes(const ww_scene *sc) {
@@ -113,16 +140,21 @@ void ww_state_write_json(const ww_scene *sc, const ww_state *st, FILE *to) {
     fputc('}', to);
 }
 
-/* whether a's n values are all finite. x * 0 is 0 for a finite x and NaN for an infinite or NaN
- * one, so sums of it are NaN exactly when some value is not finite: eight independent sums (no
- * branch per value), in blocks of 8 over a local array, a loop of fixed count that GCC's -O2
- * vectorises */
-static WW_LANES int all_finite(const double *a, long long n) {
-    double acc[8] = {0.0};
+/* whether every value of the runs (sim/state.h) and the outbox's n_events values is finite.
+ * x * 0 is 0 for a finite x and NaN for an infinite or NaN one, so sums of it are NaN exactly
+ * when some value is not finite: eight independent sums (no branch per value), in blocks of 8,
+ * a loop of fixed count that GCC's -O2 vectorises, across every run */
+WW_LANE_STEP void finite_sums(double acc[8], const double *a, long long n) {
     long long i = 0;
     for (; i + 8 <= n; i += 8)
         for (int j = 0; j < 8; j++) acc[j] += a[i + j] * 0.0;
     for (; i < n; i++) acc[0] += a[i] * 0.0;
+}
+static WW_LANES int all_finite(const ww_state *st, long long n_events) {
+    double acc[8] = {0.0};
+    const double *base = (const double *)(const void *)st;
+    for (int r = 0; r < st->nruns; r++) finite_sums(acc, base + st->runs[r].start, st->runs[r].count);
+    finite_sums(acc, st->events, n_events);
     double all = 0.0;
     for (int j = 0; j < 8; j++) all += acc[j];
     return all == 0.0;
@@ -147,44 +179,11 @@ static long long live_count(const ww_state *st, const void *field, long long cou
     return count;
 }
 
-/* the fields of doubles that lie next to each other in the block make one run, [start, end),
- * summed at once: a call and a loop's tail a run instead of a field (the lake has 64 fields of
- * 1-128 values). A field of integers, or one read only in part (the outbox), ends a run. A
- * field's padding to 16 bytes is in its run; it is zero, and were it not, the search by field
- * below would find nothing and the check pass */
-typedef struct double_runs {
-    const double *start, *end;
-    int finite;
-} double_runs;
-
-static inline __attribute__((always_inline)) void runs_add_double(double_runs *r,
-                                                                   const double *p,
-                                                                   long long live,
-                                                                   long long count) {
-    if (p != r->end) {
-        if (r->start) r->finite &= all_finite(r->start, r->end - r->start);
-        r->start = p;
-    }
-    r->end = p + field_bytes(sizeof(double), count) / sizeof(double);
-    if (live < count) {
-        r->finite &= all_finite(r->start, p + live - r->start);
-        r->start = r->end = NULL;
-    }
-}
-static void runs_add_int(double_runs *r, const int32_t *p, long long live, long long count) {
-    (void)r, (void)p, (void)live, (void)count;
-}
-#define RUNS_ADD(r, p, live, count)                                                               \
-    _Generic((p), double *: runs_add_double, int32_t *: runs_add_int)(r, p, live, count)
-
 ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err) {
-    double_runs r = {.start = NULL, .end = NULL, .finite = 1};
-#define WW_STATE_RUN(type, name, count, sys, comment)                                             \
-    RUNS_ADD(&r, st->name, live_count(st, st->name, (long long)(count)), (long long)(count));
-    WW_STATE_FIELDS(WW_STATE_RUN)
-#undef WW_STATE_RUN
-    if (r.start) r.finite &= all_finite(r.start, r.end - r.start);
-    if (r.finite) return WW_OK;
+    /* the outbox's live events (live_count) */
+    long long n_events =
+        ww_scene_has_objects(sc) ? (long long)st->event_count[0] * WW_SIM_EVENT_STRIDE : 0;
+    if (all_finite(st, n_events)) return WW_OK;
     /* something is not finite: which field, which value */
     long long i;
 #define WW_STATE_CHECK(type, name, count, sys, comment)                                           \

@@ -61,15 +61,25 @@
     WW_FIELDS_BOAT(X)                                                                            \
     WW_FIELDS_FLOATERS(X)
 
+#define WW_STATE_COUNT_FIELD(type, name, count, sys, comment) +1
+enum { WW_STATE_NFIELDS = 0 WW_STATE_FIELDS(WW_STATE_COUNT_FIELD) };
+#undef WW_STATE_COUNT_FIELD
+
 typedef struct ww_state {
     int64_t step;          /* steps taken since t = start */
     double t;              /* start + step dt, s */
     int event_next;        /* index of the next script event to apply */
-    int pad_;
+    int nruns;             /* of runs, below */
     size_t bytes;          /* size of the whole block */
 #define WW_STATE_DECL(type, name, count, sys, comment) type *name;
     WW_STATE_FIELDS(WW_STATE_DECL)
 #undef WW_STATE_DECL
+    /* the NaN guard's runs of adjacent double fields (padding included), as offsets and counts
+     * in doubles from the header: found once when the fields are bound, so a step's check walks
+     * a few runs instead of every field. The outbox, read only to its live events, is in none */
+    struct {
+        uint32_t start, count;
+    } runs[WW_STATE_NFIELDS];
     /* the arrays follow in the same allocation */
 } ww_state;
 
