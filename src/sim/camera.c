@@ -5,6 +5,7 @@
 #include "sim/camera.h"
 
 #include <math.h>
+#include <stddef.h>
 
 #include "core/mathx.h"
 
@@ -14,38 +15,54 @@ void ww_camera_dir(double yaw, double pitch, double fwd[3]) {
     fwd[2] = -cos(yaw) * cos(pitch);
 }
 
-/* the value of channel c of key i: position, look-at, yaw/pitch (unwrapped) or fov */
+/* the keys' yaw and pitch, unwrapped so consecutive keys differ by at most pi in yaw */
 typedef struct {
-    const ww_scene *sc;
-    double yaw[WW_MAX_KEYS]; /* unwrapped so consecutive keys differ by at most pi */
+    double yaw[WW_MAX_KEYS];
     double pitch[WW_MAX_KEYS];
 } keyset;
 
-enum { CH_POS = 0, CH_TARGET = 3, CH_YAW = 6, CH_PITCH = 7, CH_FOV = 8 };
+/* what every channel of segment i at u shares: the keys its tangents read, their spans, and
+ * the cubic Hermite weights of p0, m0, p1 and m1 */
+typedef struct segment {
+    int i, a0, b1;     /* the tangent at key i reads keys a0 and i + 1, that at i + 1 keys i and b1 */
+    int linear;        /* WW_INTERP_LINEAR: lerp p0 to p1 */
+    double u, h;       /* the local parameter and the segment's length, s */
+    double span0, span1; /* t[i + 1] - t[a0], t[b1] - t[i] */
+    double w[4];
+} segment;
 
-static double key_value(const keyset *ks, int i, int ch) {
-    const ww_camera_key *k = &ks->sc->cam[i];
-    if (ch < CH_TARGET) return k->position[ch];
-    if (ch < CH_YAW) return k->look_at[ch - CH_TARGET];
-    if (ch == CH_YAW) return ks->yaw[i];
-    if (ch == CH_PITCH) return ks->pitch[i];
-    return k->fov > 0.0 ? k->fov : ks->sc->fov;
-}
-
-/* derivative per second at key i */
-static double key_slope(const keyset *ks, int i, int ch) {
-    int n = ks->sc->ncam, a = i > 0 ? i - 1 : i, b = i < n - 1 ? i + 1 : i;
-    if (a == b) return 0.0;
-    return (key_value(ks, b, ch) - key_value(ks, a, ch)) / (ks->sc->cam[b].t - ks->sc->cam[a].t);
-}
-
-static double channel_at(const keyset *ks, int i, double u, double h, int ch) {
-    double p0 = key_value(ks, i, ch), p1 = key_value(ks, i + 1, ch);
-    if (ks->sc->interp == WW_INTERP_LINEAR) return ww_m_lerp(p0, p1, u);
-    double m0 = key_slope(ks, i, ch) * h, m1 = key_slope(ks, i + 1, ch) * h;
+static segment segment_at(const ww_scene *sc, int i, double u, double h) {
+    int n = sc->ncam;
+    segment g = {.i = i, .a0 = i > 0 ? i - 1 : i, .b1 = i + 2 < n ? i + 2 : i + 1,
+                 .linear = sc->interp == WW_INTERP_LINEAR, .u = u, .h = h};
+    g.span0 = sc->cam[i + 1].t - sc->cam[g.a0].t;
+    g.span1 = sc->cam[g.b1].t - sc->cam[i].t;
     double u2 = u * u, u3 = u2 * u;
-    return (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * p1 +
-           (u3 - u2) * m1;
+    g.w[0] = 2 * u3 - 3 * u2 + 1;
+    g.w[1] = u3 - 2 * u2 + u;
+    g.w[2] = -2 * u3 + 3 * u2;
+    g.w[3] = u3 - u2;
+    return g;
+}
+
+/* one channel on the segment from its values at keys a0, i, i + 1 and b1: the finite-difference
+ * tangents (each key's neighbours differ, as n >= 2), then cubic Hermite */
+static double segment_value(const segment *g, double va, double v0, double v1, double vb) {
+    if (g->linear) return ww_m_lerp(v0, v1, g->u);
+    double m0 = (v1 - va) / g->span0 * g->h, m1 = (vb - v0) / g->span1 * g->h;
+    return g->w[0] * v0 + g->w[1] * m0 + g->w[2] * v1 + g->w[3] * m1;
+}
+
+/* component c of a point of the keys (position or look_at, offset in ww_camera_key) */
+static double segment_point(const ww_scene *sc, const segment *g, size_t offset, int c) {
+#define KEY_POINT(k) ((const double *)(const void *)((const char *)&sc->cam[k] + offset))[c]
+    return segment_value(g, KEY_POINT(g->a0), KEY_POINT(g->i), KEY_POINT(g->i + 1),
+                         KEY_POINT(g->b1));
+#undef KEY_POINT
+}
+
+static double key_fov(const ww_scene *sc, int k) {
+    return sc->cam[k].fov > 0.0 ? sc->cam[k].fov : sc->fov;
 }
 
 static void key_angles(const ww_camera_key *k, double *yaw, double *pitch) {
@@ -100,7 +117,6 @@ static void key_angles_near(const ww_scene *sc, int lo, int hi, keyset *ks) {
 
 void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], double *fov) {
     keyset ks; /* the angles are filled where they are read (key_angles_near) */
-    ks.sc = sc;
     int n = sc->ncam, i;
     double u, h;
     WW_ASSERT(n >= 1);
@@ -109,13 +125,14 @@ void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], 
 
     if (n == 1) {
         key_angles_near(sc, 0, 0, &ks);
-        for (int c = 0; c < 3; c++) pos[c] = key_value(&ks, 0, CH_POS + c);
+        for (int c = 0; c < 3; c++) pos[c] = sc->cam[0].position[c];
         ww_camera_dir(ks.yaw[0], ks.pitch[0], fwd);
-        *fov = key_value(&ks, 0, CH_FOV);
+        *fov = key_fov(sc, 0);
         return;
     }
-    for (int c = 0; c < 3; c++) pos[c] = channel_at(&ks, i, u, h, CH_POS + c);
-    *fov = channel_at(&ks, i, u, h, CH_FOV);
+    segment g = segment_at(sc, i, u, h);
+    for (int c = 0; c < 3; c++) pos[c] = segment_point(sc, &g, offsetof(ww_camera_key, position), c);
+    *fov = segment_value(&g, key_fov(sc, g.a0), key_fov(sc, i), key_fov(sc, i + 1), key_fov(sc, g.b1));
 
     /* target interpolation needs every key of the path to aim at a point (camera.h); then the
      * keys' angles are not needed */
@@ -123,7 +140,8 @@ void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], 
     for (int k = 0; k < n && all_targets; k++) all_targets &= sc->cam[k].has_look_at;
     double target[3], d[3];
     if (all_targets) {
-        for (int c = 0; c < 3; c++) target[c] = channel_at(&ks, i, u, h, CH_TARGET + c);
+        for (int c = 0; c < 3; c++)
+            target[c] = segment_point(sc, &g, offsetof(ww_camera_key, look_at), c);
         ww_m_sub3(target, pos, d);
         if (ww_m_len3(d) > 1e-9) {
             ww_m_normalize3(d);
@@ -132,8 +150,10 @@ void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], 
         }
     }
     key_angles_near(sc, lo, hi, &ks);
-    double pitch = ww_m_clamp(channel_at(&ks, i, u, h, CH_PITCH), ww_m_rad(-89.9), ww_m_rad(89.9));
-    ww_camera_dir(channel_at(&ks, i, u, h, CH_YAW), pitch, fwd);
+    double pitch = segment_value(&g, ks.pitch[g.a0], ks.pitch[i], ks.pitch[i + 1], ks.pitch[g.b1]);
+    pitch = ww_m_clamp(pitch, ww_m_rad(-89.9), ww_m_rad(89.9));
+    ww_camera_dir(segment_value(&g, ks.yaw[g.a0], ks.yaw[i], ks.yaw[i + 1], ks.yaw[g.b1]), pitch,
+                  fwd);
 }
 
 void ww_camera_update(const ww_scene *sc, ww_state *st) {
