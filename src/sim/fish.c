@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "core/atan.h"
+#include "core/lanes.h"
 #include "core/mathx.h"
 #include "core/rng.h"
 #include "core/sincos.h"
@@ -169,6 +170,70 @@ static int lure_free(const ww_scene *sc, const ww_state *st) {
     return sc->rod.on && (int)st->lure_state[0] == WW_LURE_FLOATING && st->rod_fish[0] < 0.0;
 }
 
+/* ---- distance tests over all fish or threats at once ----------------------------------------- */
+
+/* points as lanes (one array a coordinate), padded to blocks of 8 with a point far from any
+ * fish: the fish (kept as each fish moves, so a fish sees those before it where they moved to
+ * this step) or the threats of a step */
+#define FISH_LANES (((WW_MAX_FISH > WW_MAX_CUBES + 2 ? WW_MAX_FISH : WW_MAX_CUBES + 2) + 7) / 8 * 8)
+#define FAR_POINT 1e150 /* squared distances of 1e300: beyond any separation or reach */
+typedef struct point_lanes {
+    int n, nb;
+    double x[FISH_LANES], y[FISH_LANES], z[FISH_LANES];
+} point_lanes;
+
+static void lanes_set(point_lanes *L, int k, const double p[3]) {
+    L->x[k] = p[0], L->y[k] = p[1], L->z[k] = p[2];
+}
+static void lanes_pad(point_lanes *L, int n) {
+    L->n = n;
+    L->nb = (n + 7) / 8;
+    for (int k = n; k < 8 * L->nb; k++) L->x[k] = L->y[k] = L->z[k] = FAR_POINT;
+}
+
+/* d2[k] = |p - point k|^2 for every point of L: ww_m_dot3 of ww_m_sub3(p, point) point by point
+ * (the same operations in the same order, so the same bits), in lanes (restrict: GCC at -O2
+ * vectorises no loop it would first have to check for overlap) */
+static WW_LANES void squared_distances(const point_lanes *restrict L, const double p[3],
+                                       double *restrict d2) {
+    double px = p[0], py = p[1], pz = p[2];
+    for (int b = 0; b < L->nb; b++)
+        for (int j = 0; j < 8; j++) {
+            int k = 8 * b + j;
+            double dx = px - L->x[k], dy = py - L->y[k], dz = pz - L->z[k];
+            d2[k] = dx * dx + dy * dy + dz * dz;
+        }
+}
+
+/* the threats a fish flees, in the order their fears are summed: the boat (its sphere), the
+ * cubes (their bounding spheres), the camera (a point); each with its surface's distance from
+ * its centre and the squared distance beyond which it surely adds nothing */
+typedef struct threats {
+    point_lanes at;
+    const double *centre[WW_MAX_CUBES + 2];
+    double r[WW_MAX_CUBES + 2], far2[WW_MAX_CUBES + 2];
+} threats;
+
+static void threat_add(threats *T, const double *q, double r, double R) {
+    int k = T->at.n++;
+    lanes_set(&T->at, k, q);
+    T->centre[k] = q;
+    T->r[k] = r;
+    /* a threat surely farther than R + r (by far more than the rounding of the root) */
+    double reach = R + r;
+    T->far2[k] = FAR_THREAT_MARGIN * reach * reach;
+}
+
+static void threats_of_step(const ww_scene *sc, const ww_state *st, threats *T) {
+    double R = sc->fish.avoid;
+    T->at.n = 0;
+    if (sc->boat.on) threat_add(T, st->boat_pos, sc->boat.radius, R);
+    for (int c = 0; c < WW_N_CUBES(sc); c++)
+        threat_add(T, st->cube_pos + 3 * c, 0.5 * sqrt(3.0) * sc->cubes.cube[c].size, R);
+    threat_add(T, st->cam_pos, 0.0, R);
+    lanes_pad(&T->at, T->at.n);
+}
+
 /* add_fear past its first test: the threat at offset d (fish less threat) is within reach */
 static void add_fear_near(const double d[3], double r, double R, double yaw, double fl[3]) {
     double dist = ww_m_len3(d), gap = fmax(dist - r, FLEE_MIN_GAP);
@@ -186,35 +251,26 @@ static void add_fear_near(const double d[3], double r, double R, double yaw, dou
     fl[2] += w * uz;
 }
 
-/* add the fear of a threat at q (its surface r from q) within R to fl: ((R/d)^2 - 1) / 3 for
- * the gap d between fish and the threat's surface (inverse-square, zero at R, 1 at R/2,
- * unbounded as d shrinks), along the unit vector away from it: horizontal as the XZ direction
- * (the heading when the threat is straight above or below), vertical as the 3D one. Inline:
- * most threats are far, and their test is a few operations, cheaper than a call */
-static inline void add_fear(const double p[3], const double q[3], double r, double R, double yaw,
-                            double fl[3]) {
-    double d[3];
-    ww_m_sub3(p, q, d);
-    /* a threat surely farther than R + r (by far more than the rounding of the root) adds
-     * nothing: passed without it. With R at most the least gap nothing is ever near */
-    double reach = R + r;
-    if (!(R > FLEE_MIN_GAP) || ww_m_dot3(d, d) > FAR_THREAT_MARGIN * reach * reach) return;
-    add_fear_near(d, r, R, yaw, fl);
-}
-
-/* the fear vector of fish i: the sum over the boat (its sphere), the cubes (their bounding
- * spheres) and the camera (a point) of add_fear; its length is the fear */
-static void fear(const ww_scene *sc, const ww_state *st, int i, double fl[3]) {
+/* the fear vector of fish i: the sum over the step's threats T of ((R/d)^2 - 1) / 3 for the gap
+ * d between fish and the threat's surface (inverse-square, zero at R, 1 at R/2, unbounded as d
+ * shrinks), along the unit vector away from it: horizontal as the XZ direction (the heading
+ * when the threat is straight above or below), vertical as the 3D one; its length is the fear.
+ * The threats' distances are tested all at once, and only those within reach summed, in order.
+ * With R at most the least gap nothing is ever near */
+static void fear(const ww_scene *sc, const ww_state *st, const threats *T, int i, double fl[3]) {
     const ww_fish_desc *f = &sc->fish;
     const double *p = st->fish_pos + 3 * i;
-    double yaw = st->fish_yaw[i];
+    double yaw = st->fish_yaw[i], R = f->avoid;
     fl[0] = fl[1] = fl[2] = 0.0;
-    if (!(f->avoid > 0.0)) return;
-    if (sc->boat.on) add_fear(p, st->boat_pos, sc->boat.radius, f->avoid, yaw, fl);
-    for (int c = 0; c < WW_N_CUBES(sc); c++)
-        add_fear(p, st->cube_pos + 3 * c, 0.5 * sqrt(3.0) * sc->cubes.cube[c].size, f->avoid, yaw,
-                 fl);
-    add_fear(p, st->cam_pos, 0.0, f->avoid, yaw, fl);
+    if (!(R > 0.0) || !(R > FLEE_MIN_GAP)) return;
+    double d2[FISH_LANES];
+    squared_distances(&T->at, p, d2);
+    for (int k = 0; k < T->at.n; k++) {
+        if (d2[k] > T->far2[k]) continue;
+        double d[3];
+        ww_m_sub3(p, T->centre[k], d);
+        add_fear_near(d, T->r[k], R, yaw, fl);
+    }
 }
 
 /* the unit XZ direction fish i wants, given its fear vector fl */
@@ -276,18 +332,21 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
     }
 }
 
-/* the push of the other fish closer than the separation, m/s */
-static void separation(const ww_scene *sc, const ww_state *st, int i, double push[3]) {
+/* the push of the other fish closer than the separation, m/s: every fish's distance tested at
+ * once (L: where each is now), then those within the separation in order */
+static void separation(const ww_scene *sc, const ww_state *st, const point_lanes *L, int i,
+                       double push[3]) {
     const ww_fish_desc *f = &sc->fish;
     const double *p = st->fish_pos + 3 * i;
     push[0] = push[1] = push[2] = 0.0;
     if (!(f->separation > 0.0)) return;
+    double d2[FISH_LANES], far2 = FAR_THREAT_MARGIN * f->separation * f->separation;
+    squared_distances(L, p, d2);
     for (int j = 0; j < f->count; j++) {
-        if (j == i || st->fish_mode[j] == WW_FISH_AWAY) continue;
+        /* surely beyond the separation: passed without the root */
+        if (d2[j] > far2 || j == i || st->fish_mode[j] == WW_FISH_AWAY) continue;
         double d[3];
         ww_m_sub3(p, st->fish_pos + 3 * j, d);
-        /* surely beyond the separation: passed without the root */
-        if (ww_m_dot3(d, d) > FAR_THREAT_MARGIN * f->separation * f->separation) continue;
         double dist = ww_m_len3(d);
         if (!(dist < f->separation)) continue;
         double u[3];
@@ -311,10 +370,13 @@ static void separation(const ww_scene *sc, const ww_state *st, int i, double pus
 }
 
 /* what every fish's step reads the same: the lowest the surface reaches (nothing in the fish's
- * step adds a ripple) and the velocity filter's rate without fear */
+ * step adds a ripple), the velocity filter's rate without fear, the threats (none moves during
+ * the fish's step), and where each fish is as lanes */
 typedef struct fish_step_consts {
-    double lowest;      /* ww_water_lowest, m */
-    double calm_filter; /* 1 - e^(-response dt) */
+    double lowest;            /* ww_water_lowest, m */
+    double calm_filter;       /* 1 - e^(-response dt) */
+    const threats *threats;
+    const point_lanes *fish;  /* kept by ww_fish_step as each fish moves */
 } fish_step_consts;
 
 /* y into the bounds at the fish's (x, z); the velocity into a bound is removed. A fish deeper
@@ -340,7 +402,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i, dt = sc->dt;
     double g[2], fl[3];
-    fear(sc, st, i, fl);
+    fear(sc, st, ks->threats, i, fl);
     double alarm = fmin(1.0, ww_m_len3(fl));
     goal_direction(sc, st, i, fl, g);
 
@@ -377,7 +439,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     double want_v[3] = {speed * cy, ww_m_clamp(VERTICAL_GAIN * (y_want - p[1]), -vy_max, vy_max),
                         speed * sy};
     double push[3];
-    separation(sc, st, i, push);
+    separation(sc, st, ks->fish, i, push);
     for (int k = 0; k < 3; k++) want_v[k] += push[k] + f->max_speed * fl[k];
     double n = ww_m_len3(want_v);
     if (n > f->max_speed)
@@ -458,8 +520,14 @@ static void fight(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, 
 void ww_fish_step(const ww_scene *sc, ww_state *st) {
     const ww_fish_desc *f = &sc->fish;
     /* the calm filter as swim works it out at alarm 0, to the bit */
+    threats T;
+    point_lanes L;
+    threats_of_step(sc, st, &T);
+    for (int i = 0; i < f->count; i++) lanes_set(&L, i, st->fish_pos + 3 * i);
+    lanes_pad(&L, f->count);
     fish_step_consts ks = {.lowest = ww_water_lowest(sc, st),
-                           .calm_filter = -expm1(-(f->response + FLEE_RESPONSE * 0.0) * sc->dt)};
+                           .calm_filter = -expm1(-(f->response + FLEE_RESPONSE * 0.0) * sc->dt),
+                           .threats = &T, .fish = &L};
     for (int i = 0; i < f->count; i++) {
         switch ((int)st->fish_mode[i]) {
         case WW_FISH_AWAY:
@@ -484,5 +552,6 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
                 bite(sc, st, &ks, i);
             break;
         }
+        lanes_set(&L, i, st->fish_pos + 3 * i);
     }
 }
