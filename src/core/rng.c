@@ -29,11 +29,19 @@ static uint64_t mix64(uint64_t z) {
     return z ^ (z >> 31);
 }
 
-double ww_rng_draw(uint64_t seed, uint64_t stream, uint64_t a, uint64_t b) {
-    const uint64_t golden = 0x9e3779b97f4a7c15ULL; /* 2^64 / phi, SplitMix64's increment */
-    uint64_t h = mix64(seed + golden);
-    h = mix64(h ^ (stream + 2 * golden));
-    h = mix64(h ^ (a + 3 * golden));
-    h = mix64(h ^ (b + 4 * golden));
+#define GOLDEN 0x9e3779b97f4a7c15ULL /* 2^64 / phi, SplitMix64's increment */
+
+uint64_t ww_rng_prefix(uint64_t seed, uint64_t stream, uint64_t a) {
+    uint64_t h = mix64(seed + GOLDEN);
+    h = mix64(h ^ (stream + 2 * GOLDEN));
+    return mix64(h ^ (a + 3 * GOLDEN));
+}
+
+double ww_rng_draw_at(uint64_t prefix, uint64_t b) {
+    uint64_t h = mix64(prefix ^ (b + 4 * GOLDEN));
     return (double)(h >> 11) * (1.0 / 9007199254740992.0);
+}
+
+double ww_rng_draw(uint64_t seed, uint64_t stream, uint64_t a, uint64_t b) {
+    return ww_rng_draw_at(ww_rng_prefix(seed, stream, a), b);
 }

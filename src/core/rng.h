@@ -29,5 +29,10 @@ double ww_rng_uniform(ww_rng *r); /* [0, 1), 53 bits */
  * draws exactly what a full run draws, and one system's draws never move another's. The bits
  * come from SplitMix64's finaliser (Steele, Lea & Flood 2014) over the four words. */
 double ww_rng_draw(uint64_t seed, uint64_t stream, uint64_t a, uint64_t b);
+/* the draws of one (seed, stream, a), a system's in a step, share the first three of the four
+ * mixes: ww_rng_prefix works them out once, and ww_rng_draw_at(prefix, b) is then
+ * ww_rng_draw(seed, stream, a, b) to the bit for one mix */
+uint64_t ww_rng_prefix(uint64_t seed, uint64_t stream, uint64_t a);
+double ww_rng_draw_at(uint64_t prefix, uint64_t b);
 
 #endif

@@ -537,8 +537,8 @@ ww_result ww_audio_write(ww_audio *a, const char *path, ww_error *err) {
         int16_t s = 0;
         if (x != 0.0) {
             uint64_t n = (uint64_t)(a->b0 + i / 2), ch = (uint64_t)(i % 2);
-            double tpdf = ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch) -
-                          ww_rng_draw(a->seed, DITHER_STREAM, n, 2 * ch + 1);
+            uint64_t draws = ww_rng_prefix(a->seed, DITHER_STREAM, n);
+            double tpdf = ww_rng_draw_at(draws, 2 * ch) - ww_rng_draw_at(draws, 2 * ch + 1);
             double v = floor(limit(x) * PCM_FULL + tpdf + 0.5);
             s = (int16_t)fmax(-PCM_FULL - 1.0, fmin(PCM_FULL, v));
         }

@@ -34,8 +34,13 @@ enum { K_JITTER = 0, K_BIG, K_BIG_ANGLE, K_SPAWN_ANGLE, K_SPAWN_R, K_CRUISE, K_Y
 #define FAR_THREAT_MARGIN (1.0 + 1e-9) /* squared distance over (reach)^2: surely beyond it */
 #define FLEE_RESPONSE 8.0        /* 1/s: extra velocity response at full fear */
 
-static double draw(const ww_scene *sc, const ww_state *st, int i, uint64_t k) {
-    return ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step, (uint64_t)i * 16u + k);
+/* the fish's draws of a step share a prefix (ww_rng_prefix of the seed, WW_RNG_FISH and the
+ * step), worked out once a step: rng below */
+static uint64_t fish_rng(const ww_scene *sc, const ww_state *st) {
+    return ww_rng_prefix(sc->seed, WW_RNG_FISH, (uint64_t)st->step);
+}
+static double draw(uint64_t rng, int i, uint64_t k) {
+    return ww_rng_draw_at(rng, (uint64_t)i * 16u + k);
 }
 
 /* a into [-pi, pi). Within 3 rad of 0 the quotient's floor is 0 whatever the rounding, so a is
@@ -103,27 +108,27 @@ static void cruise_band(const ww_scene *sc, int i, double *lo, double *hi) {
 }
 
 /* a point of the region: uniform in the disc, height uniform in the band */
-static void region_point(const ww_scene *sc, const ww_state *st, int i, uint64_t ka, uint64_t kr,
+static void region_point(const ww_scene *sc, uint64_t rng, int i, uint64_t ka, uint64_t kr,
                          uint64_t ky, double p[3]) {
     const ww_fish_desc *f = &sc->fish;
     double lo, hi;
     cruise_band(sc, i, &lo, &hi);
     const double *center = school_center(f, i);
-    double a = WW_TAU * draw(sc, st, i, ka), r = school_radius(f, i) * sqrt(draw(sc, st, i, kr));
+    double a = WW_TAU * draw(rng, i, ka), r = school_radius(f, i) * sqrt(draw(rng, i, kr));
     double sa, ca;
     ww_sincos(a, &sa, &ca);
     p[0] = center[0] + r * ca;
-    p[1] = lo + (hi - lo) * draw(sc, st, i, ky);
+    p[1] = lo + (hi - lo) * draw(rng, i, ky);
     p[2] = center[2] + r * sa;
 }
 
-static void new_target(const ww_scene *sc, const ww_state *st, int i) {
-    region_point(sc, st, i, K_TARGET_ANGLE, K_TARGET_R, K_TARGET_Y, st->fish_target + 3 * i);
+static void new_target(const ww_scene *sc, const ww_state *st, uint64_t rng, int i) {
+    region_point(sc, rng, i, K_TARGET_ANGLE, K_TARGET_R, K_TARGET_Y, st->fish_target + 3 * i);
 }
 
 /* place fish i: the scene's position at step 0 when given, else a drawn point at least one
  * separation from the fish [0, others) that are in the water */
-static void spawn(const ww_scene *sc, ww_state *st, int i, int others, int first) {
+static void spawn(const ww_scene *sc, ww_state *st, uint64_t rng, int i, int others, int first) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i;
     if (first && i < f->npositions) {
@@ -131,7 +136,7 @@ static void spawn(const ww_scene *sc, ww_state *st, int i, int others, int first
     } else {
         for (int t = 0; t < SPAWN_TRIES; t++) {
             uint64_t off = (uint64_t)t * RETRY_STRIDE;
-            region_point(sc, st, i, K_SPAWN_ANGLE + off, K_SPAWN_R + off, K_CRUISE + off, p);
+            region_point(sc, rng, i, K_SPAWN_ANGLE + off, K_SPAWN_R + off, K_CRUISE + off, p);
             int clear = 1;
             for (int j = 0; j < others && clear; j++) {
                 if (j == i || st->fish_mode[j] == WW_FISH_AWAY) continue;
@@ -142,9 +147,9 @@ static void spawn(const ww_scene *sc, ww_state *st, int i, int others, int first
             if (clear) break;
         }
     }
-    double yaw = WW_TAU * draw(sc, st, i, K_YAW) - WW_PI;
+    double yaw = WW_TAU * draw(rng, i, K_YAW) - WW_PI;
     st->fish_cruise[2 * i] = p[1];
-    st->fish_cruise[2 * i + 1] = WW_TAU * draw(sc, st, i, K_PHASE);
+    st->fish_cruise[2 * i + 1] = WW_TAU * draw(rng, i, K_PHASE);
     st->fish_yaw[i] = yaw;
     st->fish_goal[i] = yaw;
     st->fish_yaw_rate[i] = 0.0;
@@ -157,12 +162,13 @@ static void spawn(const ww_scene *sc, ww_state *st, int i, int others, int first
     st->fish_mode[i] = WW_FISH_SWIMMING;
     st->fish_timer[i] = 0.0;
     st->fish_reached[i] = 0.0;
-    new_target(sc, st, i);
+    new_target(sc, st, rng, i);
 }
 
 void ww_fish_reset(const ww_scene *sc, ww_state *st) {
     st->fish_caught[0] = 0.0;
-    for (int i = 0; i < sc->fish.count; i++) spawn(sc, st, i, i, 1);
+    uint64_t rng = fish_rng(sc, st);
+    for (int i = 0; i < sc->fish.count; i++) spawn(sc, st, rng, i, i, 1);
 }
 
 /* a floating lure nobody has bitten this cast */
@@ -274,15 +280,15 @@ static void fear(const ww_scene *sc, const ww_state *st, const threats *T, int i
 }
 
 /* the unit XZ direction fish i wants, given its fear vector fl */
-static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double fl[3],
+static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i, const double fl[3],
                            double g[2]) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i;
     if (f->mode == WW_FISH_WANDER) {
         double goal = st->fish_goal[i];
-        goal += f->jitter * sqrt(sc->dt) * sqrt(3.0) * (2.0 * draw(sc, st, i, K_JITTER) - 1.0);
-        if (draw(sc, st, i, K_BIG) < f->big_turn_rate * sc->dt)
-            goal += f->big_turn * (2.0 * draw(sc, st, i, K_BIG_ANGLE) - 1.0);
+        goal += f->jitter * sqrt(sc->dt) * sqrt(3.0) * (2.0 * draw(rng, i, K_JITTER) - 1.0);
+        if (draw(rng, i, K_BIG) < f->big_turn_rate * sc->dt)
+            goal += f->big_turn * (2.0 * draw(rng, i, K_BIG_ANGLE) - 1.0);
         st->fish_goal[i] = wrap_pi(goal);
         ww_sincos(st->fish_goal[i], &g[1], &g[0]);
     } else {
@@ -290,7 +296,7 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
         ww_m_sub3(t, p, d);
         if (ww_m_len3(d) < f->reach) {
             st->fish_reached[i] += 1.0;
-            new_target(sc, st, i);
+            new_target(sc, st, rng, i);
             ww_m_sub3(t, p, d);
         }
         double h = len2(d[0], d[2]);
@@ -334,7 +340,8 @@ static void goal_direction(const ww_scene *sc, ww_state *st, int i, const double
 
 /* the push of the other fish closer than the separation, m/s: every fish's distance tested at
  * once (L: where each is now), then those within the separation in order */
-static void separation(const ww_scene *sc, const ww_state *st, const point_lanes *L, int i,
+static void separation(const ww_scene *sc, const ww_state *st, const point_lanes *L, uint64_t rng,
+                       int i,
                        double push[3]) {
     const ww_fish_desc *f = &sc->fish;
     const double *p = st->fish_pos + 3 * i;
@@ -355,8 +362,8 @@ static void separation(const ww_scene *sc, const ww_state *st, const point_lanes
         } else {
             /* one point: a horizontal direction drawn for the pair, opposite for the two */
             int lo = i < j ? i : j, hi = i < j ? j : i;
-            double a = WW_TAU * ww_rng_draw(sc->seed, WW_RNG_FISH, (uint64_t)st->step,
-                                            PAIR_BASE + (uint64_t)lo * WW_MAX_FISH + (uint64_t)hi);
+            double a = WW_TAU * ww_rng_draw_at(rng, PAIR_BASE + (uint64_t)lo * WW_MAX_FISH +
+                                                        (uint64_t)hi);
             double s = i == lo ? 1.0 : -1.0;
             double sa, ca;
             ww_sincos(a, &sa, &ca);
@@ -377,6 +384,7 @@ typedef struct fish_step_consts {
     double calm_filter;       /* 1 - e^(-response dt) */
     const threats *threats;
     const point_lanes *fish;  /* kept by ww_fish_step as each fish moves */
+    uint64_t rng;             /* the draws' prefix, fish_rng */
 } fish_step_consts;
 
 /* y into the bounds at the fish's (x, z); the velocity into a bound is removed. A fish deeper
@@ -404,7 +412,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     double g[2], fl[3];
     fear(sc, st, ks->threats, i, fl);
     double alarm = fmin(1.0, ww_m_len3(fl));
-    goal_direction(sc, st, i, fl, g);
+    goal_direction(sc, st, ks->rng, i, fl, g);
 
     /* bounded turn toward the goal, faster when frightened */
     double yaw0 = st->fish_yaw[i], want = ww_atan2(g[1], g[0]);
@@ -439,7 +447,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     double want_v[3] = {speed * cy, ww_m_clamp(VERTICAL_GAIN * (y_want - p[1]), -vy_max, vy_max),
                         speed * sy};
     double push[3];
-    separation(sc, st, ks->fish, i, push);
+    separation(sc, st, ks->fish, ks->rng, i, push);
     for (int k = 0; k < 3; k++) want_v[k] += push[k] + f->max_speed * fl[k];
     double n = ww_m_len3(want_v);
     if (n > f->max_speed)
@@ -495,7 +503,7 @@ static void bite(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     const double *p = st->fish_pos + 3 * i;
     st->fish_mode[i] = WW_FISH_FIGHTING;
     st->fish_timer[i] = 0.0;
-    st->fish_fight[i] = f->fight[0] + (f->fight[1] - f->fight[0]) * draw(sc, st, i, K_FIGHT);
+    st->fish_fight[i] = f->fight[0] + (f->fight[1] - f->fight[0]) * draw(ks->rng, i, K_FIGHT);
     st->fish_goal[i] = ww_atan2(st->lure_pos[2] - p[2], st->lure_pos[0] - p[0]);
     st->rod_fish[0] = (double)i;
     st->lure_state[0] = WW_LURE_HOOKED;
@@ -527,12 +535,12 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
     lanes_pad(&L, f->count);
     fish_step_consts ks = {.lowest = ww_water_lowest(sc, st),
                            .calm_filter = -expm1(-(f->response + FLEE_RESPONSE * 0.0) * sc->dt),
-                           .threats = &T, .fish = &L};
+                           .threats = &T, .fish = &L, .rng = fish_rng(sc, st)};
     for (int i = 0; i < f->count; i++) {
         switch ((int)st->fish_mode[i]) {
         case WW_FISH_AWAY:
             st->fish_timer[i] -= sc->dt;
-            if (st->fish_timer[i] <= 0.0) spawn(sc, st, i, f->count, 0);
+            if (st->fish_timer[i] <= 0.0) spawn(sc, st, ks.rng, i, f->count, 0);
             break;
         case WW_FISH_FIGHTING:
             if (sc->rod.on && (int)st->lure_state[0] == WW_LURE_HOOKED &&
