@@ -4,6 +4,7 @@
  * a brute-force search, hard cases), ripples, and the wave statistics against closed forms.
  * Scenes are built from ww_scene_defaults() with fields set directly (no YAML).
  */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -211,6 +212,17 @@ TEST(waves_exp_matches_libm) {
     /* past the clamp: finite and positive, never 0, inf or NaN */
     ENSURE(ww_exp(-1000.0) == ww_exp(-708.0) && ww_exp(-708.0) > 0.0);
     ENSURE(isfinite(ww_exp(1000.0)));
+    /* the clamp (tests on the bits): everything past +-708 is +-708, the ends and what lies
+     * just inside are themselves, and a NaN stays a NaN (the NaN guard must see it) */
+    static const double beyond[] = {708.0000000000001, 709.0, 1e300, DBL_MAX, INFINITY};
+    for (size_t k = 0; k < sizeof beyond / sizeof beyond[0]; k++) {
+        ENSURE(ww_exp(beyond[k]) == ww_exp(708.0));
+        ENSURE(ww_exp(-beyond[k]) == ww_exp(-708.0));
+    }
+    ENSURE(ww_exp(nextafter(708.0, 0.0)) < ww_exp(708.0));
+    ENSURE(ww_exp(nextafter(-708.0, 0.0)) > ww_exp(-708.0));
+    ENSURE(ww_exp(-0.0) == 1.0 && ww_exp(DBL_TRUE_MIN) == 1.0);
+    ENSURE(isnan(ww_exp(NAN)) && isnan(ww_exp(-NAN)));
 }
 
 /* |a - b| in ulps of b (b's own spacing; at 0 the smallest normal's) */
