@@ -4,8 +4,11 @@
 
 #include <math.h>
 
+#include "core/exp.h"
+#include "core/lanes.h"
 #include "core/mathx.h"
 #include "core/rng.h"
+#include "core/sincos.h"
 #include "sim/water.h"
 
 #define BUBBLE_TIME_EPS 1e-9 /* s: a release is due on the step that comes within eps of it */
@@ -19,20 +22,61 @@ static double draw(const ww_scene *sc, int64_t step, int object, int k) {
     return ww_rng_draw(sc->seed, WW_RNG_BUBBLES, (uint64_t)step, (uint64_t)object * 16u + (uint64_t)k);
 }
 
+/* the wobble and the place below use ww_exp and ww_sincos: branch-free (the pools' loops
+ * vectorise) and the same on every libm */
+WW_LANE_STEP double wobble(double amplitude, double frequency, double phase, double age) {
+    double w = WW_TAU * frequency * age, s, c;
+    ww_sincos(w + phase, &s, &c);
+    return amplitude * (1.0 - ww_exp(-w)) * s;
+}
+
 double ww_bubble_wobble(double amplitude, double frequency, double phase, double age) {
-    double w = WW_TAU * frequency * age;
-    return amplitude * (1.0 - exp(-w)) * sin(w + phase);
+    return wobble(amplitude, frequency, phase, age);
+}
+
+/* where a bubble of emitter e released at t0 (its wobble's phase, its plane's heading and its
+ * rise speed given) is at t */
+WW_LANE_STEP void bubble_place(const ww_emitter_desc *e, double t, double t0, double phase,
+                               double heading, double speed, double *x, double *y, double *z) {
+    double age = t - t0, s = wobble(e->wobble, e->frequency, phase, age), sh, ch;
+    ww_sincos(heading, &sh, &ch);
+    *x = e->at[0] + s * ch;
+    *y = e->at[1] + speed * age;
+    *z = e->at[2] + s * sh;
 }
 
 /* place bubble b at age t - t0 */
 static void place(const ww_emitter_desc *e, ww_state *st, int b) {
-    double age = st->t - st->bubble_t0[b];
-    double s = ww_bubble_wobble(e->wobble, e->frequency, st->bubble_wobble[2 * b], age);
-    double th = st->bubble_wobble[2 * b + 1];
     double *p = st->bubble_pos + 3 * b;
-    p[0] = e->at[0] + s * cos(th);
-    p[1] = e->at[1] + st->bubble_speed[b] * age;
-    p[2] = e->at[2] + s * sin(th);
+    bubble_place(e, st->t, st->bubble_t0[b], st->bubble_wobble[2 * b],
+                 st->bubble_wobble[2 * b + 1], st->bubble_speed[b], p, p + 1, p + 2);
+}
+
+/* place every rising bubble of emitter e: its pool in blocks of 8 slots, each block's places
+ * worked out together (a slot past the pool repeats the block's first) and kept for the slots
+ * that rise */
+static WW_LANES void rise(const ww_emitter_desc *e, ww_state *st) {
+    enum { B = 8 };
+    for (int j0 = 0; j0 < e->count; j0 += B) {
+        int m = e->count - j0 < B ? e->count - j0 : B;
+        double t0[B], phase[B], heading[B], speed[B], x[B], y[B], z[B];
+        for (int j = 0; j < B; j++) {
+            int b = e->first + j0 + (j < m ? j : 0);
+            t0[j] = st->bubble_t0[b];
+            phase[j] = st->bubble_wobble[2 * b];
+            heading[j] = st->bubble_wobble[2 * b + 1];
+            speed[j] = st->bubble_speed[b];
+        }
+        for (int j = 0; j < B; j++)
+            bubble_place(e, st->t, t0[j], phase[j], heading[j], speed[j], &x[j], &y[j], &z[j]);
+        for (int j = 0; j < m; j++) {
+            int b = e->first + j0 + j;
+            if (st->bubble_on[b] == 0.0) continue;
+            st->bubble_pos[3 * b] = x[j];
+            st->bubble_pos[3 * b + 1] = y[j];
+            st->bubble_pos[3 * b + 2] = z[j];
+        }
+    }
 }
 
 /* the bubble's top has reached the surface over it */
@@ -91,11 +135,10 @@ void ww_bubbles_step(const ww_scene *sc, ww_state *st) {
         const ww_emitter_desc *e = &d->emitter[i];
 
         /* rise; burst at the surface */
+        rise(e, st);
         for (int j = 0; j < e->count; j++) {
             int b = e->first + j;
-            if (st->bubble_on[b] == 0.0) continue;
-            place(e, st, b);
-            if (at_surface(sc, st, b, floor_y)) st->bubble_on[b] = 0.0;
+            if (st->bubble_on[b] != 0.0 && at_surface(sc, st, b, floor_y)) st->bubble_on[b] = 0.0;
         }
 
         /* releases due by now, into free slots; none free: skipped */
