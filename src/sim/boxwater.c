@@ -187,10 +187,20 @@ FIXED_COUNTS void water_from(int n, const double c[3], const double q[4], const 
     double s = extent[a], h = 0.5 * s;
     double cp = extent[ap] / n, cq = extent[aq] / n, dA = cp * cq;
 
-    *out = (ww_box_water){.centre = {c[0], c[1], c[2]}, .ncolumns = n * n, .up_y = U[1],
-                          .cell_area = dA, .length = s};
     enum { MAXC = WW_CUBE_MAX_COLUMNS * WW_CUBE_MAX_COLUMNS };
     int nc = n * n, interpolated = m < n;
+    /* every field but the wet lengths, which the columns fill below: those past the last column
+     * in its block of 8 are zero, the rest are never read (the heave runs in blocks of 8) */
+    out->volume = out->waterplane = out->waterplane_moment = 0.0;
+    for (int k = 0; k < 3; k++) {
+        out->centre[k] = c[k];
+        out->velocity[k] = 0.0;
+    }
+    out->ncolumns = nc;
+    out->up_y = U[1];
+    out->cell_area = dA;
+    out->length = s;
+    for (int col = nc; col < (nc + 7) / 8 * 8; col++) out->wet[col] = 0.0;
     /* the columns' centre lines (offsets r from the centre, one array a coordinate) */
     double rx[MAXC], ry[MAXC], rz[MAXC], height[MAXC];
     for (int iu = 0; iu < n; iu++) {
