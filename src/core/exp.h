@@ -27,7 +27,8 @@ static inline double ww_exp(double x) {
     const int64_t max_bits = 0x40862000, inf_bits = 0x7ff00000; /* high words of 708 and inf */
     uint64_t u = ww_sc_bits(x), sign = u & 0x8000000000000000u;
     int64_t mag = (int64_t)(u ^ sign);
-    uint64_t beyond = (uint64_t)0 - (uint64_t)((mag > (max_bits << 32)) & (mag <= (inf_bits << 32)));
+    uint64_t beyond =
+        (uint64_t)0 - (uint64_t)((mag > (max_bits << 32)) & (mag <= (inf_bits << 32)));
     x = ww_sc_double((u & ~beyond) | ((sign | ((uint64_t)max_bits << 32)) & beyond));
     /* k = round(x / ln 2): adding 1.5 * 2^52 leaves k in the low mantissa bits */
     const double magic = 0x1.8p52;

@@ -24,9 +24,10 @@ typedef struct {
 /* what every channel of segment i at u shares: the keys its tangents read, their spans, and
  * the cubic Hermite weights of p0, m0, p1 and m1 */
 typedef struct segment {
-    int i, a0, b1;     /* the tangent at key i reads keys a0 and i + 1, that at i + 1 keys i and b1 */
-    int linear;        /* WW_INTERP_LINEAR: lerp p0 to p1 */
-    double u, h;       /* the local parameter and the segment's length, s */
+    int i, a0, b1;       /* the tangent at key i reads keys a0 and i + 1, that at i + 1 keys i
+                          * and b1 */
+    int linear;          /* WW_INTERP_LINEAR: lerp p0 to p1 */
+    double u, h;         /* the local parameter and the segment's length, s */
     double span0, span1; /* t[i + 1] - t[a0], t[b1] - t[i] */
     double w[4];
 } segment;
@@ -131,8 +132,10 @@ void ww_camera_eval(const ww_scene *sc, double t, double pos[3], double fwd[3], 
         return;
     }
     segment g = segment_at(sc, i, u, h);
-    for (int c = 0; c < 3; c++) pos[c] = segment_point(sc, &g, offsetof(ww_camera_key, position), c);
-    *fov = segment_value(&g, key_fov(sc, g.a0), key_fov(sc, i), key_fov(sc, i + 1), key_fov(sc, g.b1));
+    for (int c = 0; c < 3; c++)
+        pos[c] = segment_point(sc, &g, offsetof(ww_camera_key, position), c);
+    *fov = segment_value(&g, key_fov(sc, g.a0), key_fov(sc, i), key_fov(sc, i + 1),
+                         key_fov(sc, g.b1));
 
     /* target interpolation needs every key of the path to aim at a point (camera.h); then the
      * keys' angles are not needed */

@@ -280,8 +280,8 @@ static void fear(const ww_scene *sc, const ww_state *st, const threats *T, int i
 }
 
 /* the unit XZ direction fish i wants, given its fear vector fl */
-static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i, const double fl[3],
-                           double g[2]) {
+static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i,
+                           const double fl[3], double g[2]) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i;
     if (f->mode == WW_FISH_WANDER) {
@@ -341,8 +341,7 @@ static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i
 /* the push of the other fish closer than the separation, m/s: every fish's distance tested at
  * once (L: where each is now), then those within the separation in order */
 static void separation(const ww_scene *sc, const ww_state *st, const point_lanes *L, uint64_t rng,
-                       int i,
-                       double push[3]) {
+                       int i, double push[3]) {
     const ww_fish_desc *f = &sc->fish;
     const double *p = st->fish_pos + 3 * i;
     push[0] = push[1] = push[2] = 0.0;

@@ -53,7 +53,8 @@ static void bind_fields(const ww_scene *sc, ww_state *st) {
 #undef WW_STATE_BIND
     st->nruns = 0;
 #define WW_STATE_RUN(type, name, count, sys, comment)                                             \
-    RUNS_BIND(st, st->name, (long long)(count), (const void *)&st->name == (const void *)&st->events);
+    RUNS_BIND(st, st->name, (long long)(count),                                                   \
+              (const void *)&st->name == (const void *)&st->events);
     WW_STATE_FIELDS(WW_STATE_RUN)
 #undef WW_STATE_RUN
 }
@@ -153,7 +154,8 @@ WW_LANE_STEP void finite_sums(double acc[8], const double *a, long long n) {
 static WW_LANES int all_finite(const ww_state *st, long long n_events) {
     double acc[8] = {0.0};
     const double *base = (const double *)(const void *)st;
-    for (int r = 0; r < st->nruns; r++) finite_sums(acc, base + st->runs[r].start, st->runs[r].count);
+    for (int r = 0; r < st->nruns; r++)
+        finite_sums(acc, base + st->runs[r].start, st->runs[r].count);
     finite_sums(acc, st->events, n_events);
     double all = 0.0;
     for (int j = 0; j < 8; j++) all += acc[j];
