@@ -322,6 +322,65 @@ TEST(sim_nan_guard_sees_every_double_field) {
     }
 }
 
+/* a probe that counts each part's calls and that every enter is followed by its own leave */
+typedef struct counting_probe {
+    int open; /* the part entered and not left, -1 none */
+    int bad;  /* an enter inside a part, a leave of another part, an id out of range */
+    int64_t calls[WW_SYS_COUNT + 1];
+} counting_probe;
+static void count_enter(void *ctx, int id) {
+    counting_probe *c = ctx;
+    if (c->open >= 0 || id < 0 || id > WW_SYS_COUNT) c->bad++;
+    c->open = id;
+}
+static void count_leave(void *ctx, int id) {
+    counting_probe *c = ctx;
+    if (c->open != id) c->bad++;
+    if (id >= 0 && id <= WW_SYS_COUNT) c->calls[id]++;
+    c->open = -1;
+}
+
+/* bench sim's breakdown: a probed step is the same step (the lake's hash after 600 steps), and
+ * the probe sees each system the scene runs once a step at least (more where a script event
+ * goes to it), no system it lacks, and the step's own two parts (the outbox, the NaN guard) */
+TEST(sim_step_probed_sees_every_part_and_changes_nothing) {
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_scene_load("scenes/lake.yaml", NULL, 0, &sc, &err), WW_OK);
+    if (!sc) return;
+    enum { STEPS = 600 };
+    ww_state *plain = ww_state_new(sc), *probed = ww_state_new(sc);
+    counting_probe c = {.open = -1};
+    ww_step_probe probe = {.enter = count_enter, .leave = count_leave, .ctx = &c};
+    for (int k = 0; k < STEPS; k++) {
+        ENSURE_EQ_INT(ww_step(sc, plain, &err), WW_OK);
+        ENSURE_EQ_INT(ww_step_probed(sc, probed, &probe, &err), WW_OK);
+    }
+    ENSURE_EQ_U64(ww_state_hash(sc, plain), ww_state_hash(sc, probed));
+    ENSURE_EQ_INT(c.bad, 0);
+    ENSURE_EQ_INT(c.open, -1);
+    ENSURE_EQ_INT((int)c.calls[WW_SYS_COUNT], 2 * STEPS);
+    int nrows;
+    const ww_system_row *rows = ww_systems(&nrows);
+    for (int i = 0; i < nrows; i++) {
+        int id = rows[i].id;
+        if (ww_system_runs(sc, &rows[i]))
+            ENSURE_MSG(c.calls[id] >= STEPS, "%s: %lld calls", ww_system_name(id),
+                       (long long)c.calls[id]);
+        else
+            ENSURE_MSG(c.calls[id] == 0, "%s: %lld calls", ww_system_name(id),
+                       (long long)c.calls[id]);
+    }
+    /* a step hook each step, and the script's events in the first 5 s each to its system: two
+     * throws (t = 1 and 3 s) to the stones, a cast (2 s) to the rod, none to the fish */
+    ENSURE_EQ_INT((int)c.calls[WW_SYS_STONES], STEPS + 2);
+    ENSURE_EQ_INT((int)c.calls[WW_SYS_ROD], STEPS + 1);
+    ENSURE_EQ_INT((int)c.calls[WW_SYS_FISH], STEPS);
+    ww_state_free(plain);
+    ww_state_free(probed);
+    ww_scene_free(sc);
+}
+
 TEST(sim_camera_spinning_path_keeps_turning_one_way) {
     /* yaw keys 0, 120, 240, 0, 120 degrees: each step is +120 the short way, so between the
      * third and fourth key the camera looks at 300 degrees, not back through 120 */

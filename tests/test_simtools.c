@@ -14,11 +14,14 @@
 #include "sim/events.h"
 #include "sim/state.h"
 #include "sim/step.h"
+#include "sim/systems.h"
 #include "test.h"
 #include "render/sim_out.h"
 
 /* the JSON lines print the shortest text that reads back as the double (core/numfmt.h) */
 #define JSON_ROUND_TRIP_TOL 0.0
+/* bench sim's systems shares, each printed to 4 decimals, add up to 1 within their rounding */
+#define SHARES_ROUNDING_TOL 2e-3
 
 TEST(simtools_json_validator) {
     ENSURE_EQ_INT(ww_test_json_lines("{\"a\":[1,-2.5e3,null,true],\"b\":{\"c\":\"x\\n\"}}\n{}\n"), 2);
@@ -509,9 +512,10 @@ TEST_PROC(simtools_bench_sim_tiny) {
     ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     char *text = ww_test_read_file(out, NULL);
     ENSURE(text != NULL);
-    /* one speed line, four dt lines for each of the two integrators, the figure, and a columns
-     * line for each of the seven column counts (the soak has archimedes cubes) */
-    if (text) ENSURE_EQ_INT(ww_test_json_lines(text), 17);
+    /* one speed line, a systems line for each of the soak's twelve systems and the step's own
+     * work, four dt lines for each of the two integrators, the figure, and a columns line for
+     * each of the seven column counts (the soak has archimedes cubes) */
+    if (text) ENSURE_EQ_INT(ww_test_json_lines(text), 30);
     free(text);
 }
 
@@ -573,6 +577,55 @@ TEST_PROC(simtools_bench_sim_speed_over_the_scene_run) {
     snprintf(args, sizeof args, "bench sim --tiny scenes/soak.yaml -o %s", dir);
     ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
     ENSURE(!ww_test_file_contains(out, "target: "));
+}
+
+/* the step by system: a row for each system the scene runs and one for the step's own work,
+ * none for a system it lacks, each with its calls a step; what the times are is not asserted,
+ * only that they are there and the shares add up */
+TEST_PROC(simtools_bench_sim_systems_breakdown) {
+    const char *dir = ww_test_tmpdir("simtools_bench_sim_systems");
+    char out[512], args[2048];
+    snprintf(out, sizeof out, "%s/stdout.txt", dir);
+    snprintf(args, sizeof args, "bench sim --tiny --json scenes/lake.yaml -o %s", dir);
+    ENSURE_EQ_INT(ww_test_ww(args, out, NULL), 0);
+    char *text = ww_test_read_file(out, NULL);
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ENSURE_EQ_INT(ww_scene_load("scenes/lake.yaml", NULL, 0, &sc, &err), WW_OK);
+    ENSURE(text != NULL);
+    if (!text || !sc) {
+        free(text);
+        ww_scene_free(sc);
+        return;
+    }
+    int nrows, rows_seen = 0;
+    const ww_system_row *rows = ww_systems(&nrows);
+    double shares = 0.0;
+    for (int i = 0; i <= nrows; i++) {
+        const char *name = i < nrows ? ww_system_name(rows[i].id) : "step";
+        char want[160];
+        snprintf(want, sizeof want,
+                 "\"part\":\"systems\",\"scene\":\"lake.yaml\",\"system\":\"%s\",", name);
+        const char *line = strstr(text, want);
+        int runs = i == nrows || ww_system_runs(sc, &rows[i]);
+        ENSURE_MSG((line != NULL) == runs, "%s: %s a systems line", name,
+                   runs ? "wanted" : "did not want");
+        if (!line) continue;
+        rows_seen++;
+        double us = ww_test_json_number(line, "us_per_step");
+        double share = ww_test_json_number(line, "share");
+        double calls = ww_test_json_number(line, "calls_per_step");
+        ENSURE_MSG(us >= 0.0 && share >= 0.0 && share <= 1.0, "%s: %g us, share %g", name, us,
+                   share);
+        /* every system the lake runs has a hook in each step; the step's own work is two (the
+         * outbox, the NaN guard) */
+        ENSURE_MSG(calls >= (i == nrows ? 2.0 : 1.0), "%s: %g calls a step", name, calls);
+        shares += share;
+    }
+    ENSURE(rows_seen >= 10);
+    ENSURE_NEAR(shares, 1.0, SHARES_ROUNDING_TOL);
+    free(text);
+    ww_scene_free(sc);
 }
 
 /* ten simulated minutes of the soak scene, every system on, at 120 Hz: no NaN or Inf (exit 3

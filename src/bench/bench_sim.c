@@ -3,6 +3,8 @@
  *   speed   steps per second and simulated seconds per wall second of each scene, over its own
  *           run (the steps `simulate SCENE` takes) repeated from step 0, and the lake's against
  *           the simulation's speed target;
+ *   systems each scene's step by system: the same run with each system's work timed on its own
+ *           (ww_step_probe), us a step and share;
  *   dt      the error of named metrics at dt = 1/30, 1/60, 1/120, 1/240 against a dt = 1/1920
  *           reference of the same scene, next to the steps per second of each: cube heave (y of
  *           cube 0), boat position (x, z) and stone paths (each stone's position), compared at
@@ -44,6 +46,7 @@
 #include "sim/events.h"
 #include "sim/state.h"
 #include "sim/step.h"
+#include "sim/systems.h"
 #include "sim/water.h"
 #include "sim/waves.h"
 
@@ -77,9 +80,10 @@ static const char *base_name(const char *path) {
 #define SPEED_TARGET_RATIO 2000.0
 
 /* the steps `simulate SCENE` takes (to its last frame), run again from step 0 until budget s of
- * wall time are spent; the resets between runs are not timed. *steps taken in *wall s */
-static ww_result time_run(const ww_scene *sc, ww_state *st, double budget, double *steps,
-                          double *wall, ww_error *err) {
+ * wall time are spent; the resets between runs are not timed. *steps taken in *wall s. With a
+ * probe (the systems' breakdown below) each step is ww_step_probed */
+static ww_result time_run_probed(const ww_scene *sc, ww_state *st, const ww_step_probe *probe,
+                                 double budget, double *steps, double *wall, ww_error *err) {
     int64_t run = (sc->frame_count - 1) * sc->steps_per_frame;
     if (run < 1) run = SPEED_CHUNK;
     ww_result r = WW_OK;
@@ -88,11 +92,18 @@ static ww_result time_run(const ww_scene *sc, ww_state *st, double budget, doubl
         if (st->step >= run) ww_state_reset(sc, st);
         int64_t from = st->step, to_step = from + SPEED_CHUNK < run ? from + SPEED_CHUNK : run;
         double t0 = ww_now_seconds();
-        r = ww_sim_advance_to(sc, st, to_step, err);
+        if (probe)
+            while (!r && st->step < to_step) r = ww_step_probed(sc, st, probe, err);
+        else
+            r = ww_sim_advance_to(sc, st, to_step, err);
         *wall += ww_now_seconds() - t0;
         *steps += (double)(st->step - from);
     }
     return r;
+}
+static ww_result time_run(const ww_scene *sc, ww_state *st, double budget, double *steps,
+                          double *wall, ww_error *err) {
+    return time_run_probed(sc, st, NULL, budget, steps, wall, err);
 }
 
 static ww_result part_speed(const ww_bench_opts *o, const char *const *scenes, FILE *to,
@@ -137,6 +148,104 @@ static ww_result part_speed(const ww_bench_opts *o, const char *const *scenes, F
         fprintf(to, "target: %s at >= %.0fx real time: %.0fx, %s\n", SPEED_TARGET_SCENE,
                 SPEED_TARGET_RATIO, target_ratio,
                 target_ratio >= SPEED_TARGET_RATIO ? "met" : "missed");
+    return WW_OK;
+}
+
+/* ---- systems ------------------------------------------------------------------------------- */
+
+/* a step's wall time by part (ww_step_probe): each system's hooks and script events, and the
+ * step's own work (index WW_SYS_COUNT), with how many times each ran */
+typedef struct part_times {
+    double t0;
+    double seconds[WW_SYS_COUNT + 1];
+    int64_t calls[WW_SYS_COUNT + 1];
+} part_times;
+
+static void times_enter(void *ctx, int id) {
+    (void)id;
+    ((part_times *)ctx)->t0 = ww_now_seconds();
+}
+static void times_leave(void *ctx, int id) {
+    part_times *t = ctx;
+    t->seconds[id] += ww_now_seconds() - t->t0;
+    t->calls[id]++;
+}
+
+#define PROBE_CALIBRATION 20000 /* empty enter/leave pairs a round */
+#define PROBE_ROUNDS 5
+
+/* what the probe records for a part that does nothing (a clock read and the bookkeeping), s a
+ * call: the least of a few rounds' means, taken out of every part's time */
+static double probe_cost(void) {
+    double least = INFINITY;
+    for (int round = 0; round < PROBE_ROUNDS; round++) {
+        part_times t = {0};
+        for (int k = 0; k < PROBE_CALIBRATION; k++) {
+            times_enter(&t, 0);
+            times_leave(&t, 0);
+        }
+        least = fmin(least, t.seconds[0] / PROBE_CALIBRATION);
+    }
+    return least;
+}
+
+/* each scene's step by system: its run (as the speed rows) with every part of each step timed
+ * on its own, the probe's cost taken out; a part's share is of the parts' sum. The clock reads
+ * around the parts slow the run, so the sum is a little above the speed row's us/step */
+static ww_result part_systems(const ww_bench_opts *o, const char *const *scenes, FILE *to,
+                              ww_error *err) {
+    double budget = o->tiny ? SPEED_WALL_S_TINY : SPEED_WALL_S, cost = probe_cost();
+    if (!o->json)
+        fprintf(to, "\nsystems: the step's time by system (each system's work timed on its "
+                    "own, the timer's %.0f ns a call taken out); step: the step's own work (the "
+                    "outbox, the NaN guard)\n%-16s %-10s %12s %8s\n",
+                1e9 * cost, "scene", "system", "us/step", "share");
+    int nrows;
+    const ww_system_row *rows = ww_systems(&nrows);
+    for (int s = 0; scenes[s]; s++) {
+        ww_scene *sc = NULL;
+        ww_result r = ww_scene_load(scenes[s], NULL, 0, &sc, err);
+        if (r) return r;
+        ww_state *st = ww_state_new(sc);
+        if (!st) {
+            ww_scene_free(sc);
+            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
+        }
+        part_times t = {0};
+        ww_step_probe probe = {.enter = times_enter, .leave = times_leave, .ctx = &t};
+        double steps, wall;
+        r = time_run_probed(sc, st, &probe, budget, &steps, &wall, err);
+        ww_state_free(st);
+        if (r) {
+            ww_scene_free(sc);
+            return r;
+        }
+        /* the parts in the order a step runs them (the table's), the step's own work last */
+        int ids[WW_SYS_COUNT + 1], n = 0;
+        for (int i = 0; i < nrows; i++)
+            if (ww_system_runs(sc, &rows[i]) && t.calls[rows[i].id] > 0) ids[n++] = rows[i].id;
+        ids[n++] = WW_SYS_COUNT;
+        double us[WW_SYS_COUNT + 1], sum = 0.0;
+        for (int k = 0; k < n; k++) {
+            int id = ids[k];
+            us[k] = fmax(0.0, 1e6 * (t.seconds[id] - cost * (double)t.calls[id]) / steps);
+            sum += us[k];
+        }
+        for (int k = 0; k < n; k++) {
+            const char *name = ids[k] == WW_SYS_COUNT ? "step" : ww_system_name(ids[k]);
+            double share = sum > 0.0 ? us[k] / sum : 0.0;
+            if (o->json)
+                fprintf(to, "{\"part\":\"systems\",\"scene\":\"%s\",\"system\":\"%s\","
+                            "\"us_per_step\":%.4f,\"share\":%.4f,\"calls_per_step\":%.3f}\n",
+                        base_name(scenes[s]), name, us[k], share,
+                        (double)t.calls[ids[k]] / steps);
+            else
+                fprintf(to, "%-16s %-10s %12.3f %7.1f%%\n", k == 0 ? base_name(scenes[s]) : "",
+                        name, us[k], 100.0 * share);
+        }
+        if (!o->json) fprintf(to, "%-16s %-10s %12.3f\n", "", "sum", sum);
+        ww_scene_free(sc);
+    }
     return WW_OK;
 }
 
@@ -619,6 +728,7 @@ ww_result ww_bench_sim(const ww_bench_opts *o, FILE *to, ww_error *err) {
 
     ww_result r = part_speed(o, scenes, to, err);
     if (r) return r;
+    if ((r = part_systems(o, scenes, to, err))) return r;
 
     /* the dt table: each scene named, else the lake */
     const char *const dt_default[2] = {have_lake ? lake : NULL, NULL};

@@ -22,4 +22,18 @@ void ww_state_reset(const ww_scene *sc, ww_state *st);
 ww_result ww_step(const ww_scene *sc, ww_state *st, ww_error *err);
 ww_result ww_sim_advance_to(const ww_scene *sc, ww_state *st, int64_t step, ww_error *err);
 
+/* calls around each part of a step, for a breakdown of its time by system (`bench sim`; the
+ * role of MuJoCo's per-stage timers): enter(ctx, id) before, leave(ctx, id) after each system's
+ * hook or script event (id: its ww_system) and the step's own work (id WW_SYS_COUNT: clearing
+ * the outbox, the NaN guard). They see the step run, never change it */
+typedef struct ww_step_probe {
+    void (*enter)(void *ctx, int id);
+    void (*leave)(void *ctx, int id);
+    void *ctx;
+} ww_step_probe;
+
+/* ww_step with probe's calls around its parts: the same state to the bit */
+ww_result ww_step_probed(const ww_scene *sc, ww_state *st, const ww_step_probe *probe,
+                         ww_error *err);
+
 #endif
