@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/numparse.h"
 #include "scene/files.h"
 
 /* the MTL defaults (Wavefront's: Kd 0.8 grey, no specular, opaque) */
@@ -104,6 +105,7 @@ static ww_result number(cur *c, const char *what, double *out, ww_error *err) {
     char buf[NUMBER_CHARS + 1];
     if (n == 0) return fail(c, WW_E_SYNTAX, col, err, "%s: expected a number, got the end of the line", what);
     if (n > NUMBER_CHARS) return fail(c, WW_E_SYNTAX, col, err, "%s: number too long", what);
+    if (ww_parse_decimal(s, n, out)) return WW_OK; /* a short decimal: strtod's value, faster */
     memcpy(buf, s, n);
     buf[n] = '\0';
     char *e;
@@ -285,13 +287,16 @@ static ww_result index_of(cur *c, const char *s, size_t n, int col, size_t count
     char buf[NUMBER_CHARS + 1];
     if (n == 0 || n > NUMBER_CHARS)
         return fail(c, WW_E_SYNTAX, col, err, "f: expected a %s index", what);
-    memcpy(buf, s, n);
-    buf[n] = '\0';
-    char *e;
-    errno = 0;
-    long v = strtol(buf, &e, 10);
-    if (e != buf + n || errno)
-        return fail(c, WW_E_SYNTAX, col, err, "f: '%s' is not a whole number", buf);
+    long v;
+    if (!ww_parse_integer(s, n, &v)) { /* not a short whole number: strtol says what it is */
+        memcpy(buf, s, n);
+        buf[n] = '\0';
+        char *e;
+        errno = 0;
+        v = strtol(buf, &e, 10);
+        if (e != buf + n || errno)
+            return fail(c, WW_E_SYNTAX, col, err, "f: '%s' is not a whole number", buf);
+    }
     long i = v > 0 ? v - 1 : (long)count + v;
     if (v == 0 || i < 0 || (size_t)i >= count) {
         char msg[128];
