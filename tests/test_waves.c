@@ -1002,6 +1002,45 @@ TEST(ripples_pool_replaces_oldest_and_prunes) {
     free(sc);
 }
 
+/* the pool's ripple_slots: every slot from it on is free after each add and prune, so that
+ * prune (and every query) reads only the slots below it; prune leaves the pool as a prune of
+ * every slot would. Random adds at random times into a pool of 4 with a lifetime of 10 s */
+TEST(ripples_slots_cover_every_live_ripple) {
+    ww_scene *sc = new_scene(WW_WAVES_FLAT);
+    ripple_setup(sc);
+    ww_state *st = ww_state_new(sc);
+    ww_rng r;
+    ww_rng_seed(&r, 3, 0);
+    int max = sc->ripples.max, bad = 0, live_seen = 0;
+    double t = 0.0;
+    for (int i = 0; i < 400; i++) {
+        t += 12.0 * ww_rng_uniform(&r) * ww_rng_uniform(&r);
+        st->t = t;
+        if (ww_rng_uniform(&r) < 0.5) {
+            ww_ripples_add(sc, st, ww_rng_uniform(&r), ww_rng_uniform(&r), 0.01);
+        } else {
+            /* the reference: every slot whose ripple has outlived the lifetime freed */
+            double want[16 * WW_RIPPLE_STRIDE];
+            memcpy(want, st->ripple, sizeof(double) * (size_t)(max * WW_RIPPLE_STRIDE));
+            for (int s = 0; s < max; s++) {
+                double *e = want + s * WW_RIPPLE_STRIDE;
+                if (e[3] != 0.0 && t - e[2] > sc->ripples.lifetime) e[0] = e[1] = e[2] = e[3] = 0.0;
+            }
+            ww_ripples_prune(sc, st);
+            bad += memcmp(want, st->ripple, sizeof(double) * (size_t)(max * WW_RIPPLE_STRIDE)) != 0;
+            int top = 0;
+            for (int s = 0; s < max; s++) top = want[s * WW_RIPPLE_STRIDE + 3] != 0.0 ? s + 1 : top;
+            bad += st->ripple_slots[0] != top;
+        }
+        for (int s = st->ripple_slots[0]; s < max; s++) bad += st->ripple[s * WW_RIPPLE_STRIDE + 3] != 0.0;
+        live_seen += ww_ripples_count(sc, st) > 0 && ww_ripples_count(sc, st) < max;
+    }
+    ENSURE_EQ_INT(bad, 0);
+    ENSURE(live_seen > 50);
+    ww_state_free(st);
+    free(sc);
+}
+
 /* ---- statistics ---- */
 
 TEST(wave_stats_single_sine) {

@@ -34,8 +34,9 @@ void ww_ripples_add(const ww_scene *sc, ww_state *st, double x, double z, double
 
 void ww_ripples_prune(const ww_scene *sc, ww_state *st) {
     if (!sc->ripples_on) return;
+    /* the slots from ripple_slots on are free (ww_ripples_add and this keep it so) */
     int top = 0;
-    for (int i = 0; i < sc->ripples.max; i++) {
+    for (int i = 0; i < st->ripple_slots[0]; i++) {
         double *e = st->ripple + i * WW_RIPPLE_STRIDE;
         if (e[3] != 0.0 && st->t - e[2] > sc->ripples.lifetime)
             e[0] = e[1] = e[2] = e[3] = 0.0;
