@@ -1032,7 +1032,8 @@ TEST(ripples_slots_cover_every_live_ripple) {
             for (int s = 0; s < max; s++) top = want[s * WW_RIPPLE_STRIDE + 3] != 0.0 ? s + 1 : top;
             bad += st->ripple_slots[0] != top;
         }
-        for (int s = st->ripple_slots[0]; s < max; s++) bad += st->ripple[s * WW_RIPPLE_STRIDE + 3] != 0.0;
+        for (int s = st->ripple_slots[0]; s < max; s++)
+            bad += st->ripple[s * WW_RIPPLE_STRIDE + 3] != 0.0;
         live_seen += ww_ripples_count(sc, st) > 0 && ww_ripples_count(sc, st) < max;
     }
     ENSURE_EQ_INT(bad, 0);
