@@ -106,6 +106,19 @@ static ww_result time_run(const ww_scene *sc, ww_state *st, double budget, doubl
     return time_run_probed(sc, st, NULL, budget, steps, wall, err);
 }
 
+/* the scene at path and a state at its step 0 */
+static ww_result load_with_state(const char *path, ww_scene **sc, ww_state **st, ww_error *err) {
+    *sc = NULL;
+    *st = NULL;
+    ww_result r = ww_scene_load(path, NULL, 0, sc, err);
+    if (r) return r;
+    *st = ww_state_new(*sc);
+    if (*st) return WW_OK;
+    ww_scene_free(*sc);
+    *sc = NULL;
+    return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
+}
+
 static ww_result part_speed(const ww_bench_opts *o, const char *const *scenes, FILE *to,
                             ww_error *err) {
     double budget = o->tiny ? SPEED_WALL_S_TINY : SPEED_WALL_S;
@@ -116,14 +129,10 @@ static ww_result part_speed(const ww_bench_opts *o, const char *const *scenes, F
                     "%-16s %10s %12s %12s %14s %10s\n",
                 "scene", "steps", "us/step", "steps/s", "sim s/wall s", "state B");
     for (int s = 0; scenes[s]; s++) {
-        ww_scene *sc = NULL;
-        ww_result r = ww_scene_load(scenes[s], NULL, 0, &sc, err);
+        ww_scene *sc;
+        ww_state *st;
+        ww_result r = load_with_state(scenes[s], &sc, &st, err);
         if (r) return r;
-        ww_state *st = ww_state_new(sc);
-        if (!st) {
-            ww_scene_free(sc);
-            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
-        }
         int64_t run = (sc->frame_count - 1) * sc->steps_per_frame;
         if (run < 1) run = SPEED_CHUNK;
         double wall, steps;
@@ -203,14 +212,10 @@ static ww_result part_systems(const ww_bench_opts *o, const char *const *scenes,
     int nrows;
     const ww_system_row *rows = ww_systems(&nrows);
     for (int s = 0; scenes[s]; s++) {
-        ww_scene *sc = NULL;
-        ww_result r = ww_scene_load(scenes[s], NULL, 0, &sc, err);
+        ww_scene *sc;
+        ww_state *st;
+        ww_result r = load_with_state(scenes[s], &sc, &st, err);
         if (r) return r;
-        ww_state *st = ww_state_new(sc);
-        if (!st) {
-            ww_scene_free(sc);
-            return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "out of memory");
-        }
         part_times t = {0};
         ww_step_probe probe = {.enter = times_enter, .leave = times_leave, .ctx = &t};
         double steps, wall;
