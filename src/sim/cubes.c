@@ -60,6 +60,8 @@
 #include "sim/cubes.h"
 
 #include <math.h>
+#include <stddef.h>
+#include <string.h>
 
 #include "core/error.h"
 #include "core/mathx.h"
@@ -241,7 +243,10 @@ static void step_cube(const ww_scene *sc, ww_state *st, int i, const cube_nodes 
     const ww_cube_desc *d = &sc->cubes.cube[i];
     double dt = sc->dt, *p = st->cube_pos + 3 * i, *v = st->cube_vel + 3 * i;
     double *w = st->cube_omega + 3 * i, *q = st->cube_rot + 4 * i, *press = st->cube_press + 2 * i;
-    cube_forces F = {0};
+    /* zero but the columns' water (the last member): forces_archimedes sets it whole
+     * (ww_box_water_from), and only the archimedes heave reads it */
+    cube_forces F;
+    memset(&F, 0, offsetof(cube_forces, water));
     if (d->buoyancy == WW_CUBE_SPRING)
         forces_spring(sc, st, i, &F);
     else

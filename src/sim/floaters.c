@@ -23,6 +23,8 @@
 #include "sim/floaters.h"
 
 #include <math.h>
+#include <stddef.h>
+#include <string.h>
 
 #include "core/mathx.h"
 #include "sim/boxwater.h"
@@ -181,7 +183,9 @@ static void step_floater(const ww_scene *sc, ww_state *st, int j, const floater_
     const ww_floater_desc *d = &sc->floaters.floater[j];
     double dt = sc->dt, *p = st->floater_pos + 3 * j, *v = st->floater_vel + 3 * j;
     double *w = st->floater_omega + 3 * j, *q = st->floater_rot + 4 * j;
-    box_forces F = {0};
+    /* zero but the water (the last member), which forces sets whole (ww_box_water_from) */
+    box_forces F;
+    memset(&F, 0, offsetof(box_forces, water));
     forces(sc, st, j, N, &F);
     st->floater_submerged[j] = F.f;
 
