@@ -172,20 +172,20 @@ static long long first_bad_double(const double *a, long long n) {
 static long long first_bad_int(const int32_t *a, long long n) { return (void)a, (void)n, -1; }
 #define FIRST_BAD(p, n) _Generic((p), double *: first_bad_double, int32_t *: first_bad_int)(p, n)
 
-/* the values of a field that a step can have written: the event outbox's live events only (its
- * slots past event_count are never written and stay zero, ww_events_clear); every other field
- * whole */
+/* the values of the event outbox a step can have written: its live events (its slots past
+ * event_count are never written and stay zero, ww_events_clear) */
+static long long outbox_live(const ww_state *st) {
+    return (long long)st->event_count[0] * WW_SIM_EVENT_STRIDE;
+}
+
+/* the values of a field that a step can have written: the outbox's live ones, every other
+ * field whole */
 static long long live_count(const ww_state *st, const void *field, long long count) {
-    if (count > 0 && field == (const void *)st->events)
-        return (long long)st->event_count[0] * WW_SIM_EVENT_STRIDE;
-    return count;
+    return count > 0 && field == (const void *)st->events ? outbox_live(st) : count;
 }
 
 ww_result ww_state_check(const ww_scene *sc, const ww_state *st, ww_error *err) {
-    /* the outbox's live events (live_count) */
-    long long n_events =
-        ww_scene_has_objects(sc) ? (long long)st->event_count[0] * WW_SIM_EVENT_STRIDE : 0;
-    if (all_finite(st, n_events)) return WW_OK;
+    if (all_finite(st, ww_scene_has_objects(sc) ? outbox_live(st) : 0)) return WW_OK;
     /* something is not finite: which field, which value */
     long long i;
 #define WW_STATE_CHECK(type, name, count, sys, comment)                                           \
