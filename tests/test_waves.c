@@ -281,6 +281,81 @@ TEST(waves_atan_matches_libm) {
     }
 }
 
+/* ww_atan and ww_atan2 pick their reduction and quadrant with masks, so that loops calling them
+ * vectorise; these are the same steps with branches (Cephes's atan.c and the quadrants as libm),
+ * the oracle the masks must agree with to the bit */
+static double atan_branches(double x) {
+    double a = fabs(x), base = 0.0, more = 0.0, t = a;
+    if (a > 2.41421356237309504880) {
+        base = WW_ATAN_PIO2;
+        more = WW_ATAN_MOREBITS;
+        t = -1.0 / a;
+    } else if (a > 0.66) {
+        base = WW_ATAN_PIO4;
+        more = 0.5 * WW_ATAN_MOREBITS;
+        t = (a - 1.0) / (a + 1.0);
+    }
+    double z = t * t;
+    double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
+                 7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
+               6.485021904942025371773e1;
+    double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
+                 4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z +
+               1.945506571482613964425e2;
+    double r = base + ((t + t * z * (p / q)) + more);
+    return signbit(x) ? -r : r;
+}
+static double atan2_branches(double y, double x) {
+    if (x == 0.0) {
+        if (y > 0.0) return WW_ATAN_PIO2;
+        if (y < 0.0) return -WW_ATAN_PIO2;
+        if (y == 0.0 && signbit(x)) return signbit(y) ? -WW_ATAN_PI : WW_ATAN_PI;
+        return y;
+    }
+    double a = atan_branches(y / x);
+    if (x > 0.0) return a;
+    return signbit(y) ? a - WW_ATAN_PI : a + WW_ATAN_PI;
+}
+/* the same bits, or both NaN */
+static int same_bits(double a, double b) {
+    return (isnan(a) && isnan(b)) || memcmp(&a, &b, sizeof a) == 0;
+}
+
+TEST(waves_atan_masks_are_the_branches_to_the_bit) {
+    ww_rng r;
+    ww_rng_seed(&r, 29, 0);
+    int bad = 0;
+    for (int i = 0; i < 300000 && bad < 5; i++) {
+        /* magnitudes from 1e-300 to 1e300, every sign, and each reduction's edge region */
+        double u = 2.0 * ww_rng_uniform(&r) - 1.0, v = 2.0 * ww_rng_uniform(&r) - 1.0;
+        double x = i % 3 == 0 ? u * pow(10.0, 600.0 * ww_rng_uniform(&r) - 300.0)
+                              : u * (i % 3 == 1 ? 0.66 : 2.41421356237309504880) *
+                                    (1.0 + 1e-3 * v);
+        double y = v * pow(10.0, 12.0 * ww_rng_uniform(&r) - 6.0) * fabs(x);
+        if (!same_bits(ww_atan(x), atan_branches(x)) ||
+            !same_bits(ww_atan2(y, x), atan2_branches(y, x))) {
+            printf("    differ at x = %.17g, y = %.17g\n", x, y);
+            bad++;
+        }
+    }
+    ENSURE(bad == 0);
+    /* the edges, their neighbours, and the special values, every pair of them for atan2 */
+    double sp[32];
+    int n = 0;
+    const double edges[] = {0.66, 2.41421356237309504880};
+    for (int e = 0; e < 2; e++)
+        for (int d = -1; d <= 1; d++)
+            sp[n++] = nextafter(edges[e], d < 0 ? 0.0 : d > 0 ? 9.0 : edges[e]);
+    const double others[] = {0.0, 5e-324, 1.0, 1e300, INFINITY, NAN};
+    for (int k = 0; k < 6; k++) sp[n++] = others[k];
+    for (int k = 0, m = n; k < m; k++) sp[n++] = -sp[k];
+    for (int a = 0; a < n; a++) {
+        ENSURE(same_bits(ww_atan(sp[a]), atan_branches(sp[a])));
+        for (int b = 0; b < n; b++)
+            ENSURE(same_bits(ww_atan2(sp[a], sp[b]), atan2_branches(sp[a], sp[b])));
+    }
+}
+
 /* ---- the field ---- */
 
 TEST(waves_dispersion_period) {

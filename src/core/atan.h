@@ -1,5 +1,6 @@
 /* atan.h - arctangent and the quadrant-correct atan2, deterministic (no libm: the same operations
- * in the same order on every machine and libm version, as sincos.h and exp.h), for the
+ * in the same order on every machine and libm version, as sincos.h and exp.h) and branch-free
+ * (so that GCC at -O2 vectorises the loops calling them: the fish's steering), for the
  * simulation's per-step headings and angles.
  *
  *   double a = ww_atan(x);          in [-pi/2, pi/2]
@@ -19,7 +20,9 @@
 #ifndef WW_ATAN_H
 #define WW_ATAN_H
 
-#include <math.h>
+#include <stdint.h>
+
+#include "core/sincos.h" /* ww_sc_bits, ww_sc_double */
 
 #define WW_ATAN_PIO2 1.57079632679489661923
 #define WW_ATAN_PIO4 7.85398163397448309616e-1
@@ -27,17 +30,30 @@
 /* pi/2 less its double: what the reduction above tan(3 pi/8) adds back */
 #define WW_ATAN_MOREBITS 6.123233995736765886130e-17
 
+/* a select of doubles by a mask of all ones or all zeros, on the bits: GCC keeps it a select
+ * (a blend in a vectorised loop), where chained floating-point tests become branches again */
+static inline double ww_atan_pick(uint64_t mask, double yes, double no) {
+    return ww_sc_double((ww_sc_bits(yes) & mask) | (ww_sc_bits(no) & ~mask));
+}
+/* all ones where c holds */
+static inline uint64_t ww_atan_mask(int c) { return (uint64_t)0 - (uint64_t)c; }
+
+/* Branch-free: both reductions are worked out and the one |x| calls for is picked by tests on
+ * its bits (for a double >= 0 the order of its bits as integers is the order of its values), so
+ * the loops that call it vectorise; the operations on the value picked are those of the
+ * reduction alone, so the result is the same to the bit as with branches */
 static inline double ww_atan(double x) {
-    double a = fabs(x), base = 0.0, more = 0.0, t = a;
-    if (a > 2.41421356237309504880) { /* tan(3 pi/8) */
-        base = WW_ATAN_PIO2;
-        more = WW_ATAN_MOREBITS;
-        t = -1.0 / a;
-    } else if (a > 0.66) {
-        base = WW_ATAN_PIO4;
-        more = 0.5 * WW_ATAN_MOREBITS;
-        t = (a - 1.0) / (a + 1.0);
-    }
+    const int64_t far_bits = 0x4003504f333f9de6; /* tan(3 pi/8) = 2.41421356237309504880 */
+    const int64_t mid_bits = 0x3fe51eb851eb851f; /* 0.66 */
+    uint64_t ux = ww_sc_bits(x), sign = ux & 0x8000000000000000u;
+    int64_t ua = (int64_t)(ux & ~sign); /* a NaN's bits lie above every number's: far */
+    double a = ww_sc_double((uint64_t)ua);
+    double t_far = -1.0 / a, t_mid = (a - 1.0) / (a + 1.0);
+    uint64_t far = ww_atan_mask(ua > far_bits), mid = ww_atan_mask(ua > mid_bits) & ~far;
+    double t = ww_atan_pick(far, t_far, ww_atan_pick(mid, t_mid, a));
+    double base = ww_atan_pick(far, WW_ATAN_PIO2, ww_atan_pick(mid, WW_ATAN_PIO4, 0.0));
+    double more =
+        ww_atan_pick(far, WW_ATAN_MOREBITS, ww_atan_pick(mid, 0.5 * WW_ATAN_MOREBITS, 0.0));
     double z = t * t;
     double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
                  7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
@@ -46,20 +62,29 @@ static inline double ww_atan(double x) {
                  4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z +
                1.945506571482613964425e2;
     double r = base + ((t + t * z * (p / q)) + more);
-    return signbit(x) ? -r : r;
+    return ww_sc_double(ww_sc_bits(r) ^ sign); /* -r for x < 0 */
 }
 
+/* Branch-free as ww_atan: atan(y / x) is worked out whatever x, and the quadrant's pi (a - pi as
+ * a + (-pi), the same operation) or the answer for x = 0 picked by tests on the bits */
 static inline double ww_atan2(double y, double x) {
-    if (x == 0.0) {
-        if (y > 0.0) return WW_ATAN_PIO2;
-        if (y < 0.0) return -WW_ATAN_PIO2;
-        /* both zero: the sign of x picks 0 or pi, the sign of y the side, as libm */
-        if (y == 0.0 && signbit(x)) return signbit(y) ? -WW_ATAN_PI : WW_ATAN_PI;
-        return y; /* +-0, or NaN */
-    }
+    const uint64_t signbit = 0x8000000000000000u;
+    const int64_t inf_bits = 0x7ff0000000000000;
+    uint64_t ux = ww_sc_bits(x), uy = ww_sc_bits(y);
+    uint64_t ysign = uy & signbit;
+    int64_t ax = (int64_t)(ux & ~signbit), ay = (int64_t)(uy & ~signbit);
     double a = ww_atan(y / x);
-    if (x > 0.0) return a;
-    return signbit(y) ? a - WW_ATAN_PI : a + WW_ATAN_PI;
+    /* x < 0 (or NaN, whose a is NaN either way): a + pi with the sign of y */
+    double turned = a + ww_sc_double(ww_sc_bits(WW_ATAN_PI) | ysign);
+    double off_axis = ww_atan_pick(ww_atan_mask((ux & signbit) == 0 && ax <= inf_bits), a, turned);
+    /* x = +-0: +-pi/2 for y != 0; for y = +-0 the sign of x picks 0 or pi, the sign of y the
+     * side, as libm; a NaN y stays itself */
+    double at_zero_y = ww_atan_pick(ww_atan_mask((ux & signbit) != 0),
+                                    ww_sc_double(ww_sc_bits(WW_ATAN_PI) | ysign), y);
+    double on_axis = ww_atan_pick(ww_atan_mask(ay == 0), at_zero_y,
+                                  ww_atan_pick(ww_atan_mask(ay > inf_bits), y,
+                                               ww_sc_double(ww_sc_bits(WW_ATAN_PIO2) | ysign)));
+    return ww_atan_pick(ww_atan_mask(ax == 0), on_axis, off_axis);
 }
 
 #endif
