@@ -279,9 +279,38 @@ static void fear(const ww_scene *sc, const ww_state *st, const threats *T, int i
     }
 }
 
-/* the unit XZ direction fish i wants, given its fear vector fl */
-static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i,
-                           const double fl[3], double g[2]) {
+/* ---- steering: worked out for every swimming fish before any moves -------------------------- */
+
+/* A fish's steering reads only its own state, the threats and the lure, and no fish's move
+ * changes any of these but the lure's being free (a bite, a catch): so each step works out the
+ * steering of every swimming fish first, its trigonometry in lanes, and the fish then move in
+ * order, each pushed by those before it where they moved to. A fish whose lure test has changed
+ * since is steered again from its goal before the lure (steering.base), alone. */
+typedef struct steering {
+    int lured;                     /* lure_free when the steering was worked out */
+    double base[2][FISH_LANES];    /* the unit goal direction (x, z) from the fish's mode alone */
+    double u[2][FISH_LANES];       /* after the lure, the fear and the way home: unit */
+    double fl[3][FISH_LANES];      /* the fear vector */
+    double alarm[FISH_LANES];      /* its length, at most 1 */
+    double goal0[FISH_LANES];      /* wander: the goal heading after the step's jitter */
+    double goal[FISH_LANES];       /* wander: the goal heading kept within 90 degrees of yaw */
+    double yaw0[FISH_LANES];       /* the heading before the turn, rad */
+    double yaw[FISH_LANES];        /* after it */
+    double turn[FISH_LANES];       /* the turn, rad */
+    double cruise[FISH_LANES];     /* the fish's cruising speed, m/s */
+    double y_want[FISH_LANES];     /* the depth it heads for, m */
+    double py[FISH_LANES];         /* its y, m */
+    double want_v[3][FISH_LANES];  /* the velocity it wants before the others' push and its fear */
+} steering;
+
+/* what every lane of the steering reads the same */
+typedef struct steer_params {
+    double dt, turn_rate, max_speed;
+} steer_params;
+
+/* the goal direction from fish i's mode: wander's jittered heading (its direction is made in
+ * lanes, wander_bases) or the direction to its target, a new one drawn when it is reached */
+static void goal_from_mode(const ww_scene *sc, ww_state *st, uint64_t rng, int i, steering *S) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i;
     if (f->mode == WW_FISH_WANDER) {
@@ -289,27 +318,32 @@ static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i
         goal += f->jitter * sqrt(sc->dt) * sqrt(3.0) * (2.0 * draw(rng, i, K_JITTER) - 1.0);
         if (draw(rng, i, K_BIG) < f->big_turn_rate * sc->dt)
             goal += f->big_turn * (2.0 * draw(rng, i, K_BIG_ANGLE) - 1.0);
-        st->fish_goal[i] = wrap_pi(goal);
-        ww_sincos(st->fish_goal[i], &g[1], &g[0]);
-    } else {
-        double *t = st->fish_target + 3 * i, d[3];
-        ww_m_sub3(t, p, d);
-        if (ww_m_len3(d) < f->reach) {
-            st->fish_reached[i] += 1.0;
-            new_target(sc, st, rng, i);
-            ww_m_sub3(t, p, d);
-        }
-        double h = len2(d[0], d[2]);
-        if (h > 1e-9) {
-            g[0] = d[0] / h;
-            g[1] = d[2] / h;
-        } else {
-            ww_sincos(st->fish_yaw[i], &g[1], &g[0]);
-        }
+        S->goal0[i] = wrap_pi(goal);
+        return;
     }
+    double *t = st->fish_target + 3 * i, d[3];
+    ww_m_sub3(t, p, d);
+    if (ww_m_len3(d) < f->reach) {
+        st->fish_reached[i] += 1.0;
+        new_target(sc, st, rng, i);
+        ww_m_sub3(t, p, d);
+    }
+    double h = len2(d[0], d[2]);
+    if (h > 1e-9) {
+        S->base[0][i] = d[0] / h;
+        S->base[1][i] = d[2] / h;
+    } else {
+        ww_sincos(st->fish_yaw[i], &S->base[1][i], &S->base[0][i]);
+    }
+}
 
-    /* a free floating lure nearby wins over wandering */
-    if (lure_free(sc, st)) {
+/* the unit XZ direction fish i wants (S->u), from its mode's goal direction, the lure (when
+ * lured: a free floating lure nearby wins over the mode) and its fear vector */
+static void aim(const ww_scene *sc, const ww_state *st, int lured, int i, steering *S) {
+    const ww_fish_desc *f = &sc->fish;
+    const double *p = st->fish_pos + 3 * i;
+    double g[2] = {S->base[0][i], S->base[1][i]};
+    if (lured) {
         double dx = st->lure_pos[0] - p[0], dz = st->lure_pos[2] - p[2], h = len2(dx, dz);
         if (h < sc->rod.attract && h > 1e-9) {
             g[0] = dx / h;
@@ -318,8 +352,8 @@ static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i
     }
 
     /* away from the boat, the cubes and the camera */
-    g[0] += AVOID_WEIGHT * fl[0];
-    g[1] += AVOID_WEIGHT * fl[2];
+    g[0] += AVOID_WEIGHT * S->fl[0][i];
+    g[1] += AVOID_WEIGHT * S->fl[2][i];
 
     /* back into the region near its edge */
     const double *center = school_center(f, i);
@@ -331,11 +365,96 @@ static void goal_direction(const ww_scene *sc, ww_state *st, uint64_t rng, int i
     }
     double n = len2(g[0], g[1]);
     if (n > 1e-12) {
-        g[0] /= n;
-        g[1] /= n;
+        S->u[0][i] = g[0] / n;
+        S->u[1][i] = g[1] / n;
     } else {
-        ww_sincos(st->fish_yaw[i], &g[1], &g[0]);
+        ww_sincos(st->fish_yaw[i], &S->u[1][i], &S->u[0][i]);
     }
+}
+
+/* selects of doubles by the bits, which GCC keeps selects (see core/atan.h): x < lo ? lo :
+ * x > hi ? hi : x, and a's wrap into [-pi, pi) */
+WW_LANE_STEP double clamp_lane(double x, double lo, double hi) {
+    return ww_atan_pick(ww_atan_mask(x < lo), lo, ww_atan_pick(ww_atan_mask(x > hi), hi, x));
+}
+/* floor q, but +0 for -0 (which wrap_lane's a - 2 pi floor q cannot tell apart): below 2^52 q
+ * rounded to a whole number by adding and taking away 2^52 with its sign, less 1 where that
+ * went up; from 2^52 on (and for an infinity or a NaN) q itself. GCC vectorises no floor
+ * under -ftrapping-math */
+WW_LANE_STEP double floor_lane(double q) {
+    const uint64_t sign = 0x8000000000000000u;
+    uint64_t u = ww_sc_bits(q);
+    double big = ww_sc_double(ww_sc_bits(0x1p52) | (u & sign));
+    double n = (q + big) - big;
+    n = n - ww_atan_pick(ww_atan_mask(n > q), 1.0, 0.0);
+    return ww_atan_pick(ww_atan_mask((int64_t)(u & ~sign) < 0x4330000000000000), n, q);
+}
+WW_LANE_STEP double wrap_lane(double a) {
+    int64_t mag = (int64_t)(ww_sc_bits(a) & ~0x8000000000000000u);
+    return ww_atan_pick(ww_atan_mask(mag < 0x4008000000000000), a, /* |a| < 3 */
+                        a - WW_TAU * floor_lane((a + WW_PI) / WW_TAU));
+}
+
+/* fish k's bounded turn toward its goal direction (faster when frightened), its wander goal
+ * kept within 90 degrees of the new heading, and the velocity it wants: along the heading (a
+ * burst toward max_speed when frightened, not slowed by a turn then) and toward the wanted
+ * depth. The same operations as a fish's own step with branches, so the same bits */
+WW_LANE_STEP void steer_lane(const steer_params *P, steering *S, int k) {
+    double alarm = S->alarm[k], yaw0 = S->yaw0[k], dt = P->dt;
+    double want = ww_atan2(S->u[1][k], S->u[0][k]);
+    double rate = P->turn_rate * (1.0 + WW_FISH_FLEE_TURN * alarm);
+    double turn = clamp_lane(wrap_lane(want - yaw0), -rate * dt, rate * dt);
+    double yaw = wrap_lane(yaw0 + turn);
+    S->turn[k] = turn;
+    S->yaw[k] = yaw;
+    S->goal[k] = wrap_lane(yaw + clamp_lane(wrap_lane(S->goal0[k] - yaw), -0.5 * WW_PI, 0.5 * WW_PI));
+
+    double cruise = S->cruise[k];
+    double speed = cruise + (P->max_speed - cruise) * alarm;
+    double sw, cw, sy, cy; /* sw unused: ww_sincos gives both */
+    ww_sincos(wrap_lane(want - yaw), &sw, &cw);
+    double ahead = ww_atan_pick(ww_atan_mask(cw > 0.0), cw, 0.0); /* fmax(0, cw) */
+    double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * ahead;
+    speed *= slow + (1.0 - slow) * alarm;
+    double vy_max = VERTICAL_MAX * cruise;
+    ww_sincos(yaw, &sy, &cy);
+    S->want_v[0][k] = speed * cy;
+    S->want_v[1][k] = clamp_lane(VERTICAL_GAIN * (S->y_want[k] - S->py[k]), -vy_max, vy_max);
+    S->want_v[2][k] = speed * sy;
+}
+
+/* the lanes' steps, over nb blocks of 8 */
+static WW_LANES void wander_bases(steering *restrict S, int nb) {
+    for (int b = 0; b < nb; b++)
+        for (int j = 0; j < 8; j++) {
+            int k = 8 * b + j;
+            ww_sincos(S->goal0[k], &S->base[1][k], &S->base[0][k]);
+        }
+}
+/* wander's depth: the fish's cruising depth plus swim[0] sin(2 pi t / T + its phase) */
+static WW_LANES void wander_depths(steering *restrict S, const double *restrict depth,
+                                   const double *restrict phase, double amplitude, double w,
+                                   int nb) {
+    for (int b = 0; b < nb; b++)
+        for (int j = 0; j < 8; j++) {
+            int k = 8 * b + j;
+            S->y_want[k] = depth[k] + amplitude * sine(w + phase[k]);
+        }
+}
+static WW_LANES void steer_lanes(const steer_params *restrict P, steering *restrict S, int nb) {
+    for (int b = 0; b < nb; b++)
+        for (int j = 0; j < 8; j++) steer_lane(P, S, 8 * b + j);
+}
+/* a coordinated turn's bank from the yaw rate: atan(|v_xz| rate / g), within +-max_bank */
+static WW_LANES void banks(const double *restrict vx, const double *restrict vz,
+                           const double *restrict rate, double max_bank, double *restrict bank,
+                           int nb) {
+    for (int b = 0; b < nb; b++)
+        for (int j = 0; j < 8; j++) {
+            int k = 8 * b + j;
+            double a = ww_atan(sqrt(vx[k] * vx[k] + vz[k] * vz[k]) * rate[k] / WW_G);
+            bank[k] = clamp_lane(a, -max_bank, max_bank);
+        }
 }
 
 /* the push of the other fish closer than the separation, m/s: every fish's distance tested at
@@ -405,46 +524,67 @@ static void keep_in_water(const ww_scene *sc, const ww_state *st, const fish_ste
     }
 }
 
-static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i) {
+/* the steering of every fish that swims this step (those neither away nor fighting) */
+static void steer_all(const ww_scene *sc, ww_state *st, const fish_step_consts *ks,
+                      const steer_params *P, steering *S) {
+    const ww_fish_desc *f = &sc->fish;
+    int nb = (f->count + 7) / 8;
+    double depth[FISH_LANES], phase[FISH_LANES];
+    /* the lanes of the others, and the padding, hold a fish heading along +x, unfrightened */
+    for (int k = 0; k < 8 * nb; k++) {
+        S->base[0][k] = S->u[0][k] = 1.0;
+        S->base[1][k] = S->u[1][k] = 0.0;
+        S->fl[0][k] = S->fl[1][k] = S->fl[2][k] = S->alarm[k] = 0.0;
+        S->goal0[k] = S->yaw0[k] = S->cruise[k] = S->y_want[k] = S->py[k] = 0.0;
+        depth[k] = phase[k] = 0.0;
+    }
+    S->lured = lure_free(sc, st);
+    for (int i = 0; i < f->count; i++) {
+        int mode = (int)st->fish_mode[i];
+        if (mode == WW_FISH_AWAY || mode == WW_FISH_FIGHTING) continue;
+        double fl[3];
+        fear(sc, st, ks->threats, i, fl);
+        for (int k = 0; k < 3; k++) S->fl[k][i] = fl[k];
+        S->alarm[i] = fmin(1.0, ww_m_len3(fl));
+        goal_from_mode(sc, st, ks->rng, i, S);
+        S->yaw0[i] = st->fish_yaw[i];
+        S->cruise[i] = cruise_speed(f, i);
+        S->py[i] = st->fish_pos[3 * i + 1];
+        if (f->mode == WW_FISH_TARGETS) {
+            S->y_want[i] = st->fish_target[3 * i + 1];
+        } else {
+            depth[i] = st->fish_cruise[2 * i];
+            phase[i] = st->fish_cruise[2 * i + 1];
+        }
+    }
+    if (f->mode == WW_FISH_WANDER) {
+        double T = f->swim[1] > 0.0 ? f->swim[1] : 1.0;
+        wander_bases(S, nb);
+        wander_depths(S, depth, phase, f->swim[0], WW_TAU * st->t / T, nb);
+    }
+    for (int i = 0; i < f->count; i++) {
+        int mode = (int)st->fish_mode[i];
+        if (mode != WW_FISH_AWAY && mode != WW_FISH_FIGHTING) aim(sc, st, S->lured, i, S);
+    }
+    steer_lanes(P, S, nb);
+}
+
+/* fish i along its steering S: pushed apart from the others, away from the threats, its
+ * velocity filtered toward the one it wants, moved, and kept in the water */
+static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks,
+                 const steer_params *P, steering *S, int i) {
     const ww_fish_desc *f = &sc->fish;
     double *p = st->fish_pos + 3 * i, *v = st->fish_vel + 3 * i, dt = sc->dt;
-    double g[2], fl[3];
-    fear(sc, st, ks->threats, i, fl);
-    double alarm = fmin(1.0, ww_m_len3(fl));
-    goal_direction(sc, st, ks->rng, i, fl, g);
-
-    /* bounded turn toward the goal, faster when frightened */
-    double yaw0 = st->fish_yaw[i], want = ww_atan2(g[1], g[0]);
-    double rate = f->turn_rate * (1.0 + WW_FISH_FLEE_TURN * alarm);
-    double turn = ww_m_clamp(wrap_pi(want - yaw0), -rate * dt, rate * dt);
-    double yaw = wrap_pi(yaw0 + turn);
-    st->fish_yaw[i] = yaw;
-    if (f->mode == WW_FISH_WANDER) {
-        double off = ww_m_clamp(wrap_pi(st->fish_goal[i] - yaw), -0.5 * WW_PI, 0.5 * WW_PI);
-        st->fish_goal[i] = wrap_pi(yaw + off);
+    int lured = lure_free(sc, st);
+    if (lured != S->lured) { /* a bite or a catch by a fish before it */
+        aim(sc, st, lured, i, S);
+        steer_lane(P, S, i);
     }
+    st->fish_yaw[i] = S->yaw[i];
+    if (f->mode == WW_FISH_WANDER) st->fish_goal[i] = S->goal[i];
 
-    /* desired velocity: along the heading (a burst toward max_speed when frightened, not
-     * slowed by a turn then), toward the wanted depth, apart from the others, away from the
-     * threats */
-    double cruise = cruise_speed(f, i);
-    double speed = cruise + (f->max_speed - cruise) * alarm;
-    double sw, cw, sy, cy; /* sw unused: ww_sincos gives both */
-    ww_sincos(wrap_pi(want - yaw), &sw, &cw);
-    double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * fmax(0.0, cw);
-    speed *= slow + (1.0 - slow) * alarm;
-    double y_want;
-    if (f->mode == WW_FISH_TARGETS) {
-        y_want = st->fish_target[3 * i + 1];
-    } else {
-        double T = f->swim[1] > 0.0 ? f->swim[1] : 1.0;
-        y_want = st->fish_cruise[2 * i] +
-                 f->swim[0] * sine(WW_TAU * st->t / T + st->fish_cruise[2 * i + 1]);
-    }
-    double vy_max = VERTICAL_MAX * cruise;
-    ww_sincos(yaw, &sy, &cy);
-    double want_v[3] = {speed * cy, ww_m_clamp(VERTICAL_GAIN * (y_want - p[1]), -vy_max, vy_max),
-                        speed * sy};
+    double alarm = S->alarm[i], fl[3] = {S->fl[0][i], S->fl[1][i], S->fl[2][i]};
+    double want_v[3] = {S->want_v[0][i], S->want_v[1][i], S->want_v[2][i]};
     double push[3];
     separation(sc, st, ks->fish, ks->rng, i, push);
     for (int k = 0; k < 3; k++) want_v[k] += push[k] + f->max_speed * fl[k];
@@ -465,11 +605,7 @@ static void swim(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
         p[k] += v[k] * dt;
     }
     keep_in_water(sc, st, ks, p, v);
-
-    /* a coordinated turn's bank from the yaw rate */
-    st->fish_yaw_rate[i] = turn / dt;
-    double bank = ww_atan(len2(v[0], v[2]) * st->fish_yaw_rate[i] / WW_G);
-    st->fish_bank[i] = ww_m_clamp(bank, -f->max_bank, f->max_bank);
+    st->fish_yaw_rate[i] = S->turn[i] / dt; /* its bank: banks(), once every fish has moved */
 }
 
 /* the mouth toward the hook, the heading wiggling about the bite's direction, tau into the
@@ -535,6 +671,10 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
     fish_step_consts ks = {.lowest = ww_water_lowest(sc, st),
                            .calm_filter = -expm1(-(f->response + FLEE_RESPONSE * 0.0) * sc->dt),
                            .threats = &T, .fish = &L, .rng = fish_rng(sc, st)};
+    steer_params P = {.dt = sc->dt, .turn_rate = f->turn_rate, .max_speed = f->max_speed};
+    steering S;
+    steer_all(sc, st, &ks, &P, &S);
+    int banked[WW_MAX_FISH] = {0}; /* swam and did not bite: banks from its turn */
     for (int i = 0; i < f->count; i++) {
         switch ((int)st->fish_mode[i]) {
         case WW_FISH_AWAY:
@@ -552,13 +692,29 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
             ww_emit(sc, st, WW_SE_FISH_ESCAPE, i, st->fish_pos + 3 * i, 0.0, 0.0);
             break;
         default:
-            swim(sc, st, &ks, i);
+            swim(sc, st, &ks, &P, &S, i);
+            banked[i] = 1;
             if (lure_free(sc, st) &&
                 len2(st->lure_pos[0] - st->fish_pos[3 * i],
-                     st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius)
+                     st->lure_pos[2] - st->fish_pos[3 * i + 2]) < sc->rod.bite_radius) {
                 bite(sc, st, &ks, i);
+                banked[i] = 0;
+            }
             break;
         }
         lanes_set(&L, i, st->fish_pos + 3 * i);
     }
+
+    /* no fish's velocity or yaw rate changes after its own move */
+    int nb = (f->count + 7) / 8;
+    double vx[FISH_LANES], vz[FISH_LANES], rate[FISH_LANES], bank[FISH_LANES];
+    for (int k = 0; k < 8 * nb; k++) {
+        int on = k < f->count && banked[k];
+        vx[k] = on ? st->fish_vel[3 * k] : 0.0;
+        vz[k] = on ? st->fish_vel[3 * k + 2] : 0.0;
+        rate[k] = on ? st->fish_yaw_rate[k] : 0.0;
+    }
+    banks(vx, vz, rate, f->max_bank, bank, nb);
+    for (int i = 0; i < f->count; i++)
+        if (banked[i]) st->fish_bank[i] = bank[i];
 }
