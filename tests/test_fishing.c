@@ -544,6 +544,69 @@ TEST(fishing_two_fish_spawned_at_one_point_separate) {
     ww_scene_free(sc);
 }
 
+/* Every swimming fish is steered before any moves; when a fish bites, those after it in the
+ * same step must be steered again without the lure. Fish 0 is within the bite radius, fish 1
+ * within the lure's attraction but far from fish 0 (no separation push), heading away from the
+ * lure, which lies to its right, and its goal to its left. One fish step three ways: the lure taken before the step (fish 1 never
+ * sees it), free with fish 0 biting, and free with fish 0 away (fish 1 chases it) */
+static const char *LURE_TAKEN_MIDSTEP =
+    "seed: 4\n"
+    "time: {dt: 1/120, fps: 30, duration: 2}\n"
+    "water: {waves: {model: flat}}\n"
+    "objects:\n"
+    "  rod: {bite_radius: 1.0, attract: 6}\n"
+    "  fish: {count: 2, center: [1.5, -2, 0], radius: 30, positions: [[%g, -2, 0], [4, -2, 2]]}\n";
+
+/* fish 1's state after one fish step from the set-up above: lure free or not, fish 0 at x0 */
+static void step_with_lure(double x0, int lure_free, ww_state **out, const ww_scene **sc_out) {
+    char text[1024];
+    snprintf(text, sizeof text, LURE_TAKEN_MIDSTEP, x0);
+    ww_scene *sc = load(text);
+    *out = NULL;
+    *sc_out = sc;
+    if (!sc) return;
+    ww_state *st = ww_state_new(sc);
+    st->lure_pos[0] = 0.0;
+    st->lure_pos[1] = 0.02;
+    st->lure_pos[2] = 0.0;
+    st->lure_state[0] = WW_LURE_FLOATING;
+    st->rod_fish[0] = lure_free ? -1.0 : 1e6; /* not free: bitten by a fish that is not here */
+    for (int i = 0; i < 2; i++) {
+        st->fish_yaw[i] = 0.0;  /* along +x, away from the lure, which lies to its right */
+        st->fish_goal[i] = 0.5; /* its goal to the left */
+        st->fish_vel[3 * i] = st->fish_vel[3 * i + 1] = st->fish_vel[3 * i + 2] = 0.0;
+    }
+    ww_fish_step(sc, st);
+    *out = st;
+}
+
+TEST(fishing_a_bite_takes_the_lure_from_the_fish_after_it_in_the_step) {
+    const ww_scene *sa, *sb, *sc;
+    ww_state *taken, *bitten, *chased;
+    step_with_lure(0.3, 0, &taken, &sa);
+    step_with_lure(0.3, 1, &bitten, &sb);
+    step_with_lure(-20.0, 1, &chased, &sc);
+    if (!taken || !bitten || !chased) return;
+    ENSURE_EQ_INT((int)bitten->fish_mode[0], WW_FISH_FIGHTING);
+    ENSURE_EQ_INT((int)taken->fish_mode[0], WW_FISH_SWIMMING);
+    /* the lure is not fish 1's to chase once fish 0 has it: the same step to the bit as if it
+     * had been taken before */
+    ENSURE(memcmp(bitten->fish_pos + 3, taken->fish_pos + 3, 3 * sizeof(double)) == 0);
+    ENSURE(memcmp(bitten->fish_vel + 3, taken->fish_vel + 3, 3 * sizeof(double)) == 0);
+    ENSURE(bitten->fish_yaw[1] == taken->fish_yaw[1] && bitten->fish_goal[1] == taken->fish_goal[1]);
+    ENSURE(bitten->fish_bank[1] == taken->fish_bank[1]);
+    /* and the lure does pull it where nothing takes it first: it turns the other way */
+    printf("  fish 1's yaw rate: %.4f rad/s after the bite, %.4f chasing the lure\n",
+           bitten->fish_yaw_rate[1], chased->fish_yaw_rate[1]);
+    ENSURE(bitten->fish_yaw_rate[1] > 0.0 && chased->fish_yaw_rate[1] < 0.0);
+    ww_state_free(taken);
+    ww_state_free(bitten);
+    ww_state_free(chased);
+    ww_scene_free((ww_scene *)sa);
+    ww_scene_free((ww_scene *)sb);
+    ww_scene_free((ww_scene *)sc);
+}
+
 /* ---- determinism and the loader ----------------------------------------------------------- */
 
 /* the pond with 12 fish after 1800 steps (two casts, catches); printed on a mismatch */
