@@ -407,7 +407,8 @@ WW_LANE_STEP void steer_lane(const steer_params *P, steering *S, int k) {
     double yaw = wrap_lane(yaw0 + turn);
     S->turn[k] = turn;
     S->yaw[k] = yaw;
-    S->goal[k] = wrap_lane(yaw + clamp_lane(wrap_lane(S->goal0[k] - yaw), -0.5 * WW_PI, 0.5 * WW_PI));
+    double off = clamp_lane(wrap_lane(S->goal0[k] - yaw), -0.5 * WW_PI, 0.5 * WW_PI);
+    S->goal[k] = wrap_lane(yaw + off);
 
     double cruise = S->cruise[k];
     double speed = cruise + (P->max_speed - cruise) * alarm;
