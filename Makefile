@@ -19,8 +19,11 @@ OPT     ?= -O2 -g
 WARN    := -std=c11 -Wall -Wextra -Wpedantic -Werror -Wvla -Wimplicit-fallthrough \
            -Wmissing-prototypes -Wstrict-prototypes
 # -fno-math-errno: sqrt and the like never set errno, so a loop over them vectorises (the
-# simulation's lanes); every result is the same, only errno after a domain error differs
-CFLAGS  += $(OPT) $(WARN) -ffp-contract=off -fno-fast-math -fno-math-errno $(SAN)
+# simulation's lanes); every result is the same, only errno after a domain error differs.
+# -fpeel-loops (on at -O3): loops of a few iterations known when compiling (the 3-vectors, the
+# blocks of 8 lanes) are unrolled whole even where that grows the code; the same operations in
+# the same order (the lake's step: 48.5 k -> 45.4 k instructions, every state the same)
+CFLAGS  += $(OPT) $(WARN) -ffp-contract=off -fno-fast-math -fno-math-errno -fpeel-loops $(SAN)
 CPPFLAGS+= -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L -Isrc -I$(BUILD)/gen -MMD -MP
 
 # library flags from pkg-config (OpenEXR 3.2+ headers include their neighbours by bare name, so
