@@ -22,6 +22,7 @@
 
 #include <stdint.h>
 
+#include "core/select.h"
 #include "core/sincos.h" /* ww_sc_bits, ww_sc_double */
 
 #define WW_ATAN_PIO2 1.57079632679489661923
@@ -29,14 +30,6 @@
 #define WW_ATAN_PI 3.14159265358979323846
 /* pi/2 less its double: what the reduction above tan(3 pi/8) adds back */
 #define WW_ATAN_MOREBITS 6.123233995736765886130e-17
-
-/* a select of doubles by a mask of all ones or all zeros, on the bits: GCC keeps it a select
- * (a blend in a vectorised loop), where chained floating-point tests become branches again */
-static inline double ww_atan_pick(uint64_t mask, double yes, double no) {
-    return ww_sc_double((ww_sc_bits(yes) & mask) | (ww_sc_bits(no) & ~mask));
-}
-/* all ones where c holds */
-static inline uint64_t ww_atan_mask(int c) { return (uint64_t)0 - (uint64_t)c; }
 
 /* Branch-free: both reductions are worked out and the one |x| calls for is picked by tests on
  * its bits (for a double >= 0 the order of its bits as integers is the order of its values), so
@@ -49,11 +42,11 @@ static inline double ww_atan(double x) {
     int64_t ua = (int64_t)(ux & ~sign); /* a NaN's bits lie above every number's: far */
     double a = ww_sc_double((uint64_t)ua);
     double t_far = -1.0 / a, t_mid = (a - 1.0) / (a + 1.0);
-    uint64_t far = ww_atan_mask(ua > far_bits), mid = ww_atan_mask(ua > mid_bits) & ~far;
-    double t = ww_atan_pick(far, t_far, ww_atan_pick(mid, t_mid, a));
-    double base = ww_atan_pick(far, WW_ATAN_PIO2, ww_atan_pick(mid, WW_ATAN_PIO4, 0.0));
+    uint64_t far = ww_mask(ua > far_bits), mid = ww_mask(ua > mid_bits) & ~far;
+    double t = ww_pick(far, t_far, ww_pick(mid, t_mid, a));
+    double base = ww_pick(far, WW_ATAN_PIO2, ww_pick(mid, WW_ATAN_PIO4, 0.0));
     double more =
-        ww_atan_pick(far, WW_ATAN_MOREBITS, ww_atan_pick(mid, 0.5 * WW_ATAN_MOREBITS, 0.0));
+        ww_pick(far, WW_ATAN_MOREBITS, ww_pick(mid, 0.5 * WW_ATAN_MOREBITS, 0.0));
     double z = t * t;
     double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
                  7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
@@ -76,15 +69,15 @@ static inline double ww_atan2(double y, double x) {
     double a = ww_atan(y / x);
     /* x < 0 (or NaN, whose a is NaN either way): a + pi with the sign of y */
     double turned = a + ww_sc_double(ww_sc_bits(WW_ATAN_PI) | ysign);
-    double off_axis = ww_atan_pick(ww_atan_mask((ux & signbit) == 0 && ax <= inf_bits), a, turned);
+    double off_axis = ww_pick(ww_mask((ux & signbit) == 0 && ax <= inf_bits), a, turned);
     /* x = +-0: +-pi/2 for y != 0; for y = +-0 the sign of x picks 0 or pi, the sign of y the
      * side, as libm; a NaN y stays itself */
-    double at_zero_y = ww_atan_pick(ww_atan_mask((ux & signbit) != 0),
+    double at_zero_y = ww_pick(ww_mask((ux & signbit) != 0),
                                     ww_sc_double(ww_sc_bits(WW_ATAN_PI) | ysign), y);
-    double on_axis = ww_atan_pick(ww_atan_mask(ay == 0), at_zero_y,
-                                  ww_atan_pick(ww_atan_mask(ay > inf_bits), y,
+    double on_axis = ww_pick(ww_mask(ay == 0), at_zero_y,
+                                  ww_pick(ww_mask(ay > inf_bits), y,
                                                ww_sc_double(ww_sc_bits(WW_ATAN_PIO2) | ysign)));
-    return ww_atan_pick(ww_atan_mask(ax == 0), on_axis, off_axis);
+    return ww_pick(ww_mask(ax == 0), on_axis, off_axis);
 }
 
 #endif

@@ -11,6 +11,7 @@
 #include "core/lanes.h"
 #include "core/mathx.h"
 #include "core/rng.h"
+#include "core/select.h"
 #include "core/sincos.h"
 #include "sim/events.h"
 #include "sim/rod.h"
@@ -372,10 +373,10 @@ static void aim(const ww_scene *sc, const ww_state *st, int lured, int i, steeri
     }
 }
 
-/* selects of doubles by the bits, which GCC keeps selects (see core/atan.h): x < lo ? lo :
- * x > hi ? hi : x, and a's wrap into [-pi, pi) */
+/* selects on the bits (core/select.h), so that the loops vectorise: x < lo ? lo : x > hi ? hi :
+ * x, and a's wrap into [-pi, pi) */
 WW_LANE_STEP double clamp_lane(double x, double lo, double hi) {
-    return ww_atan_pick(ww_atan_mask(x < lo), lo, ww_atan_pick(ww_atan_mask(x > hi), hi, x));
+    return ww_pick(ww_mask(x < lo), lo, ww_pick(ww_mask(x > hi), hi, x));
 }
 /* floor q, but +0 for -0 (which wrap_lane's a - 2 pi floor q cannot tell apart): below 2^52 q
  * rounded to a whole number by adding and taking away 2^52 with its sign, less 1 where that
@@ -386,12 +387,12 @@ WW_LANE_STEP double floor_lane(double q) {
     uint64_t u = ww_sc_bits(q);
     double big = ww_sc_double(ww_sc_bits(0x1p52) | (u & sign));
     double n = (q + big) - big;
-    n = n - ww_atan_pick(ww_atan_mask(n > q), 1.0, 0.0);
-    return ww_atan_pick(ww_atan_mask((int64_t)(u & ~sign) < 0x4330000000000000), n, q);
+    n = n - ww_pick(ww_mask(n > q), 1.0, 0.0);
+    return ww_pick(ww_mask((int64_t)(u & ~sign) < 0x4330000000000000), n, q);
 }
 WW_LANE_STEP double wrap_lane(double a) {
     int64_t mag = (int64_t)(ww_sc_bits(a) & ~0x8000000000000000u);
-    return ww_atan_pick(ww_atan_mask(mag < 0x4008000000000000), a, /* |a| < 3 */
+    return ww_pick(ww_mask(mag < 0x4008000000000000), a, /* |a| < 3 */
                         a - WW_TAU * floor_lane((a + WW_PI) / WW_TAU));
 }
 
@@ -414,7 +415,7 @@ WW_LANE_STEP void steer_lane(const steer_params *P, steering *S, int k) {
     double speed = cruise + (P->max_speed - cruise) * alarm;
     double sw, cw, sy, cy; /* sw unused: ww_sincos gives both */
     ww_sincos(wrap_lane(want - yaw), &sw, &cw);
-    double ahead = ww_atan_pick(ww_atan_mask(cw > 0.0), cw, 0.0); /* fmax(0, cw) */
+    double ahead = ww_pick(ww_mask(cw > 0.0), cw, 0.0); /* fmax(0, cw) */
     double slow = SLOW_TURN_MIN + (1.0 - SLOW_TURN_MIN) * ahead;
     speed *= slow + (1.0 - slow) * alarm;
     double vy_max = VERTICAL_MAX * cruise;
