@@ -282,8 +282,8 @@ TEST(waves_atan_matches_libm) {
 }
 
 /* ww_atan and ww_atan2 pick their reduction and quadrant with masks, so that loops calling them
- * vectorise; these are the same steps with branches (Cephes's atan.c and the quadrants as libm),
- * the oracle the masks must agree with to the bit */
+ * vectorise; these are the same choices made with branches (Cephes's atan.c and the quadrants as
+ * libm), around the same rational (ww_atan_reduced): the oracle the masks must agree with */
 static double atan_branches(double x) {
     double a = fabs(x), base = 0.0, more = 0.0, t = a;
     if (a > 2.41421356237309504880) {
@@ -295,14 +295,7 @@ static double atan_branches(double x) {
         more = 0.5 * WW_ATAN_MOREBITS;
         t = (a - 1.0) / (a + 1.0);
     }
-    double z = t * t;
-    double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
-                 7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
-               6.485021904942025371773e1;
-    double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
-                 4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z +
-               1.945506571482613964425e2;
-    double r = base + ((t + t * z * (p / q)) + more);
+    double r = ww_atan_reduced(t, base, more);
     return signbit(x) ? -r : r;
 }
 static double atan2_branches(double y, double x) {

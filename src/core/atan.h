@@ -31,6 +31,19 @@
 /* pi/2 less its double: what the reduction above tan(3 pi/8) adds back */
 #define WW_ATAN_MOREBITS 6.123233995736765886130e-17
 
+/* base + atan t, t in [-0.66, 0.66] reduced from |x| (0, pi/4 or pi/2 with the part of it that
+ * its double drops, more): Cephes's rational, the small terms summed before the large one */
+static inline double ww_atan_reduced(double t, double base, double more) {
+    double z = t * t;
+    double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
+                 7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
+               6.485021904942025371773e1;
+    double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
+                 4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z +
+               1.945506571482613964425e2;
+    return base + ((t + t * z * (p / q)) + more);
+}
+
 /* Branch-free: both reductions are worked out and the one |x| calls for is picked by tests on
  * its bits (for a double >= 0 the order of its bits as integers is the order of its values), so
  * the loops that call it vectorise; the operations on the value picked are those of the
@@ -47,14 +60,7 @@ static inline double ww_atan(double x) {
     double base = ww_pick(far, WW_ATAN_PIO2, ww_pick(mid, WW_ATAN_PIO4, 0.0));
     double more =
         ww_pick(far, WW_ATAN_MOREBITS, ww_pick(mid, 0.5 * WW_ATAN_MOREBITS, 0.0));
-    double z = t * t;
-    double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -
-                 7.500855792314704667340e1) * z - 1.228866684490136173410e2) * z -
-               6.485021904942025371773e1;
-    double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z +
-                 4.328810604912902668951e2) * z + 4.853903996359136964868e2) * z +
-               1.945506571482613964425e2;
-    double r = base + ((t + t * z * (p / q)) + more);
+    double r = ww_atan_reduced(t, base, more);
     return ww_sc_double(ww_sc_bits(r) ^ sign); /* -r for x < 0 */
 }
 
