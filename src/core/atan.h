@@ -58,8 +58,7 @@ static inline double ww_atan(double x) {
     uint64_t far = ww_mask(ua > far_bits), mid = ww_mask(ua > mid_bits) & ~far;
     double t = ww_pick(far, t_far, ww_pick(mid, t_mid, a));
     double base = ww_pick(far, WW_ATAN_PIO2, ww_pick(mid, WW_ATAN_PIO4, 0.0));
-    double more =
-        ww_pick(far, WW_ATAN_MOREBITS, ww_pick(mid, 0.5 * WW_ATAN_MOREBITS, 0.0));
+    double more = ww_pick(far, WW_ATAN_MOREBITS, ww_pick(mid, 0.5 * WW_ATAN_MOREBITS, 0.0));
     double r = ww_atan_reduced(t, base, more);
     return ww_sc_double(ww_sc_bits(r) ^ sign); /* -r for x < 0 */
 }
@@ -72,17 +71,16 @@ static inline double ww_atan2(double y, double x) {
     uint64_t ux = ww_sc_bits(x), uy = ww_sc_bits(y);
     uint64_t ysign = uy & signbit;
     int64_t ax = (int64_t)(ux & ~signbit), ay = (int64_t)(uy & ~signbit);
+    double pi_y = ww_sc_double(ww_sc_bits(WW_ATAN_PI) | ysign); /* pi with the sign of y */
+    double half_pi_y = ww_sc_double(ww_sc_bits(WW_ATAN_PIO2) | ysign);
     double a = ww_atan(y / x);
     /* x < 0 (or NaN, whose a is NaN either way): a + pi with the sign of y */
-    double turned = a + ww_sc_double(ww_sc_bits(WW_ATAN_PI) | ysign);
-    double off_axis = ww_pick(ww_mask((ux & signbit) == 0 && ax <= inf_bits), a, turned);
+    double off_axis = ww_pick(ww_mask(((ux & signbit) == 0) & (ax <= inf_bits)), a, a + pi_y);
     /* x = +-0: +-pi/2 for y != 0; for y = +-0 the sign of x picks 0 or pi, the sign of y the
      * side, as libm; a NaN y stays itself */
-    double at_zero_y = ww_pick(ww_mask((ux & signbit) != 0),
-                                    ww_sc_double(ww_sc_bits(WW_ATAN_PI) | ysign), y);
+    double at_zero_y = ww_pick(ww_mask((ux & signbit) != 0), pi_y, y);
     double on_axis = ww_pick(ww_mask(ay == 0), at_zero_y,
-                                  ww_pick(ww_mask(ay > inf_bits), y,
-                                               ww_sc_double(ww_sc_bits(WW_ATAN_PIO2) | ysign)));
+                             ww_pick(ww_mask(ay > inf_bits), y, half_pi_y));
     return ww_pick(ww_mask(ax == 0), on_axis, off_axis);
 }
 
