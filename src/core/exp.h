@@ -15,21 +15,20 @@
 #ifndef WW_EXP_H
 #define WW_EXP_H
 
+#include "core/select.h"
 #include "core/sincos.h" /* ww_sc_bits, ww_sc_double */
 
 #define WW_EXP_ARG_MAX 708.0
 
 static inline double ww_exp(double x) {
     /* x into [-708, 708], a NaN left a NaN, by tests on its bits as integers: |x| beyond 708
-     * and at most infinity takes 708 with x's sign. Floating-point tests chained (x < -708,
-     * else x > 708) are a branch GCC keeps, as a comparison may trap, so a loop calling this
-     * would stay scalar; integer tests it turns into selects */
+     * and at most infinity takes 708 with x's sign. A select on the bits (core/select.h), so
+     * that a loop calling this vectorises */
     const int64_t max_bits = 0x40862000, inf_bits = 0x7ff00000; /* high words of 708 and inf */
     uint64_t u = ww_sc_bits(x), sign = u & 0x8000000000000000u;
     int64_t mag = (int64_t)(u ^ sign);
-    uint64_t beyond =
-        (uint64_t)0 - (uint64_t)((mag > (max_bits << 32)) & (mag <= (inf_bits << 32)));
-    x = ww_sc_double((u & ~beyond) | ((sign | ((uint64_t)max_bits << 32)) & beyond));
+    double limit = ww_sc_double(sign | ((uint64_t)max_bits << 32)); /* 708 with x's sign */
+    x = ww_pick(ww_mask((mag > (max_bits << 32)) & (mag <= (inf_bits << 32))), limit, x);
     /* k = round(x / ln 2): adding 1.5 * 2^52 leaves k in the low mantissa bits */
     const double magic = 0x1.8p52;
     double t = x * 1.44269504088896338700e+00 + magic;
