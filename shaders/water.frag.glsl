@@ -70,7 +70,8 @@ uniform vec2 u_clip_range;  // near, far clip, m
 // WW_SKY_CUBE (the sky is u_sky_cube times u_sky_intensity), WW_ALPHA_BLEND (seed 004's blend),
 // WW_FOAM (foam on), WW_FRESNEL_SCHLICK (Schlick's Fresnel, else bias + scale (1 - c)^power),
 // WW_REFRACT_EDGES (the prepass is smaller than the frame and u_scene_depth_full holds its
-// depth at the frame's size).
+// depth at the frame's size), WW_REFLECT_DEPTH (the reflection pass mirrors objects, and
+// u_reflection_depth and u_reflection_near hold their image's depth and nearest depths).
 // Per pass: WW_WATER_RESOLVE (drawn over the screen from the G-buffer, not with the mesh).
 #ifndef WW_UNDERWATER
 #define WW_UNDERWATER 0
@@ -83,6 +84,9 @@ uniform vec2 u_clip_range;  // near, far clip, m
 #endif
 #ifndef WW_REFRACT_TEX
 #define WW_REFRACT_TEX 0
+#endif
+#ifndef WW_REFLECT_DEPTH
+#define WW_REFLECT_DEPTH 0
 #endif
 #ifndef WW_DISTORT
 #define WW_DISTORT 0
@@ -103,6 +107,15 @@ uniform vec2 u_clip_range;  // near, far clip, m
 #define WW_REFRACT_EDGES 0
 #endif
 uniform sampler2D u_reflection;
+#if WW_REFLECT_DEPTH
+// the mirror image's least window depth (as this camera sees it) over each 2^(k+1)-texel square
+// of u_reflection, level k (pass_reflection.c), of u_near_levels levels
+uniform sampler2D u_reflection_near;
+uniform int u_near_levels;
+uniform sampler2D u_reflection_depth; // the mirror image's window depth, read nearest
+uniform vec2 u_mirror; // the mirror plane's height relative to the camera (m), the camera's
+                       // forward direction's y
+#endif
 uniform sampler2D u_scene_color;
 uniform sampler2D u_scene_depth;
 #if WW_REFRACT_EDGES
@@ -168,6 +181,8 @@ const float WAVE_DISTORT = 1.0;   // lookup offset per unit of the wave normal's
 const float SHORE_DEPTH = 1.0;    // m of water along the ray over which distortion grows in
 const float NO_FOLD = 0.1;        // the DuDv offset's most, in DuDv cells on screen along the view
 const float EDGE = 0.002;         // keep projective lookups off the texture border
+const float REFLECT_BEHIND = 0.1; // m: a mirror image this much farther in front of the water
+                                  // point than it may lie is not seen from it at all (the fade)
 const float OUTLINE_LO = 0.01;    // the prepass's bilinear depth misses the full-size depth by
 const float OUTLINE_HI = 0.03;    // ... this share of it and more: an outline runs there
 const float SAME_SIDE = 0.25;     // a texel within this share of its neighbours' depth spread
@@ -343,6 +358,27 @@ vec4 ww_refracted_color(vec2 uv, float df, float zf) {
 }
 #else
 float ww_scene_window_depth(vec2 uv) { return texture(u_scene_depth, uv).r; }
+#endif
+
+#if WW_REFLECT_DEPTH
+// The least window depth of the mirror image among the texels of u_reflection that a trilinear
+// lookup at uv mixes into its colour: the nearest surface the filtered colour holds. Levels L and
+// L + 1 are mixed at a level of detail in [L, L + 1), and the 2 x 2 texels of level L + 1 around
+// uv cover both footprints; u_reflection_near's level L is the least depth of each of them.
+// g: the lookup's derivatives across the screen (dFdx, dFdy of uv)
+float ww_mirror_nearest(vec2 uv, vec4 g) {
+    vec2 size = vec2(textureSize(u_reflection, 0));
+    vec2 gx = g.xy * size, gy = g.zw * size;
+    float lod = 0.5 * log2(max(max(dot(gx, gx), dot(gy, gy)), 1e-20));
+    int level = clamp(int(floor(lod)), 0, u_near_levels - 1);
+    ivec2 n = textureSize(u_reflection_near, level), top = n - 1;
+    ivec2 lo = ivec2(floor(uv * vec2(n) - 0.5));
+    ivec2 a = clamp(lo, ivec2(0), top), b = clamp(lo + 1, ivec2(0), top);
+    return min(min(texelFetch(u_reflection_near, a, level).r,
+                   texelFetch(u_reflection_near, ivec2(b.x, a.y), level).r),
+               min(texelFetch(u_reflection_near, ivec2(a.x, b.y), level).r,
+                   texelFetch(u_reflection_near, b, level).r));
+}
 #endif
 
 #if WW_WATER_RESOLVE
@@ -533,7 +569,29 @@ void main() {
     // reflection: the mirrored scene, or the sky
 #if WW_REFLECT_TEX
     // the pass draws its sky behind the mirrored geometry, so the texture is whole everywhere
-    vec3 refl = texture(u_reflection, clamp(uv0 + off, EDGE, 1.0 - EDGE)).rgb;
+    vec2 uvr = clamp(uv0 + off, EDGE, 1.0 - EDGE);
+    vec3 refl = texture(u_reflection, uvr).rgb;
+#if WW_REFLECT_DEPTH
+    // Seen from a water point, a mirror image lies on the view ray carried on past the surface,
+    // so only what the image holds beyond the point is reflected there. The texture is the
+    // mirror image about the rest plane, read at an offset (DuDv, the waves' tilt), while the
+    // water stands up to a wave's height off that plane: around what floats, a lookup could hand
+    // a water point an image lying in front of it, the dark mirror image of a cube spread over
+    // the water beyond the cube's far side. There the ray passes it by, and sees the sky along
+    // the view ray mirrored by the plane, as the texture holds the sky where nothing is drawn.
+    // The image about the water point's own height h lies 2 h above the texture's, which puts
+    // the texture's up to 2 h |view y| nearer the camera than it should be: that much is
+    // allowed. Where the lookup falls on the sky, the nearest surface among the texels the
+    // colour was filtered from decides, so no rim of an image's colour is left along its
+    // outline, at any mip level; where it falls on an image, that image does
+    float zc = texture(u_reflection_depth, uvr).r;
+    float zm = zc < 1.0 ? zc : ww_mirror_nearest(uvr, vec4(dFdx(uvr), dFdy(uvr)));
+    float nearer = max(2.0 * (v_pos.y - u_mirror.x) * u_mirror.y, 0.0);
+    float seen = zm < 1.0 ? clamp((ww_linear_depth(zm) - ww_linear_depth(frag_z) + nearer) /
+                                  REFLECT_BEHIND + 1.0, 0.0, 1.0)
+                          : 1.0; // the sky (the depth's clear value) lies beyond every point
+    refl = mix(ww_sky_any(vec3(-v.x, v.y, -v.z)), refl, seen);
+#endif
 #else
     vec3 refl = ww_sky_any(rdir);
 #endif

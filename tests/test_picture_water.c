@@ -5,6 +5,7 @@
  *   submerged      what lies under water seen through the surface is darker than its part
  *                  above it, and bluer the deeper it lies (Beer-Lambert, red absorbed first)
  *   rim            what rises above the water is not refracted into the water around it
+ *   mirror image   what floats is not reflected on the water beyond it
  *   underwater     a diver sees the seabed: texture (caustics, shading) survives the fog
  *   cubemap        no dark streaks where wave backs reflect the cubemap's lower half
  *   high view      from 300 m: no hard band where the water ends, little pixel-scale noise
@@ -288,6 +289,96 @@ TEST_IMAGE(picture_water_no_rim_around_what_floats) {
                    RIM_MAX_PIXELS);
     }
     cube_frames_free(&cf);
+}
+
+/* ---- the reflection: no mirror image behind what floats ------------------------------------ */
+
+/* a 0.8 m cube riding the lake's three waves at dusk, seen from 2.5 m up about 9 m away,
+ * refraction and post effects off. Its pixels are those that change when it is moved 4 km away
+ * with the reflection off; with the reflection on, the others that change are its mirror image
+ * on the water. A water point can only show what lies beyond it along the view ray mirrored, so
+ * in a column of the cube that image belongs below the cube (the water in front of it), never
+ * above it (the water beyond its far side). The texture is the mirror image about the rest
+ * plane, though, while the water stands up to a wave's height off it: over a trough the whole
+ * image showed above the cube as a dark patch (frame 40: 576 pixels, and none below). Frame 90
+ * has the image below the cube, which must stay. */
+static const char *const MIRROR_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 4}\n"
+    "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n"
+    "         fxaa: false, seabed: false}\n"
+    "sky: {time_of_day: 18.5}\n"
+    "water:\n"
+    "  waves: {model: gerstner, list: [{direction: 20, wavelength: 12, amplitude: 0.2, steepness: 0.6},\n"
+    "                                  {direction: -35, wavelength: 5, amplitude: 0.06, steepness: 0.4},\n"
+    "                                  {direction: 80, wavelength: 2.5, amplitude: 0.02, steepness: 0.3}]}\n"
+    "  look: {foam: false, caustics: false}\n"
+    "objects:\n"
+    "  cubes: [{position: [4, 0, -2], size: 0.8, density: 850}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 2.5, 6], look_at: [0, 0, -6]},\n"
+    "         {t: 4, position: [4, 2.0, 4], look_at: [0, 0, -6]}]\n";
+#define MIRROR_BEHIND_MAX 10  /* pixels of the cube's mirror image above it in its columns, at
+                               * most (576 over a trough before the image's depth was tested) */
+#define MIRROR_FRONT_MIN 600  /* pixels of it below the cube on frame 90, at least (1210) */
+
+typedef struct mirror_count {
+    long cube, behind, front;
+} mirror_count;
+
+/* frame `frame` of the scene with the reflection on and off, each with the cube in place and
+ * 4 km away: the cube's pixels, and its mirror image's above and below it in its columns */
+static mirror_count mirror_image_count(const char *scene, int frame, const char *tag) {
+    mirror_count m = {0};
+    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
+    char off_away[200], t[4][64];
+    snprintf(off_away, sizeof off_away, "--set render.reflection=false %s", away);
+    static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
+    for (int k = 0; k < 4; k++) snprintf(t[k], sizeof t[k], "%s_%d_%s", tag, frame, suffix[k]);
+    img on = render_frame(scene, frame, NULL, t[0]), on0 = render_frame(scene, frame, away, t[1]);
+    img off = render_frame(scene, frame, "--set render.reflection=false", t[2]);
+    img off0 = render_frame(scene, frame, off_away, t[3]);
+    if (on.ok && on0.ok && off.ok && off0.ok) {
+        for (int x = 0; x < W; x++) {
+            int top = H, bottom = -1;
+            for (int y = 0; y < H; y++)
+                if (max_diff(&off, &off0, x, y) > MASK_THRESH) {
+                    top = y < top ? y : top;
+                    bottom = y;
+                    m.cube++;
+                }
+            for (int y = 0; bottom >= 0 && y < H; y++) {
+                if (y >= top && y <= bottom) continue;
+                int image = max_diff(&on, &on0, x, y) > MASK_THRESH &&
+                            max_diff(&off, &off0, x, y) <= MASK_THRESH;
+                m.behind += image && y < top;
+                m.front += image && y > bottom;
+            }
+        }
+    }
+    img_free(&on);
+    img_free(&on0);
+    img_free(&off);
+    img_free(&off0);
+    return m;
+}
+
+TEST_IMAGE(picture_water_no_mirror_image_behind_what_floats) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_mirror", MIRROR_SCENE);
+    mirror_count trough = mirror_image_count(scene, 40, "pw_mirror");
+    mirror_count calm = mirror_image_count(scene, 90, "pw_mirror");
+    printf("  frame 40: cube %ld px, its mirror image %ld px above it, %ld below; frame 90: cube "
+           "%ld px, image %ld above, %ld below\n", trough.cube, trough.behind, trough.front,
+           calm.cube, calm.behind, calm.front);
+    ENSURE_MSG(trough.cube > 300 && calm.cube > 300, "the cube was not found: %ld, %ld pixels",
+               trough.cube, calm.cube);
+    ENSURE_MSG(trough.behind <= MIRROR_BEHIND_MAX && calm.behind <= MIRROR_BEHIND_MAX,
+               "the cube's mirror image shows beyond it: %ld and %ld pixels (at most %d)",
+               trough.behind, calm.behind, MIRROR_BEHIND_MAX);
+    ENSURE_MSG(calm.front >= MIRROR_FRONT_MIN,
+               "the cube's mirror image in front of it is gone: %ld pixels (at least %d)",
+               calm.front, MIRROR_FRONT_MIN);
 }
 
 /* ---- submerged outlines: straight, not stairs ------------------------------------------- */

@@ -34,7 +34,10 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     ww_result rc = ww_sky_new(r, sc, &p->sky, err);
     /* the water upsamples the refraction by the prepass's full-size depth where the plan has it */
     int edges = ww_plan_target(ww_plan_pass(&r->plan, WW_PASS_PREPASS), "depth_full") >= 0;
-    if (rc == WW_OK) rc = ww_water_new(r->gl, sc, edges, &p->water, err);
+    /* and leaves out mirror images that lie in front of it where the reflection has objects */
+    int mirror_depth = ww_reflection_has_objects(r, sc) &&
+                       ww_plan_pass(&r->plan, WW_PASS_REFLECTION) != NULL;
+    if (rc == WW_OK) rc = ww_water_new(r->gl, sc, edges, mirror_depth, &p->water, err);
     if (rc != WW_OK) {
         main_destroy(p, r->gl);
         return rc;

@@ -13,6 +13,10 @@
  * is the one the geometry shader shades by (the surface over the camera, u_water_y): below it a
  * face is lit and fogged as under water, teal, and a submerged face in the reflection showed as
  * teal blobs around everything that floats.
+ *
+ * Where there are objects to mirror, the pass also leaves its depth and a pyramid of the mirror
+ * image's nearest depths (mirror_near.frag.glsl): the water reads them to leave out an image that
+ * lies in front of the water point it would be seen from (water.frag.glsl, WW_REFLECT_DEPTH).
  */
 #include <stdlib.h>
 
@@ -20,6 +24,8 @@
 
 #define CLIP_BIAS 0.01 /* m the clip plane lies above the water plane, so no fragment the
                         * shader would shade as under water survives the clipped edge's rounding */
+#define NEAR_LEVELS 6   /* levels of the nearest-depth pyramid: the colour's levels 1 to 6, past
+                         * which a lookup's footprint (64 texels) is wider than what floats */
 
 typedef struct reflection_pass {
     const ww_rt *rt;
@@ -27,13 +33,91 @@ typedef struct reflection_pass {
     GLuint prog;     /* the mirrored sky */
     ww_sky_locs sky;
     GLint inv_view_proj, cube, cube_tex, sky_intensity, dome_tex;
+    /* the nearest-depth pyramid: level k the least depth of the 2^(k+1)-texel squares of the
+     * depth target; 0 where the scene has no objects to mirror */
+    GLuint depth, near_tex, near_fbo, near_prog;
+    GLint near_src;
+    int near_levels, near_w[NEAR_LEVELS], near_h[NEAR_LEVELS];
 } reflection_pass;
 
 static void reflection_destroy(void *self, const ww_gl *gl) {
     reflection_pass *p = self;
     if (!p) return;
     if (p->prog) gl->DeleteProgram(p->prog);
+    if (p->near_prog) gl->DeleteProgram(p->near_prog);
+    if (p->near_fbo) gl->DeleteFramebuffers(1, &p->near_fbo);
+    if (p->near_tex) gl->DeleteTextures(1, &p->near_tex);
     free(p);
+}
+
+/* the nearest-depth pyramid's texture (R32F, levels half the depth target's size and down), its
+ * framebuffer and program */
+static ww_result near_create(reflection_pass *p, const ww_gl *gl, const ww_rt *rt,
+                             ww_error *err) {
+    ww_result rc = ww_gfx_program(gl, "fullscreen.vert.glsl", "mirror_near.frag.glsl", NULL,
+                                  &p->near_prog, err);
+    if (rc != WW_OK) return rc;
+    p->near_src = ww_gfx_uniform(gl, p->near_prog, "u_src");
+    gl->GenTextures(1, &p->near_tex);
+    gl->BindTexture(GL_TEXTURE_2D, p->near_tex);
+    int w = rt->width, h = rt->height;
+    for (int k = 0; k < NEAR_LEVELS && (w > 1 || h > 1); k++) {
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+        p->near_w[k] = w;
+        p->near_h[k] = h;
+        gl->TexImage2D(GL_TEXTURE_2D, k, GL_R32F, w, h, 0, GL_RED, GL_FLOAT, NULL);
+        p->near_levels = k + 1;
+    }
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, p->near_levels - 1);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->GenFramebuffers(1, &p->near_fbo);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, p->near_fbo);
+    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->near_tex, 0);
+    GLenum status = gl->CheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        return ww_error_set(err, WW_E_GL, NULL, 0, 0,
+                            "pass reflection: the nearest-depth framebuffer is incomplete "
+                            "(0x%04x)", (unsigned)status);
+    return WW_OK;
+}
+
+/* each level of the pyramid from the one below it (the first from the depth target), read at
+ * that level alone (base and top level) so that the level drawn into is never also read */
+static void near_build(const reflection_pass *p, const ww_renderer *r) {
+    const ww_gl *gl = r->gl;
+    gl->BindFramebuffer(GL_FRAMEBUFFER, p->near_fbo);
+    gl->Disable(GL_DEPTH_TEST);
+    gl->Disable(GL_BLEND);
+    gl->UseProgram(p->near_prog);
+    gl->Uniform1i(p->near_src, 0);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->BindVertexArray(r->empty_vao);
+    for (int k = 0; k < p->near_levels; k++) {
+        if (k == 0) {
+            gl->BindTexture(GL_TEXTURE_2D, p->depth);
+        } else {
+            gl->BindTexture(GL_TEXTURE_2D, p->near_tex);
+            gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, k - 1);
+            gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, k - 1);
+        }
+        gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->near_tex,
+                                 k);
+        gl->Viewport(0, 0, p->near_w[k], p->near_h[k]);
+        gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    gl->BindVertexArray(0);
+    gl->BindTexture(GL_TEXTURE_2D, p->near_tex);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, p->near_levels - 1);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->near_tex, 0);
 }
 
 static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,
@@ -41,18 +125,21 @@ static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_
     static const char *const includes[] = {"common.glsl", NULL};
     const ww_gl *gl = r->gl;
     GLuint color = ww_gfx_rt_texture(rt, WW_FMT_RGBA16F);
-    if (!color || !ww_gfx_rt_texture(rt, WW_FMT_DEPTH24))
+    GLuint depth = ww_gfx_rt_texture(rt, WW_FMT_DEPTH24);
+    if (!color || !depth)
         return ww_error_set(err, WW_E_GL, NULL, 0, 0,
                             "pass %s: needs an RGBA16F colour and a DEPTH24 target", d->name);
     reflection_pass *p = calloc(1, sizeof *p);
     if (!p) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "reflection pass: out of memory");
     p->rt = rt;
     p->color = color;
+    p->depth = depth;
     ww_result rc = ww_gfx_program_defs(gl, "fullscreen.vert.glsl", "reflection_sky.frag.glsl",
                                        includes,
                                        ww_sky_dome_image_on(sc) ? "#define WW_SKY_DOME_IMAGE 1\n"
                                                                 : ww_sky_defines(sc),
                                        &p->prog, err);
+    if (rc == WW_OK && ww_reflection_has_objects(r, sc)) rc = near_create(p, gl, rt, err);
     if (rc != WW_OK) {
         reflection_destroy(p, gl);
         return rc;
@@ -82,6 +169,8 @@ static ww_result reflection_run(void *self, ww_renderer *r, const ww_frame *f, w
     if (f->underwater) {
         r->shared.reflection = 0;
         r->shared.reflection_tex = 0;
+        r->shared.reflection_near = 0;
+        r->shared.reflection_depth = 0;
         return WW_OK;
     }
 
@@ -150,6 +239,10 @@ static ww_result reflection_run(void *self, ww_renderer *r, const ww_frame *f, w
     gl->BindTexture(GL_TEXTURE_2D, 0);
     r->shared.reflection = 1;
     r->shared.reflection_tex = p->color;
+    r->shared.reflection_near = p->near_tex;
+    r->shared.reflection_near_levels = p->near_levels;
+    r->shared.reflection_depth = p->near_tex ? p->depth : 0;
+    if (p->near_tex) near_build(p, r);
     return WW_OK;
 }
 

@@ -59,6 +59,11 @@ typedef struct ww_shared {
     GLuint shadow_map;   /* its depth texture (compare mode on); 0 when there is no shadow pass */
     int reflection;      /* reflection pass drew this frame (0 under water or when absent) */
     GLuint reflection_tex; /* its mipmapped colour */
+    /* its nearest-depth pyramid (R32F): level k holds the least window depth, as the camera
+     * sees the mirror image, of each 2^(k+1) x 2^(k+1) texels of the colour; 0 without objects */
+    GLuint reflection_near;
+    int reflection_near_levels;
+    GLuint reflection_depth; /* its depth target (read nearest); 0 without objects */
     GLuint scene_color, scene_depth; /* prepass: solid geometry under the water; 0 when absent */
     GLuint scene_depth_full; /* its depth at the frame's size, when the prepass is smaller; or 0 */
 } ww_shared;
@@ -134,6 +139,12 @@ struct ww_renderer {
     ww_pass_timer timer; /* off unless ww_renderer_time_passes */
     struct ww_stencil_shadows *stencil; /* render.shadows projected or volumes; NULL otherwise */
 };
+
+/* the reflection pass draws objects above the water (not only a seabed, which its clip plane
+ * cuts away whole): it then leaves its depths for the water (ww_shared.reflection_near) */
+static inline int ww_reflection_has_objects(const ww_renderer *r, const ww_scene *sc) {
+    return r->geometry != NULL && ww_scene_has_objects(sc);
+}
 
 /* geometry.c: the scene's solid geometry (seabed, objects, models), its meshes uploaded once and
  * its instances once per frame, drawn by every pass that needs it in one of these modes:
@@ -385,9 +396,10 @@ void ww_water_ubos_free(const ww_gl *gl, ww_water_ubos *u);
 /* water.c: the camera-centred polar mesh of the wave field, depth tested; its density is
  * render.grid (scene/plan.h: ww_water_mesh_layout) */
 typedef struct ww_water ww_water;
-/* edges: the plan's prepass draws its depth at the frame's size (its depth_full target) */
-ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, int edges, ww_water **out,
-                       ww_error *err);
+/* edges: the plan's prepass draws its depth at the frame's size (its depth_full target);
+ * mirror_depth: the reflection pass mirrors objects, whose image's depths the water reads */
+ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, int edges, int mirror_depth,
+                       ww_water **out, ww_error *err);
 /* uploads the frame's phases and ripples, then draws, reading what earlier passes left in
  * r->shared (reflection, prepass) and r->sky_cubemap; alpha-blended over what the target holds
  * when render.water.alpha_blend */

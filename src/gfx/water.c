@@ -38,6 +38,7 @@ typedef struct water_prog {
     GLint sky_intensity, murk, foam, fog_below_color, fog_below_density, alpha;
     GLint detail, skirt, foam_wave, foam_phase, foam_step, foam_memory, dudv_grad;
     GLint gbuf_pos, gbuf_rest, gbuf_tag; /* the resolve's G-buffer (WW_WATER_RESOLVE) */
+    GLint reflection_near, near_levels, reflection_depth, mirror; /* WW_REFLECT_DEPTH */
 } water_prog;
 
 /* WATER_EDGES: the prepass's depth at the frame's size is there to upsample its colour by */
@@ -60,6 +61,7 @@ struct ww_water {
     water_prog var[WATER_VARIANTS]; /* by the WATER_* bits; prog 0: not built yet */
     water_prog resolve[WATER_VARIANTS]; /* the same, shading from the G-buffer */
     int forward;                        /* WW_WATER_FORWARD=1: no G-buffer */
+    int mirror_depth; /* the reflection mirrors objects: its depths are read (WW_REFLECT_DEPTH) */
     GLuint gbuf_prog, gbuf_fbo;         /* the mesh into the G-buffer; 0: not made yet */
     GLint gbuf_view_proj, gbuf_origin, gbuf_grid, gbuf_skirt, gbuf_tag;
     float tag;                          /* this frame's, written with the values */
@@ -362,9 +364,11 @@ static ww_result build_variant(ww_water *w, const ww_gl *gl, const ww_scene *sc,
     char defs[1400];
     snprintf(defs, sizeof defs,
              "#define WW_UNDERWATER %d\n#define WW_REFLECT_TEX %d\n#define WW_REFRACT_TEX %d\n"
-             "#define WW_DISTORT %d\n#define WW_WATER_RESOLVE %d\n#define WW_REFRACT_EDGES %d\n%s",
+             "#define WW_DISTORT %d\n#define WW_WATER_RESOLVE %d\n#define WW_REFRACT_EDGES %d\n"
+             "#define WW_REFLECT_DEPTH %d\n%s",
              (bits & WATER_UNDER) != 0, (bits & WATER_REFL) != 0, (bits & WATER_REFR) != 0,
-             distort != 0, resolve, (bits & WATER_EDGES) != 0, w->defines);
+             distort != 0, resolve, (bits & WATER_EDGES) != 0,
+             (bits & WATER_REFL) != 0 && w->mirror_depth, w->defines);
     ww_result rc = ww_water_program(gl, sc, resolve ? "fullscreen.vert.glsl" : "water.vert.glsl",
                                     "water.frag.glsl", w->fade, defs, &v->prog, err);
     if (rc != WW_OK) return rc;
@@ -387,6 +391,10 @@ static ww_result build_variant(ww_water *w, const ww_gl *gl, const ww_scene *sc,
     v->inv_size = ww_gfx_uniform(gl, p, "u_inv_size");
     v->clip_range = ww_gfx_uniform(gl, p, "u_clip_range");
     v->reflection = ww_gfx_uniform(gl, p, "u_reflection");
+    v->reflection_near = ww_gfx_uniform(gl, p, "u_reflection_near");
+    v->near_levels = ww_gfx_uniform(gl, p, "u_near_levels");
+    v->reflection_depth = ww_gfx_uniform(gl, p, "u_reflection_depth");
+    v->mirror = ww_gfx_uniform(gl, p, "u_mirror");
     v->scene_color = ww_gfx_uniform(gl, p, "u_scene_color");
     v->scene_depth = ww_gfx_uniform(gl, p, "u_scene_depth");
     v->scene_depth_full = ww_gfx_uniform(gl, p, "u_scene_depth_full");
@@ -447,8 +455,8 @@ static ww_result gbuf_new(ww_water *w, const ww_gl *gl, const ww_scene *sc, cons
     return WW_OK;
 }
 
-ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, int edges, ww_water **out,
-                       ww_error *err) {
+ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, int edges, int mirror_depth,
+                       ww_water **out, ww_error *err) {
     ww_water *w = calloc(1, sizeof *w);
     if (!w) return ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "water: out of memory");
     const char *cull = getenv("WW_WATER_CULL"), *fade = getenv("WW_WATER_FADE");
@@ -457,6 +465,7 @@ ww_result ww_water_new(const ww_gl *gl, const ww_scene *sc, int edges, ww_water 
     w->fade = !(fade && strcmp(fade, "0") == 0);
     w->band = !(band && strcmp(band, "0") == 0);
     w->forward = fwd && strcmp(fwd, "1") == 0;
+    w->mirror_depth = mirror_depth;
     ww_water_waves_init(sc, &w->waves);
     foam_components(sc, w);
     scene_defines(sc, w->foam_n, w->defines, sizeof w->defines);
@@ -521,7 +530,8 @@ static void visible_segments(const ww_water *w, const ww_frame *f, const double 
 
 /* texture units of the water program */
 enum { UNIT_REFLECTION = 0, UNIT_SCENE_COLOR, UNIT_SCENE_DEPTH, UNIT_SCENE_DEPTH_FULL,
-       UNIT_SKY_CUBE, UNIT_SKY_DOME, UNIT_DUDV, UNIT_GBUF_POS, UNIT_GBUF_REST };
+       UNIT_REFLECTION_NEAR, UNIT_REFLECTION_DEPTH, UNIT_SKY_CUBE, UNIT_SKY_DOME, UNIT_DUDV,
+       UNIT_GBUF_POS, UNIT_GBUF_REST };
 
 static void bind_unit(const ww_gl *gl, int unit, GLenum target, GLuint tex) {
     gl->ActiveTexture(GL_TEXTURE0 + (GLenum)unit);
@@ -561,6 +571,10 @@ static void set_optics(const ww_water *w, const water_prog *v, int bits, const w
     gl->Uniform1i(v->scene_color, UNIT_SCENE_COLOR);
     gl->Uniform1i(v->scene_depth, UNIT_SCENE_DEPTH);
     gl->Uniform1i(v->scene_depth_full, UNIT_SCENE_DEPTH_FULL);
+    gl->Uniform1i(v->reflection_near, UNIT_REFLECTION_NEAR);
+    gl->Uniform1i(v->near_levels, sh->reflection_near_levels);
+    gl->Uniform1i(v->reflection_depth, UNIT_REFLECTION_DEPTH);
+    gl->Uniform2f(v->mirror, (float)(sc->water_level - f->cam_pos[1]), (float)f->fwd[1]);
     gl->Uniform1i(v->sky_cube, UNIT_SKY_CUBE);
     gl->Uniform1i(v->sky_dome, UNIT_SKY_DOME);
     gl->Uniform1f(v->sky_intensity, (float)sc->render.sky_intensity);
@@ -579,6 +593,10 @@ static void set_optics(const ww_water *w, const water_prog *v, int bits, const w
     bind_unit(gl, UNIT_SCENE_COLOR, GL_TEXTURE_2D, refr ? sh->scene_color : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH, GL_TEXTURE_2D, refr ? sh->scene_depth : 0);
     bind_unit(gl, UNIT_SCENE_DEPTH_FULL, GL_TEXTURE_2D, edges ? sh->scene_depth_full : 0);
+    bind_unit(gl, UNIT_REFLECTION_NEAR, GL_TEXTURE_2D,
+              refl && w->mirror_depth ? sh->reflection_near : 0);
+    bind_unit(gl, UNIT_REFLECTION_DEPTH, GL_TEXTURE_2D,
+              refl && w->mirror_depth ? sh->reflection_depth : 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, r->sky_cubemap);
     if (r->sky_dome_image) bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, r->sky_dome_image);
     if (w->dudv_tex) {
@@ -592,7 +610,7 @@ static void unbind_optics(const ww_gl *gl) {
     bind_unit(gl, UNIT_DUDV, GL_TEXTURE_2D, 0);
     bind_unit(gl, UNIT_SKY_DOME, GL_TEXTURE_2D, 0);
     bind_unit(gl, UNIT_SKY_CUBE, GL_TEXTURE_CUBE_MAP, 0);
-    for (int u = UNIT_SCENE_DEPTH_FULL; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
+    for (int u = UNIT_REFLECTION_DEPTH; u >= UNIT_REFLECTION; u--) bind_unit(gl, u, GL_TEXTURE_2D, 0);
 }
 
 /* the mesh's visible part: the inner disc whole, the outer rings' segments in view */
