@@ -117,7 +117,6 @@ static void near_build(const reflection_pass *p, const ww_renderer *r) {
     gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
     gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, p->near_levels - 1);
     gl->BindTexture(GL_TEXTURE_2D, 0);
-    gl->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->near_tex, 0);
 }
 
 static ww_result reflection_create(ww_renderer *r, const ww_scene *sc, const ww_pass_desc *d,

@@ -53,6 +53,17 @@ static double wrap_pi(double a) {
 
 /* |(x, z)|: the fish's lengths are metres, far from hypot's overflow and underflow */
 static double len2(double x, double z) { return sqrt(x * x + z * z); }
+
+/* (x, z) made unit into (ox, oz) where its length is above least, else the heading yaw's */
+static void unit_or_heading(double x, double z, double least, double yaw, double *ox, double *oz) {
+    double h = len2(x, z);
+    if (h > least) {
+        *ox = x / h;
+        *oz = z / h;
+    } else {
+        ww_sincos(yaw, oz, ox);
+    }
+}
 /* sin x, by ww_sincos: the same on every libm */
 static double sine(double x) {
     double s, c;
@@ -329,13 +340,7 @@ static void goal_from_mode(const ww_scene *sc, ww_state *st, uint64_t rng, int i
         new_target(sc, st, rng, i);
         ww_m_sub3(t, p, d);
     }
-    double h = len2(d[0], d[2]);
-    if (h > 1e-9) {
-        S->base[0][i] = d[0] / h;
-        S->base[1][i] = d[2] / h;
-    } else {
-        ww_sincos(st->fish_yaw[i], &S->base[1][i], &S->base[0][i]);
-    }
+    unit_or_heading(d[0], d[2], 1e-9, st->fish_yaw[i], &S->base[0][i], &S->base[1][i]);
 }
 
 /* the unit XZ direction fish i wants (S->u), from its mode's goal direction, the lure (when
@@ -364,13 +369,7 @@ static void aim(const ww_scene *sc, const ww_state *st, int lured, int i, steeri
         g[0] += w * cx / r;
         g[1] += w * cz / r;
     }
-    double n = len2(g[0], g[1]);
-    if (n > 1e-12) {
-        S->u[0][i] = g[0] / n;
-        S->u[1][i] = g[1] / n;
-    } else {
-        ww_sincos(st->fish_yaw[i], &S->u[1][i], &S->u[0][i]);
-    }
+    unit_or_heading(g[0], g[1], 1e-12, st->fish_yaw[i], &S->u[0][i], &S->u[1][i]);
 }
 
 /* selects on the bits (core/select.h), so that the loops vectorise: x < lo ? lo : x > hi ? hi :
