@@ -26,9 +26,14 @@ layout(location = 8) in vec4 a_extra;    // (wiggle phase rad, wiggle amplitude,
 
 uniform mat4 u_view_proj;  // camera-relative world -> clip
 uniform vec4 u_clip;       // keep a.x + b.y + c.z + d >= 0 (camera-relative), when enabled
-uniform vec2 u_clip_surface; // (side, rest level camera-relative y m): side 1 keeps what lies under
-                             // the wave surface, -1 what lies over it, instead of u_clip's plane;
-                             // 0 the plane
+uniform vec4 u_clip_surface; // (side, rest level camera-relative y m, mode, slope): side 0 keeps
+                             // u_clip's plane alone. Mode 0 (the prepass): side 1 keeps what lies
+                             // under the wave surface, -1 what lies over it, instead of the plane.
+                             // Mode 1 (the reflection, side -1): the plane, and nothing of an
+                             // instance that lies wholly under the surface; slope bounds the
+                             // surface's slope, so its least height over the instance's footprint
+uniform vec3 u_mesh_centre;  // the mesh's bounding box, mesh units: its centre ...
+uniform vec3 u_mesh_half;    // ... and half its size
 uniform int u_shadow_bend; // the sunlight's bend at the water (shadow.glsl): 1 the shadow
                            // map's casters, warped as its receivers are; 2 the projected
                            // shadows' casters; 0 none
@@ -85,20 +90,40 @@ void main() {
     v_mesh = a_pos;
     v_pattern = a_extra.w;
 #endif
-    gl_ClipDistance[0] = dot(vec4(p.xyz, 1.0), u_clip);
-    // the surface over the vertex: the rest point a that the waves carry over p.xz, by the
-    // fixed point a <- x - D(a) (it contracts by sum Q k A per step: the lake's 0.11, so three
-    // steps leave about a millimetre), then the height there. A loop of count 0 where the side is
-    // 0, which llvmpipe skips, rather than a branch, whose both arms every vertex would run. The
-    // distance is interpolated linearly across a triangle, so the cut follows the surface to
-    // the waves' curvature over it (about 3 cm across a 1 m face on the lake)
+    float clip = dot(vec4(p.xyz, 1.0), u_clip);
+    // the surface over a point x: the rest point a that the waves carry over x, by the fixed
+    // point a <- x - D(a) (it contracts by sum Q k A per step: the lake's 0.11, so three steps
+    // leave about a millimetre), then the height there. A loop of count 0 where the side is 0,
+    // which llvmpipe skips, rather than a branch, whose both arms every vertex would run.
+    // The prepass cuts at the surface over the vertex; the distance is interpolated linearly
+    // across a triangle, so the cut follows the surface to the waves' curvature over it (about
+    // 3 cm across a 1 m face on the lake). The reflection keeps its plane (the surface over the
+    // camera, by which the shader tells air from water): a cut at the surface would open what
+    // floats to the mirror camera below it, whose inside the waves' distortion then shows at
+    // the waterline. But an instance wholly under the surface (a pressed cube, a fish, a sunken
+    // box under a crest) has no mirror image, though it rises above the plane: its top, the
+    // highest corner of its box, is compared with the least height of the surface over its
+    // footprint, the height over its centre less the slope's bound times its radius
     int cut = u_clip_surface.x != 0.0 ? 1 : 0;
     for (int k = 0; k < cut; k++) {
-        vec2 a = p.xz;
-        for (int it = 0; it < 3; it++) a = p.xz - ww_displace(a, SURFACE_UNFADED).xz;
+        bool whole = u_clip_surface.z != 0.0;
+        mat3 m = mat3(a_model);
+        vec3 c = (a_model * vec4(u_mesh_centre, 1.0)).xyz;
+        vec2 x = whole ? c.xz : p.xz;
+        vec2 a = x;
+        for (int it = 0; it < 3; it++) a = x - ww_displace(a, SURFACE_UNFADED).xz;
         float h = u_clip_surface.y + ww_displace(a, SURFACE_UNFADED).y;
-        gl_ClipDistance[0] = u_clip_surface.x * (h - p.y);
+        float wiggle = abs(a_extra.y) * length(m[2]);
+        float top = c.y + dot(abs(vec3(m[0].y, m[1].y, m[2].y)), u_mesh_half) + wiggle;
+        float radius = dot(vec3(length(m[0].xz), length(m[1].xz), length(m[2].xz)), u_mesh_half) +
+                       wiggle;
+#if WW_SWAY
+        radius += abs(u_sway.x);
+#endif
+        float under = top < h - u_clip_surface.w * radius ? -1.0 : clip;
+        clip = whole ? under : u_clip_surface.x * (h - p.y);
     }
+    gl_ClipDistance[0] = clip;
     vec3 at = u_shadow_bend == 1 ? ww_shadow_warp(p.xyz)
               : u_shadow_bend == 2 ? ww_shadow_unbend(p.xyz) : p.xyz;
     gl_Position = u_view_proj * vec4(at, 1.0);

@@ -381,6 +381,77 @@ TEST_IMAGE(picture_water_no_mirror_image_behind_what_floats) {
                calm.front, MIRROR_FRONT_MIN);
 }
 
+/* ---- nothing under the water in the mirror ---------------------------------------------- */
+
+/* one long wave (20 m, 0.3 m high) puts a crest over a static 1 m box 10 m ahead while the
+ * camera stands over a trough (frame 27, t = 0.9 s). The box's top is 0.05 m over the rest
+ * level, 0.25 m under the crest: under water, so it has no mirror image, and with the
+ * refraction off the frame shows no trace of it. The reflection's clip plane is the surface
+ * over the camera, 0.3 m under the rest level, so with the plane alone the box's upper part was
+ * drawn into the mirror image, lit as if in air, and it showed on the water as a box afloat
+ * (563 pixels, now 0). The same box raised 0.55 m stands 0.3 m out of the water and its image must
+ * stay (615 pixels; 903 with the plane alone, its part under the crest mirrored too). */
+static const char *const SUNKEN_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 2}\n"
+    "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n"
+    "         fxaa: false, seabed: false}\n"
+    "sky: {time_of_day: 15}\n"
+    "water:\n"
+    "  waves: {model: gerstner, list: [{direction: 90, wavelength: 20, amplitude: 0.3, steepness: 0.3}]}\n"
+    "  look: {foam: false, caustics: false}\n"
+    "objects:\n"
+    "  models: [{name: box, mesh: box, position: [0, -0.45, -10], scale: 1.0, color: [0.8, 0.5, 0.3]}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 2.5, 0], look_at: [0, 0, -10]}]\n";
+#define SUNKEN_FRAME 27       /* the crest over the box, the trough under the camera */
+#define SUNKEN_IMAGE_MAX 10   /* pixels of the sunken box's mirror image, at most */
+#define AFLOAT_IMAGE_MIN 200  /* pixels of the raised box's mirror image, at least */
+
+/* pixels of the box's mirror image on frame SUNKEN_FRAME with the box at `at`: those the box
+ * moves with the reflection on (against the box 4 km away) and not with it off */
+static long sunken_image_count(const char *scene, const char *at, const char *tag) {
+    char arg[4][200], t[4][64];
+    static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
+    for (int k = 0; k < 4; k++) {
+        snprintf(arg[k], sizeof arg[k], "--set \"objects.models[0].position=%s\"%s",
+                 k % 2 ? "[0,-0.45,-4000]" : at, k >= 2 ? " --set render.reflection=false" : "");
+        snprintf(t[k], sizeof t[k], "%s_%s", tag, suffix[k]);
+    }
+    img on = render_frame(scene, SUNKEN_FRAME, arg[0], t[0]);
+    img on0 = render_frame(scene, SUNKEN_FRAME, arg[1], t[1]);
+    img off = render_frame(scene, SUNKEN_FRAME, arg[2], t[2]);
+    img off0 = render_frame(scene, SUNKEN_FRAME, arg[3], t[3]);
+    long n = -1;
+    if (on.ok && on0.ok && off.ok && off0.ok) {
+        n = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++)
+                n += max_diff(&on, &on0, x, y) > MASK_THRESH &&
+                     max_diff(&off, &off0, x, y) <= MASK_THRESH;
+    }
+    img_free(&on);
+    img_free(&on0);
+    img_free(&off);
+    img_free(&off0);
+    return n;
+}
+
+TEST_IMAGE(picture_water_nothing_under_the_water_in_the_mirror) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_sunken", SUNKEN_SCENE);
+    long sunken = sunken_image_count(scene, "[0,-0.45,-10]", "pw_sunken");
+    long afloat = sunken_image_count(scene, "[0,0.1,-10]", "pw_afloat");
+    printf("  mirror image: the sunken box %ld pixels, the box afloat %ld\n", sunken, afloat);
+    ENSURE_MSG(sunken >= 0 && afloat >= 0, "a frame was not rendered");
+    ENSURE_MSG(sunken <= SUNKEN_IMAGE_MAX,
+               "a box under the water shows in the mirror: %ld pixels (at most %d)", sunken,
+               SUNKEN_IMAGE_MAX);
+    ENSURE_MSG(afloat >= AFLOAT_IMAGE_MIN,
+               "the mirror image of a box out of the water is gone: %ld pixels (at least %d)",
+               afloat, AFLOAT_IMAGE_MIN);
+}
+
 /* ---- submerged outlines: straight, not stairs ------------------------------------------- */
 
 /* a 2 m cube turned 30 deg, floating 0.4 m out of flat water, seen from 3 m up and 5 m away:

@@ -159,9 +159,12 @@ static const int GEOM_MODE[GEOM_PROGS] = {
 
 typedef struct geom_prog {
     GLuint prog; /* 0: the scene never draws this kind */
-    float cut_set; /* the side its u_clip_surface holds (set_uniforms, apply_cut) */
+    float cut_set, cut_mode_set; /* the side and mode its u_clip_surface holds (set_uniforms,
+                                  * apply_cut) */
+    int box_serial;              /* the mesh box its u_mesh_centre and u_mesh_half hold */
     ww_sky_locs sky;
-    GLint view_proj, clip, clip_surface, ambient, eye, mirrored, water_y, fog_color, fog_density,
+    GLint view_proj, clip, clip_surface, mesh_centre, mesh_half, ambient, eye, mirrored,
+        water_y, fog_color, fog_density,
         fog_below_color, fog_below_density, extinction, caustics_loc, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
     GLint scatter_through;
@@ -198,12 +201,18 @@ struct ww_geometry {
     float dudv_m[2][4], dudv_o[2][2];  /* ... and its DuDv ripples (ww_water_dudv) */
     ww_water_ubos ubos;
     int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
-    int surface_clip;  /* the prepass cuts its geometry at the wave surface, not at a plane */
+    int surface_clip;  /* the prepass cuts its geometry at the wave surface instead of its plane;
+                        * the reflection drops what lies wholly under it */
+    float slope;       /* a bound on the surface's slope (surface_slope_bound) */
     double crest;      /* m: the most the surface rises above or sinks below its rest level */
     float cut_side;    /* this pass's side of the cut (geometry.vert.glsl: u_clip_surface) */
     float cut_level;   /* the rest level, camera-relative, m */
     float cut_now;     /* the side the next draw needs: cut_side, or 0 for a draw that cannot
                         * reach the surface */
+    float cut_mode;    /* 0: the cut replaces the pass's plane (the prepass); 1: the plane, and
+                        * no instance wholly under the surface (the reflection) */
+    float box[6];      /* the drawn mesh's bounding box (centre, half size), mesh units */
+    int box_serial;    /* counts the changes of box */
     GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
@@ -533,6 +542,9 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     v->view_proj = ww_gfx_uniform(gl, p, "u_view_proj");
     v->clip = ww_gfx_uniform(gl, p, "u_clip");
     v->clip_surface = ww_gfx_uniform(gl, p, "u_clip_surface");
+    v->mesh_centre = ww_gfx_uniform(gl, p, "u_mesh_centre");
+    v->mesh_half = ww_gfx_uniform(gl, p, "u_mesh_half");
+    v->box_serial = -1;
     v->ambient = ww_gfx_uniform(gl, p, "u_ambient");
     v->eye = ww_gfx_uniform(gl, p, "u_eye");
     v->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
@@ -572,9 +584,16 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
 /* the program in use takes the side of the cut the draw needs, if it holds another */
 static void apply_cut(ww_geometry *g, const ww_gl *gl) {
     geom_prog *v = &g->var[g->cur - g->var];
-    if (v->cut_set == g->cut_now) return;
-    gl->Uniform2f(v->clip_surface, g->cut_now, g->cut_level);
-    v->cut_set = g->cut_now;
+    if (v->cut_set != g->cut_now || v->cut_mode_set != g->cut_mode) {
+        gl->Uniform4f(v->clip_surface, g->cut_now, g->cut_level, g->cut_mode, g->slope);
+        v->cut_set = g->cut_now;
+        v->cut_mode_set = g->cut_mode;
+    }
+    if (v->box_serial != g->box_serial) {
+        gl->Uniform3f(v->mesh_centre, g->box[0], g->box[1], g->box[2]);
+        gl->Uniform3f(v->mesh_half, g->box[3], g->box[4], g->box[5]);
+        v->box_serial = g->box_serial;
+    }
 }
 
 /* makes kind's program current */
@@ -592,6 +611,15 @@ static void cut_for(ww_geometry *g, const ww_gl *gl, const gmesh *m) {
     float reach = (float)g->crest + CUT_MARGIN;
     int near = m->bhi[1] >= g->cut_level - reach && m->blo[1] <= g->cut_level + reach;
     g->cut_now = near ? g->cut_side : 0.0f;
+    float box[6];
+    for (int k = 0; k < 3; k++) {
+        box[k] = 0.5f * (m->lo[k] + m->hi[k]);
+        box[3 + k] = 0.5f * (m->hi[k] - m->lo[k]);
+    }
+    if (near && memcmp(box, g->box, sizeof box) != 0) {
+        memcpy(g->box, box, sizeof box);
+        g->box_serial++;
+    }
     apply_cut(g, gl);
 }
 
@@ -708,6 +736,23 @@ static ww_result caustic_set_new(ww_geometry *g, const ww_gl *gl, const ww_scene
     return WW_OK;
 }
 
+/* a bound on the slope of the water's surface, dh/dx along any direction. A component's height
+ * A s(k x - w t) has slope k A s': s' is at most 1 for a sine, e / 2 for a steep sine's
+ * ((sin + 1) / 2)^e (taken as e here); Gerstner's horizontal pull squeezes a crest by
+ * 1 - sum Q k A, which divides the slope. The ripples' rings add theirs, amplitude times
+ * wavenumber */
+static double surface_slope_bound(const ww_scene *sc) {
+    double slope = 0.0, squeeze = 0.0;
+    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++) {
+        const ww_wave *w = &sc->waves[i];
+        slope += w->k * fabs(w->amplitude) * fmax(w->exponent, 1.0);
+        squeeze += w->steepness * w->k * fabs(w->amplitude);
+    }
+    slope /= fmax(1.0 - squeeze, 0.25);
+    if (sc->ripples_on) slope += fabs(sc->ripples.amplitude) * sc->ripples.wavenumber;
+    return slope;
+}
+
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err) {
     const ww_gl *gl = r->gl;
     ww_geometry *g = calloc(1, sizeof *g);
@@ -715,8 +760,10 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     g->uploaded = -1;
     g->caustics = sc->render.water.caustics && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     if (g->caustics && sc->render.water.caustics_method == WW_CAUSTICS_TEXTURE) g->caustics = 2;
-    g->surface_clip = sc->render.refraction && sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
+    g->surface_clip = (sc->render.refraction || sc->render.reflection.on) &&
+                      sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     g->crest = ww_water_crest(sc);
+    g->slope = (float)surface_slope_bound(sc);
     for (int i = 0; i < sc->models.count; i++)
         if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
     g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||
@@ -1277,13 +1324,20 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
     /* the prepass keeps what lies on the far side of the wave surface itself (geometry.vert.glsl):
      * cut at the plane of the highest crest, a cube's top above the water stayed in the image the
      * water refracts, and the bilinear lookups bled it into the water around the cube as a pale
-     * rim */
+     * rim. The reflection's plane is the surface over the camera: an instance wholly under the
+     * surface where it lies, under a crest, but over that plane was mirrored, lit as if in air,
+     * and showed on the water as if it floated; such an instance is dropped */
     int prepass = mode == WW_GEOM_PREPASS || mode == WW_GEOM_PREPASS_DEPTH;
-    float side = clip && prepass && g->surface_clip ? (f->underwater ? -1.0f : 1.0f) : 0.0f;
+    int mirror = mode == WW_GEOM_REFLECTION;
+    float side = clip && (prepass || mirror) && g->surface_clip
+                     ? (f->underwater || mirror ? -1.0f : 1.0f)
+                     : 0.0f;
     g->cut_side = g->cut_now = side;
+    g->cut_mode = side != 0.0f && mirror ? 1.0f : 0.0f;
     g->cut_level = (float)(sc->water_level - f->cam_pos[1]);
-    gl->Uniform2f(v->clip_surface, side, g->cut_level);
+    gl->Uniform4f(v->clip_surface, side, g->cut_level, g->cut_mode, g->slope);
     g->var[v - g->var].cut_set = side;
+    g->var[v - g->var].cut_mode_set = g->cut_mode;
     float water_y = (float)(f->surface_y - f->cam_pos[1]);
     gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
     /* reflections see the world from the camera mirrored about the water plane */
