@@ -452,6 +452,69 @@ TEST_IMAGE(picture_water_nothing_under_the_water_in_the_mirror) {
                afloat, AFLOAT_IMAGE_MIN);
 }
 
+/* a 1 m cube afloat on the waves at noon, seen from 2 m up and 6 m away: its top is lit, its
+ * sides are not, and its mirror image on the water is its sides and underside, darker than the
+ * sky's reflection the water shows without it. The reflection's plane cuts the cube open at
+ * the waterline, and the mirror camera below sees inside it, where the waves' distortion reads
+ * the mirror image along the waterline: the inside of its top, lit as the top, showed there as
+ * a pale band brighter than the water (frame 39: 219 pixels, now 0). Counted: pixels of the
+ * mirror image (moved by the cube with the reflection on, not with it off) brighter than the
+ * water there without the cube. */
+static const char *const INSIDE_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 2}\n"
+    "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n"
+    "         fxaa: false, seabed: false}\n"
+    "sky: {time_of_day: 12}\n"
+    "water:\n"
+    "  waves: {model: gerstner, list: [{direction: 20, wavelength: 12, amplitude: 0.2, steepness: 0.6},\n"
+    "                                  {direction: -35, wavelength: 5, amplitude: 0.06, steepness: 0.4},\n"
+    "                                  {direction: 80, wavelength: 2.5, amplitude: 0.02, steepness: 0.3}]}\n"
+    "  look: {foam: false, caustics: false}\n"
+    "objects:\n"
+    "  cubes: [{position: [0, 0, -6], size: 1.0, density: 600}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 2.0, 0], look_at: [0, 0, -6]}]\n";
+#define INSIDE_FRAME 39
+#define INSIDE_BRIGHTER 12   /* luma levels over the water without the cube that count a pixel */
+#define INSIDE_BRIGHT_MAX 10 /* such pixels of the mirror image, at most */
+#define INSIDE_IMAGE_MIN 500 /* pixels of the mirror image, at least: it is there */
+
+TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_mirror) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_inside", INSIDE_SCENE);
+    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
+    char off_away[200];
+    snprintf(off_away, sizeof off_away, "--set render.reflection=false %s", away);
+    img on = render_frame(scene, INSIDE_FRAME, NULL, "pw_inside_on");
+    img on0 = render_frame(scene, INSIDE_FRAME, away, "pw_inside_on_away");
+    img off = render_frame(scene, INSIDE_FRAME, "--set render.reflection=false", "pw_inside_off");
+    img off0 = render_frame(scene, INSIDE_FRAME, off_away, "pw_inside_off_away");
+    if (on.ok && on0.ok && off.ok && off0.ok) {
+        long image = 0, bright = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                if (max_diff(&on, &on0, x, y) <= MASK_THRESH ||
+                    max_diff(&off, &off0, x, y) > MASK_THRESH)
+                    continue;
+                image++;
+                bright += luma(&on, x, y) > luma(&on0, x, y) + INSIDE_BRIGHTER;
+            }
+        printf("  the cube's mirror image: %ld pixels, %ld brighter than the water\n", image,
+               bright);
+        ENSURE_MSG(image >= INSIDE_IMAGE_MIN, "the cube's mirror image was not found: %ld pixels",
+                   image);
+        ENSURE_MSG(bright <= INSIDE_BRIGHT_MAX,
+                   "the inside of the cube shows in its mirror image: %ld pixels brighter than "
+                   "the water (at most %d)",
+                   bright, INSIDE_BRIGHT_MAX);
+    }
+    img_free(&on);
+    img_free(&on0);
+    img_free(&off);
+    img_free(&off0);
+}
+
 /* ---- submerged outlines: straight, not stairs ------------------------------------------- */
 
 /* a 2 m cube turned 30 deg, floating 0.4 m out of flat water, seen from 3 m up and 5 m away:

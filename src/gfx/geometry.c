@@ -118,6 +118,7 @@ typedef struct gmesh {
     int ninst, cap;
     struct instance *copy; /* casters of stencil shadow volumes: this frame's instances; or NULL */
     float lo[3], hi[3];    /* the mesh's bounding box, mesh units */
+    int closed;            /* watertight (gfx/meshgen.h): behind its faces lies its inside */
     float blo[3], bhi[3];  /* this frame's instances' bounding box, camera-relative, m */
 } gmesh;
 
@@ -162,8 +163,9 @@ typedef struct geom_prog {
     float cut_set, cut_mode_set; /* the side and mode its u_clip_surface holds (set_uniforms,
                                   * apply_cut) */
     int box_serial;              /* the mesh box its u_mesh_centre and u_mesh_half hold */
+    int inside_set;              /* what its u_inside holds */
     ww_sky_locs sky;
-    GLint view_proj, clip, clip_surface, mesh_centre, mesh_half, ambient, eye, mirrored,
+    GLint view_proj, clip, clip_surface, mesh_centre, mesh_half, inside, ambient, eye, mirrored,
         water_y, fog_color, fog_density,
         fog_below_color, fog_below_density, extinction, caustics_loc, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
@@ -213,6 +215,8 @@ struct ww_geometry {
                         * no instance wholly under the surface (the reflection) */
     float box[6];      /* the drawn mesh's bounding box (centre, half size), mesh units */
     int box_serial;    /* counts the changes of box */
+    int inside_now;    /* 1: the draw is a closed mesh the reflection's plane may cut open, whose
+                        * inside is shaded as the cut's face (geometry.frag.glsl: u_inside) */
     GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
@@ -544,6 +548,7 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     v->clip_surface = ww_gfx_uniform(gl, p, "u_clip_surface");
     v->mesh_centre = ww_gfx_uniform(gl, p, "u_mesh_centre");
     v->mesh_half = ww_gfx_uniform(gl, p, "u_mesh_half");
+    v->inside = ww_gfx_uniform(gl, p, "u_inside");
     v->box_serial = -1;
     v->ambient = ww_gfx_uniform(gl, p, "u_ambient");
     v->eye = ww_gfx_uniform(gl, p, "u_eye");
@@ -594,6 +599,10 @@ static void apply_cut(ww_geometry *g, const ww_gl *gl) {
         gl->Uniform3f(v->mesh_half, g->box[3], g->box[4], g->box[5]);
         v->box_serial = g->box_serial;
     }
+    if (v->inside_set != g->inside_now) {
+        gl->Uniform1i(v->inside, g->inside_now);
+        v->inside_set = g->inside_now;
+    }
 }
 
 /* makes kind's program current */
@@ -620,6 +629,7 @@ static void cut_for(ww_geometry *g, const ww_gl *gl, const gmesh *m) {
         memcpy(g->box, box, sizeof box);
         g->box_serial++;
     }
+    g->inside_now = near && g->cut_mode != 0.0f && m->closed;
     apply_cut(g, gl);
 }
 
@@ -786,6 +796,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         rc = ww_meshgen(SLOT_KIND[s], &m, err);
         if (rc != WW_OK) break;
         mesh_upload(gl, &g->slot[s], m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
+        g->slot[s].closed = SLOT_KIND[s] != WW_MESH_GRID && s != SLOT_COLUMN;
         if (g->keep_casters && slot_casts(s)) {
             g->caster_mesh[s] = m; /* the stencil shadows' volumes are built from it */
             g->slot[s].copy = malloc((size_t)cap[s] * sizeof(instance));
@@ -1338,6 +1349,9 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
     gl->Uniform4f(v->clip_surface, side, g->cut_level, g->cut_mode, g->slope);
     g->var[v - g->var].cut_set = side;
     g->var[v - g->var].cut_mode_set = g->cut_mode;
+    g->inside_now = 0;
+    gl->Uniform1i(v->inside, 0);
+    g->var[v - g->var].inside_set = 0;
     float water_y = (float)(f->surface_y - f->cam_pos[1]);
     gl->Uniform3f(v->ambient, (float)st->ambient[0], (float)st->ambient[1], (float)st->ambient[2]);
     /* reflections see the world from the camera mirrored about the water plane */
@@ -1463,6 +1477,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         draws += draw_obj(g, gl, i, mode);
     }
     g->cut_now = g->cut_side;
+    g->inside_now = 0;
     if (g->sway) gl->Uniform4f(g->cur->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* later draws are rigid */
     if ((parts & WW_GEOM_PART_BUBBLES) && mode == WW_GEOM_MAIN && g->slot[SLOT_BUBBLE].ninst > 0) {
         /* over everything already drawn, the sky included; tested against depth, never written */
