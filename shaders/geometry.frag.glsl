@@ -44,7 +44,7 @@
 uniform vec3 u_ambient;        // sky ambient, linear RGB
 uniform vec3 u_eye;            // the eye, camera-relative (the mirrored camera in reflections)
 uniform float u_water_y;       // the water plane (surface over the camera), camera-relative y
-uniform bool u_inside;         // reflection pass: a closed mesh its plane may cut open (main)
+uniform bool u_inside;         // reflection pass: a closed mesh its plane may cut open
 uniform bool u_mirrored;       // reflection pass: u_eye is the camera mirrored below the water,
                                // and the path it stands for (camera -> surface -> p) is all air
 uniform vec3 u_fog_color;      // above water, linear RGB

@@ -166,8 +166,8 @@ typedef struct geom_prog {
     int inside_set;              /* what its u_inside holds */
     ww_sky_locs sky;
     GLint view_proj, clip, clip_surface, mesh_centre, mesh_half, inside, ambient, eye, mirrored,
-        water_y, fog_color, fog_density,
-        fog_below_color, fog_below_density, extinction, caustics_loc, glow, glow_y;
+        water_y, fog_color, fog_density, fog_below_color, fog_below_density, extinction,
+        caustics_loc, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
     GLint scatter_through;
     light_locs lights;
@@ -586,7 +586,8 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     return WW_OK;
 }
 
-/* the program in use takes the side of the cut the draw needs, if it holds another */
+/* the program in use takes the cut the draw needs (side, mode, the mesh's box, whether its inside
+ * is shaded as the cut's face), where it holds another */
 static void apply_cut(ww_geometry *g, const ww_gl *gl) {
     geom_prog *v = &g->var[g->cur - g->var];
     if (v->cut_set != g->cut_now || v->cut_mode_set != g->cut_mode) {
