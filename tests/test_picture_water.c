@@ -322,6 +322,46 @@ static const char *const MIRROR_SCENE =
                                * most (576 over a trough before the image's depth was tested) */
 #define MIRROR_FRONT_MIN 600  /* pixels of it below the cube on frame 90, at least (1210) */
 
+#define CUBE_AWAY "--set \"objects.cubes[0].position=[0,0,-4000]\"" /* out of sight */
+
+/* a frame four ways, for what an object adds to the mirror image: the reflection on and off,
+ * each with the object where `here` puts it (extra arguments, or NULL for the scene's place) and
+ * where `away` puts it, out of sight */
+typedef struct mirror_frames {
+    img on, on0, off, off0;
+    int ok;
+} mirror_frames;
+
+static mirror_frames mirror_frames_render(const char *scene, int frame, const char *here,
+                                          const char *away, const char *tag) {
+    static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
+    char arg[4][300], t[4][64];
+    img *out[4];
+    mirror_frames m = {0};
+    out[0] = &m.on, out[1] = &m.on0, out[2] = &m.off, out[3] = &m.off0;
+    for (int k = 0; k < 4; k++) {
+        snprintf(arg[k], sizeof arg[k], "%s%s", k % 2 ? away : here ? here : "",
+                 k >= 2 ? " --set render.reflection=false" : "");
+        snprintf(t[k], sizeof t[k], "%s_%d_%s", tag, frame, suffix[k]);
+        *out[k] = render_frame(scene, frame, arg[k], t[k]);
+    }
+    m.ok = m.on.ok && m.on0.ok && m.off.ok && m.off0.ok;
+    return m;
+}
+
+/* whether (x, y) is the object's mirror image: moved by it with the reflection on, not off */
+static int mirror_image_at(const mirror_frames *m, int x, int y) {
+    return max_diff(&m->on, &m->on0, x, y) > MASK_THRESH &&
+           max_diff(&m->off, &m->off0, x, y) <= MASK_THRESH;
+}
+
+static void mirror_frames_free(mirror_frames *m) {
+    img_free(&m->on);
+    img_free(&m->on0);
+    img_free(&m->off);
+    img_free(&m->off0);
+}
+
 typedef struct mirror_count {
     long cube, behind, front;
 } mirror_count;
@@ -330,36 +370,25 @@ typedef struct mirror_count {
  * 4 km away: the cube's pixels, and its mirror image's above and below it in its columns */
 static mirror_count mirror_image_count(const char *scene, int frame, const char *tag) {
     mirror_count m = {0};
-    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
-    char off_away[200], t[4][64];
-    snprintf(off_away, sizeof off_away, "--set render.reflection=false %s", away);
-    static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
-    for (int k = 0; k < 4; k++) snprintf(t[k], sizeof t[k], "%s_%d_%s", tag, frame, suffix[k]);
-    img on = render_frame(scene, frame, NULL, t[0]), on0 = render_frame(scene, frame, away, t[1]);
-    img off = render_frame(scene, frame, "--set render.reflection=false", t[2]);
-    img off0 = render_frame(scene, frame, off_away, t[3]);
-    if (on.ok && on0.ok && off.ok && off0.ok) {
+    mirror_frames f = mirror_frames_render(scene, frame, NULL, CUBE_AWAY, tag);
+    if (f.ok) {
         for (int x = 0; x < W; x++) {
             int top = H, bottom = -1;
             for (int y = 0; y < H; y++)
-                if (max_diff(&off, &off0, x, y) > MASK_THRESH) {
+                if (max_diff(&f.off, &f.off0, x, y) > MASK_THRESH) {
                     top = y < top ? y : top;
                     bottom = y;
                     m.cube++;
                 }
             for (int y = 0; bottom >= 0 && y < H; y++) {
                 if (y >= top && y <= bottom) continue;
-                int image = max_diff(&on, &on0, x, y) > MASK_THRESH &&
-                            max_diff(&off, &off0, x, y) <= MASK_THRESH;
+                int image = mirror_image_at(&f, x, y);
                 m.behind += image && y < top;
                 m.front += image && y > bottom;
             }
         }
     }
-    img_free(&on);
-    img_free(&on0);
-    img_free(&off);
-    img_free(&off0);
+    mirror_frames_free(&f);
     return m;
 }
 
@@ -411,29 +440,18 @@ static const char *const SUNKEN_SCENE =
 /* pixels of the box's mirror image on frame SUNKEN_FRAME with the box at `at`: those the box
  * moves with the reflection on (against the box 4 km away) and not with it off */
 static long sunken_image_count(const char *scene, const char *at, const char *tag) {
-    char arg[4][200], t[4][64];
-    static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
-    for (int k = 0; k < 4; k++) {
-        snprintf(arg[k], sizeof arg[k], "--set \"objects.models[0].position=%s\"%s",
-                 k % 2 ? "[0,-0.45,-4000]" : at, k >= 2 ? " --set render.reflection=false" : "");
-        snprintf(t[k], sizeof t[k], "%s_%s", tag, suffix[k]);
-    }
-    img on = render_frame(scene, SUNKEN_FRAME, arg[0], t[0]);
-    img on0 = render_frame(scene, SUNKEN_FRAME, arg[1], t[1]);
-    img off = render_frame(scene, SUNKEN_FRAME, arg[2], t[2]);
-    img off0 = render_frame(scene, SUNKEN_FRAME, arg[3], t[3]);
+    char here[200];
+    snprintf(here, sizeof here, "--set \"objects.models[0].position=%s\"", at);
+    mirror_frames f = mirror_frames_render(scene, SUNKEN_FRAME, here,
+                                           "--set \"objects.models[0].position=[0,-0.45,-4000]\"",
+                                           tag);
     long n = -1;
-    if (on.ok && on0.ok && off.ok && off0.ok) {
+    if (f.ok) {
         n = 0;
         for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++)
-                n += max_diff(&on, &on0, x, y) > MASK_THRESH &&
-                     max_diff(&off, &off0, x, y) <= MASK_THRESH;
+            for (int x = 0; x < W; x++) n += mirror_image_at(&f, x, y);
     }
-    img_free(&on);
-    img_free(&on0);
-    img_free(&off);
-    img_free(&off0);
+    mirror_frames_free(&f);
     return n;
 }
 
@@ -483,22 +501,14 @@ static const char *const INSIDE_SCENE =
 TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_mirror) {
     REQUIRE_GL();
     const char *scene = scene_file("pw_inside", INSIDE_SCENE);
-    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
-    char off_away[200];
-    snprintf(off_away, sizeof off_away, "--set render.reflection=false %s", away);
-    img on = render_frame(scene, INSIDE_FRAME, NULL, "pw_inside_on");
-    img on0 = render_frame(scene, INSIDE_FRAME, away, "pw_inside_on_away");
-    img off = render_frame(scene, INSIDE_FRAME, "--set render.reflection=false", "pw_inside_off");
-    img off0 = render_frame(scene, INSIDE_FRAME, off_away, "pw_inside_off_away");
-    if (on.ok && on0.ok && off.ok && off0.ok) {
+    mirror_frames f = mirror_frames_render(scene, INSIDE_FRAME, NULL, CUBE_AWAY, "pw_inside");
+    if (f.ok) {
         long image = 0, bright = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++) {
-                if (max_diff(&on, &on0, x, y) <= MASK_THRESH ||
-                    max_diff(&off, &off0, x, y) > MASK_THRESH)
-                    continue;
+                if (!mirror_image_at(&f, x, y)) continue;
                 image++;
-                bright += luma(&on, x, y) > luma(&on0, x, y) + INSIDE_BRIGHTER;
+                bright += luma(&f.on, x, y) > luma(&f.on0, x, y) + INSIDE_BRIGHTER;
             }
         printf("  the cube's mirror image: %ld pixels, %ld brighter than the water\n", image,
                bright);
@@ -509,10 +519,7 @@ TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_mirror) {
                    "the water (at most %d)",
                    bright, INSIDE_BRIGHT_MAX);
     }
-    img_free(&on);
-    img_free(&on0);
-    img_free(&off);
-    img_free(&off0);
+    mirror_frames_free(&f);
 }
 
 /* ---- submerged outlines: straight, not stairs ------------------------------------------- */
