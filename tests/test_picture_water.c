@@ -302,17 +302,22 @@ TEST_IMAGE(picture_water_no_rim_around_what_floats) {
  * plane, though, while the water stands up to a wave's height off it: over a trough the whole
  * image showed above the cube as a dark patch (frame 40: 576 pixels, and none below). Frame 90
  * has the image below the cube, which must stay. */
+/* what the mirror scenes share: the reflection alone, and three waves for its distortion */
+#define MIRROR_RENDER                                                                             \
+    "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n" \
+    "         fxaa: false, seabed: false}\n"
+#define MIRROR_WATER                                                                              \
+    "water:\n"                                                                                    \
+    "  waves: {model: gerstner, list: [{direction: 20, wavelength: 12, amplitude: 0.2, steepness: 0.6},\n" \
+    "                                  {direction: -35, wavelength: 5, amplitude: 0.06, steepness: 0.4},\n" \
+    "                                  {direction: 80, wavelength: 2.5, amplitude: 0.02, steepness: 0.3}]}\n" \
+    "  look: {foam: false, caustics: false}\n"
 static const char *const MIRROR_SCENE =
     "seed: 1\n"
     "time: {dt: 1/120, fps: 30, duration: 4}\n"
-    "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n"
-    "         fxaa: false, seabed: false}\n"
+    MIRROR_RENDER
     "sky: {time_of_day: 18.5}\n"
-    "water:\n"
-    "  waves: {model: gerstner, list: [{direction: 20, wavelength: 12, amplitude: 0.2, steepness: 0.6},\n"
-    "                                  {direction: -35, wavelength: 5, amplitude: 0.06, steepness: 0.4},\n"
-    "                                  {direction: 80, wavelength: 2.5, amplitude: 0.02, steepness: 0.3}]}\n"
-    "  look: {foam: false, caustics: false}\n"
+    MIRROR_WATER
     "objects:\n"
     "  cubes: [{position: [4, 0, -2], size: 0.8, density: 850}]\n"
     "camera:\n"
@@ -423,8 +428,7 @@ TEST_IMAGE(picture_water_no_mirror_image_behind_what_floats) {
 static const char *const SUNKEN_SCENE =
     "seed: 1\n"
     "time: {dt: 1/120, fps: 30, duration: 2}\n"
-    "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n"
-    "         fxaa: false, seabed: false}\n"
+    MIRROR_RENDER
     "sky: {time_of_day: 15}\n"
     "water:\n"
     "  waves: {model: gerstner, list: [{direction: 90, wavelength: 20, amplitude: 0.3, steepness: 0.3}]}\n"
@@ -481,14 +485,9 @@ TEST_IMAGE(picture_water_nothing_under_the_water_in_the_mirror) {
 static const char *const INSIDE_SCENE =
     "seed: 1\n"
     "time: {dt: 1/120, fps: 30, duration: 2}\n"
-    "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n"
-    "         fxaa: false, seabed: false}\n"
+    MIRROR_RENDER
     "sky: {time_of_day: 12}\n"
-    "water:\n"
-    "  waves: {model: gerstner, list: [{direction: 20, wavelength: 12, amplitude: 0.2, steepness: 0.6},\n"
-    "                                  {direction: -35, wavelength: 5, amplitude: 0.06, steepness: 0.4},\n"
-    "                                  {direction: 80, wavelength: 2.5, amplitude: 0.02, steepness: 0.3}]}\n"
-    "  look: {foam: false, caustics: false}\n"
+    MIRROR_WATER
     "objects:\n"
     "  cubes: [{position: [0, 0, -6], size: 1.0, density: 600}]\n"
     "camera:\n"
