@@ -19,57 +19,7 @@
 #define SPHERE_TESS_VOLUME_TOL 0.03  /* relative, at 24 x 16 */
 #define BOX_VOLUME_TOL 1e-6          /* m^3: exact shapes, float vertices */
 #define NORMAL_UNIT_TOL 1e-5
-#define POS_QUANTUM 1e5              /* positions welded at 1e-5 for the watertight check */
 #define UNIT_BOX_SLACK 1e-6
-
-typedef struct edge {
-    long long a[3], b[3];
-} edge;
-
-static void quantize(const float *p, long long q[3]) {
-    for (int k = 0; k < 3; k++) q[k] = llround((double)p[k] * POS_QUANTUM);
-}
-
-static int cmp_edge(const void *x, const void *y) {
-    const edge *a = x, *b = y;
-    for (int k = 0; k < 3; k++) {
-        if (a->a[k] != b->a[k]) return a->a[k] < b->a[k] ? -1 : 1;
-    }
-    for (int k = 0; k < 3; k++) {
-        if (a->b[k] != b->b[k]) return a->b[k] < b->b[k] ? -1 : 1;
-    }
-    return 0;
-}
-
-/* every directed edge (by welded position) has exactly one twin running the other way: closed
- * and consistently wound. Returns the number of unmatched edges. */
-static long unmatched_edges(const ww_mesh_data *m) {
-    size_t n = m->nindex;
-    edge *e = malloc(n * sizeof *e), *r = malloc(n * sizeof *r);
-    size_t k = 0;
-    for (uint32_t t = 0; t + 2 < m->nindex; t += 3) {
-        for (int s = 0; s < 3; s++) {
-            const float *p = m->vertex + 8 * m->index[t + (uint32_t)s];
-            const float *q = m->vertex + 8 * m->index[t + (uint32_t)((s + 1) % 3)];
-            quantize(p, e[k].a);
-            quantize(q, e[k].b);
-            quantize(q, r[k].a);
-            quantize(p, r[k].b);
-            k++;
-        }
-    }
-    /* drop degenerate edges (poles of zero length do not occur; welded duplicates would) */
-    qsort(e, k, sizeof *e, cmp_edge);
-    qsort(r, k, sizeof *r, cmp_edge);
-    long bad = 0;
-    for (size_t i = 0; i < k; i++) {
-        if (cmp_edge(&e[i], &r[i]) != 0) bad++;
-        if (i + 1 < k && cmp_edge(&e[i], &e[i + 1]) == 0) bad++; /* an edge used twice one way */
-    }
-    free(e);
-    free(r);
-    return bad;
-}
 
 /* unit normals that agree with their triangles' winding, and every position in the unit box */
 static void check_normals_and_bounds(const ww_mesh_data *m, const char *name) {
@@ -116,6 +66,37 @@ static const struct {
     {WW_MESHGEN_FISH_OF(WW_FISH_LONG), "fish_long", 1},
 };
 
+/* the shipped OBJ models the renderer's closed test sorts: the floating marker buoy is one
+ * closed shell (its inside, cut open by the reflection's plane, is shaded as the cut's face);
+ * the kelp's fronds are open sheets seen from both sides */
+TEST(meshgen_obj_models_closed_or_open) {
+    static const struct {
+        const char *scene, *path;
+        int closed;
+    } OBJ[] = {{"scenes/features/floating_models.yaml", "marker_buoy.obj", 1},
+               {"scenes/reef.yaml", "kelp.obj", 0},
+               {"scenes/reef.yaml", "rock_boulder.obj", 1}};
+    for (size_t i = 0; i < sizeof OBJ / sizeof OBJ[0]; i++) {
+        ww_scene *sc = NULL;
+        ww_error err = {0};
+        ENSURE_MSG(ww_scene_load(OBJ[i].scene, NULL, 0, &sc, &err) == WW_OK, "%s: %s",
+                   OBJ[i].scene, err.msg);
+        if (!sc) continue;
+        const ww_mesh_data *m = NULL;
+        for (int k = 0; sc->assets && k < sc->assets->nmesh; k++) {
+            const char *p = sc->assets->mesh[k].path, *tail = strrchr(p, '/');
+            if (strcmp(tail ? tail + 1 : p, OBJ[i].path) == 0) m = &sc->assets->mesh[k];
+        }
+        ENSURE_MSG(m != NULL, "%s: no mesh %s", OBJ[i].scene, OBJ[i].path);
+        if (m) {
+            long open = ww_meshgen_open_edges(m);
+            ENSURE_MSG(OBJ[i].closed ? open == 0 : open > 0, "%s: %ld open edges, expected %s",
+                       OBJ[i].path, open, OBJ[i].closed ? "none" : "some");
+        }
+        ww_scene_free(sc);
+    }
+}
+
 TEST(meshgen_closed_outward_in_unit_box) {
     for (size_t i = 0; i < sizeof MESHES / sizeof MESHES[0]; i++) {
         ww_mesh_data m;
@@ -125,11 +106,16 @@ TEST(meshgen_closed_outward_in_unit_box) {
         for (uint32_t t = 0; t < m.nindex; t++) ENSURE(m.index[t] < (uint32_t)m.nvert);
         check_normals_and_bounds(&m, MESHES[i].name);
         if (MESHES[i].closed) {
-            long bad = unmatched_edges(&m);
+            long bad = ww_meshgen_open_edges(&m);
             ENSURE_MSG(bad == 0, "%s: %ld edges without an opposite twin (not watertight or "
                        "inconsistently wound)", MESHES[i].name, bad);
             ENSURE_MSG(ww_meshgen_volume(&m) > 0.0, "%s: signed volume %g is not positive",
                        MESHES[i].name, ww_meshgen_volume(&m));
+        } else {
+            /* the renderer takes a mesh with no open edge for closed, and shades what it sees
+             * of it from inside as a cut face: an open sheet must never pass */
+            ENSURE_MSG(ww_meshgen_open_edges(&m) > 0, "%s: an open mesh counted as closed",
+                       MESHES[i].name);
         }
         ww_meshgen_free(&m);
     }

@@ -118,7 +118,8 @@ typedef struct gmesh {
     int ninst, cap;
     struct instance *copy; /* casters of stencil shadow volumes: this frame's instances; or NULL */
     float lo[3], hi[3];    /* the mesh's bounding box, mesh units */
-    int closed;            /* watertight (gfx/meshgen.h): behind its faces lies its inside */
+    int closed;            /* closed and consistently wound (ww_meshgen_open_edges): behind
+                            * its faces lies its inside */
     float blo[3], bhi[3];  /* this frame's instances' bounding box, camera-relative, m */
 } gmesh;
 
@@ -797,7 +798,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         rc = ww_meshgen(SLOT_KIND[s], &m, err);
         if (rc != WW_OK) break;
         mesh_upload(gl, &g->slot[s], m.vertex, m.nvert, m.index, (int)m.nindex, cap[s]);
-        g->slot[s].closed = SLOT_KIND[s] != WW_MESH_GRID && s != SLOT_COLUMN;
+        g->slot[s].closed = ww_meshgen_open_edges(&m) == 0;
         if (g->keep_casters && slot_casts(s)) {
             g->caster_mesh[s] = m; /* the stencil shadows' volumes are built from it */
             g->slot[s].copy = malloc((size_t)cap[s] * sizeof(instance));
@@ -820,6 +821,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
             continue;
         const ww_mesh_data *m = &sc->assets->mesh[d->asset];
         mesh_upload(gl, &g->obj[g->nobj], m->vertex, m->nvert, m->index, (int)m->nindex, 1);
+        g->obj[g->nobj].closed = ww_meshgen_open_edges(m) == 0;
         if (g->keep_casters && !(g->obj[g->nobj].copy = malloc(sizeof(instance))))
             rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
         g->obj_data[g->nobj] = m;

@@ -638,6 +638,56 @@ void ww_meshgen_free(ww_mesh_data *m) {
     memset(m, 0, sizeof *m);
 }
 
+typedef struct weld_edge {
+    long long a[3], b[3]; /* from and to, positions in units of WW_MESHGEN_WELD */
+} weld_edge;
+
+static void weld(const float *p, long long q[3]) {
+    for (int k = 0; k < 3; k++) q[k] = llround((double)p[k] / WW_MESHGEN_WELD);
+}
+
+static int cmp_weld_edge(const void *x, const void *y) {
+    const weld_edge *a = x, *b = y;
+    for (int k = 0; k < 3; k++)
+        if (a->a[k] != b->a[k]) return a->a[k] < b->a[k] ? -1 : 1;
+    for (int k = 0; k < 3; k++)
+        if (a->b[k] != b->b[k]) return a->b[k] < b->b[k] ? -1 : 1;
+    return 0;
+}
+
+/* the edges and the same edges reversed, each sorted: in a closed, consistently wound mesh the
+ * two lists are equal and no edge runs twice the same way */
+long ww_meshgen_open_edges(const ww_mesh_data *m) {
+    size_t n = m->nindex;
+    weld_edge *e = malloc((n ? n : 1) * sizeof *e), *r = malloc((n ? n : 1) * sizeof *r);
+    if (!e || !r) {
+        free(e);
+        free(r);
+        return -1;
+    }
+    size_t k = 0;
+    for (uint32_t t = 0; t + 2 < m->nindex; t += 3)
+        for (uint32_t s = 0; s < 3; s++) {
+            const float *p = m->vertex + 8 * m->index[t + s];
+            const float *q = m->vertex + 8 * m->index[t + (s + 1) % 3];
+            weld(p, e[k].a);
+            weld(q, e[k].b);
+            weld(q, r[k].a);
+            weld(p, r[k].b);
+            k++;
+        }
+    qsort(e, k, sizeof *e, cmp_weld_edge);
+    qsort(r, k, sizeof *r, cmp_weld_edge);
+    long open = 0;
+    for (size_t i = 0; i < k; i++) {
+        if (cmp_weld_edge(&e[i], &r[i]) != 0) open++;
+        if (i + 1 < k && cmp_weld_edge(&e[i], &e[i + 1]) == 0) open++; /* twice the same way */
+    }
+    free(e);
+    free(r);
+    return open;
+}
+
 double ww_meshgen_volume(const ww_mesh_data *m) {
     double v = 0.0;
     for (uint32_t t = 0; t + 2 < m->nindex; t += 3) {

@@ -59,4 +59,10 @@ void ww_meshgen_free(ww_mesh_data *m);
  * positive when the winding is counter-clockwise seen from outside */
 double ww_meshgen_volume(const ww_mesh_data *m);
 
+/* the directed edges (positions welded at WW_MESHGEN_WELD) without exactly one twin running the
+ * other way: 0 for a closed, consistently wound mesh, whose faces all have its inside behind
+ * them; -1 where memory ran out */
+#define WW_MESHGEN_WELD 1e-5
+long ww_meshgen_open_edges(const ww_mesh_data *m);
+
 #endif
