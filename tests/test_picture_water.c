@@ -293,15 +293,6 @@ TEST_IMAGE(picture_water_no_rim_around_what_floats) {
 
 /* ---- the reflection: no mirror image behind what floats ------------------------------------ */
 
-/* a 0.8 m cube riding the lake's three waves at dusk, seen from 2.5 m up about 9 m away,
- * refraction and post effects off. Its pixels are those that change when it is moved 4 km away
- * with the reflection off; with the reflection on, the others that change are its mirror image
- * on the water. A water point can only show what lies beyond it along the view ray mirrored, so
- * in a column of the cube that image belongs below the cube (the water in front of it), never
- * above it (the water beyond its far side). The texture is the mirror image about the rest
- * plane, though, while the water stands up to a wave's height off it: over a trough the whole
- * image showed above the cube as a dark patch (frame 40: 576 pixels, and none below). Frame 90
- * has the image below the cube, which must stay. */
 /* what the mirror scenes share: the reflection alone, and three waves for its distortion */
 #define MIRROR_RENDER                                                                             \
     "render: {size: [640, 360], shadows: false, refraction: false, bloom: false, god_rays: false,\n" \
@@ -312,6 +303,16 @@ TEST_IMAGE(picture_water_no_rim_around_what_floats) {
     "                                  {direction: -35, wavelength: 5, amplitude: 0.06, steepness: 0.4},\n" \
     "                                  {direction: 80, wavelength: 2.5, amplitude: 0.02, steepness: 0.3}]}\n" \
     "  look: {foam: false, caustics: false}\n"
+
+/* a 0.8 m cube riding the lake's three waves at dusk, seen from 2.5 m up about 9 m away,
+ * refraction and post effects off. Its pixels are those that change when it is moved 4 km away
+ * with the reflection off; with the reflection on, the others that change are its mirror image
+ * on the water. A water point can only show what lies beyond it along the view ray mirrored, so
+ * in a column of the cube that image belongs below the cube (the water in front of it), never
+ * above it (the water beyond its far side). The texture is the mirror image about the rest
+ * plane, though, while the water stands up to a wave's height off it: over a trough the whole
+ * image showed above the cube as a dark patch (frame 40: 576 pixels, and none below). Frame 90
+ * has the image below the cube, which must stay. */
 static const char *const MIRROR_SCENE =
     "seed: 1\n"
     "time: {dt: 1/120, fps: 30, duration: 4}\n"
@@ -423,8 +424,8 @@ TEST_IMAGE(picture_water_no_mirror_image_behind_what_floats) {
  * refraction off the frame shows no trace of it. The reflection's clip plane is the surface
  * over the camera, 0.3 m under the rest level, so with the plane alone the box's upper part was
  * drawn into the mirror image, lit as if in air, and it showed on the water as a box afloat
- * (563 pixels, now 0). The same box raised 0.55 m stands 0.3 m out of the water and its image must
- * stay (615 pixels; 903 with the plane alone, its part under the crest mirrored too). */
+ * (563 pixels, now 0). The same box raised 0.55 m stands 0.3 m out of the water, and its image
+ * must stay (903 pixels). */
 static const char *const SUNKEN_SCENE =
     "seed: 1\n"
     "time: {dt: 1/120, fps: 30, duration: 2}\n"
