@@ -44,7 +44,7 @@
 uniform vec3 u_ambient;        // sky ambient, linear RGB
 uniform vec3 u_eye;            // the eye, camera-relative (the mirrored camera in reflections)
 uniform float u_water_y;       // the water plane (surface over the camera), camera-relative y
-uniform bool u_inside;         // reflection pass: a closed mesh its plane may cut open
+uniform bool u_inside;         // reflection and prepass: a closed mesh their cut may open
 uniform bool u_mirrored;       // reflection pass: u_eye is the camera mirrored below the water,
                                // and the path it stands for (camera -> surface -> p) is all air
 uniform vec3 u_fog_color;      // above water, linear RGB
@@ -337,12 +337,16 @@ void main() {
 
     vec3 n = normalize(v_normal);
     if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
-    // the reflection's plane cuts what floats open, and the mirror camera below it sees inside
+    // the reflection's cut opens what floats, and the mirror camera below it sees inside
     // (which the waves' distortion shows along the waterline): there the face it sees is the
     // cut's, looking down at the water, not the inside of a wall lit as its outside (the low sun
     // on a cube's far wall showed as a bright patch in the water at its foot). The mirror turns
-    // the winding over, so a face seen from inside is the one that counts as front facing
-    if (u_inside && gl_FrontFacing) n = vec3(0.0, -1.0, 0.0);
+    // the winding over, so a face seen from inside is the one that counts as front facing. The
+    // prepass's cut opens it to the camera above, where the inside of its bottom, lit as a top,
+    // showed in the refraction along the waterline: a face seen from inside there is shaded as
+    // a wall facing the camera, what the lookups beside it show of the float
+    if (u_inside && gl_FrontFacing == u_mirrored)
+        n = u_mirrored ? vec3(0.0, -1.0, 0.0) : normalize(vec3(v.x, 1e-4, v.z));
     vec3 albedo = v_color.rgb * u_mat_kd.rgb;
 #if WW_MAT_MAP
     albedo *= texture(u_mat_map, v_uv).rgb;

@@ -330,24 +330,25 @@ static const char *const MIRROR_SCENE =
 
 #define CUBE_AWAY "--set \"objects.cubes[0].position=[0,0,-4000]\"" /* out of sight */
 
-/* a frame four ways, for what an object adds to the mirror image: the reflection on and off,
- * each with the object where `here` puts it (extra arguments, or NULL for the scene's place) and
- * where `away` puts it, out of sight */
+/* a frame four ways, for what an object adds to the mirror image (or, with `toggle`
+ * render.refraction, to the water's refraction): the image on and off, each with the object
+ * where `here` puts it (extra arguments, or NULL for the scene's place) and where `away` puts
+ * it, out of sight */
 typedef struct mirror_frames {
     img on, on0, off, off0;
     int ok;
 } mirror_frames;
 
-static mirror_frames mirror_frames_render(const char *scene, int frame, const char *here,
-                                          const char *away, const char *tag) {
+static mirror_frames image_frames_render(const char *scene, int frame, const char *here,
+                                         const char *away, const char *toggle, const char *tag) {
     static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
     char arg[4][300], t[4][64];
     img *out[4];
     mirror_frames m = {0};
     out[0] = &m.on, out[1] = &m.on0, out[2] = &m.off, out[3] = &m.off0;
     for (int k = 0; k < 4; k++) {
-        snprintf(arg[k], sizeof arg[k], "%s%s", k % 2 ? away : here ? here : "",
-                 k >= 2 ? " --set render.reflection=false" : "");
+        snprintf(arg[k], sizeof arg[k], "%s%s%s%s", k % 2 ? away : here ? here : "",
+                 k >= 2 ? " --set " : "", k >= 2 ? toggle : "", k >= 2 ? "=false" : "");
         snprintf(t[k], sizeof t[k], "%s_%d_%s", tag, frame, suffix[k]);
         *out[k] = render_frame(scene, frame, arg[k], t[k]);
     }
@@ -355,7 +356,13 @@ static mirror_frames mirror_frames_render(const char *scene, int frame, const ch
     return m;
 }
 
-/* whether (x, y) is the object's mirror image: moved by it with the reflection on, not off */
+static mirror_frames mirror_frames_render(const char *scene, int frame, const char *here,
+                                          const char *away, const char *tag) {
+    return image_frames_render(scene, frame, here, away, "render.reflection", tag);
+}
+
+/* whether (x, y) is the object's mirror image (or refracted image): moved by it with the image
+ * on, not off */
 static int mirror_image_at(const mirror_frames *m, int x, int y) {
     return max_diff(&m->on, &m->on0, x, y) > MASK_THRESH &&
            max_diff(&m->off, &m->off0, x, y) <= MASK_THRESH;
@@ -518,6 +525,52 @@ TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_mirror) {
                    "the inside of the cube shows in its mirror image: %ld pixels brighter than "
                    "the water (at most %d)",
                    bright, INSIDE_BRIGHT_MAX);
+    }
+    mirror_frames_free(&f);
+}
+
+/* INSIDE_SCENE's cube with the refraction on and the reflection off, frame 39. The prepass
+ * cuts the cube at the wave surface and keeps its part under the water, which the camera above
+ * sees into. The inside of its bottom, lit as a top face, and of its far walls showed at the
+ * waterline, where the waves' distortion reads the refracted image over the cut: a patch and a
+ * line as bright as the cube's top (13 pixels, now 0). Counted: pixels of the refracted image
+ * within TOP_NEAR levels of luma of the top's (the brightest tenth of the cube's pixels). */
+#define TOP_NEAR 40      /* luma levels under the top's that count a pixel as lit as the top */
+#define TOP_LIKE_MAX 3   /* such pixels of the refracted image, at most */
+
+static int compare_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_refraction) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_inside", INSIDE_SCENE);
+    mirror_frames f = image_frames_render(
+        scene, INSIDE_FRAME, "--set render.refraction=true --set render.reflection=false",
+        CUBE_AWAY " --set render.refraction=true --set render.reflection=false",
+        "render.refraction", "pw_refr_inside");
+    if (f.ok) {
+        static double cube[W * H];
+        long ncube = 0, image = 0, lit = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++)
+                if (max_diff(&f.off, &f.off0, x, y) > MASK_THRESH) cube[ncube++] = luma(&f.off, x, y);
+        qsort(cube, (size_t)ncube, sizeof cube[0], compare_double);
+        double top = ncube > 0 ? cube[ncube - 1 - ncube / 10] : 0.0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                if (!mirror_image_at(&f, x, y)) continue;
+                image++;
+                lit += luma(&f.on, x, y) > top - TOP_NEAR;
+            }
+        printf("  the cube: %ld pixels, its top's luma %.1f; its refracted image: %ld pixels, "
+               "%ld as bright as the top\n", ncube, top, image, lit);
+        ENSURE_MSG(ncube > 1000 && image >= INSIDE_IMAGE_MIN,
+                   "the cube or its refracted image was not found: %ld, %ld pixels", ncube, image);
+        ENSURE_MSG(lit <= TOP_LIKE_MAX,
+                   "the inside of the cube shows in the refraction: %ld pixels as bright as its "
+                   "top (at most %d)", lit, TOP_LIKE_MAX);
     }
     mirror_frames_free(&f);
 }
