@@ -43,7 +43,6 @@
 #endif
 uniform vec3 u_ambient;        // sky ambient, linear RGB
 uniform vec3 u_eye;            // the eye, camera-relative (the mirrored camera in reflections)
-uniform float u_water_y;       // the water plane (surface over the camera), camera-relative y
 uniform bool u_inside;         // reflection and prepass: a closed mesh their cut may open
 uniform bool u_mirrored;       // reflection pass: u_eye is the camera mirrored below the water,
                                // and the path it stands for (camera -> surface -> p) is all air
@@ -63,6 +62,8 @@ uniform vec4 u_glow;           // the glow column: axis x, z (camera-relative), 
 uniform vec2 u_glow_y;         // its bottom and top, camera-relative y, m
 
 in vec3 v_pos;
+flat in float v_water_y;       // the water plane (surface over the camera; in the reflection,
+                               // over what the instance is mirrored about), camera-relative y
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_color;
@@ -190,10 +191,16 @@ vec3 ww_fog(vec3 c, float l, bool below) {
     return mix(below ? u_fog_below_color : u_fog_color, c, exp(-k * k));
 }
 
+// the eye: in the reflection the camera mirrored about the plane the instance is mirrored
+// about (u_eye holds it mirrored about the surface over the camera)
+vec3 ww_eye() {
+    return u_mirrored ? vec3(u_eye.x, 2.0 * v_water_y, u_eye.z) : u_eye;
+}
+
 // the segment eye -> p split at the water plane: the far part first, then the near part
 vec3 ww_fog_segment(vec3 c, vec3 p) {
-    vec3 e = u_eye;
-    float he = e.y - u_water_y, hp = p.y - u_water_y, len = length(p - e);
+    vec3 e = ww_eye();
+    float he = e.y - v_water_y, hp = p.y - v_water_y, len = length(p - e);
     bool eye_below = he < 0.0 && !u_mirrored, p_below = hp < 0.0, split = eye_below != p_below;
     // unsplit, the far part is the whole segment: two fogs, not three (llvmpipe would work out
     // the unsplit case's as well for every pixel)
@@ -248,8 +255,8 @@ void main() {
     o_color = vec4(0.0);
 #else
     vec3 p = v_pos;
-    vec3 v = normalize(u_eye - p);
-    float depth = u_water_y - p.y; // below the water plane, m (negative above)
+    vec3 v = normalize(ww_eye() - p);
+    float depth = v_water_y - p.y; // below the water plane, m (negative above)
 
 #if WW_GEOM_MODE == 3
     {
@@ -411,7 +418,7 @@ void main() {
     }
 #endif
     c += albedo * v_color.a + u_mat_ke.rgb; // emission: the instance's factor, the material's Ke
-    c = ww_fog_segment(c, p) + ww_lights_scatter_segment(u_eye, p, u_water_y, u_mirrored,
+    c = ww_fog_segment(c, p) + ww_lights_scatter_segment(ww_eye(), p, v_water_y, u_mirrored,
                                                          u_fog_below_density, gl_FragCoord.xy);
     o_color = vec4(c, u_mat_ke.a);
 #endif

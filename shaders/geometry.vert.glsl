@@ -34,6 +34,10 @@ uniform vec4 u_clip_surface; // (side, rest level camera-relative y m, mode, slo
                              // surface's slope, so its least height over the instance's footprint
 uniform vec3 u_mesh_centre;  // the mesh's bounding box, mesh units: its centre ...
 uniform vec3 u_mesh_half;    // ... and half its size
+uniform float u_water_y;     // the water plane (the surface over the camera), camera-relative y
+uniform float u_mirror_reach; // mode 1: the footprint radius, m, up to which an instance is
+                              // mirrored about the surface over its centre (a quarter of the
+                              // dominant wavelength); none past twice that
 uniform int u_shadow_bend; // the sunlight's bend at the water (shadow.glsl): 1 the shadow
                            // map's casters, warped as its receivers are; 2 the projected
                            // shadows' casters; 0 none
@@ -43,6 +47,7 @@ uniform vec4 u_sway_axis;  // (mesh y of the base, 1 / mesh height, direction x,
 #endif
 
 out vec3 v_pos;     // camera-relative world, m
+flat out float v_water_y; // the water plane the instance is shaded by, camera-relative y
 out vec3 v_normal;  // world
 out vec2 v_uv;
 out vec4 v_color;
@@ -97,13 +102,23 @@ void main() {
     // which llvmpipe skips, rather than a branch, whose both arms every vertex would run.
     // The prepass cuts at the surface over the vertex; the distance is interpolated linearly
     // across a triangle, so the cut follows the surface to the waves' curvature over it (about
-    // 3 cm across a 1 m face on the lake). The reflection keeps its plane (the surface over the
-    // camera, by which the shader tells air from water): a cut at the surface would open what
-    // floats to the mirror camera below it, whose inside the waves' distortion then shows at
-    // the waterline. But an instance wholly under the surface (a pressed cube, a fish, a sunken
-    // box under a crest) has no mirror image, though it rises above the plane: its top, the
+    // 3 cm across a 1 m face on the lake). The reflection clips at a horizontal plane per
+    // instance, not at the surface over each vertex: the mirror camera below would see into what
+    // floats through a cut along the waves (the boat's lit inside showed along its waterline). The
+    // mirror about the rest plane puts the image of what stands in a crest h above it 2 h too low,
+    // a band of water between a float's waterline and its image, so an instance small against the
+    // waves is mirrored about the surface over its centre: lowered by twice that height over the
+    // rest plane before the mirror camera's matrix flips it, clipped there, and shaded with it as
+    // its water plane (v_water_y). Its image then starts at its waterline, and its part under the
+    // water is left out. That height stands for the waterline while the footprint's radius is
+    // within a quarter of the dominant wavelength (u_mirror_reach), over which the surface's phase
+    // turns a right angle; the weight w goes to the plane over the camera (u_water_y) and the rest
+    // plane's mirror by twice that. An instance wholly under the surface (a pressed cube, a fish,
+    // a sunken box under a crest) has no image even where it rises above that plane: its top, the
     // highest corner of its box, is compared with the least height of the surface over its
     // footprint, the height over its centre less the slope's bound times its radius
+    float lift = 0.0; // m the instance's image rises over the rest plane's mirror image
+    v_water_y = u_water_y;
     int cut = u_clip_surface.x != 0.0 ? 1 : 0;
     for (int k = 0; k < cut; k++) {
         bool whole = u_clip_surface.z != 0.0;
@@ -120,11 +135,14 @@ void main() {
 #if WW_SWAY
         radius += abs(u_sway.x);
 #endif
-        float under = top < h - u_clip_surface.w * radius ? -1.0 : clip;
+        float w = whole ? clamp(2.0 - radius / u_mirror_reach, 0.0, 1.0) : 0.0;
+        v_water_y = mix(u_water_y, h, w);
+        lift = 2.0 * w * (h - u_clip_surface.y);
+        float under = top < h - u_clip_surface.w * radius ? -1.0 : clip - (v_water_y - u_water_y);
         clip = whole ? under : u_clip_surface.x * (h - p.y);
     }
     gl_ClipDistance[0] = clip;
     vec3 at = u_shadow_bend == 1 ? ww_shadow_warp(p.xyz)
               : u_shadow_bend == 2 ? ww_shadow_unbend(p.xyz) : p.xyz;
-    gl_Position = u_view_proj * vec4(at, 1.0);
+    gl_Position = u_view_proj * vec4(at.x, at.y - lift, at.z, 1.0);
 }

@@ -326,7 +326,9 @@ static const char *const MIRROR_SCENE =
     "         {t: 4, position: [4, 2.0, 4], look_at: [0, 0, -6]}]\n";
 #define MIRROR_BEHIND_MAX 10  /* pixels of the cube's mirror image above it in its columns, at
                                * most (576 over a trough before the image's depth was tested) */
-#define MIRROR_FRONT_MIN 600  /* pixels of it below the cube on frame 90, at least (1210) */
+#define MIRROR_FRONT_MIN 300  /* pixels of it below the cube on frame 90, at least: 598, of a
+                               * cube 0.12 m out of the water (1210 while the image also held its
+                               * part under the water, over the reflection's plane) */
 
 #define CUBE_AWAY "--set \"objects.cubes[0].position=[0,0,-4000]\"" /* out of sight */
 
@@ -432,7 +434,7 @@ TEST_IMAGE(picture_water_no_mirror_image_behind_what_floats) {
  * over the camera, 0.3 m under the rest level, so with the plane alone the box's upper part was
  * drawn into the mirror image, lit as if in air, and it showed on the water as a box afloat
  * (563 pixels, now 0). The same box raised 0.55 m stands 0.3 m out of the water, and its image
- * must stay (903 pixels). */
+ * must stay (306 pixels: 903 while its part under the water, over the plane, was mirrored). */
 static const char *const SUNKEN_SCENE =
     "seed: 1\n"
     "time: {dt: 1/120, fps: 30, duration: 2}\n"
@@ -571,6 +573,64 @@ TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_refraction) {
         ENSURE_MSG(lit <= TOP_LIKE_MAX,
                    "the inside of the cube shows in the refraction: %ld pixels as bright as its "
                    "top (at most %d)", lit, TOP_LIKE_MAX);
+    }
+    mirror_frames_free(&f);
+}
+
+/* ---- the mirror image meets the waterline ------------------------------------------------ */
+
+/* a static 1 m box standing 0.55 m out of a crest 0.3 m high (one 10 m wave), seen from 2.5 m
+ * up and 10 m away with a crest under the camera too (frame 57, t = 1.9 s). Mirrored about the
+ * rest plane, the box's image stood 0.6 m (twice the crest) below the waterline: in its columns
+ * a band of water about 10 rows tall lay between the box and its image. Counted per column of
+ * the box: the rows from its lowest pixel down to the first of its mirror image's. */
+static const char *const MEET_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 2}\n"
+    MIRROR_RENDER
+    "sky: {time_of_day: 15}\n"
+    "water:\n"
+    "  waves: {model: gerstner, list: [{direction: 90, wavelength: 10, amplitude: 0.3, steepness: 0.3}]}\n"
+    "  look: {foam: false, caustics: false}\n"
+    "objects:\n"
+    "  models: [{name: box, mesh: box, position: [0, 0.35, -10], scale: 1.0, color: [0.8, 0.5, 0.3]}]\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 2.5, 0], look_at: [0, 0, -10]}]\n";
+#define MEET_FRAME 57      /* the crests under the box and the camera */
+#define MEET_GAP_MAX 1     /* rows of water between the waterline and the image in the median
+                            * column, at most (the crest's curvature over the box's half width,
+                            * 3 cm, is under a row) */
+#define MEET_COLUMNS_MIN 30 /* columns of the box with an image under them, at least */
+
+static int compare_int(const void *a, const void *b) {
+    return *(const int *)a - *(const int *)b;
+}
+
+TEST_IMAGE(picture_water_the_mirror_image_meets_the_waterline) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_meet", MEET_SCENE);
+    mirror_frames f = mirror_frames_render(scene, MEET_FRAME, NULL,
+                                           "--set \"objects.models[0].position=[0,0.35,-4000]\"",
+                                           "pw_meet");
+    if (f.ok) {
+        int gap[W], n = 0;
+        for (int x = 0; x < W; x++) {
+            int bottom = -1, image = -1;
+            for (int y = 0; y < H; y++)
+                if (max_diff(&f.off, &f.off0, x, y) > MASK_THRESH) bottom = y;
+            for (int y = bottom + 1; bottom >= 0 && image < 0 && y < H; y++)
+                if (mirror_image_at(&f, x, y)) image = y;
+            if (image >= 0) gap[n++] = image - bottom - 1;
+        }
+        qsort(gap, (size_t)n, sizeof gap[0], compare_int);
+        int median = n > 0 ? gap[n / 2] : -1;
+        printf("  %d columns of the box with its image under them; rows of water between: "
+               "median %d, least %d, most %d\n", n, median, n > 0 ? gap[0] : -1,
+               n > 0 ? gap[n - 1] : -1);
+        ENSURE_MSG(n >= MEET_COLUMNS_MIN, "the box's mirror image was not found: %d columns", n);
+        ENSURE_MSG(median <= MEET_GAP_MAX,
+                   "the box's mirror image stands off its waterline: %d rows of water between "
+                   "(at most %d)", median, MEET_GAP_MAX);
     }
     mirror_frames_free(&f);
 }

@@ -167,7 +167,7 @@ typedef struct geom_prog {
     int inside_set;              /* what its u_inside holds */
     ww_sky_locs sky;
     GLint view_proj, clip, clip_surface, mesh_centre, mesh_half, inside, ambient, eye, mirrored,
-        water_y, fog_color, fog_density, fog_below_color, fog_below_density, extinction,
+        water_y, mirror_reach, fog_color, fog_density, fog_below_color, fog_below_density, extinction,
         caustics_loc, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
     GLint scatter_through;
@@ -205,15 +205,18 @@ struct ww_geometry {
     ww_water_ubos ubos;
     int caustics;      /* 0 none, 1 analytic, 2 the looped set (geometry.frag.glsl: WW_CAUSTICS) */
     int surface_clip;  /* the prepass cuts its geometry at the wave surface instead of its plane;
-                        * the reflection drops what lies wholly under it */
+                        * the reflection mirrors and clips at the surface over an instance */
     float slope;       /* a bound on the surface's slope (surface_slope_bound) */
+    float mirror_reach; /* m: the footprint radius up to which the reflection mirrors an instance
+                         * about the surface over its centre (mirror_reach) */
     double crest;      /* m: the most the surface rises above or sinks below its rest level */
     float cut_side;    /* this pass's side of the cut (geometry.vert.glsl: u_clip_surface) */
     float cut_level;   /* the rest level, camera-relative, m */
     float cut_now;     /* the side the next draw needs: cut_side, or 0 for a draw that cannot
                         * reach the surface */
-    float cut_mode;    /* 0: the cut replaces the pass's plane (the prepass); 1: the plane, and
-                        * no instance wholly under the surface (the reflection) */
+    float cut_mode;    /* 0: the cut replaces the pass's plane (the prepass); 1: the reflection:
+                        * an instance mirrored and clipped about the surface over it, the
+                        * larger ones about the plane, and none wholly under the surface */
     float box[6];      /* the drawn mesh's bounding box (centre, half size), mesh units */
     int box_serial;    /* counts the changes of box */
     int inside_now;    /* 1: the draw is a closed mesh the reflection's or the prepass's cut may
@@ -556,6 +559,7 @@ static ww_result make_program(ww_geometry *g, const ww_gl *gl, const ww_scene *s
     v->mirrored = ww_gfx_uniform(gl, p, "u_mirrored");
     v->scatter_through = ww_gfx_uniform(gl, p, "u_scatter_through");
     v->water_y = ww_gfx_uniform(gl, p, "u_water_y");
+    v->mirror_reach = ww_gfx_uniform(gl, p, "u_mirror_reach");
     v->fog_color = ww_gfx_uniform(gl, p, "u_fog_color");
     v->fog_density = ww_gfx_uniform(gl, p, "u_fog_density");
     v->fog_below_color = ww_gfx_uniform(gl, p, "u_fog_below_color");
@@ -765,6 +769,20 @@ static double surface_slope_bound(const ww_scene *sc) {
     return slope;
 }
 
+/* the footprint radius up to which the reflection mirrors an instance about the surface over its
+ * centre rather than the rest plane (geometry.vert.glsl): a quarter of the wavelength of the
+ * component that raises the surface most, over which its height turns from its value at the
+ * centre through a right angle */
+static double mirror_reach(const ww_scene *sc) {
+    double most = 0.0, reach = 1.0;
+    for (int i = 0; sc->wave_model != WW_WAVES_FLAT && i < sc->nwaves; i++)
+        if (fabs(sc->waves[i].amplitude) > most) {
+            most = fabs(sc->waves[i].amplitude);
+            reach = 0.25 * sc->waves[i].wavelength;
+        }
+    return reach;
+}
+
 ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out, ww_error *err) {
     const ww_gl *gl = r->gl;
     ww_geometry *g = calloc(1, sizeof *g);
@@ -776,6 +794,7 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
                       sc->wave_model != WW_WAVES_FLAT && sc->nwaves > 0;
     g->crest = ww_water_crest(sc);
     g->slope = (float)surface_slope_bound(sc);
+    g->mirror_reach = (float)mirror_reach(sc);
     for (int i = 0; i < sc->models.count; i++)
         if (sc->models.model[i].sway_amplitude > 0.0) g->sway = 1;
     g->keep_casters = sc->render.shadows.on && (sc->render.shadows.technique == WW_SHADOW_VOLUMES ||
@@ -1340,7 +1359,8 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
      * water refracts, and the bilinear lookups bled it into the water around the cube as a pale
      * rim. The reflection's plane is the surface over the camera: an instance wholly under the
      * surface where it lies, under a crest, but over that plane was mirrored, lit as if in air,
-     * and showed on the water as if it floated; such an instance is dropped */
+     * and showed on the water as if it floated; such an instance is dropped, and one small
+     * against the waves is mirrored and clipped about the surface over it */
     int prepass = mode == WW_GEOM_PREPASS || mode == WW_GEOM_PREPASS_DEPTH;
     int mirror = mode == WW_GEOM_REFLECTION;
     float side = clip && (prepass || mirror) && g->surface_clip
@@ -1363,6 +1383,7 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
     gl->Uniform1i(v->mirrored, mode == WW_GEOM_REFLECTION);
     gl->Uniform1i(v->scatter_through, mode == WW_GEOM_PREPASS);
     gl->Uniform1f(v->water_y, water_y);
+    gl->Uniform1f(v->mirror_reach, g->mirror_reach);
     double hz[3];
     ww_sky_horizon(sc, st, hz);
     const double *fog = sc->fog_color[0] < 0.0 ? hz : sc->fog_color;
@@ -1440,6 +1461,15 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     use_lit(g, gl, GEOM_LIT); /* without the sun in the stencilled shadows' second draw */
     if (clip) gl->Enable(GL_CLIP_DISTANCE0);
     else gl->Disable(GL_CLIP_DISTANCE0);
+    /* the reflection clips an instance the waves reach at the surface over it, which lies up to
+     * the crest's height twice below the pass's plane: a draw is skipped only below that */
+    const float *skip = clip;
+    float lowered[4];
+    if (clip && g->cut_mode != 0.0f) {
+        memcpy(lowered, clip, sizeof lowered);
+        lowered[3] += 2.0f * (float)g->crest * fabsf(clip[1]);
+        skip = lowered;
+    }
 
     gl->Enable(GL_DEPTH_TEST);
     /* stencilled shadows: the shadowed pixels drawn again where they lie (the same program and
@@ -1455,7 +1485,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         if (s == SLOT_COLUMN || s == SLOT_BUBBLE || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW))
             continue;
         if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
-        if (g->slot[s].ninst <= 0 || clipped_away(clip, &g->slot[s]) ||
+        if (g->slot[s].ninst <= 0 || clipped_away(skip, &g->slot[s]) ||
             outside_view(view_proj, &g->slot[s], 0.0f))
             continue;
         use_lit(g, gl, slot_patterned(s) ? GEOM_LIT_FISH : GEOM_LIT);
@@ -1473,7 +1503,7 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         if (s == SLOT_SEABED) gl->Disable(GL_POLYGON_OFFSET_FILL);
     }
     for (int i = 0; (parts & WW_GEOM_PART_SOLIDS) && i < g->nobj; i++) {
-        if (clipped_away(clip, &g->obj[i]) ||
+        if (clipped_away(skip, &g->obj[i]) ||
             outside_view(view_proj, &g->obj[i], g->sway ? fabsf(g->obj_sway[i][0]) : 0.0f))
             continue;
         cut_for(g, gl, &g->obj[i]);
