@@ -1552,6 +1552,7 @@ void ww_geometry_draw_glow(ww_geometry *g, ww_renderer *r, ww_geom_mode mode) {
         g->slot[SLOT_COLUMN].ninst <= 0)
         return;
     const geom_prog *v = use(g, gl, GEOM_GLOW);
+    cut_for(g, gl, &g->slot[SLOT_COLUMN]); /* the reflection's cut by the column's own box */
     gl->Uniform4f(v->glow, g->glow_cyl[0], g->glow_cyl[1], g->glow_cyl[2], g->glow_cyl[5]);
     gl->Uniform2f(v->glow_y, g->glow_cyl[3], g->glow_cyl[4]);
     if (g->glow_clip) gl->Enable(GL_CLIP_DISTANCE0);
