@@ -43,7 +43,8 @@
 #endif
 uniform vec3 u_ambient;        // sky ambient, linear RGB
 uniform vec3 u_eye;            // the eye, camera-relative (the mirrored camera in reflections)
-uniform bool u_inside;         // reflection and prepass: a closed mesh their cut may open
+uniform int u_inside;          // reflection and prepass: 1 a closed mesh their cut may open,
+                               // 2 the hull (its hollow too: geometry.vert.glsl)
 uniform bool u_mirrored;       // reflection pass: u_eye is the camera mirrored below the water,
                                // and the path it stands for (camera -> surface -> p) is all air
 uniform vec3 u_fog_color;      // above water, linear RGB
@@ -62,6 +63,7 @@ uniform vec4 u_glow;           // the glow column: axis x, z (camera-relative), 
 uniform vec2 u_glow_y;         // its bottom and top, camera-relative y, m
 
 in vec3 v_pos;
+flat in float v_hollow;        // 1: a face of the hull's hollow (u_inside 2)
 flat in float v_water_y;       // the water plane (surface over the camera; in the reflection,
                                // over what the instance is mirrored about), camera-relative y
 in vec3 v_normal;
@@ -351,8 +353,11 @@ void main() {
     // the winding over, so a face seen from inside is the one that counts as front facing. The
     // prepass's cut opens it to the camera above, where the inside of its bottom, lit as a top,
     // showed in the refraction along the waterline: a face seen from inside there is shaded as
-    // a wall facing the camera, what the lookups beside it show of the float
-    if (u_inside && gl_FrontFacing == u_mirrored)
+    // a wall facing the camera, what the lookups beside it show of the float. The hull's hollow
+    // (its inner skin, faces turned into the boat) is seen through the cut too, from below in
+    // the mirror, where no view over the gunwale could see it: its lit faces showed as pink
+    // specks in the image along the waterline
+    if (u_inside != 0 && (gl_FrontFacing == u_mirrored || v_hollow > 0.5))
         n = u_mirrored ? vec3(0.0, -1.0, 0.0) : normalize(vec3(v.x, 1e-4, v.z));
     vec3 albedo = v_color.rgb * u_mat_kd.rgb;
 #if WW_MAT_MAP

@@ -34,6 +34,7 @@ uniform vec4 u_clip_surface; // (side, rest level camera-relative y m, mode, slo
                              // surface's slope, so its least height over the instance's footprint
 uniform vec3 u_mesh_centre;  // the mesh's bounding box, mesh units: its centre ...
 uniform vec3 u_mesh_half;    // ... and half its size
+uniform int u_inside;        // 2: the hull, whose hollow's faces are marked (v_hollow)
 uniform float u_water_y;     // the water plane (the surface over the camera), camera-relative y
 uniform float u_mirror_reach; // mode 1: the footprint radius, m, up to which an instance is
                               // mirrored about the surface over its centre (a quarter of the
@@ -48,6 +49,8 @@ uniform vec4 u_sway_axis;  // (mesh y of the base, 1 / mesh height, direction x,
 
 out vec3 v_pos;     // camera-relative world, m
 flat out float v_water_y; // the water plane the instance is shaded by, camera-relative y
+flat out float v_hollow;  // 1: a face of the hull's hollow, its normal turned toward the box's
+                          // centre (a convex shell's all turn away)
 out vec3 v_normal;  // world
 out vec2 v_uv;
 out vec4 v_color;
@@ -88,6 +91,7 @@ void main() {
     }
 #endif
     v_pos = p.xyz;
+    v_hollow = u_inside == 2 && dot(nrm, q - u_mesh_centre) < 0.0 ? 1.0 : 0.0;
     v_uv = a_uv;
     v_color = a_color;
     v_spec = a_extra.z;

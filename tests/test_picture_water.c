@@ -577,6 +577,53 @@ TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_refraction) {
     mirror_frames_free(&f);
 }
 
+/* the rowing boat afloat at noon, seen from 1.6 m up and 7 m away, its bow turned 30 degrees
+ * away. Its hull is a shell around a hollow, and the reflection's cut opens both: the mirror
+ * camera below looked up through the cut into the hollow, where the inner skin's faces are
+ * turned toward it and lit, and the waves' distortion showed them under the hull as a pink
+ * band (frame 60: 28 pixels of the image redder than the water without the boat, now 0).
+ * The hull's faces turned toward its box's centre are shaded as the cut's face there. */
+static const char *const HOLLOW_SCENE =
+    "seed: 1\n"
+    "time: {dt: 1/120, fps: 30, duration: 3}\n"
+    MIRROR_RENDER
+    "sky: {time_of_day: 12}\n"
+    MIRROR_WATER
+    "objects:\n"
+    "  boat: {position: [0, 0.25, -7], heading: 30}\n"
+    "camera:\n"
+    "  path: [{t: 0, position: [0, 1.6, 0], look_at: [0, 0, -7]}]\n";
+#define HOLLOW_FRAME 60
+#define HOLLOW_REDDER 12   /* levels of red over the water's there without the boat that
+                            * count a pixel of the image as the lit inside's pink (the hull's
+                            * shaded outside is darker than the water) */
+#define HOLLOW_RED_MAX 5   /* such pixels, at most */
+
+TEST_IMAGE(picture_water_no_hollow_of_the_boat_in_the_mirror) {
+    REQUIRE_GL();
+    const char *scene = scene_file("pw_hollow", HOLLOW_SCENE);
+    mirror_frames f = mirror_frames_render(scene, HOLLOW_FRAME, NULL,
+                                           "--set \"objects.boat.position=[0,0.25,-4000]\"",
+                                           "pw_hollow");
+    if (f.ok) {
+        long image = 0, red = 0;
+        for (int y = 0; y < H; y++)
+            for (int x = 0; x < W; x++) {
+                if (!mirror_image_at(&f, x, y)) continue;
+                image++;
+                red += px(&f.on, x, y)[0] > px(&f.on0, x, y)[0] + HOLLOW_REDDER;
+            }
+        printf("  the boat's mirror image: %ld pixels, %ld redder than the water by more than "
+               "%d levels\n", image, red, HOLLOW_REDDER);
+        ENSURE_MSG(image >= INSIDE_IMAGE_MIN, "the boat's mirror image was not found: %ld pixels",
+                   image);
+        ENSURE_MSG(red <= HOLLOW_RED_MAX,
+                   "the boat's hollow shows in its mirror image: %ld pinkish pixels (at most %d)",
+                   red, HOLLOW_RED_MAX);
+    }
+    mirror_frames_free(&f);
+}
+
 /* ---- the mirror image meets the waterline ------------------------------------------------ */
 
 /* a static 1 m box standing 0.55 m out of a crest 0.3 m high (one 10 m wave), seen from 2.5 m

@@ -220,7 +220,8 @@ struct ww_geometry {
     float box[6];      /* the drawn mesh's bounding box (centre, half size), mesh units */
     int box_serial;    /* counts the changes of box */
     int inside_now;    /* 1: the draw is a closed mesh the reflection's or the prepass's cut may
-                        * open, whose inside is shaded apart (geometry.frag.glsl: u_inside) */
+                        * open, whose inside is shaded apart; 2: the hull, whose hollow is
+                        * shaded so too (geometry.vert.glsl, .frag.glsl: u_inside) */
     GLuint caustic_tex; /* method texture: the set, a 2D array of frame pairs (red, green) */
     ww_caustic_set cset;
     float cset_at[4], cset_frame[2]; /* this frame's u_caustic_set_at, u_caustic_set_frame */
@@ -635,7 +636,8 @@ static void cut_for(ww_geometry *g, const ww_gl *gl, const gmesh *m) {
         memcpy(g->box, box, sizeof box);
         g->box_serial++;
     }
-    g->inside_now = near && g->cut_side != 0.0f && m->closed;
+    g->inside_now = near && g->cut_side != 0.0f && m->closed ? (m == &g->slot[SLOT_HULL] ? 2 : 1)
+                                                             : 0;
     apply_cut(g, gl);
 }
 
