@@ -557,7 +557,8 @@ TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_refraction) {
         long ncube = 0, image = 0, lit = 0;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++)
-                if (max_diff(&f.off, &f.off0, x, y) > MASK_THRESH) cube[ncube++] = luma(&f.off, x, y);
+                if (max_diff(&f.off, &f.off0, x, y) > MASK_THRESH)
+                    cube[ncube++] = luma(&f.off, x, y);
         qsort(cube, (size_t)ncube, sizeof cube[0], compare_double);
         double top = ncube > 0 ? cube[ncube - 1 - ncube / 10] : 0.0;
         for (int y = 0; y < H; y++)

@@ -167,8 +167,8 @@ typedef struct geom_prog {
     int inside_set;              /* what its u_inside holds */
     ww_sky_locs sky;
     GLint view_proj, clip, clip_surface, mesh_centre, mesh_half, inside, ambient, eye, mirrored,
-        water_y, mirror_reach, fog_color, fog_density, fog_below_color, fog_below_density, extinction,
-        caustics_loc, glow, glow_y;
+        water_y, mirror_reach, fog_color, fog_density, fog_below_color, fog_below_density,
+        extinction, caustics_loc, glow, glow_y;
     GLint shadow_map, shadow_on, sun_view_proj, shadow_filter, shadow_water, shadow_bend;
     GLint scatter_through;
     light_locs lights;
