@@ -233,39 +233,63 @@ static const char *const RIM_SCENE =
     "camera:\n"
     "  path: [{t: 0, position: [0, 1.6, -5], look_at: [0, 0.2, 0]}]\n";
 
-/* frame 0 of a scene whose one cube is at cubes[0], with the refraction prepass on and off, and
- * each again with the cube moved 4 km away: its pixels are those that change */
-typedef struct cube_frames {
+#define CUBE_AWAY "--set \"objects.cubes[0].position=[0,0,-4000]\"" /* out of sight */
+
+/* a frame four ways, for what an object adds to the mirror image (or, with `toggle`
+ * render.refraction, to the water's refraction): the image on and off, each with the object
+ * where `here` puts it (extra arguments, or NULL for the scene's place) and where `away` puts
+ * it, out of sight */
+typedef struct mirror_frames {
     img on, on0, off, off0;
     int ok;
-} cube_frames;
+} mirror_frames;
 
-static cube_frames render_cube_frames(const char *scene, const char *tag) {
-    const char *away = "--set \"objects.cubes[0].position=[0,0,-4000]\"";
-    char off_away[200], t[4][64];
-    snprintf(off_away, sizeof off_away, "--set render.refraction=false %s", away);
+static mirror_frames image_frames_render(const char *scene, int frame, const char *here,
+                                         const char *away, const char *toggle, const char *tag) {
     static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
-    for (int k = 0; k < 4; k++) snprintf(t[k], sizeof t[k], "%s_%s", tag, suffix[k]);
-    cube_frames c;
-    c.on = render_frame(scene, 0, NULL, t[0]);
-    c.on0 = render_frame(scene, 0, away, t[1]);
-    c.off = render_frame(scene, 0, "--set render.refraction=false", t[2]);
-    c.off0 = render_frame(scene, 0, off_away, t[3]);
-    c.ok = c.on.ok && c.on0.ok && c.off.ok && c.off0.ok;
-    return c;
+    char arg[4][300], t[4][64];
+    img *out[4];
+    mirror_frames m = {0};
+    out[0] = &m.on, out[1] = &m.on0, out[2] = &m.off, out[3] = &m.off0;
+    for (int k = 0; k < 4; k++) {
+        snprintf(arg[k], sizeof arg[k], "%s%s%s%s", k % 2 ? away : here ? here : "",
+                 k >= 2 ? " --set " : "", k >= 2 ? toggle : "", k >= 2 ? "=false" : "");
+        snprintf(t[k], sizeof t[k], "%s_%d_%s", tag, frame, suffix[k]);
+        *out[k] = render_frame(scene, frame, arg[k], t[k]);
+    }
+    m.ok = m.on.ok && m.on0.ok && m.off.ok && m.off0.ok;
+    return m;
 }
 
-static void cube_frames_free(cube_frames *c) {
-    img_free(&c->on);
-    img_free(&c->on0);
-    img_free(&c->off);
-    img_free(&c->off0);
+static mirror_frames mirror_frames_render(const char *scene, int frame, const char *here,
+                                          const char *away, const char *tag) {
+    return image_frames_render(scene, frame, here, away, "render.reflection", tag);
+}
+
+static void mirror_frames_free(mirror_frames *m) {
+    img_free(&m->on);
+    img_free(&m->on0);
+    img_free(&m->off);
+    img_free(&m->off0);
+}
+
+/* whether (x, y) is the object's mirror image (or refracted image): moved by it with the image
+ * on, not off */
+static int mirror_image_at(const mirror_frames *m, int x, int y) {
+    return max_diff(&m->on, &m->on0, x, y) > MASK_THRESH &&
+           max_diff(&m->off, &m->off0, x, y) <= MASK_THRESH;
+}
+
+/* frame 0 of a scene whose one cube is at cubes[0], with the refraction prepass on and off, and
+ * each again with the cube moved 4 km away: its pixels are those that change */
+static mirror_frames render_cube_frames(const char *scene, const char *tag) {
+    return image_frames_render(scene, 0, NULL, CUBE_AWAY, "render.refraction", tag);
 }
 
 TEST_IMAGE(picture_water_no_rim_around_what_floats) {
     REQUIRE_GL();
-    cube_frames cf = render_cube_frames(scene_file("pw_rim", RIM_SCENE), "pw_rim");
-    const img *on = &cf.on, *on0 = &cf.on0, *off = &cf.off, *off0 = &cf.off0;
+    mirror_frames cf = render_cube_frames(scene_file("pw_rim", RIM_SCENE), "pw_rim");
+    const img *off = &cf.off, *off0 = &cf.off0;
     if (cf.ok) {
         /* the rows of the part above the water */
         int top = H, bottom = -1;
@@ -280,15 +304,13 @@ TEST_IMAGE(picture_water_no_rim_around_what_floats) {
         ENSURE_MSG(above > 1000, "the cube was not found: %ld pixels", above);
         long rim = 0;
         for (int y = 0; y < (top + bottom) / 2; y++)
-            for (int x = 0; x < W; x++)
-                rim += max_diff(on, on0, x, y) > MASK_THRESH &&
-                       max_diff(off, off0, x, y) <= MASK_THRESH;
+            for (int x = 0; x < W; x++) rim += mirror_image_at(&cf, x, y);
         printf("  the cube above the water: rows %d..%d, %ld px; its colour in the water around "
                "its top half: %ld px\n", top, bottom, above, rim);
         ENSURE_MSG(rim <= RIM_MAX_PIXELS, "a rim of %ld pixels around the cube (at most %d)", rim,
                    RIM_MAX_PIXELS);
     }
-    cube_frames_free(&cf);
+    mirror_frames_free(&cf);
 }
 
 /* ---- the reflection: no mirror image behind what floats ------------------------------------ */
@@ -330,51 +352,33 @@ static const char *const MIRROR_SCENE =
                                * cube 0.12 m out of the water (1210 while the image also held its
                                * part under the water, over the reflection's plane) */
 
-#define CUBE_AWAY "--set \"objects.cubes[0].position=[0,0,-4000]\"" /* out of sight */
+/* what a pixel of the image is tested for, with the object in place (on) and away (on0) */
+typedef int (*image_test)(const mirror_frames *m, int x, int y, double level);
 
-/* a frame four ways, for what an object adds to the mirror image (or, with `toggle`
- * render.refraction, to the water's refraction): the image on and off, each with the object
- * where `here` puts it (extra arguments, or NULL for the scene's place) and where `away` puts
- * it, out of sight */
-typedef struct mirror_frames {
-    img on, on0, off, off0;
-    int ok;
-} mirror_frames;
-
-static mirror_frames image_frames_render(const char *scene, int frame, const char *here,
-                                         const char *away, const char *toggle, const char *tag) {
-    static const char *const suffix[4] = {"on", "on_away", "off", "off_away"};
-    char arg[4][300], t[4][64];
-    img *out[4];
-    mirror_frames m = {0};
-    out[0] = &m.on, out[1] = &m.on0, out[2] = &m.off, out[3] = &m.off0;
-    for (int k = 0; k < 4; k++) {
-        snprintf(arg[k], sizeof arg[k], "%s%s%s%s", k % 2 ? away : here ? here : "",
-                 k >= 2 ? " --set " : "", k >= 2 ? toggle : "", k >= 2 ? "=false" : "");
-        snprintf(t[k], sizeof t[k], "%s_%d_%s", tag, frame, suffix[k]);
-        *out[k] = render_frame(scene, frame, arg[k], t[k]);
-    }
-    m.ok = m.on.ok && m.on0.ok && m.off.ok && m.off0.ok;
-    return m;
+static int brighter_than_without(const mirror_frames *m, int x, int y, double by) {
+    return luma(&m->on, x, y) > luma(&m->on0, x, y) + by;
 }
 
-static mirror_frames mirror_frames_render(const char *scene, int frame, const char *here,
-                                          const char *away, const char *tag) {
-    return image_frames_render(scene, frame, here, away, "render.reflection", tag);
+static int redder_than_without(const mirror_frames *m, int x, int y, double by) {
+    return px(&m->on, x, y)[0] > px(&m->on0, x, y)[0] + by;
 }
 
-/* whether (x, y) is the object's mirror image (or refracted image): moved by it with the image
- * on, not off */
-static int mirror_image_at(const mirror_frames *m, int x, int y) {
-    return max_diff(&m->on, &m->on0, x, y) > MASK_THRESH &&
-           max_diff(&m->off, &m->off0, x, y) <= MASK_THRESH;
+static int luma_over(const mirror_frames *m, int x, int y, double level) {
+    return luma(&m->on, x, y) > level;
 }
 
-static void mirror_frames_free(mirror_frames *m) {
-    img_free(&m->on);
-    img_free(&m->on0);
-    img_free(&m->off);
-    img_free(&m->off0);
+/* the pixels of the object's image (mirror_image_at), and into *found those of them `test`
+ * takes at `level` (none with test NULL) */
+static long image_pixels(const mirror_frames *m, image_test test, double level, long *found) {
+    long n = 0;
+    *found = 0;
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            if (!mirror_image_at(m, x, y)) continue;
+            n++;
+            *found += test && test(m, x, y, level);
+        }
+    return n;
 }
 
 typedef struct mirror_count {
@@ -459,12 +463,8 @@ static long sunken_image_count(const char *scene, const char *at, const char *ta
     mirror_frames f = mirror_frames_render(scene, SUNKEN_FRAME, here,
                                            "--set \"objects.models[0].position=[0,-0.45,-4000]\"",
                                            tag);
-    long n = -1;
-    if (f.ok) {
-        n = 0;
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++) n += mirror_image_at(&f, x, y);
-    }
+    long n = -1, none;
+    if (f.ok) n = image_pixels(&f, NULL, 0.0, &none);
     mirror_frames_free(&f);
     return n;
 }
@@ -512,13 +512,7 @@ TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_mirror) {
     const char *scene = scene_file("pw_inside", INSIDE_SCENE);
     mirror_frames f = mirror_frames_render(scene, INSIDE_FRAME, NULL, CUBE_AWAY, "pw_inside");
     if (f.ok) {
-        long image = 0, bright = 0;
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++) {
-                if (!mirror_image_at(&f, x, y)) continue;
-                image++;
-                bright += luma(&f.on, x, y) > luma(&f.on0, x, y) + INSIDE_BRIGHTER;
-            }
+        long bright, image = image_pixels(&f, brighter_than_without, INSIDE_BRIGHTER, &bright);
         printf("  the cube's mirror image: %ld pixels, %ld brighter than the water\n", image,
                bright);
         ENSURE_MSG(image >= INSIDE_IMAGE_MIN, "the cube's mirror image was not found: %ld pixels",
@@ -554,19 +548,14 @@ TEST_IMAGE(picture_water_no_inside_of_what_floats_in_the_refraction) {
         "render.refraction", "pw_refr_inside");
     if (f.ok) {
         static double cube[W * H];
-        long ncube = 0, image = 0, lit = 0;
+        long ncube = 0, lit;
         for (int y = 0; y < H; y++)
             for (int x = 0; x < W; x++)
                 if (max_diff(&f.off, &f.off0, x, y) > MASK_THRESH)
                     cube[ncube++] = luma(&f.off, x, y);
         qsort(cube, (size_t)ncube, sizeof cube[0], compare_double);
         double top = ncube > 0 ? cube[ncube - 1 - ncube / 10] : 0.0;
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++) {
-                if (!mirror_image_at(&f, x, y)) continue;
-                image++;
-                lit += luma(&f.on, x, y) > top - TOP_NEAR;
-            }
+        long image = image_pixels(&f, luma_over, top - TOP_NEAR, &lit);
         printf("  the cube: %ld pixels, its top's luma %.1f; its refracted image: %ld pixels, "
                "%ld as bright as the top\n", ncube, top, image, lit);
         ENSURE_MSG(ncube > 1000 && image >= INSIDE_IMAGE_MIN,
@@ -607,13 +596,7 @@ TEST_IMAGE(picture_water_no_hollow_of_the_boat_in_the_mirror) {
                                            "--set \"objects.boat.position=[0,0.25,-4000]\"",
                                            "pw_hollow");
     if (f.ok) {
-        long image = 0, red = 0;
-        for (int y = 0; y < H; y++)
-            for (int x = 0; x < W; x++) {
-                if (!mirror_image_at(&f, x, y)) continue;
-                image++;
-                red += px(&f.on, x, y)[0] > px(&f.on0, x, y)[0] + HOLLOW_REDDER;
-            }
+        long red, image = image_pixels(&f, redder_than_without, HOLLOW_REDDER, &red);
         printf("  the boat's mirror image: %ld pixels, %ld redder than the water by more than "
                "%d levels\n", image, red, HOLLOW_REDDER);
         ENSURE_MSG(image >= INSIDE_IMAGE_MIN, "the boat's mirror image was not found: %ld pixels",
@@ -830,7 +813,7 @@ static long pixels_apart(const img *a, const img *b) {
 
 TEST_IMAGE(picture_water_what_floats_seen_from_below_through_the_window) {
     REQUIRE_GL();
-    cube_frames cf = render_cube_frames(scene_file("pw_up", UP_SCENE), "pw_up");
+    mirror_frames cf = render_cube_frames(scene_file("pw_up", UP_SCENE), "pw_up");
     if (cf.ok) {
         long with = pixels_apart(&cf.on, &cf.on0), without = pixels_apart(&cf.off, &cf.off0);
         printf("  the cube's pixels from below: %ld with the prepass, %ld without\n", with,
@@ -839,7 +822,7 @@ TEST_IMAGE(picture_water_what_floats_seen_from_below_through_the_window) {
                    "its part above the water adds %ld px through the window (at least %d)",
                    with - without, ABOVE_SEEN_MIN);
     }
-    cube_frames_free(&cf);
+    mirror_frames_free(&cf);
 }
 
 /* the same cube from below, at the half-size prepass the frame is drawn with and at the quarter
