@@ -9,8 +9,11 @@
 #include <string.h>
 
 #include "check/golden.h"
+#include "core/mathx.h"
 #include "gfx/backend.h"
 #include "io/writers.h"
+#include "scene/scene.h"
+#include "sim/state.h"
 #include "test.h"
 
 /* On a renderer other than the one in golden/RENDERER, without goldens of its own (DIR/KEY/):
@@ -220,4 +223,16 @@ done:
     ww_image_free(&a);
     ww_image_free(&b);
     return rc;
+}
+
+void ww_test_project(const ww_scene *sc, const ww_state *st, const double p[3], double px[2]) {
+    const double *e = st->cam_pos, *f = st->cam_fwd, up[3] = {0.0, 1.0, 0.0};
+    double r[3], u[3], d[3];
+    ww_m_cross3(f, up, r);
+    ww_m_normalize3(r);
+    ww_m_cross3(r, f, u);
+    ww_m_sub3(p, e, d);
+    double z = ww_m_dot3(d, f), t = tan(0.5 * st->cam_fov[0]);
+    px[0] = 0.5 * (1.0 + ww_m_dot3(d, r) / (z * t * sc->width / sc->height)) * sc->width;
+    px[1] = 0.5 * (1.0 - ww_m_dot3(d, u) / (z * t)) * sc->height;
 }

@@ -174,6 +174,12 @@ const char *ww_test_build_dir(void);
 int ww_test_have_tool(const char *cmd);
 
 /* tests/golden.c: images */
+struct ww_scene;
+struct ww_state;
+/* world point p to pixel coordinates (x right, y down, pixel centres at +0.5) as the state's
+ * camera sees it in the scene's frame */
+void ww_test_project(const struct ww_scene *sc, const struct ww_state *st, const double p[3],
+                     double px[2]);
 /* the 8-bit pixel at (x, y) of an image read with ww_read_png (y from the top row) */
 const unsigned char *ww_test_pixel(const ww_image *im, int x, int y);
 /* an 8-bit PNG read back for measuring, with its size */

@@ -88,23 +88,6 @@ TEST(fish_species_absent_keeps_one_kind) {
 
 #define FEATURE "scenes/features/fish_species.yaml"
 
-static void cross(const double a[3], const double b[3], double o[3]) {
-    o[0] = a[1] * b[2] - a[2] * b[1], o[1] = a[2] * b[0] - a[0] * b[2], o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* world point p to pixel (x right, y down) for the state's camera */
-static void project(const ww_scene *sc, const ww_state *st, const double p[3], double px[2]) {
-    const double *e = st->cam_pos, *f = st->cam_fwd, up[3] = {0.0, 1.0, 0.0};
-    double r[3], u[3], d[3];
-    cross(f, up, r);
-    ww_m_normalize3(r);
-    cross(r, f, u);
-    ww_m_sub3(p, e, d);
-    double z = ww_m_dot3(d, f), t = tan(0.5 * st->cam_fov[0]);
-    double aspect = (double)sc->width / sc->height;
-    px[0] = 0.5 * (1.0 + ww_m_dot3(d, r) / (z * t * aspect)) * sc->width;
-    px[1] = 0.5 * (1.0 - ww_m_dot3(d, u) / (z * t)) * sc->height;
-}
 
 static double hue_of(const double c[3]) {
     double mx = fmax(c[0], fmax(c[1], c[2])), mn = fmin(c[0], fmin(c[1], c[2])), d = mx - mn;
@@ -149,10 +132,10 @@ TEST_IMAGE(fish_species_rendered_colour_shape_and_count) {
         for (int i = sp->first; i < sp->first + sp->count; i++) {
             /* the window: the fish's length around its centre, in pixels */
             double c[2], tip[3], ct[2];
-            project(sc, st, st->fish_pos + 3 * i, c);
+            ww_test_project(sc, st, st->fish_pos + 3 * i, c);
             for (int a = 0; a < 3; a++) tip[a] = st->fish_pos[3 * i + a];
             tip[1] += 0.6 * sp->length;
-            project(sc, st, tip, ct);
+            ww_test_project(sc, st, tip, ct);
             int half = (int)ceil(fabs(c[1] - ct[1]));
             int x0 = (int)c[0] - half, x1 = (int)c[0] + half, y0 = (int)c[1] - half,
                 y1 = (int)c[1] + half, n = 0, lo[2] = {1 << 20, 1 << 20}, hi[2] = {-1, -1};

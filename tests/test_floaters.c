@@ -232,26 +232,10 @@ static mask_stats ball_mask(const ww_image *im) {
     return m;
 }
 
-static void cross(const double a[3], const double b[3], double o[3]) {
-    o[0] = a[1] * b[2] - a[2] * b[1], o[1] = a[2] * b[0] - a[0] * b[2], o[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* world point p to pixel (x right, y down) for the state's camera */
-static void project(const ww_scene *sc, const ww_state *st, const double p[3], double px[2]) {
-    const double *e = st->cam_pos, *f = st->cam_fwd, up[3] = {0.0, 1.0, 0.0};
-    double r[3], u[3], d[3];
-    cross(f, up, r);
-    ww_m_normalize3(r);
-    cross(r, f, u);
-    ww_m_sub3(p, e, d);
-    double z = ww_m_dot3(d, f), t = tan(0.5 * st->cam_fov[0]);
-    px[0] = 0.5 * (1.0 + ww_m_dot3(d, r) / (z * t * sc->width / sc->height)) * sc->width;
-    px[1] = 0.5 * (1.0 - ww_m_dot3(d, u) / (z * t)) * sc->height;
-}
 
 static double row_of(const ww_scene *sc, const ww_state *st, const double p[3]) {
     double px[2];
-    project(sc, st, p, px);
+    ww_test_project(sc, st, p, px);
     return px[1];
 }
 
@@ -298,7 +282,7 @@ TEST_IMAGE(floaters_rendered_buoy_heaves_and_sits_on_the_waterline) {
         double pose[16], lamp[3], lp[2], luma;
         ww_floater_pose(sc, st, 0, pose);
         for (int a = 0; a < 3; a++) lamp[a] = pose[12 + a] + pose[4 + a] * LAMP_UP;
-        project(sc, st, lamp, lp);
+        ww_test_project(sc, st, lamp, lp);
         double off = brightest_near(&im, lp[0], lp[1], 6, &luma);
         fprintf(stderr, "frame %d: lamp %.2f px from its place (luma %.0f) at (%.1f, %.1f)\n",
                 frames[k], off, luma, lp[0], lp[1]);

@@ -35,5 +35,10 @@ static inline void ww_m_normalize3(double a[3]) {
 static inline void ww_m_sub3(const double a[3], const double b[3], double out[3]) {
     out[0] = a[0] - b[0]; out[1] = a[1] - b[1]; out[2] = a[2] - b[2];
 }
+static inline void ww_m_cross3(const double a[3], const double b[3], double out[3]) {
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
 
 #endif
