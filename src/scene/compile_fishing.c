@@ -22,6 +22,8 @@ static const rule R_OFFSET = CLOSED(-10, 10, "m");
 static const rule R_WINDOW = OPEN_LO(0, 1e4, "s");
 static const rule R_RADIUS = CLOSED(0, 1e3, "m");
 static const rule R_SMALL_HEIGHT = CLOSED(0, 10, "m");
+static const rule R_LINE_WIDTH = CLOSED(0, 0.05, "m");
+static const rule R_LINE_COLOR = CLOSED(0, 1, "");
 static const rule R_PLACE = FINITE("m");
 static const rule R_COUNT = WHOLE(1, WW_MAX_FISH, "");
 static const rule R_REGION = OPEN_LO(0, 1e5, "m");
@@ -50,7 +52,9 @@ void ww_rod_defaults(ww_rod_desc *r) {
                        .float_height = 0.02,
                        .float_drag = 5.0,
                        .hook_depth = 0.4,
-                       .splash = 0.03};
+                       .splash = 0.03,
+                       .line_width = 0.003,
+                       .line_color = {0.85, 0.85, 0.8}};
 }
 
 void ww_fish_defaults(ww_fish_desc *f) {
@@ -83,7 +87,7 @@ static ww_result compile_rod(ctx *c, const section *objects) {
     static const char *const keys[] = {"angle",  "speed",       "gravity", "drag",
                                        "offset", "window",      "bite_radius", "attract",
                                        "float_height", "float_drag", "hook_depth", "splash",
-                                       NULL};
+                                       "line_width", "line_color", NULL};
     ww_rod_desc *r = &c->sc->rod;
     section s;
     TRY(wwc_open_section(c, objects, "rod", keys, &s));
@@ -105,6 +109,8 @@ static ww_result compile_rod(ctx *c, const section *objects) {
     TRY(wwc_get_number(c, &s, "float_drag", &R_RATE, OPTIONAL, &r->float_drag));
     TRY(wwc_get_number(c, &s, "hook_depth", &R_SMALL_HEIGHT, OPTIONAL, &r->hook_depth));
     TRY(wwc_get_number(c, &s, "splash", &R_SMALL_HEIGHT, OPTIONAL, &r->splash));
+    TRY(wwc_get_number(c, &s, "line_width", &R_LINE_WIDTH, OPTIONAL, &r->line_width));
+    TRY(wwc_get_vec(c, &s, "line_color", 3, &R_LINE_COLOR, OPTIONAL, r->line_color));
     return WW_OK;
 }
 

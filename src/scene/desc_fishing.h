@@ -28,6 +28,8 @@ typedef struct ww_rod_desc {
     double float_drag;   /* rate at which a floating lure takes the water's velocity, 1/s */
     double hook_depth;   /* the hook hangs this far under the lure, m */
     double splash;       /* amplitude of the ripple where the lure lands, m */
+    double line_width;   /* the line as drawn, m (0: none; gfx/line.h) */
+    double line_color[3]; /* its albedo, linear RGB */
 } ww_rod_desc;
 
 typedef enum ww_fish_mode { WW_FISH_WANDER = 0, WW_FISH_TARGETS } ww_fish_mode;

@@ -18,6 +18,9 @@
     X(double, rod_active_left, WW_N_ROD(sc), "rod", "seconds left in the floating lure's window (1)") \
     X(int32_t, rod_fish, WW_N_ROD(sc), "rod", "fish that bit this cast, -1 none (at most one) (1)") \
     X(int32_t, rod_casts, WW_N_ROD(sc), "rod", "casts so far (1)")                                  \
+    X(int32_t, rod_held, WW_N_ROD(sc), "rod", "1: cast from the camera, which holds the rod (1)")   \
+    X(double, rod_tip, 3 * WW_N_ROD(sc), "rod", "the rod's tip at the cast, where the line leaves, m (3)") \
+    X(double, rod_dir, 3 * WW_N_ROD(sc), "rod", "the cast's level heading, unit (3)")              \
     X(double, fish_vel, 3 * WW_N_FISH(sc), "fish", "fish velocities, m/s (3 per fish)")             \
     X(double, fish_yaw, WW_N_FISH(sc), "fish", "heading, rad, 0 = +x, pi/2 = +z (1 per fish)")      \
     X(double, fish_yaw_rate, WW_N_FISH(sc), "fish", "yaw rate of the last step, rad/s (1 per fish)") \

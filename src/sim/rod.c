@@ -47,7 +47,10 @@ void ww_rod_reset(const ww_scene *sc, ww_state *st) {
     st->lure_state[0] = WW_LURE_IDLE;
     st->rod_fish[0] = -1.0;
     st->rod_casts[0] = 0.0;
+    st->rod_held[0] = 0.0;
     for (int i = 0; i < 3; i++) {
+        st->rod_tip[i] = st->cam_pos[i];
+        st->rod_dir[i] = i == 0 ? 1.0 : 0.0;
         st->lure_pos[i] = st->cam_pos[i];
         st->lure_vel[i] = 0.0;
     }
@@ -59,6 +62,20 @@ void ww_rod_reel(const ww_scene *sc, ww_state *st) {
     st->lure_state[0] = WW_LURE_IDLE;
     st->rod_active_left[0] = 0.0;
     for (int i = 0; i < 3; i++) st->lure_vel[i] = 0.0;
+}
+
+void ww_rod_held_tip(const ww_scene *sc, const ww_state *st, double tip[3], double f[3]) {
+    const ww_rod_desc *rod = &sc->rod;
+    f[0] = 1.0, f[1] = 0.0, f[2] = 0.0;
+    double h = hypot(st->cam_fwd[0], st->cam_fwd[2]);
+    if (h > 1e-9) {
+        f[0] = st->cam_fwd[0] / h;
+        f[2] = st->cam_fwd[2] / h;
+    }
+    double right[3] = {-f[2], 0.0, f[0]};
+    for (int i = 0; i < 3; i++)
+        tip[i] = st->cam_pos[i] + rod->offset[0] * f[i] + rod->offset[1] * right[i];
+    tip[1] += rod->offset[2];
 }
 
 void ww_rod_event(const ww_scene *sc, ww_state *st, const ww_event *ev) {
@@ -73,15 +90,7 @@ void ww_rod_event(const ww_scene *sc, ww_state *st, const ww_event *ev) {
         f[2] = sin(ev->v[6]);
         for (int i = 0; i < 3; i++) start[i] = ev->v[3 + i];
     } else {
-        double h = hypot(st->cam_fwd[0], st->cam_fwd[2]);
-        if (h > 1e-9) {
-            f[0] = st->cam_fwd[0] / h;
-            f[2] = st->cam_fwd[2] / h;
-        }
-        double right[3] = {-f[2], 0.0, f[0]};
-        for (int i = 0; i < 3; i++)
-            start[i] = st->cam_pos[i] + rod->offset[0] * f[i] + rod->offset[1] * right[i];
-        start[1] += rod->offset[2];
+        ww_rod_held_tip(sc, st, start, f);
     }
 
     /* a new cast reels the old line in first (a hooked fish gets away, sim/fish.c) */
@@ -96,6 +105,10 @@ void ww_rod_event(const ww_scene *sc, ww_state *st, const ww_event *ev) {
     st->rod_active_left[0] = rod->window;
     st->rod_fish[0] = -1.0;
     st->rod_casts[0] += 1.0;
+    /* where the line leaves and which way the rod points: a place given, or the rod the camera
+     * holds (the renderer keeps its tip at the camera's offset as the camera moves) */
+    st->rod_held[0] = ev->flags & WW_CAST_FROM ? 0.0 : 1.0;
+    for (int i = 0; i < 3; i++) st->rod_tip[i] = start[i], st->rod_dir[i] = f[i];
     ww_emit(sc, st, WW_SE_ROD_CAST, 0, start, speed, 0.0);
 }
 

@@ -46,6 +46,9 @@ void ww_rod_event(const ww_scene *sc, ww_state *st, const ww_event *ev);
 /* reel the line in: a `reel` event, the lure idle (the fish after a catch) */
 void ww_rod_reel(const ww_scene *sc, ww_state *st);
 
+/* pure: the tip of the rod the camera holds, rod.offset (forward, right, up) from the camera,
+ * where a cast without `from` starts; f: the camera's forward direction made level (unit) */
+void ww_rod_held_tip(const ww_scene *sc, const ww_state *st, double tip[3], double f[3]);
 /* pure: the cast's elevation (rad) and speed (m/s) for a charge in [0, 1] */
 void ww_rod_charge_map(const ww_rod_desc *rod, double charge, double *angle, double *speed);
 /* pure: the exact flight from (p0, v0) after s seconds under gravity g (3) and drag k */
