@@ -13,7 +13,8 @@
 // Modes (WW_GEOM_MODE, one build of the program each: llvmpipe runs both arms of a branch for
 // every pixel, so a mode switched by a uniform made the lit seabed pay for the others' code):
 // 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive), 3 an air bubble
-// (blended, premultiplied).
+// (blended, premultiplied), 4 the fishing line or its rod (gfx/line.h: a ribbon facing the
+// camera standing for a thin cylinder, lit as mode 1, blended by its coverage, premultiplied).
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture;
@@ -344,6 +345,13 @@ void main() {
     }
 #else
 
+#if WW_GEOM_MODE == 4
+    // a strand of the line or the rod: v_normal is the unit vector across the ribbon and v_uv.x
+    // the place across it (-1 .. 1), so the normal turns across the ribbon as a cylinder's
+    // does from one side to the other, through the one facing the eye
+    float across = clamp(v_uv.x, -1.0, 1.0);
+    vec3 n = normalize(normalize(v_normal) * across + v * sqrt(max(1.0 - across * across, 0.0)));
+#else
     vec3 n = normalize(v_normal);
     if (dot(n, v) < 0.0 && !gl_FrontFacing) n = -n; // open meshes seen from behind
     // the reflection's cut opens what floats, and the mirror camera below it sees inside
@@ -359,6 +367,7 @@ void main() {
     // specks in the image along the waterline
     if (u_inside != 0 && (gl_FrontFacing == u_mirrored || v_hollow > 0.5))
         n = u_mirrored ? vec3(0.0, -1.0, 0.0) : normalize(vec3(v.x, 1e-4, v.z));
+#endif
     vec3 albedo = v_color.rgb * u_mat_kd.rgb;
 #if WW_MAT_MAP
     albedo *= texture(u_mat_map, v_uv).rgb;
@@ -425,7 +434,17 @@ void main() {
     c += albedo * v_color.a + u_mat_ke.rgb; // emission: the instance's factor, the material's Ke
     c = ww_fog_segment(c, p) + ww_lights_scatter_segment(ww_eye(), p, v_water_y, u_mirrored,
                                                          u_fog_below_density, gl_FragCoord.xy);
+#if WW_GEOM_MODE == 4
+    // coverage (after Persson's phone-wire AA, SIGGRAPH 2012): the ribbon is at least 2 pixels
+    // wide and v_uv.y is the strand's true width in pixels. Wider than 2, a solid core with a
+    // pixel's ramp at each edge; thinner, a tent across the 2 pixels whose sum is that width, so
+    // a line far thinner than a pixel fades with distance instead of breaking into dashes
+    float w = v_uv.y;
+    float cover = min(1.0, (1.0 - abs(across)) * max(0.5 * w, 1.0)) * min(w, 1.0);
+    o_color = vec4(c * cover, cover);
+#else
     o_color = vec4(c, u_mat_ke.a);
+#endif
 #endif
 #endif
 }

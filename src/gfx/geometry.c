@@ -15,6 +15,7 @@
 
 #include "core/mathx.h"
 #include "gfx/caustic_set.h"
+#include "gfx/line.h"
 #include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
 #include "sim/floaters.h"
@@ -36,7 +37,6 @@
 #define FISH_WIGGLE_PER_SPEED 2.5 /* more beats per second per m/s of speed */
 #define FISH_MAX_PITCH 0.6        /* rad: how far a fish noses up or down */
 #define FISH_SPECIES_VARY 0.2     /* a species' fish differ by up to +-10% in size and shade */
-#define LURE_SIZE 0.09            /* m, the bobber's height */
 #define GLOW_RADIUS 0.7           /* m, the chest's glow column */
 #define GLOW_ABOVE 1.5            /* m: the column rises this far above the water's rest level */
 #define GLOW_FADE_IN 1.0          /* s: the column grows brighter over this after a spawn */
@@ -147,6 +147,7 @@ enum {
     GEOM_LIT,
     GEOM_GLOW,
     GEOM_BUBBLE,
+    GEOM_LINE,
     GEOM_LIT_MAP,
     GEOM_LIT_FISH,
     GEOM_SUNLESS, /* the three lit builds without the sun, in the same order */
@@ -156,7 +157,8 @@ enum {
 };
 static const int GEOM_MODE[GEOM_PROGS] = {
     [GEOM_DEPTH] = 0,   [GEOM_LIT] = 1,         [GEOM_GLOW] = 2,
-    [GEOM_BUBBLE] = 3,  [GEOM_LIT_MAP] = 1,     [GEOM_LIT_FISH] = 1,
+    [GEOM_BUBBLE] = 3,  [GEOM_LINE] = 4,        [GEOM_LIT_MAP] = 1,
+    [GEOM_LIT_FISH] = 1,
     [GEOM_SUNLESS] = 1, [GEOM_SUNLESS_MAP] = 1, [GEOM_SUNLESS_FISH] = 1};
 
 typedef struct geom_prog {
@@ -194,6 +196,9 @@ struct ww_geometry {
     GLuint *image_tex; /* the scene's images a material draws (map_Kd), by asset index; 0 none */
     int nimage;
     struct bubble_order *bubble_order; /* scratch: this frame's bubbles, farthest first */
+    gmesh strand[2];   /* the fishing line and its rod (gfx/line.h), built each frame */
+    float *strand_vert; /* scratch: a strand's vertices ... */
+    uint32_t *strand_index; /* ... and triangles */
     instance *scratch; /* the largest slot's instances, filled per frame */
     int scratch_cap;
     int draws;         /* instanced draws of the last ww_geometry_draw (tests) */
@@ -414,6 +419,33 @@ static void mesh_share_instances(const ww_gl *gl, gmesh *m, const gmesh *src) {
     gl->BindVertexArray(0);
 }
 
+/* a strand's mesh (gfx/line.h): room for nvert vertices and nindex indices, rewritten each
+ * frame, and its one instance (its colour; the vertices are camera-relative already) */
+static void strand_new(const ww_gl *gl, gmesh *m, int nvert, int nindex) {
+    gl->GenVertexArrays(1, &m->vao);
+    gl->BindVertexArray(m->vao);
+    gl->GenBuffers(1, &m->vbo);
+    gl->BindBuffer(GL_ARRAY_BUFFER, m->vbo);
+    gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)nvert * 8 * sizeof(float), NULL, GL_DYNAMIC_DRAW);
+    GLsizei stride = 8 * sizeof(float);
+    gl->EnableVertexAttribArray(0);
+    gl->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (void *)0);
+    gl->EnableVertexAttribArray(1);
+    gl->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (void *)(3 * sizeof(float)));
+    gl->EnableVertexAttribArray(2);
+    gl->VertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, (void *)(6 * sizeof(float)));
+    gl->GenBuffers(1, &m->ibo);
+    gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
+    gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)nindex * sizeof(GLuint), NULL,
+                   GL_DYNAMIC_DRAW);
+    gl->GenBuffers(1, &m->inst);
+    gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
+    gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)sizeof(instance), NULL, GL_DYNAMIC_DRAW);
+    instance_attribs(gl);
+    m->cap = 1;
+    gl->BindVertexArray(0);
+}
+
 static void mesh_free(const ww_gl *gl, gmesh *m) {
     free(m->copy);
     if (m->vao) gl->DeleteVertexArrays(1, &m->vao);
@@ -492,6 +524,9 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
         ww_meshgen_free(&g->caster_mesh[s]);
     }
     mesh_free(gl, &g->hull_cap);
+    for (int i = 0; i < 2; i++) mesh_free(gl, &g->strand[i]);
+    free(g->strand_vert);
+    free(g->strand_index);
     for (int i = 0; i < g->nobj; i++) mesh_free(gl, &g->obj[i]);
     for (int i = 0; i < g->nimage; i++)
         if (g->image_tex[i]) gl->DeleteTextures(1, &g->image_tex[i]);
@@ -861,6 +896,15 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     /* the glow column's and the bubbles' own programs, in the scenes that draw them */
     if (rc == WW_OK && g->slot[SLOT_COLUMN].cap > 0) rc = make_program(g, gl, sc, GEOM_GLOW, err);
     if (rc == WW_OK && g->slot[SLOT_BUBBLE].cap > 0) rc = make_program(g, gl, sc, GEOM_BUBBLE, err);
+    if (rc == WW_OK && sc->rod.on && sc->rod.line_width > 0.0) {
+        strand_new(gl, &g->strand[WW_STRAND_LINE], WW_LINE_MAX_VERTS, WW_LINE_MAX_INDEX);
+        strand_new(gl, &g->strand[WW_STRAND_ROD], WW_ROD_MAX_VERTS, WW_ROD_MAX_INDEX);
+        g->strand_vert = malloc((size_t)WW_LINE_MAX_VERTS * 8 * sizeof *g->strand_vert);
+        g->strand_index = malloc((size_t)WW_LINE_MAX_INDEX * sizeof *g->strand_index);
+        if (!g->strand_vert || !g->strand_index)
+            rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
+        if (rc == WW_OK) rc = make_program(g, gl, sc, GEOM_LINE, err);
+    }
     if (rc == WW_OK && g->nimage > 0) rc = make_program(g, gl, sc, GEOM_LIT_MAP, err);
     if (rc == WW_OK && sc->fish.on && sc->fish.nspecies > 0)
         rc = make_program(g, gl, sc, GEOM_LIT_FISH, err);
@@ -1060,6 +1104,37 @@ static void frame_lights(ww_geometry *g, const ww_scene *sc, const ww_state *st,
     }
 }
 
+/* this frame's line and rod, facing the camera (gfx/line.h), with their colours */
+#define ROD_ALBEDO 0.05 /* a dark carbon rod ... */
+#define ROD_SPEC 0.8    /* ... with a bright highlight along it */
+static void upload_strands(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
+    const ww_scene *sc = f->sc;
+    ww_line_eye eye = {.pixel_angle = f->pixel_angle, .near = sc->near_clip};
+    for (int k = 0; k < 3; k++) eye.pos[k] = f->cam_pos[k], eye.fwd[k] = f->fwd[k];
+    for (int which = 0; which < 2; which++) {
+        gmesh *m = &g->strand[which];
+        int nvert, nindex = ww_line_build(sc, f->st, &eye, (ww_strand)which, g->strand_vert,
+                                          g->strand_index, &nvert);
+        m->nindex = nindex;
+        m->ninst = nindex > 0;
+        if (nindex == 0) continue;
+        instance in = {.model = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
+        int rod = which == WW_STRAND_ROD;
+        for (int c = 0; c < 3; c++)
+            in.color[c] = (float)(rod ? ROD_ALBEDO : sc->rod.line_color[c]);
+        in.extra[2] = (float)(rod ? ROD_SPEC : SPEC_WET);
+        gl->BindBuffer(GL_ARRAY_BUFFER, m->vbo);
+        gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)nvert * 8 * sizeof(float),
+                          g->strand_vert);
+        gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
+        gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)sizeof in, &in);
+        gl->BindVertexArray(m->vao);
+        gl->BufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, (GLsizeiptr)nindex * sizeof(GLuint),
+                          g->strand_index);
+        gl->BindVertexArray(0);
+    }
+}
+
 /* this frame's instances (once per frame, whichever pass draws first) */
 static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
@@ -1148,7 +1223,8 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
     if (g->slot[SLOT_LURE].cap) {
         int n = 0;
         if (sc->rod.on && st->lure_state[0] != 0.0) {
-            double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, m[16], s[3] = {LURE_SIZE, LURE_SIZE, LURE_SIZE};
+            double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, m[16];
+            double s[3] = {WW_LURE_SIZE, WW_LURE_SIZE, WW_LURE_SIZE};
             static const double red[3] = {0.85, 0.12, 0.08};
             m4_trs(m, st->lure_pos, I, s);
             put(&in[n++], m, cam, red, 0.15, SPEC_WET);
@@ -1223,6 +1299,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         if (g->sway) obj_sway(g, sc, st, i, m);
     }
     (void)one;
+    if (g->strand[WW_STRAND_LINE].vao) upload_strands(g, gl, f);
     frame_lights(g, sc, st, cam);
 
     if (g->caustics == 2) {
@@ -1345,6 +1422,8 @@ int ww_geometry_draw_count(const ww_geometry *g) { return g ? g->draws : 0; }
 int ww_geometry_has_hulls(const ww_geometry *g) { return g && g->hull_cap.cap > 0; }
 
 int ww_geometry_has_bubbles(const ww_geometry *g) { return g && g->slot[SLOT_BUBBLE].cap > 0; }
+
+int ww_geometry_has_line(const ww_geometry *g) { return g && g->strand[0].vao != 0; }
 
 /* the uniforms every draw of a frame shares, into program v (in use) */
 static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, const ww_frame *f,
@@ -1521,6 +1600,16 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied: rim light, then cover */
         gl->DepthMask(GL_FALSE);
         draws += draw_mesh(gl, &g->slot[SLOT_BUBBLE]);
+        gl->Disable(GL_BLEND);
+    }
+    if ((parts & WW_GEOM_PART_LINE) && mode == WW_GEOM_MAIN && g->strand[0].vao) {
+        /* the line and the rod over everything, tested against depth, never written: each
+         * pixel they cross takes their coverage of it (premultiplied) */
+        use(g, gl, GEOM_LINE);
+        gl->Enable(GL_BLEND);
+        gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        gl->DepthMask(GL_FALSE);
+        for (int k = 0; k < 2; k++) draws += draw_mesh(gl, &g->strand[k]);
         gl->Disable(GL_BLEND);
     }
 

@@ -46,11 +46,14 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     return WW_OK;
 }
 
-/* the air bubbles last, blended over all that lies behind them (the water, the sky) */
-static void draw_bubbles(ww_renderer *r, const ww_frame *f) {
-    if (ww_geometry_has_bubbles(r->geometry))
+/* the air bubbles and the fishing line last, blended over all that lies behind them (the water,
+ * the sky) */
+static void draw_blended(ww_renderer *r, const ww_frame *f) {
+    unsigned parts = (ww_geometry_has_bubbles(r->geometry) ? WW_GEOM_PART_BUBBLES : 0u) |
+                     (ww_geometry_has_line(r->geometry) ? WW_GEOM_PART_LINE : 0u);
+    if (parts)
         ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
-                               WW_GEOM_PART_BUBBLES);
+                               parts);
 }
 
 static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_error *err) {
@@ -71,7 +74,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         if ((rc = ww_sky_draw(p->sky, gl, r->empty_vao, f, err))) return rc;
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
         if ((rc = ww_water_draw(p->water, r, f, err))) return rc;
-        draw_bubbles(r, f);
+        draw_blended(r, f);
     } else if (!ww_geometry_has_hulls(r->geometry)) {
         /* the opaque water first: what lies beyond it (the seabed, everything under the surface,
          * which the water shows through the prepass) then fails the depth test before it is
@@ -83,7 +86,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         if ((rc = ww_sky_draw(p->sky, gl, r->empty_vao, f, err))) return rc;
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
-        draw_bubbles(r, f);
+        draw_blended(r, f);
     } else {
         /* with boats: the objects, then the lids over the boats' insides into depth (the insides
          * keep their colour, the water under a lid fails the depth test), then the opaque water,
@@ -100,7 +103,7 @@ static ww_result main_run(void *self, ww_renderer *r, const ww_frame *f, ww_erro
         if ((rc = ww_sky_draw(p->sky, gl, r->empty_vao, f, err))) return rc;
         /* additive light last: the sky would overwrite it where nothing opaque lies behind */
         if (r->geometry) ww_geometry_draw_glow(r->geometry, r, WW_GEOM_MAIN);
-        draw_bubbles(r, f);
+        draw_blended(r, f);
     }
     /* volumes_visible: the volumes themselves, over everything opaque */
     ww_stencil_shadows_draw_visible(r->stencil, r, f, (vec4 *)f->view_proj, NULL);
