@@ -1603,13 +1603,15 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
         gl->Disable(GL_BLEND);
     }
     if ((parts & WW_GEOM_PART_LINE) && mode == WW_GEOM_MAIN && g->strand[0].vao) {
-        /* the line and the rod over everything, tested against depth, never written: each
-         * pixel they cross takes their coverage of it (premultiplied) */
+        /* the rod and the line over everything, tested against depth, never written: each
+         * pixel they cross takes their coverage of it (premultiplied). The line last: it lies
+         * on the rod's top */
         use(g, gl, GEOM_LINE);
         gl->Enable(GL_BLEND);
         gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
         gl->DepthMask(GL_FALSE);
-        for (int k = 0; k < 2; k++) draws += draw_mesh(gl, &g->strand[k]);
+        draws += draw_mesh(gl, &g->strand[WW_STRAND_ROD]);
+        draws += draw_mesh(gl, &g->strand[WW_STRAND_LINE]);
         gl->Disable(GL_BLEND);
     }
 

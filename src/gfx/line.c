@@ -20,6 +20,8 @@
 #define ROD_PITCH 35.0 /* deg */
 #define ROD_BUTT_WIDTH 0.02
 #define ROD_TIP_WIDTH 0.006
+#define REEL_AT 0.2        /* the reel's place along the rod from the butt: the line leaves it */
+#define GUIDE_HEIGHT 0.006 /* m: the guides hold the line this far over the rod's top */
 
 int ww_line_tip(const ww_scene *sc, const ww_state *st, double tip[3]) {
     if (!sc->rod.on || (int)st->lure_state[0] == WW_LURE_IDLE) return 0;
@@ -118,6 +120,26 @@ int ww_line_build(const ww_scene *sc, const ww_state *st, const ww_line_eye *eye
         for (int i = 0; i < n; i++) w[i] = sc->rod.line_width;
         int m = ribbon(eye, (const double(*)[3])p, w, n, vert, 0, index);
         *nvert = 2 * n;
+        /* from the reel up the rod's top to the tip, lying on the guides */
+        double r[WW_ROD_SEGMENTS + 1][3], rw[WW_ROD_SEGMENTS + 1];
+        int nr = ww_line_rod_points(sc, st, r, rw);
+        if (nr > 0) {
+            double up[3], axis[3];
+            ww_m_sub3(r[nr - 1], r[0], axis);
+            ww_m_normalize3(axis);
+            /* the rod's top: the vertical less its part along the rod */
+            for (int k = 0; k < 3; k++) up[k] = (k == 1) - axis[1] * axis[k];
+            ww_m_normalize3(up);
+            int first = (int)(REEL_AT * (nr - 1));
+            double q[WW_ROD_SEGMENTS + 1][3];
+            for (int i = first; i < nr; i++)
+                for (int k = 0; k < 3; k++)
+                    q[i - first][k] = r[i][k] + (0.5 * rw[i] + GUIDE_HEIGHT) * up[k];
+            for (int k = 0; k < 3; k++) q[nr - 1 - first][k] = r[nr - 1][k]; /* through the tip */
+            m += ribbon(eye, (const double(*)[3])q, w, nr - first, vert + 8 * *nvert, *nvert,
+                        index + m);
+            *nvert += 2 * (nr - first);
+        }
         /* the leader, from a lure on the water down to the hook (a hooked fish's mouth) */
         int state = (int)st->lure_state[0];
         if (state == WW_LURE_FLOATING || state == WW_LURE_HOOKED) {

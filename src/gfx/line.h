@@ -9,7 +9,8 @@
  * where it then lies) from a floating lure, straight when a fish pulls on it; no point of it goes
  * under the surface but the leader, which hangs from a lure on the water down to the hook. The
  * rod is drawn up to that tip, tapering, rising along the cast's heading (the camera's, for the
- * rod it holds).
+ * rod it holds), and the line runs up along its top from the reel, through the guides, to the
+ * tip.
  *
  * A line is far thinner than a pixel (3 mm is a fifth of a pixel at 10 m in a 1280x720
  * frame): drawn at its width it would break into dashes where it falls between pixel centres.
@@ -32,11 +33,12 @@
 
 #define WW_LURE_SIZE 0.09 /* m: the bobber's height, its mesh's unit box scaled (geometry.c) */
 
-/* the ribbons' capacity: the line's segments (and the leader's one), the rod's */
+/* the ribbons' capacity: the line's segments, the leader's one and the line's along the rod (one a
+ * segment of the rod), the rod's */
 #define WW_LINE_SEGMENTS 48
 #define WW_ROD_SEGMENTS 12
-#define WW_LINE_MAX_VERTS (2 * (WW_LINE_SEGMENTS + 1) + 4)
-#define WW_LINE_MAX_INDEX (6 * (WW_LINE_SEGMENTS + 1))
+#define WW_LINE_MAX_VERTS (2 * (WW_LINE_SEGMENTS + 1) + 4 + 2 * (WW_ROD_SEGMENTS + 1))
+#define WW_LINE_MAX_INDEX (6 * (WW_LINE_SEGMENTS + 1 + WW_ROD_SEGMENTS))
 #define WW_ROD_MAX_VERTS (2 * (WW_ROD_SEGMENTS + 1))
 #define WW_ROD_MAX_INDEX (6 * WW_ROD_SEGMENTS)
 
