@@ -30,8 +30,10 @@
 /* a fish's height against its bounds (the clamp is exact) and its speed against max_speed */
 #define FISH_BOUND_TOL 1e-9
 #define FISH_SPEED_TOL 1e-12
-/* a fighting fish's mouth against the lure, XZ: one rounding of the anchor */
+/* a fighting fish's mouth against the lure: one rounding of the anchor */
 #define FISH_MOUTH_TOL 1e-12
+/* a fight of a second or more reaches this share of the tug's depth at 60 steps a second */
+#define TUG_REACHED 0.95
 /* the yaw rate against turn_rate: one rounding of the clamp, rad/s */
 #define FISH_TURN_RATE_TOL 1e-9
 
@@ -324,6 +326,8 @@ typedef struct fishing_log {
     double t_land[2], t_bite[2], t_catch[2];
     int most_fighting;
     double max_fight_step; /* the longest step of a fighting fish over WW_FISH_DASH dt */
+    double dip[2];         /* the least and the most the float was under its floating height
+                            * while a fish fought, m */
 } fishing_log;
 
 static void run_pond(int count, double radius, double until, fishing_log *log) {
@@ -335,6 +339,8 @@ static void run_pond(int count, double radius, double until, fishing_log *log) {
     ww_state *st = ww_state_new(sc);
     double prev[3 * 64];
     ENSURE(count <= 64);
+    log->dip[0] = INFINITY;
+    log->dip[1] = -INFINITY;
     while (st->t < until && count <= 64) {
         memcpy(prev, st->fish_pos, sizeof(double) * 3 * (size_t)count);
         if (!step_ok(sc, st)) break;
@@ -373,8 +379,16 @@ static void run_pond(int count, double radius, double until, fishing_log *log) {
             double half = 0.5 * sc->fish.length, yaw = st->fish_yaw[i];
             ENSURE_NEAR(p[0] + half * cos(yaw), st->lure_pos[0], FISH_MOUTH_TOL);
             ENSURE_NEAR(p[2] + half * sin(yaw), st->lure_pos[2], FISH_MOUTH_TOL);
+            /* the hook hangs under the float, tugged under with it */
+            ENSURE_NEAR(p[1], st->lure_pos[1] - sc->rod.hook_depth, FISH_MOUTH_TOL);
         }
         if (fighting > log->most_fighting) log->most_fighting = fighting;
+        if ((int)st->lure_state[0] == WW_LURE_HOOKED) {
+            const double *l = st->lure_pos;
+            double dip = surface(sc, st, l[0], l[2]) + sc->rod.float_height - l[1];
+            log->dip[0] = fmin(log->dip[0], dip);
+            log->dip[1] = fmax(log->dip[1], dip);
+        }
         ENSURE((int)st->fish_caught[0] == log->catches);
     }
     ww_state_free(st);
@@ -400,9 +414,16 @@ TEST(fishing_cast_near_fish_bites_then_catches_within_the_window) {
      * there in one step) */
     ENSURE_MSG(log.max_fight_step <= 1.0 + 1e-9, "a hooked fish jumped %.3f times its dash in "
                "one step", log.max_fight_step);
+    /* the fish tugs the float under by up to WW_FISH_TUG_DEPTH, and never lifts it */
+    ENSURE_MSG(log.dip[0] >= -LURE_FLOAT_TOL, "the float rose %.3g m over its height", -log.dip[0]);
+    ENSURE_MSG(log.dip[1] <= WW_FISH_TUG_DEPTH + LURE_FLOAT_TOL &&
+                   log.dip[1] >= TUG_REACHED * WW_FISH_TUG_DEPTH,
+               "the float went %.4f m under (tugs %.2f m deep)", log.dip[1], WW_FISH_TUG_DEPTH);
     printf("  bites %.3f s and %.3f s after landing, fights %.3f s and %.3f s; longest step on the "
-           "line %.3f of the dash's\n", log.t_bite[0] - log.t_land[0], log.t_bite[1] - log.t_land[1],
-           log.t_catch[0] - log.t_bite[0], log.t_catch[1] - log.t_bite[1], log.max_fight_step);
+           "line %.3f of the dash's; the float tugged %.4f to %.4f m under\n",
+           log.t_bite[0] - log.t_land[0], log.t_bite[1] - log.t_land[1],
+           log.t_catch[0] - log.t_bite[0], log.t_catch[1] - log.t_bite[1], log.max_fight_step,
+           log.dip[0], log.dip[1]);
 }
 
 TEST(fishing_at_most_one_fish_per_cast) {

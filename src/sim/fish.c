@@ -647,10 +647,13 @@ static void bite(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
     anchor(sc, st, ks, i, 0.0);
 }
 
-/* fighting on the line; caught when the fight's time is up */
+/* fighting on the line, the float tugged under (the rod's step floated it on the surface) and the
+ * hook with it; caught when the fight's time is up */
 static void fight(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i) {
     const ww_fish_desc *f = &sc->fish;
     double tau = st->fish_timer[i] += sc->dt;
+    double s = sine(WW_TAU * WW_FISH_TUG_HZ * tau);
+    st->lure_pos[1] -= s > 0.0 ? WW_FISH_TUG_DEPTH * s * s : 0.0;
     anchor(sc, st, ks, i, tau);
     if (tau < st->fish_fight[i]) return;
 

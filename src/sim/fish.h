@@ -43,7 +43,10 @@
  * fish has bitten this cast bites (lowest index first): `bite`, the lure is hooked. Fighting (seed
  * 000): the mouth (length / 2 ahead of the centre) goes to the hook, rod.hook_depth under the
  * lure, at WW_FISH_DASH from where the fish bit (it may bite from metres below), and stays there;
- * the heading is the bite's direction plus wiggle[0] sin(2 pi wiggle[1] tau).
+ * the heading is the bite's direction plus wiggle[0] sin(2 pi wiggle[1] tau). It tugs the float
+ * under in bursts: the lure (which the rod's step floats on the surface) goes down by
+ * WW_FISH_TUG_DEPTH sin^2(2 pi WW_FISH_TUG_HZ tau) on the half-periods where that sine is positive,
+ * and the hook with it.
  * After a duration drawn in fight[lo, hi] the fish is caught: fish_caught + 1, `catch`, the rod
  * reels in, and the fish is away for `respawn` seconds, then reappears at a random place. If the
  * line is reeled in first (a new cast) the fish escapes (`fish_escape`).
@@ -62,6 +65,8 @@ enum { WW_FISH_SWIMMING = 0, WW_FISH_FIGHTING, WW_FISH_AWAY };
 #define WW_FISH_MAX_ACCEL 15.0  /* m/s^2: the largest change of a swimming fish's velocity per
                                  * second from steering (the depth clamp may remove more) */
 #define WW_FISH_DASH 3.0        /* m/s: a hooked fish's dash to the hook (a trout's burst) */
+#define WW_FISH_TUG_DEPTH 0.05  /* m: how far a fighting fish pulls the float under */
+#define WW_FISH_TUG_HZ 1.3      /* its tugs a second */
 
 void ww_fish_reset(const ww_scene *sc, ww_state *st);
 void ww_fish_step(const ww_scene *sc, ww_state *st);
