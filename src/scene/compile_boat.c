@@ -10,6 +10,7 @@
 static const rule R_POSITION = FINITE("m");
 static const rule R_SIZE = OPEN_LO(0, 1e3, "m");
 static const rule R_MASS = OPEN_LO(0, 1e7, "kg");
+static const rule R_WAKE = CLOSED(0, 4, "");
 static const rule R_ACCELERATION = CLOSED(0, 1e3, "m/s^2");
 static const rule R_DRAG = CLOSED(0, 1e3, "1/s");
 static const rule R_SPEED = CLOSED(0, 1e3, "m/s");
@@ -29,7 +30,7 @@ ww_result wwc_boat(ctx *c, const section *objects) {
     static const char *const keys[] = {
         "position",  "heading",       "radius",    "mass",   "length", "beam", "acceleration",
         "drag",      "max_speed",     "reverse_speed", "turn_rate", "slip", "ride_height",
-        "bob_time",  "seat",          "look_time", "look_pitch",  NULL};
+        "bob_time",  "seat",          "look_time", "look_pitch",  "wake", NULL};
     ww_boat_desc *b = &c->sc->boat;
     section s;
     TRY(wwc_open_section(c, objects, "boat", keys, &s));
@@ -53,6 +54,7 @@ ww_result wwc_boat(ctx *c, const section *objects) {
     TRY(wwc_get_vec(c, &s, "seat", 3, &R_SEAT, OPTIONAL, b->seat));
     TRY(wwc_get_number(c, &s, "look_time", &R_TIME_CONSTANT, OPTIONAL, &b->look_time));
     TRY(wwc_get_angle(c, &s, "look_pitch", &R_LOOK_PITCH, OPTIONAL, &b->look_pitch));
+    TRY(wwc_get_number(c, &s, "wake", &R_WAKE, OPTIONAL, &b->wake));
 
     /* seed 000: reverse is the reduced speed */
     if (b->reverse_speed > b->max_speed) {

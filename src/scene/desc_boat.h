@@ -32,6 +32,7 @@ typedef struct ww_boat_desc {
     double seat[3];      /* seat camera in the hull frame: forward, up, starboard, m */
     double look_time;    /* time constant of the seat view easing back to the heading, s */
     double look_pitch;   /* seat view below (-) or above (+) the hull's bow line, rad */
+    double wake;         /* the wake's strength as drawn (0: none; gfx/wake.h) */
 } ww_boat_desc;
 
 /* the file format's defaults (on stays 0) */
@@ -54,6 +55,7 @@ static inline void ww_boat_defaults(ww_boat_desc *b) {
         .seat = {1.2, 1.0, 0.0},
         .look_time = 0.5,
         .look_pitch = ww_m_rad(-8.0),
+        .wake = 1.0,
     };
 }
 

@@ -149,6 +149,23 @@ static void move(const ww_scene *sc, ww_state *st, double dt) {
                                   b->bob_time, decay);
     for (int i = 0; i < 3; i++) st->boat_follow[i] = target[i];
     v[1] = (p[1] - y0) / dt;
+    st->boat_odometer[0] += fabs(arc * mean) * sqrt(1.0 + slip * slip);
+}
+
+/* the stern's place, the time and the odometer into the wake's trail, every WW_BOAT_WAKE_EVERY
+ * seconds of steps (the renderer draws the wake from it: gfx/wake.h) */
+static void trail(const ww_scene *sc, ww_state *st) {
+    int64_t every = (int64_t)floor(WW_BOAT_WAKE_EVERY / sc->dt + 0.5);
+    if (every < 1) every = 1;
+    if (st->step % every != 0) return;
+    int k = (int)st->boat_wake_next[0];
+    double c, s, *w = st->boat_wake + 4 * k;
+    ww_sincos(st->boat_heading[0], &s, &c);
+    w[0] = st->boat_pos[0] - 0.5 * sc->boat.length * c;
+    w[1] = st->boat_pos[2] - 0.5 * sc->boat.length * s;
+    w[2] = st->t;
+    w[3] = st->boat_odometer[0];
+    st->boat_wake_next[0] = (double)((k + 1) % WW_BOAT_WAKE);
 }
 
 /* the action of this step takes over; inputs whose `until` has come end; the engine's start and
@@ -217,11 +234,19 @@ void ww_boat_reset(const ww_scene *sc, ww_state *st) {
     st->boat_command[2] = UNTIL_NONE;
     st->boat_look_yaw[0] = st->boat_heading[0];
     st->boat_camera[0] = 0.0;
+    st->boat_odometer[0] = 0.0;
+    st->boat_wake_next[0] = 0.0;
+    /* no trail yet: samples long gone (finite, for the state's check) */
+    for (int k = 0; k < WW_BOAT_WAKE; k++) {
+        double *w = st->boat_wake + 4 * k;
+        w[0] = st->boat_pos[0], w[1] = st->boat_pos[2], w[2] = sc->start - 1e6, w[3] = 0.0;
+    }
 }
 
 void ww_boat_step(const ww_scene *sc, ww_state *st) {
     /* step 0 is the start pose: nothing to integrate yet */
     if (st->step > 0) move(sc, st, sc->dt);
+    trail(sc, st);
     update_inputs(sc, st);
     push_cubes(sc, st);
 }

@@ -7,6 +7,8 @@
 
 #define WW_N_BOAT(sc) ((sc)->boat.on ? 1 : 0)
 #define WW_BOAT_SAMPLES 5 /* surface sample points: centre, bow, stern, port, starboard */
+#define WW_BOAT_WAKE 40   /* the wake's trail: where the stern was, every WW_BOAT_WAKE_EVERY s */
+#define WW_BOAT_WAKE_EVERY 0.2
 
 #define WW_FIELDS_BOAT(X)                                                                         \
     X(double, boat_pos, 3 * WW_N_BOAT(sc), "boat", "hull centre, m (3)")                            \
@@ -19,6 +21,9 @@
     X(double, boat_command, 4 * WW_N_BOAT(sc), "boat", "inputs from this step's action: throttle, steer, until, 1 = pending (4)") \
     X(double, boat_look_yaw, WW_N_BOAT(sc), "boat", "seat view heading, rad (1)")                   \
     X(double, boat_warm, WW_WARM_STRIDE * WW_BOAT_SAMPLES * WW_N_BOAT(sc), "boat", "warm starts of the surface queries (sim/water.h), m: last rest offset a - x and its change (4 per sample: centre, bow, stern, port, starboard)") \
-    X(int32_t, boat_camera, WW_N_BOAT(sc), "boat", "camera mode: 0 free (the path), 1 the boat's seat (1)")
+    X(int32_t, boat_camera, WW_N_BOAT(sc), "boat", "camera mode: 0 free (the path), 1 the boat's seat (1)") \
+    X(double, boat_odometer, WW_N_BOAT(sc), "boat", "distance the hull has moved over the water, m (1)") \
+    X(double, boat_wake, 4 * WW_BOAT_WAKE * WW_N_BOAT(sc), "boat", "the stern's trail for the wake, oldest overwritten: x, z m, t s, odometer m (4 per sample)") \
+    X(int32_t, boat_wake_next, WW_N_BOAT(sc), "boat", "the trail's slot written next (1)")
 
 #endif
