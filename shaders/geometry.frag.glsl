@@ -14,7 +14,8 @@
 // every pixel, so a mode switched by a uniform made the lit seabed pay for the others' code):
 // 0 depth only (shadow map), 1 lit, 2 the chest's glow column (additive), 3 an air bubble
 // (blended, premultiplied), 4 the fishing line or its rod (gfx/line.h: a ribbon facing the
-// camera standing for a thin cylinder, lit as mode 1, blended by its coverage, premultiplied).
+// camera standing for a thin cylinder, lit as mode 1, blended by its coverage, premultiplied),
+// 5 the boat's wake (gfx/wake.h: foam lying on the water, blended, premultiplied).
 // Emission: the instance's emission times its albedo is added unlit (objects.models' emissive,
 // the lure), so it feeds bloom.
 // Defines: WW_CAUSTICS 1 when water.look.caustics is on (method analytic), 2 with method texture;
@@ -294,6 +295,32 @@ void main() {
         float hi = pow(max(dot(n, normalize(l + v)), 0.0), 300.0);
         vec3 t = ww_fog_segment(vec3(1.0), p) - ww_fog_segment(vec3(0.0), p); // transmittance
         o_color = vec4(ww_fog_segment(env, p) * refl + sun * hi * 0.5 * t, refl);
+    }
+#elif WW_GEOM_MODE == 5
+    {
+        // the boat's wake (gfx/wake.h), a ribbon lying on the water behind the stern: v_normal
+        // holds the wash's and the arms' strengths and the odometer (m along the path, fixed to
+        // the water), v_uv the place across (-1 .. 1) and the half width (m). The wash: churned
+        // foam behind the transom, in streaks along the path, over the middle of the ribbon; the
+        // arms: the Kelvin wedge's edges, where the divergent waves' crests break, in short
+        // feathers slanting back from the path. Foam is white, lit by the sky and the sun (from
+        // above: it lies flat), fogged as every surface
+        float across = v_uv.x, x = across * v_uv.y, along = v_normal.z, a = abs(across);
+        float streak = ww_value_noise(vec2(along * 0.8, x * 2.5 + 17.0)) *
+                       ww_value_noise(vec2(along * 2.3 + 5.0, x * 7.0));
+        float wash = v_normal.x * (1.0 - smoothstep(0.15, 0.5, a)) * smoothstep(0.08, 0.5, streak);
+        float edge = smoothstep(0.72, 0.9, a) * (1.0 - smoothstep(0.93, 1.0, a));
+        float crest = 0.5 + 0.5 * sin(6.2832 * (along + 1.3 * abs(x)) / 1.4);
+        float arm = v_normal.y * edge * smoothstep(0.6, 1.0, crest) *
+                    smoothstep(0.3, 0.8, ww_value_noise(vec2(along * 1.7, x * 1.5)));
+        float cover = clamp(0.65 * wash + 0.4 * arm, 0.0, 0.75);
+        vec3 up = vec3(0.0, 1.0, 0.0);
+        vec3 sun = u_sun_color * smoothstep(-0.02, 0.02, u_sun_dir.y) * max(u_sun_dir.y, 0.0);
+#if !WW_SUNLESS
+        sun *= ww_shadow(p, up);
+#endif
+        vec3 c = ww_fog_segment(v_color.rgb * (u_ambient + sun), p);
+        o_color = vec4(c * cover, cover);
     }
 #elif WW_GEOM_MODE == 2
     {

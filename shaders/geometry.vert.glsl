@@ -62,6 +62,10 @@ flat out float v_pattern;
 
 const float WW_WIGGLE_K = 9.0; // rad per mesh unit: about 1.4 waves along the body
 const float SURFACE_UNFADED = 1e-6; // m: a sample spacing no wave fades at (gerstner.glsl)
+// the wake (WW_GEOM_MODE 5) lies this far over the surface, and more with the distance, where the
+// water's mesh is coarser and its short waves fade: m, and m per m
+const float WAKE_LIFT = 0.02;
+const float WAKE_LIFT_PER_M = 0.002;
 
 void main() {
     vec3 q = a_pos;
@@ -74,6 +78,16 @@ void main() {
         nrm = normalize(vec3(nrm.x - slope * nrm.z, nrm.y, nrm.z));
     }
     vec4 p = a_model * vec4(q, 1.0);
+#if WW_GEOM_MODE == 5
+    // the wake's points come at the rest level: each goes onto the surface over it, found as the
+    // cut's below (the rest point the waves carry there, three fixed-point steps)
+    {
+        vec2 a = p.xz;
+        for (int it = 0; it < 3; it++) a = p.xz - ww_displace(a, SURFACE_UNFADED).xz;
+        p.y = u_clip_surface.y + ww_displace(a, SURFACE_UNFADED).y + WAKE_LIFT +
+              WAKE_LIFT_PER_M * length(p.xz);
+    }
+#endif
     // the inverse transpose: models may scale unevenly (chest, OBJ models)
     v_normal = transpose(inverse(mat3(a_model))) * nrm;
 #if WW_SWAY

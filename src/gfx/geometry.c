@@ -16,6 +16,7 @@
 #include "core/mathx.h"
 #include "gfx/caustic_set.h"
 #include "gfx/line.h"
+#include "gfx/wake.h"
 #include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
 #include "sim/floaters.h"
@@ -148,6 +149,7 @@ enum {
     GEOM_GLOW,
     GEOM_BUBBLE,
     GEOM_LINE,
+    GEOM_WAKE,
     GEOM_LIT_MAP,
     GEOM_LIT_FISH,
     GEOM_SUNLESS, /* the three lit builds without the sun, in the same order */
@@ -157,8 +159,8 @@ enum {
 };
 static const int GEOM_MODE[GEOM_PROGS] = {
     [GEOM_DEPTH] = 0,   [GEOM_LIT] = 1,         [GEOM_GLOW] = 2,
-    [GEOM_BUBBLE] = 3,  [GEOM_LINE] = 4,        [GEOM_LIT_MAP] = 1,
-    [GEOM_LIT_FISH] = 1,
+    [GEOM_BUBBLE] = 3,  [GEOM_LINE] = 4,        [GEOM_WAKE] = 5,
+    [GEOM_LIT_MAP] = 1, [GEOM_LIT_FISH] = 1,
     [GEOM_SUNLESS] = 1, [GEOM_SUNLESS_MAP] = 1, [GEOM_SUNLESS_FISH] = 1};
 
 typedef struct geom_prog {
@@ -197,6 +199,8 @@ struct ww_geometry {
     int nimage;
     struct bubble_order *bubble_order; /* scratch: this frame's bubbles, farthest first */
     gmesh strand[2];   /* the fishing line and its rod (gfx/line.h), built each frame */
+    gmesh wake;        /* the boat's wake (gfx/wake.h), built each frame */
+    int wake_on;       /* the scene draws one: the shaders need the waves (geometry.vert.glsl) */
     float *strand_vert; /* scratch: a strand's vertices ... */
     uint32_t *strand_index; /* ... and triangles */
     instance *scratch; /* the largest slot's instances, filled per frame */
@@ -525,6 +529,7 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
     }
     mesh_free(gl, &g->hull_cap);
     for (int i = 0; i < 2; i++) mesh_free(gl, &g->strand[i]);
+    mesh_free(gl, &g->wake);
     free(g->strand_vert);
     free(g->strand_index);
     for (int i = 0; i < g->nobj; i++) mesh_free(gl, &g->obj[i]);
@@ -839,7 +844,8 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
                                                     WW_SHADOW_VOLUMES_VISIBLE);
     ww_result rc = make_program(g, gl, sc, GEOM_LIT, err);
     if (rc == WW_OK) rc = make_program(g, gl, sc, GEOM_DEPTH, err);
-    if (rc == WW_OK && (g->caustics == 1 || g->surface_clip)) {
+    g->wake_on = sc->boat.on && sc->boat.wake > 0.0;
+    if (rc == WW_OK && (g->caustics == 1 || g->surface_clip || g->wake_on)) {
         ww_water_waves_init(sc, &g->waves);
         rc = ww_water_ubos_new(gl, sc, &g->waves, &g->ubos, err);
     }
@@ -899,11 +905,20 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
     if (rc == WW_OK && sc->rod.on && sc->rod.line_width > 0.0) {
         strand_new(gl, &g->strand[WW_STRAND_LINE], WW_LINE_MAX_VERTS, WW_LINE_MAX_INDEX);
         strand_new(gl, &g->strand[WW_STRAND_ROD], WW_ROD_MAX_VERTS, WW_ROD_MAX_INDEX);
-        g->strand_vert = malloc((size_t)WW_LINE_MAX_VERTS * 8 * sizeof *g->strand_vert);
-        g->strand_index = malloc((size_t)WW_LINE_MAX_INDEX * sizeof *g->strand_index);
+        rc = make_program(g, gl, sc, GEOM_LINE, err);
+    }
+    if (rc == WW_OK && g->wake_on) {
+        strand_new(gl, &g->wake, WW_WAKE_MAX_VERTS, WW_WAKE_MAX_INDEX);
+        rc = make_program(g, gl, sc, GEOM_WAKE, err);
+    }
+    /* scratch for the strands' and the wake's vertices, each built and uploaded in turn */
+    if (rc == WW_OK && (g->strand[0].vao || g->wake.vao)) {
+        int nv = WW_LINE_MAX_VERTS > WW_WAKE_MAX_VERTS ? WW_LINE_MAX_VERTS : WW_WAKE_MAX_VERTS;
+        int ni = WW_LINE_MAX_INDEX > WW_WAKE_MAX_INDEX ? WW_LINE_MAX_INDEX : WW_WAKE_MAX_INDEX;
+        g->strand_vert = malloc((size_t)nv * 8 * sizeof *g->strand_vert);
+        g->strand_index = malloc((size_t)ni * sizeof *g->strand_index);
         if (!g->strand_vert || !g->strand_index)
             rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
-        if (rc == WW_OK) rc = make_program(g, gl, sc, GEOM_LINE, err);
     }
     if (rc == WW_OK && g->nimage > 0) rc = make_program(g, gl, sc, GEOM_LIT_MAP, err);
     if (rc == WW_OK && sc->fish.on && sc->fish.nspecies > 0)
@@ -1104,6 +1119,26 @@ static void frame_lights(ww_geometry *g, const ww_scene *sc, const ww_state *st,
     }
 }
 
+/* a mesh built this frame (g->strand_vert, g->strand_index) into m's buffers, with its one
+ * instance: the vertices are camera-relative already, so its matrix is the identity */
+static void built_upload(ww_geometry *g, const ww_gl *gl, gmesh *m, int nvert, int nindex,
+                         const double albedo[3], double spec) {
+    m->nindex = nindex;
+    m->ninst = nindex > 0;
+    if (nindex == 0) return;
+    instance in = {.model = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
+    for (int c = 0; c < 3; c++) in.color[c] = (float)albedo[c];
+    in.extra[2] = (float)spec;
+    gl->BindBuffer(GL_ARRAY_BUFFER, m->vbo);
+    gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)nvert * 8 * sizeof(float), g->strand_vert);
+    gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
+    gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)sizeof in, &in);
+    gl->BindVertexArray(m->vao);
+    gl->BufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, (GLsizeiptr)nindex * sizeof(GLuint),
+                      g->strand_index);
+    gl->BindVertexArray(0);
+}
+
 /* this frame's line and rod, facing the camera (gfx/line.h), with their colours */
 #define ROD_ALBEDO 0.05 /* a dark carbon rod ... */
 #define ROD_SPEC 0.8    /* ... with a bright highlight along it */
@@ -1115,24 +1150,23 @@ static void upload_strands(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
         gmesh *m = &g->strand[which];
         int nvert, nindex = ww_line_build(sc, f->st, &eye, (ww_strand)which, g->strand_vert,
                                           g->strand_index, &nvert);
-        m->nindex = nindex;
-        m->ninst = nindex > 0;
-        if (nindex == 0) continue;
-        instance in = {.model = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
         int rod = which == WW_STRAND_ROD;
-        for (int c = 0; c < 3; c++)
-            in.color[c] = (float)(rod ? ROD_ALBEDO : sc->rod.line_color[c]);
-        in.extra[2] = (float)(rod ? ROD_SPEC : SPEC_WET);
-        gl->BindBuffer(GL_ARRAY_BUFFER, m->vbo);
-        gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)nvert * 8 * sizeof(float),
-                          g->strand_vert);
-        gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
-        gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)sizeof in, &in);
-        gl->BindVertexArray(m->vao);
-        gl->BufferSubData(GL_ELEMENT_ARRAY_BUFFER, 0, (GLsizeiptr)nindex * sizeof(GLuint),
-                          g->strand_index);
-        gl->BindVertexArray(0);
+        double albedo[3];
+        for (int c = 0; c < 3; c++) albedo[c] = rod ? ROD_ALBEDO : sc->rod.line_color[c];
+        built_upload(g, gl, m, nvert, nindex, albedo, rod ? ROD_SPEC : SPEC_WET);
     }
+}
+
+/* this frame's wake (gfx/wake.h), with the foam's colour; none under water */
+#define FOAM_ALBEDO 0.85
+static void upload_wake(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
+    const ww_scene *sc = f->sc;
+    ww_line_eye eye = {.pixel_angle = f->pixel_angle, .near = sc->near_clip};
+    for (int k = 0; k < 3; k++) eye.pos[k] = f->cam_pos[k], eye.fwd[k] = f->fwd[k];
+    int nvert = 0, nindex = f->underwater ? 0 : ww_wake_build(sc, f->st, &eye, g->strand_vert,
+                                                              g->strand_index, &nvert);
+    double foam[3] = {FOAM_ALBEDO, FOAM_ALBEDO, FOAM_ALBEDO};
+    built_upload(g, gl, &g->wake, nvert, nindex, foam, 0.0);
 }
 
 /* this frame's instances (once per frame, whichever pass draws first) */
@@ -1300,6 +1334,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
     }
     (void)one;
     if (g->strand[WW_STRAND_LINE].vao) upload_strands(g, gl, f);
+    if (g->wake.vao) upload_wake(g, gl, f);
     frame_lights(g, sc, st, cam);
 
     if (g->caustics == 2) {
@@ -1315,7 +1350,7 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         (void)i1; /* layer i0 holds frame i1 too */
         g->cset_frame[0] = (float)i0;
         g->cset_frame[1] = (float)w;
-    } else if (g->caustics || g->surface_clip) {
+    } else if (g->caustics || g->surface_clip || g->wake_on) {
         /* the wave field's phases at the camera: the shader's positions are camera-relative;
          * the surface's fine detail focuses the light too */
         double centre[2] = {cam[0], cam[2]};
@@ -1425,6 +1460,8 @@ int ww_geometry_has_bubbles(const ww_geometry *g) { return g && g->slot[SLOT_BUB
 
 int ww_geometry_has_line(const ww_geometry *g) { return g && g->strand[0].vao != 0; }
 
+int ww_geometry_has_wake(const ww_geometry *g) { return g && g->wake.vao != 0; }
+
 /* the uniforms every draw of a frame shares, into program v (in use) */
 static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, const ww_frame *f,
                          ww_geom_mode mode, mat4 view_proj, const float *clip) {
@@ -1516,7 +1553,7 @@ static void set_uniforms(ww_geometry *g, const geom_prog *v, ww_renderer *r, con
         gl->Uniform1i(v->cset_loc, WW_TEX_CAUSTIC_SET);
         gl->Uniform4fv(v->cset_at_loc, 1, g->cset_at);
         gl->Uniform2fv(v->cset_frame_loc, 1, g->cset_frame);
-    } else if (g->caustics || g->surface_clip) {
+    } else if (g->caustics || g->surface_clip || g->wake_on) {
         gl->BindBufferBase(GL_UNIFORM_BUFFER, WW_UBO_WAVES, g->ubos.waves);
         gl->Uniform4fv(v->detail_loc, WW_WATER_NDETAIL, &g->detail[0][0]);
         gl->Uniform4fv(v->dudv_m_loc, 2, &g->dudv_m[0][0]);
@@ -1593,6 +1630,15 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     g->cut_now = g->cut_side;
     g->inside_now = 0;
     if (g->sway) gl->Uniform4f(g->cur->sway_loc, 0.0f, 0.0f, 0.0f, 0.0f); /* later draws are rigid */
+    if ((parts & WW_GEOM_PART_WAKE) && mode == WW_GEOM_MAIN && g->wake.ninst > 0) {
+        /* the wake on the water, under what floats (tested against depth, never written) */
+        use(g, gl, GEOM_WAKE);
+        gl->Enable(GL_BLEND);
+        gl->BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA); /* premultiplied */
+        gl->DepthMask(GL_FALSE);
+        draws += draw_mesh(gl, &g->wake);
+        gl->Disable(GL_BLEND);
+    }
     if ((parts & WW_GEOM_PART_BUBBLES) && mode == WW_GEOM_MAIN && g->slot[SLOT_BUBBLE].ninst > 0) {
         /* over everything already drawn, the sky included; tested against depth, never written */
         use(g, gl, GEOM_BUBBLE);

@@ -46,11 +46,12 @@ static ww_result main_create(ww_renderer *r, const ww_scene *sc, const ww_pass_d
     return WW_OK;
 }
 
-/* the air bubbles and the fishing line last, blended over all that lies behind them (the water,
- * the sky) */
+/* the boat's wake, the air bubbles and the fishing line last, blended over all that lies behind
+ * them (the water, the sky) */
 static void draw_blended(ww_renderer *r, const ww_frame *f) {
     unsigned parts = (ww_geometry_has_bubbles(r->geometry) ? WW_GEOM_PART_BUBBLES : 0u) |
-                     (ww_geometry_has_line(r->geometry) ? WW_GEOM_PART_LINE : 0u);
+                     (ww_geometry_has_line(r->geometry) ? WW_GEOM_PART_LINE : 0u) |
+                     (ww_geometry_has_wake(r->geometry) ? WW_GEOM_PART_WAKE : 0u);
     if (parts)
         ww_geometry_draw_parts(r->geometry, r, f, WW_GEOM_MAIN, (vec4 *)f->view_proj, NULL,
                                parts);

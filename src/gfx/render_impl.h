@@ -179,7 +179,8 @@ enum {
     WW_GEOM_PART_SEABED = 2,
     WW_GEOM_PART_ALL = 3,    /* the opaque parts */
     WW_GEOM_PART_BUBBLES = 4, /* the air bubbles: blended, back to front, after the sky */
-    WW_GEOM_PART_LINE = 8     /* the fishing line and its rod: blended, after the bubbles */
+    WW_GEOM_PART_LINE = 8,    /* the fishing line and its rod: blended, after the bubbles */
+    WW_GEOM_PART_WAKE = 16    /* the boat's wake on the water: blended, before the bubbles */
 };
 void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
                             ww_geom_mode mode, mat4 view_proj, const float *clip, unsigned parts);
@@ -194,6 +195,8 @@ int ww_geometry_has_hulls(const ww_geometry *g);
 int ww_geometry_has_bubbles(const ww_geometry *g);
 /* the scene has a fishing line to draw (WW_GEOM_PART_LINE, gfx/line.h) */
 int ww_geometry_has_line(const ww_geometry *g);
+/* the scene has a boat's wake to draw (WW_GEOM_PART_WAKE, gfx/wake.h) */
+int ww_geometry_has_wake(const ww_geometry *g);
 /* how the next draws of the geometry test depth and light (stencilled shadows, stencil_shadows.c):
  *   NORMAL   depth LESS and written, lit (every other draw)
  *   SUNLESS  depth EQUAL, not written, no sunlight: what lies in a shadow drawn again over itself
