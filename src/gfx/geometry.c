@@ -372,6 +372,17 @@ static void instance_attribs(const ww_gl *gl) {
     }
 }
 
+/* the vertex buffer bound (GL_ARRAY_BUFFER) as the mesh's: position, normal, uv, 8 floats */
+static void vertex_attribs(const ww_gl *gl) {
+    GLsizei stride = 8 * sizeof(float);
+    gl->EnableVertexAttribArray(0);
+    gl->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (void *)0);
+    gl->EnableVertexAttribArray(1);
+    gl->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (void *)(3 * sizeof(float)));
+    gl->EnableVertexAttribArray(2);
+    gl->VertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, (void *)(6 * sizeof(float)));
+}
+
 /* vertex layout: position, normal, uv; instances as instance_attribs */
 static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert,
                         const GLuint *idx, int nindex, int cap) {
@@ -389,13 +400,7 @@ static void mesh_upload(const ww_gl *gl, gmesh *m, const float *verts, int nvert
             m->lo[k] = fminf(m->lo[k], verts[8 * i + k]);
             m->hi[k] = fmaxf(m->hi[k], verts[8 * i + k]);
         }
-    GLsizei stride = 8 * sizeof(float);
-    gl->EnableVertexAttribArray(0);
-    gl->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (void *)0);
-    gl->EnableVertexAttribArray(1);
-    gl->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (void *)(3 * sizeof(float)));
-    gl->EnableVertexAttribArray(2);
-    gl->VertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, (void *)(6 * sizeof(float)));
+    vertex_attribs(gl);
     gl->GenBuffers(1, &m->ibo);
     gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
     gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)nindex * sizeof(GLuint), idx,
@@ -431,13 +436,7 @@ static void strand_new(const ww_gl *gl, gmesh *m, int nvert, int nindex) {
     gl->GenBuffers(1, &m->vbo);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->vbo);
     gl->BufferData(GL_ARRAY_BUFFER, (GLsizeiptr)nvert * 8 * sizeof(float), NULL, GL_DYNAMIC_DRAW);
-    GLsizei stride = 8 * sizeof(float);
-    gl->EnableVertexAttribArray(0);
-    gl->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, (void *)0);
-    gl->EnableVertexAttribArray(1);
-    gl->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, (void *)(3 * sizeof(float)));
-    gl->EnableVertexAttribArray(2);
-    gl->VertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, stride, (void *)(6 * sizeof(float)));
+    vertex_attribs(gl);
     gl->GenBuffers(1, &m->ibo);
     gl->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
     gl->BufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)nindex * sizeof(GLuint), NULL,
