@@ -201,8 +201,8 @@ struct ww_geometry {
     gmesh strand[2];   /* the fishing line and its rod (gfx/line.h), built each frame */
     gmesh wake;        /* the boat's wake (gfx/wake.h), built each frame */
     int wake_on;       /* the scene draws one: the shaders need the waves (geometry.vert.glsl) */
-    float *strand_vert; /* scratch: a strand's vertices ... */
-    uint32_t *strand_index; /* ... and triangles */
+    float *strand_vert; /* scratch: a strand's or the wake's vertices ... */
+    uint32_t *strand_index; /* ... and triangles, each built and uploaded in turn */
     instance *scratch; /* the largest slot's instances, filled per frame */
     int scratch_cap;
     int draws;         /* instanced draws of the last ww_geometry_draw (tests) */
@@ -1138,13 +1138,19 @@ static void built_upload(ww_geometry *g, const ww_gl *gl, gmesh *m, int nvert, i
     gl->BindVertexArray(0);
 }
 
+/* the camera the frame's strands and wake are built for (gfx/line.h) */
+static ww_line_eye frame_eye(const ww_frame *f) {
+    ww_line_eye eye = {.pixel_angle = f->pixel_angle, .near = f->sc->near_clip};
+    for (int k = 0; k < 3; k++) eye.pos[k] = f->cam_pos[k], eye.fwd[k] = f->fwd[k];
+    return eye;
+}
+
 /* this frame's line and rod, facing the camera (gfx/line.h), with their colours */
 #define ROD_ALBEDO 0.05 /* a dark carbon rod ... */
 #define ROD_SPEC 0.8    /* ... with a bright highlight along it */
 static void upload_strands(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
-    ww_line_eye eye = {.pixel_angle = f->pixel_angle, .near = sc->near_clip};
-    for (int k = 0; k < 3; k++) eye.pos[k] = f->cam_pos[k], eye.fwd[k] = f->fwd[k];
+    ww_line_eye eye = frame_eye(f);
     for (int which = 0; which < 2; which++) {
         gmesh *m = &g->strand[which];
         int nvert, nindex = ww_line_build(sc, f->st, &eye, (ww_strand)which, g->strand_vert,
@@ -1160,8 +1166,7 @@ static void upload_strands(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
 #define FOAM_ALBEDO 0.85
 static void upload_wake(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
-    ww_line_eye eye = {.pixel_angle = f->pixel_angle, .near = sc->near_clip};
-    for (int k = 0; k < 3; k++) eye.pos[k] = f->cam_pos[k], eye.fwd[k] = f->fwd[k];
+    ww_line_eye eye = frame_eye(f);
     int nvert = 0, nindex = f->underwater ? 0 : ww_wake_build(sc, f->st, &eye, g->strand_vert,
                                                               g->strand_index, &nvert);
     double foam[3] = {FOAM_ALBEDO, FOAM_ALBEDO, FOAM_ALBEDO};

@@ -23,15 +23,21 @@
 #define REEL_AT 0.2        /* the reel's place along the rod from the butt: the line leaves it */
 #define GUIDE_HEIGHT 0.006 /* m: the guides hold the line this far over the rod's top */
 
-int ww_line_tip(const ww_scene *sc, const ww_state *st, double tip[3]) {
+/* the rod's tip and the level direction it points along: where the camera holds it, or where
+ * the cast left; 0 when no line is out */
+static int rod_pose(const ww_scene *sc, const ww_state *st, double tip[3], double f[3]) {
     if (!sc->rod.on || (int)st->lure_state[0] == WW_LURE_IDLE) return 0;
     if (st->rod_held[0] != 0.0) {
-        double f[3];
         ww_rod_held_tip(sc, st, tip, f);
     } else {
-        for (int k = 0; k < 3; k++) tip[k] = st->rod_tip[k];
+        for (int k = 0; k < 3; k++) tip[k] = st->rod_tip[k], f[k] = st->rod_dir[k];
     }
     return 1;
+}
+
+int ww_line_tip(const ww_scene *sc, const ww_state *st, double tip[3]) {
+    double f[3];
+    return rod_pose(sc, st, tip, f);
 }
 
 int ww_line_points(const ww_scene *sc, const ww_state *st, double (*p)[3]) {
@@ -58,9 +64,8 @@ int ww_line_points(const ww_scene *sc, const ww_state *st, double (*p)[3]) {
 }
 
 int ww_line_rod_points(const ww_scene *sc, const ww_state *st, double (*p)[3], double *width) {
-    double tip[3], f[3] = {st->rod_dir[0], st->rod_dir[1], st->rod_dir[2]};
-    if (!(sc->rod.line_width > 0.0) || !ww_line_tip(sc, st, tip)) return 0;
-    if (st->rod_held[0] != 0.0) ww_rod_held_tip(sc, st, tip, f);
+    double tip[3], f[3];
+    if (!(sc->rod.line_width > 0.0) || !rod_pose(sc, st, tip, f)) return 0;
     double c = cos(ww_m_rad(ROD_PITCH)), s = sin(ww_m_rad(ROD_PITCH));
     double dir[3] = {c * f[0], s, c * f[2]};
     for (int i = 0; i <= WW_ROD_SEGMENTS; i++) {
