@@ -434,6 +434,14 @@ static void hull_section(double u, double *beam, double *keel, double *gunwale) 
     *gunwale = HULL_SHEER + HULL_SHEER_RISE * e * e;
 }
 
+double ww_meshgen_hull_waterline(double u) {
+    double beam, keel, gun;
+    hull_section(u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u, &beam, &keel, &gun);
+    /* hull_point's section crosses y = 0 where gun + (keel - gun) sin(phi) = 0 */
+    double s = gun / (gun - keel), c = sqrt(fmax(1.0 - s * s, 0.0));
+    return beam * pow(c, HULL_FULLNESS);
+}
+
 /* where station i of a skin lies along the hull: the outer skin spans stern to stem (0 .. 1);
  * the inner skin starts HULL_SKIN ahead of the stern (the transom's thickness) and ends at
  * HULL_INNER_END against the solid stem */

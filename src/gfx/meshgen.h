@@ -53,6 +53,11 @@
 #define WW_MESHGEN_FISH_OF(shape) ((ww_mesh_kind)(WW_MESHGEN_FISH_SPECIES + (int)(shape)))
 
 ww_result ww_meshgen(ww_mesh_kind kind, ww_mesh_data *out, ww_error *err);
+
+/* WW_MESH_HULL's half-breadth where its outer skin crosses the mesh's y = 0 (the design
+ * waterline) at station u (0 the transom .. 1 the stem, clamped), in the mesh's units (the
+ * boat's length is 1) */
+double ww_meshgen_hull_waterline(double u);
 void ww_meshgen_free(ww_mesh_data *m);
 
 /* signed volume enclosed by the triangles (divergence theorem: sum of det(a, b, c) / 6), m^3;
