@@ -76,6 +76,9 @@ in float v_spec;
 in vec3 v_mesh;
 flat in float v_pattern;
 #endif
+#if WW_GEOM_MODE == 5
+flat in vec2 v_wake;
+#endif
 out vec4 o_color;
 
 const float WW_SHININESS = 48.0;
@@ -254,6 +257,45 @@ vec3 ww_fish_pattern(vec3 c, vec3 m, float pattern) {
 }
 #endif
 
+#if WW_GEOM_MODE == 5
+// the wake's foam: times s, widths m (gfx/wake.c's ARM_BAND is WAKE_ARM_BAND)
+const float WAKE_WASH_LIFE = 1.2;    // the wash's fresh foam fades by e in this ...
+const float WAKE_ARM_LIFE = 2.5;     // ... the arms' and the bow wave's ...
+const float WAKE_LACE_LIFE = 3.5;    // ... and the lace either leaves
+const float WAKE_WASH_SPREAD = 0.08; // the wash widens by this each side per m behind the stern
+const float WAKE_ARM_BAND = 0.3;     // the bow wave's and the arms' band inside the edge ...
+const float WAKE_ARM_GROW = 0.03;    // ... widening by this per m behind the stern
+const float WAKE_COVER_MAX = 0.85;
+const float WAKE_WASH_FRESH = 0.8;   // the wash's fresh coverage right behind the transom
+const float WAKE_ARM_FRESH = 0.7;    // the arms' and bow wave's
+const float WAKE_LACE_FRESH = 0.8;   // the lace's, where it starts
+const float WAKE_CREST_SPACING = 0.9; // m between the arms' breaking crests, across them
+const float WAKE_GROW = 0.7;         // noise level the coverage lifts the patches by
+const float WAKE_SOFT = 0.6;         // a patch's edge, in the noise's range
+const float WAKE_LACE_WIDTH = 0.35;  // the lace's lines: the noise's range about its middle
+const float WAKE_LACE_MEAN = 0.2;    // the lace's mean cover (of its old^2) where it fades out
+
+// two octaves of value noise at q (cells), in [0, 1], each faded to its mean where its cells
+// span under about two pixels (fp: a pixel in cells along each axis); y: the first's weight
+vec2 ww_wake_noise(vec2 q, vec2 fp) {
+    float f = max(fp.x, fp.y);
+    float w1 = 1.0 - smoothstep(0.25, 0.5, f), w2 = 1.0 - smoothstep(0.25, 0.5, 3.0 * f);
+    float n1 = mix(0.5, ww_value_noise(q), w1);
+    float n2 = mix(0.5, ww_value_noise(3.0 * q + vec2(37.0, 91.0)), w2);
+    return vec2(0.65 * n1 + 0.35 * n2, w1);
+}
+
+// foam: a fresh coverage as patches of the noise n that grow with it, and an older coverage as
+// a lace along the middle level of the noise l, thinner as it fades (its mean where l fades out)
+float ww_wake_foam(float fresh, float old, vec2 n, vec2 l) {
+    float patch = n.x + WAKE_GROW * (fresh - 0.5);
+    float f = sqrt(fresh) * smoothstep(0.5 - 0.5 * WAKE_SOFT, 0.5 + 0.5 * WAKE_SOFT, patch);
+    float ridge = 1.0 - abs(2.0 * l.x - 1.0);
+    float lace = old * old * smoothstep(1.0 - WAKE_LACE_WIDTH * old, 1.0, ridge);
+    return max(f, mix(WAKE_LACE_MEAN * old * old, lace, l.y));
+}
+#endif
+
 void main() {
 #if WW_GEOM_MODE == 0
     o_color = vec4(0.0);
@@ -298,22 +340,49 @@ void main() {
     }
 #elif WW_GEOM_MODE == 5
     {
-        // the boat's wake (gfx/wake.h), a ribbon lying on the water behind the stern: v_normal
-        // holds the wash's and the arms' strengths and the odometer (m along the path, fixed to
-        // the water), v_uv the place across (-1 .. 1) and the half width (m). The wash: churned
-        // foam behind the transom, in streaks along the path, over the middle of the ribbon; the
-        // arms: the Kelvin wedge's edges, where the divergent waves' crests break, in short
-        // feathers slanting back from the path. Foam is white, lit by the sky and the sun (from
-        // above: it lies flat), fogged as every surface
-        float across = v_uv.x, x = across * v_uv.y, along = v_normal.z, a = abs(across);
-        float streak = ww_value_noise(vec2(along * 0.8, x * 2.5 + 17.0)) *
-                       ww_value_noise(vec2(along * 2.3 + 5.0, x * 7.0));
-        float wash = v_normal.x * (1.0 - smoothstep(0.15, 0.5, a)) * smoothstep(0.08, 0.5, streak);
-        float edge = smoothstep(0.72, 0.9, a) * (1.0 - smoothstep(0.93, 1.0, a));
-        float crest = 0.5 + 0.5 * sin(6.2832 * (along + 1.3 * abs(x)) / 1.4);
-        float arm = v_normal.y * edge * smoothstep(0.6, 1.0, crest) *
-                    smoothstep(0.3, 0.8, ww_value_noise(vec2(along * 1.7, x * 1.5)));
-        float cover = clamp(0.65 * wash + 0.4 * arm, 0.0, 0.75);
+        // the boat's wake (gfx/wake.h), a ribbon lying on the water from the stem back: v_normal
+        // holds the foam's strength, the time since the stern passed (s) and the odometer (m
+        // along the path, fixed to the water), v_uv the place across (-1 .. 1) and the half width
+        // (m), v_wake the stern's odometer and the transom's half-breadth. Three foams, each a
+        // coverage that noise fixed to the water breaks into patches as it thins, then into a
+        // lace (as the water's crest foam, water.frag.glsl):
+        // - the wash behind the transom, streaks along the path, spreading slowly;
+        // - the bow wave along the hull and the wedge's arms from where it leaves the hull, a
+        //   band inside the ribbon's edge, feathered along the divergent crests (54.7 degrees
+        //   to the path);
+        // both fading with the time since the stern passed. The noise fades to its mean where
+        // its cells shrink under a pixel, so a far wake does not shimmer. Foam is white, lit by
+        // the sky and the sun (from above: it lies flat), fogged as every surface.
+        float strength = v_normal.x, age = v_normal.y, along = v_normal.z;
+        float x = v_uv.x * v_uv.y, ax = abs(x), back = v_wake.x - along; // m behind the stern
+        float px = max(fwidth(along), fwidth(x)) + 1e-4;                 // m a pixel
+        float grow = max(back, 0.0);
+        float lace_left = WAKE_LACE_FRESH * strength * exp(-age / WAKE_LACE_LIFE);
+        // the lace's noise: cells of a third of a metre, the same every way
+        vec2 l = ww_wake_noise(vec2(along, x) * 3.0, px * vec2(3.0));
+
+        // the wash: from the transom, as wide as it and spreading; streaks along the path
+        float wide = v_wake.y + WAKE_WASH_SPREAD * grow;
+        float in_wash = smoothstep(-0.3, 0.3, back) * (1.0 - smoothstep(0.45 * wide, wide, ax));
+        vec2 n = ww_wake_noise(vec2(along * 0.7, x * 4.0), px * vec2(0.7, 4.0));
+        float fresh = WAKE_WASH_FRESH * strength * exp(-age / WAKE_WASH_LIFE);
+        float wash = ww_wake_foam(fresh * in_wash, lace_left * in_wash, n, l);
+
+        // the bow wave and the arms: a band inside the ribbon's edge, widening behind the
+        // stern, broken into crests slanting back at 54.7 degrees to the path about
+        // WAKE_CREST_SPACING apart across themselves, each ragged where the noise along it is low
+        float band = WAKE_ARM_BAND + WAKE_ARM_GROW * grow, in_edge = v_uv.y - ax;
+        float in_arm = smoothstep(0.0, 0.05 + px, in_edge) *
+                       (1.0 - smoothstep(0.35 * band, band + px, in_edge));
+        vec2 crest = vec2(0.816 * ax - 0.578 * along, 0.816 * along + 0.578 * ax);
+        vec2 m = ww_wake_noise(vec2(crest.x * 1.2, crest.y * 3.0), px * vec2(1.2, 3.0));
+        float aa = 1.0 - smoothstep(0.25, 0.5, px / WAKE_CREST_SPACING);
+        float ph = 6.2832 * (crest.y / WAKE_CREST_SPACING + 2.0 * m.x);
+        float feather = mix(0.5, smoothstep(-0.2, 0.8, sin(ph)), aa);
+        fresh = WAKE_ARM_FRESH * strength * exp(-age / WAKE_ARM_LIFE);
+        float arm = ww_wake_foam(fresh * in_arm * feather, lace_left * in_arm, m, l);
+
+        float cover = min(max(wash, arm), WAKE_COVER_MAX);
         vec3 up = vec3(0.0, 1.0, 0.0);
         vec3 sun = u_sun_color * smoothstep(-0.02, 0.02, u_sun_dir.y) * max(u_sun_dir.y, 0.0);
 #if !WW_SUNLESS

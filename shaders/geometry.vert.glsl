@@ -59,6 +59,9 @@ out float v_spec;
 out vec3 v_mesh;           // mesh space at rest (the pattern stays on the bending body)
 flat out float v_pattern;
 #endif
+#if WW_GEOM_MODE == 5
+flat out vec2 v_wake;      // the wake's stern: its odometer m, the transom's half-breadth m
+#endif
 
 const float WW_WIGGLE_K = 9.0; // rad per mesh unit: about 1.4 waves along the body
 const float SURFACE_UNFADED = 1e-6; // m: a sample spacing no wave fades at (gerstner.glsl)
@@ -109,6 +112,9 @@ void main() {
     v_uv = a_uv;
     v_color = a_color;
     v_spec = a_extra.z;
+#if WW_GEOM_MODE == 5
+    v_wake = a_extra.zw;
+#endif
 #if WW_FISH_PATTERNS
     v_mesh = a_pos;
     v_pattern = a_extra.w;

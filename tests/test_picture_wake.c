@@ -1,8 +1,10 @@
-/* test_picture_wake.c - the boat's wake (gfx/wake.h): the stern's trail in the state, the
- * ribbon's wedge (its half width beam / 2 + L tan 19.47 deg at a path length L behind the stern),
- * no fold in a turn, none without a boat under way or with wake 0; and the rendered wake: foam
- * behind the boat on both sides of its path, brighter than the water at midday, and nothing
- * changed outside the ribbon.
+/* test_picture_wake.c - the boat's wake (gfx/wake.h): the stern's trail in the state; the
+ * ribbon's rows along the hull (outside its waterline by the bow wave's band) and behind it
+ * (half width (length + L) tan 19.47 deg at a path length L behind the stern: the wedge from the
+ * stem), no fold in a turn, none without a boat under way or with wake 0; and the rendered wake:
+ * foam behind the boat on both sides of its path, brighter than the water at midday, nothing
+ * changed outside the ribbon, a bow wave beside the hull's forward half on both sides, and arms
+ * whose foam runs on along the wedge rather than in dashes with water between.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -16,6 +18,7 @@
 #include "sim/water.h"
 #include "test.h"
 
+#define WAKE_CAMERA "{t: 0, position: [30, 14, 12], look_at: [8, 0, 0]}"
 /* a straight run at full throttle for 5 s, then a turn to starboard, at midday, seen from ahead
  * and above, where the whole wake lies in the frame */
 static const char *WAKE_SCENE =
@@ -33,7 +36,7 @@ static const char *WAKE_SCENE =
     "  boat: {position: [0, 0.25, 0], heading: 0}\n"
     "camera:\n"
     "  path:\n"
-    "    - {t: 0, position: [30, 14, 12], look_at: [8, 0, 0]}\n"
+    "    - " WAKE_CAMERA "\n"
     "script:\n"
     "  - {t: 0.2, boat: {throttle: 1, steer: 0, until: 5}}\n"
     "  - {t: 5, boat: {throttle: 1, steer: 0.35, until: 10}}\n";
@@ -57,6 +60,24 @@ static const char *WAKE_SCENE =
 #define OUTSIDE_SHARE_MAX 0.01
 /* midday foam is brighter than the water it covers: mean luma gain of the changed pixels */
 #define FOAM_GAIN_MIN 10.0
+/* the bow wave: points every BOW_STEP m along the band beside the hull's forward half, at
+ * least this share of them with foam within a pixel */
+#define BOW_STEP 0.1
+#define BOW_SHARE_MIN 0.8
+/* the arms: cuts across each side's outer part (ARM_CUT_POINTS + 1 points from ARM_CUT_FROM of
+ * the half width to just past the edge) every ARM_STEP m of path from ARM_FROM to ARM_TO m
+ * behind the stern; at least ARM_SHARE_MIN of them cross foam, and no run of bare cuts is longer
+ * than ARM_GAP_MAX m of path (the dashes the arms were drawn in left 0.75-1 m) */
+#define ARM_STEP 0.25
+#define ARM_FROM 1.0
+#define ARM_TO 10.0
+#define ARM_CUT_FROM 0.55
+#define ARM_CUT_POINTS 24
+#define ARM_SHARE_MIN 0.9
+#define ARM_GAP_MAX 0.5
+/* the view from above: height m, and how far behind the boat's middle */
+#define ABOVE 14.0
+#define ABOVE_BACK 5.0
 
 static ww_scene *load(const char *text) {
     ww_scene *sc = NULL;
@@ -77,9 +98,9 @@ TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
     ww_scene *sc = load(WAKE_SCENE);
     if (!sc) return;
     ww_state *st = ww_state_new(sc);
-    double p[WW_BOAT_WAKE + 1][2], half[WW_BOAT_WAKE + 1], age[WW_BOAT_WAKE + 1],
-        odo[WW_BOAT_WAKE + 1];
-    ENSURE_EQ_INT(ww_wake_points(sc, st, p, half, age, odo), 0); /* not under way yet */
+    ww_wake_row row[WW_WAKE_MAX_ROWS];
+    int stern = -1;
+    ENSURE_EQ_INT(ww_wake_rows(sc, st, row, &stern), 0); /* not under way yet */
     int64_t every = (int64_t)floor(WW_BOAT_WAKE_EVERY / sc->dt + 0.5);
     /* each trail sample is the stern at its step */
     for (int64_t step = every; step <= 3 * every; step += every) {
@@ -93,41 +114,64 @@ TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
         ENSURE_NEAR(w[3], st->boat_odometer[0], 0.0);
     }
     if (!run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) return;
-    int n = ww_wake_points(sc, st, p, half, age, odo);
-    ENSURE_MSG(n > 10, "%d points of wake after 4.5 s under way", n);
-    double spread = tan(ww_m_rad(WW_WAKE_KELVIN_DEG));
-    for (int i = 1; i < n; i++) {
-        ENSURE(age[i] > age[i - 1] && age[i] <= WW_WAKE_LIFE);
-        ENSURE_NEAR(half[i], 0.5 * sc->boat.beam + spread * (odo[0] - odo[i]), WEDGE_TOL);
+    int n = ww_wake_rows(sc, st, row, &stern);
+    ENSURE_MSG(n > stern + 10, "%d rows of wake after 4.5 s under way", n - stern - 1);
+    ENSURE_EQ_INT(stern, WW_WAKE_HULL_ROWS);
+    double spread = tan(ww_m_rad(WW_WAKE_KELVIN_DEG)), len = sc->boat.length;
+    double h = st->boat_heading[0];
+    /* the first row lies ahead of the stem and starts the foam from nothing; the rows on the
+     * hull run back to the stern along the heading, each wider than the hull there */
+    double stem[2] = {st->boat_pos[0] + 0.5 * len * cos(h), st->boat_pos[2] + 0.5 * len * sin(h)};
+    ENSURE_NEAR(hypot(row[0].p[0] - stem[0], row[0].p[1] - stem[1]), WW_WAKE_STEM_AHEAD,
+                STERN_TOL);
+    ENSURE_NEAR(row[0].strength, 0.0, 0.0);
+    ENSURE_NEAR(row[1].p[0], stem[0], STERN_TOL);
+    ENSURE_NEAR(row[1].p[1], stem[1], STERN_TOL);
+    double least_margin = INFINITY;
+    for (int i = 1; i <= stern; i++) {
+        double ahead = row[i].odo - row[stern].odo;
+        least_margin = fmin(least_margin, row[i].half - ww_wake_hull_half(sc, ahead));
+        ENSURE_NEAR(row[i].half, fmax(ww_wake_hull_half(sc, ahead) + WW_WAKE_BAND,
+                                      (len - ahead) * spread), WEDGE_TOL);
+        ENSURE(row[i].age == 0.0 && row[i].strength > 0.0);
+    }
+    ENSURE_NEAR(row[stern].p[0], st->boat_pos[0] - 0.5 * len * cos(h), STERN_TOL);
+    /* behind the stern: the wedge from the stem */
+    for (int i = stern + 1; i < n; i++) {
+        ENSURE(row[i].age > row[i - 1].age && row[i].age <= WW_WAKE_LIFE);
+        ENSURE(row[i].odo < row[i - 1].odo);
+        ENSURE_NEAR(row[i].half, (len + row[stern].odo - row[i].odo) * spread, WEDGE_TOL);
     }
     /* the path behind the stern is as long as the boat went since */
     double speed = fabs(st->boat_speed[0]);
-    ENSURE_NEAR((odo[0] - odo[1]) / (speed * (age[1] - age[0])), 1.0, ODOMETER_REL_TOL);
-    printf("  straight: %d points over %.2f s, %.1f m of path, half width %.2f to %.2f m\n", n,
-           age[n - 1], odo[0] - odo[n - 1], half[0], half[n - 1]);
+    ENSURE_NEAR((row[stern].odo - row[stern + 1].odo) / (speed * row[stern + 1].age), 1.0,
+                ODOMETER_REL_TOL);
+    printf("  straight: %d rows on the hull, the ribbon %.2f m or more outside its waterline; "
+           "%d behind over %.2f s, %.1f m of path, half width %.2f to %.2f m\n",
+           stern, least_margin, n - stern - 1, row[n - 1].age, row[stern].odo - row[n - 1].odo,
+           row[stern].half, row[n - 1].half);
 
     /* in the turn the inner edge runs on along the path: it never doubles back over itself */
     if (!run_to(sc, st, TURN_FRAME * sc->steps_per_frame)) return;
-    n = ww_wake_points(sc, st, p, half, age, odo);
+    n = ww_wake_rows(sc, st, row, &stern);
     int folds = 0;
     for (int i = 1; i + 1 < n; i++) {
-        double d[2] = {p[i - 1][0] - p[i + 1][0], p[i - 1][1] - p[i + 1][1]};
+        double d[2] = {row[i - 1].p[0] - row[i + 1].p[0], row[i - 1].p[1] - row[i + 1].p[1]};
         for (int side = -1; side <= 1; side += 2) {
             double e[2][2];
             for (int k = 0; k < 2; k++) {
                 int j = i + k;
-                double t[2] = {p[j > 0 ? j - 1 : 0][0] - p[j + 1 < n ? j + 1 : n - 1][0],
-                               p[j > 0 ? j - 1 : 0][1] - p[j + 1 < n ? j + 1 : n - 1][1]};
-                double l = hypot(t[0], t[1]);
-                e[k][0] = p[j][0] - side * half[j] * t[1] / l;
-                e[k][1] = p[j][1] + side * half[j] * t[0] / l;
+                const double *a = row[j > 0 ? j - 1 : 0].p, *b = row[j + 1 < n ? j + 1 : n - 1].p;
+                double t[2] = {a[0] - b[0], a[1] - b[1]}, l = hypot(t[0], t[1]);
+                e[k][0] = row[j].p[0] - side * row[j].half * t[1] / l;
+                e[k][1] = row[j].p[1] + side * row[j].half * t[0] / l;
             }
             folds += (e[0][0] - e[1][0]) * d[0] + (e[0][1] - e[1][1]) * d[1] <= 0.0;
         }
     }
-    printf("  turning: %d points, %d edge segments running backward\n", n, folds);
-    ENSURE_MSG(n > 10 && folds == 0, "%d of the ribbon's edge segments fold back in the turn",
-               folds);
+    printf("  turning: %d rows, %d edge segments running backward\n", n, folds);
+    ENSURE_MSG(n > stern + 10 && folds == 0,
+               "%d of the ribbon's edge segments fold back in the turn", folds);
     ww_state_free(st);
     ww_scene_free(sc);
 
@@ -140,7 +184,7 @@ TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
     if (!sc) return;
     st = ww_state_new(sc);
     if (run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame))
-        ENSURE_EQ_INT(ww_wake_points(sc, st, p, half, age, odo), 0);
+        ENSURE_EQ_INT(ww_wake_rows(sc, st, row, &stern), 0);
     ww_state_free(st);
     ww_scene_free(sc);
 }
@@ -170,6 +214,35 @@ static double outline_distance(const double (*poly)[2], int n, double x, double 
     return best;
 }
 
+/* whether any pixel within 1 px of (x, y) moved by more than WAKE_LEVELS between a and b */
+static int foam_near(const ww_test_pic *a, const ww_test_pic *b, double x, double y) {
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++) {
+            int px = (int)floor(x) + dx, py = (int)floor(y) + dy;
+            if (px < 0 || py < 0 || px >= a->w || py >= a->h) continue;
+            const unsigned char *p = ww_test_pixel(&a->im, px, py);
+            const unsigned char *q = ww_test_pixel(&b->im, px, py);
+            for (int c = 0; c < 3; c++)
+                if (abs(p[c] - q[c]) > WAKE_LEVELS) return 1;
+        }
+    return 0;
+}
+
+/* the point on the water beside the straight path: `ahead` m ahead of the stern (negative:
+ * behind), `out` m out to `side` (-1, 1), projected into the frame (scaled to its size) */
+static void beside(const ww_scene *sc, const ww_state *st, double ahead, int side, double out,
+                   const ww_test_pic *pic, double px[2]) {
+    double h = st->boat_heading[0], c = cos(h), s = sin(h), len = sc->boat.length;
+    double x = st->boat_pos[0] + (ahead - 0.5 * len) * c - side * out * s;
+    double z = st->boat_pos[2] + (ahead - 0.5 * len) * s + side * out * c;
+    ww_water_sample ws;
+    ww_water_at(sc, st, x, z, 0.0, &ws);
+    double w[3] = {x, ws.height, z};
+    ww_test_project(sc, st, w, px);
+    px[0] *= (double)pic->w / sc->width;
+    px[1] *= (double)pic->h / sc->height;
+}
+
 TEST_IMAGE(picture_wake_foam_behind_the_boat_on_both_sides) {
     REQUIRE_GL();
     char path[600];
@@ -184,19 +257,18 @@ TEST_IMAGE(picture_wake_foam_behind_the_boat_on_both_sides) {
     if (!sc) return;
     ww_state *st = ww_state_new(sc);
     if (run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) {
-        double p[WW_BOAT_WAKE + 1][2], half[WW_BOAT_WAKE + 1], age[WW_BOAT_WAKE + 1],
-            odo[WW_BOAT_WAKE + 1];
-        int n = ww_wake_points(sc, st, p, half, age, odo);
+        ww_wake_row row[WW_WAKE_MAX_ROWS];
+        int stern = 0, n = ww_wake_rows(sc, st, row, &stern);
         /* the ribbon's two halves projected, each a polygon: an edge, then the path back */
-        static double side_poly[2][2 * (WW_BOAT_WAKE + 1)][2];
+        static double side_poly[2][2 * WW_WAKE_MAX_ROWS][2];
         for (int i = 0; i < n; i++) {
-            const double *a = p[i < n - 1 ? i + 1 : n - 1], *b = p[i > 0 ? i - 1 : 0];
+            const double *a = row[i < n - 1 ? i + 1 : n - 1].p, *b = row[i > 0 ? i - 1 : 0].p;
             double t[2] = {b[0] - a[0], b[1] - a[1]}, l = hypot(t[0], t[1]);
             for (int s = 0; s < 2; s++) {
                 double sg = s ? 1.0 : -1.0, w[3], c[3];
-                w[0] = p[i][0] - sg * half[i] * t[1] / l;
-                w[2] = p[i][1] + sg * half[i] * t[0] / l;
-                c[0] = p[i][0], c[2] = p[i][1];
+                w[0] = row[i].p[0] - sg * row[i].half * t[1] / l;
+                w[2] = row[i].p[1] + sg * row[i].half * t[0] / l;
+                c[0] = row[i].p[0], c[2] = row[i].p[1];
                 ww_water_sample ws;
                 ww_water_at(sc, st, w[0], w[2], 0.0, &ws);
                 w[1] = ws.height;
@@ -210,6 +282,7 @@ TEST_IMAGE(picture_wake_foam_behind_the_boat_on_both_sides) {
         double sx = (double)with.w / sc->width, sy = (double)with.h / sc->height;
         for (int s = 0; s < 2; s++)
             for (int i = 0; i < 2 * n; i++) side_poly[s][i][0] *= sx, side_poly[s][i][1] *= sy;
+        (void)stern;
         long count[2] = {0, 0}, changed = 0, outside = 0;
         double gain = 0.0;
         for (int y = 0; y < with.h; y++)
@@ -248,5 +321,90 @@ TEST_IMAGE(picture_wake_foam_behind_the_boat_on_both_sides) {
     ww_image_free(&with.im);
     ww_image_free(&none.im);
     ww_state_free(st);
+    ww_scene_free(sc);
+}
+
+/* seen from above the boat, where neither side of the hull hides the water beside it: a bow
+ * wave beside the hull's forward half on both sides, and arms whose foam runs on along the
+ * wedge rather than in dashes with bare water between */
+TEST_IMAGE(picture_wake_bow_wave_and_unbroken_arms_from_above) {
+    REQUIRE_GL();
+    /* where the boat is at the frame, for the camera over it */
+    ww_scene *sc = load(WAKE_SCENE);
+    if (!sc) return;
+    ww_state *st = ww_state_new(sc);
+    double bx = 0.0, bz = 0.0;
+    if (run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame))
+        bx = st->boat_pos[0] - ABOVE_BACK, bz = st->boat_pos[2];
+    ww_state_free(st);
+    ww_scene_free(sc);
+    /* the scene again with the camera ABOVE m over the path, ABOVE_BACK m behind the boat's
+     * middle, looking down the path's line */
+    char text[2048], cam[160], path[600];
+    snprintf(cam, sizeof cam, "{t: 0, position: [%.3f, %.1f, %.3f], look_at: [%.3f, 0, %.3f]}",
+             bx, ABOVE, bz, bx + 1.0, bz);
+    const char *at = strstr(WAKE_SCENE, WAKE_CAMERA);
+    ENSURE(at != NULL);
+    if (!at) return;
+    snprintf(text, sizeof text, "%.*s%s%s", (int)(at - WAKE_SCENE), WAKE_SCENE, cam,
+             at + strlen(WAKE_CAMERA));
+    snprintf(path, sizeof path, "%s/wake.yaml", ww_test_tmpdir("wake_above"));
+    ENSURE(ww_test_write_text(path, text) == 0);
+    ww_test_pic with = {0}, none = {0};
+    sc = load(text);
+    st = sc ? ww_state_new(sc) : NULL;
+    if (sc && ww_test_render_pic(path, STRAIGHT_FRAME, "640x360", NULL, "wake_on", &with) &&
+        ww_test_render_pic(path, STRAIGHT_FRAME, "640x360", "--set objects.boat.wake=0",
+                           "wake_off", &none) &&
+        run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) {
+        double len = sc->boat.length;
+        /* the bow wave: foam in the band beside the hull's forward half, on each side; points
+         * every BOW_STEP m along the middle of the band */
+        for (int side = -1; side <= 1; side += 2) {
+            int seen = 0, points = 0;
+            for (double a = 0.5 * len; a <= len; a += BOW_STEP) {
+                double px[2];
+                beside(sc, st, a, side, ww_wake_hull_half(sc, a) + 0.5 * WW_WAKE_BAND, &with, px);
+                seen += foam_near(&with, &none, px[0], px[1]);
+                points++;
+            }
+            printf("  the bow wave on side %+d: foam at %d of %d points beside the forward half\n",
+                   side, seen, points);
+            ENSURE_MSG(seen >= BOW_SHARE_MIN * points, "a bow wave at %d of %d points", seen,
+                       points);
+        }
+
+        /* the arms: across the outer part of each side (ARM_CUT_FROM of the half width out to
+         * the edge, clear of the wash, where the arms lie) every ARM_STEP m of path from
+         * ARM_FROM to ARM_TO behind the stern, foam somewhere on the cut (dashes leave cuts of
+         * bare water) */
+        for (int side = -1; side <= 1; side += 2) {
+            int seen = 0, cuts = 0, gap = 0, longest = 0;
+            for (double back = ARM_FROM; back <= ARM_TO; back += ARM_STEP) {
+                double half = (len + back) * tan(ww_m_rad(WW_WAKE_KELVIN_DEG));
+                int hit = 0;
+                for (int k = 0; k <= ARM_CUT_POINTS && !hit; k++) {
+                    double px[2],
+                        out = half * (ARM_CUT_FROM + (1.02 - ARM_CUT_FROM) * k / ARM_CUT_POINTS);
+                    beside(sc, st, -back, side, out, &with, px);
+                    hit = foam_near(&with, &none, px[0], px[1]);
+                }
+                seen += hit;
+                cuts++;
+                gap = hit ? 0 : gap + 1;
+                longest = gap > longest ? gap : longest;
+            }
+            printf("  the arm on side %+d: foam on %d of %d cuts across it, %.0f to %.0f m behind "
+                   "the stern; the longest stretch without, %.2f m\n", side, seen, cuts, ARM_FROM,
+                   ARM_TO, longest * ARM_STEP);
+            ENSURE_MSG(seen >= ARM_SHARE_MIN * cuts,
+                       "the arm on side %+d has foam on %d of %d cuts", side, seen, cuts);
+            ENSURE_MSG(longest * ARM_STEP <= ARM_GAP_MAX,
+                       "the arm on side %+d: %.2f m without foam", side, longest * ARM_STEP);
+        }
+    }
+    ww_image_free(&with.im);
+    ww_image_free(&none.im);
+    if (st) ww_state_free(st);
     ww_scene_free(sc);
 }

@@ -1119,15 +1119,16 @@ static void frame_lights(ww_geometry *g, const ww_scene *sc, const ww_state *st,
 }
 
 /* a mesh built this frame (g->strand_vert, g->strand_index) into m's buffers, with its one
- * instance: the vertices are camera-relative already, so its matrix is the identity */
+ * instance (its albedo and extra): the vertices are camera-relative already, so its matrix is
+ * the identity */
 static void built_upload(ww_geometry *g, const ww_gl *gl, gmesh *m, int nvert, int nindex,
-                         const double albedo[3], double spec) {
+                         const double albedo[3], const double extra[4]) {
     m->nindex = nindex;
     m->ninst = nindex > 0;
     if (nindex == 0) return;
     instance in = {.model = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}};
     for (int c = 0; c < 3; c++) in.color[c] = (float)albedo[c];
-    in.extra[2] = (float)spec;
+    for (int c = 0; c < 4; c++) in.extra[c] = (float)extra[c];
     gl->BindBuffer(GL_ARRAY_BUFFER, m->vbo);
     gl->BufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)nvert * 8 * sizeof(float), g->strand_vert);
     gl->BindBuffer(GL_ARRAY_BUFFER, m->inst);
@@ -1158,19 +1159,23 @@ static void upload_strands(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
         int rod = which == WW_STRAND_ROD;
         double albedo[3];
         for (int c = 0; c < 3; c++) albedo[c] = rod ? ROD_ALBEDO : sc->rod.line_color[c];
-        built_upload(g, gl, m, nvert, nindex, albedo, rod ? ROD_SPEC : SPEC_WET);
+        double extra[4] = {0.0, 0.0, rod ? ROD_SPEC : SPEC_WET, 0.0};
+        built_upload(g, gl, m, nvert, nindex, albedo, extra);
     }
 }
 
-/* this frame's wake (gfx/wake.h), with the foam's colour; none under water */
+/* this frame's wake (gfx/wake.h), with the foam's colour and the stern's odometer and
+ * half-breadth in the instance's extra (z, w); none under water */
 #define FOAM_ALBEDO 0.85
 static void upload_wake(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
     ww_line_eye eye = frame_eye(f);
+    double stern[2] = {0.0, 0.0};
     int nvert = 0, nindex = f->underwater ? 0 : ww_wake_build(sc, f->st, &eye, g->strand_vert,
-                                                              g->strand_index, &nvert);
+                                                              g->strand_index, &nvert, stern);
     double foam[3] = {FOAM_ALBEDO, FOAM_ALBEDO, FOAM_ALBEDO};
-    built_upload(g, gl, &g->wake, nvert, nindex, foam, 0.0);
+    double extra[4] = {0.0, 0.0, stern[0], stern[1]};
+    built_upload(g, gl, &g->wake, nvert, nindex, foam, extra);
 }
 
 /* this frame's instances (once per frame, whichever pass draws first) */
