@@ -77,7 +77,7 @@ in vec3 v_mesh;
 flat in float v_pattern;
 #endif
 #if WW_GEOM_MODE == 5
-flat in vec2 v_wake;
+flat in vec3 v_wake;
 #endif
 out vec4 o_color;
 
@@ -267,9 +267,11 @@ const float WAKE_ARM_BAND = 0.3;     // the bow wave's and the arms' band inside
 const float WAKE_ARM_GROW = 0.03;    // ... widening by this per m behind the stern
 const float WAKE_COVER_MAX = 0.85;
 const float WAKE_WASH_FRESH = 0.8;   // the wash's fresh coverage right behind the transom
-const float WAKE_ARM_FRESH = 0.7;    // the arms' and bow wave's
-const float WAKE_LACE_FRESH = 0.8;   // the lace's, where it starts
+const float WAKE_ARM_FRESH = 0.8;    // the arms' and bow wave's
+const float WAKE_LACE_FRESH = 0.8;   // the lace's, where it starts ...
+const float WAKE_ARM_LACE = 0.6;     // ... and the share of it the arms' breaking leaves
 const float WAKE_CREST_SPACING = 0.9; // m between the arms' breaking crests, across them
+const float WAKE_CREST_CYCLE = 1.5;  // s over which their raggedness changes
 const float WAKE_GROW = 0.7;         // noise level the coverage lifts the patches by
 const float WAKE_SOFT = 0.6;         // a patch's edge, in the noise's range
 const float WAKE_LACE_WIDTH = 0.35;  // the lace's lines: the noise's range about its middle
@@ -369,18 +371,31 @@ void main() {
         float wash = ww_wake_foam(fresh * in_wash, lace_left * in_wash, n, l);
 
         // the bow wave and the arms: a band inside the ribbon's edge, widening behind the
-        // stern, broken into crests slanting back at 54.7 degrees to the path about
-        // WAKE_CREST_SPACING apart across themselves, each ragged where the noise along it is low
+        // stern. Their crests are a steady pattern that travels with the boat (Kelvin's), so
+        // their foam is drawn in the boat's frame: along the hull one breaking wave, behind the
+        // stern crests slanting back at 54.7 degrees to the path about WAKE_CREST_SPACING apart
+        // across themselves, made ragged by a noise stretched along them that changes over
+        // WAKE_CREST_CYCLE s (two of it crossfaded, each offset anew every cycle). What breaks leaves a lace in the water
+        // inside the band, which moves out across the water as the wedge widens.
         float band = WAKE_ARM_BAND + WAKE_ARM_GROW * grow, in_edge = v_uv.y - ax;
         float in_arm = smoothstep(0.0, 0.05 + px, in_edge) *
                        (1.0 - smoothstep(0.35 * band, band + px, in_edge));
-        vec2 crest = vec2(0.816 * ax - 0.578 * along, 0.816 * along + 0.578 * ax);
-        vec2 m = ww_wake_noise(vec2(crest.x * 1.2, crest.y * 3.0), px * vec2(1.2, 3.0));
+        float behind_arm = WAKE_ARM_LACE * smoothstep(0.9 * band, 1.3 * band, in_edge) *
+                           (1.0 - smoothstep(1.6 * band, 2.6 * band, in_edge));
+        vec2 crest = vec2(0.578 * back + 0.816 * ax, 0.816 * back - 0.578 * ax);
+        vec2 q = vec2(crest.x * 1.2, crest.y * 3.0), fq = px * vec2(1.2, 3.0);
+        float cyc = v_wake.z / WAKE_CREST_CYCLE, k = floor(cyc), w = cyc - k;
+        vec2 m = mix(ww_wake_noise(q + vec2(17.0, 5.0) * k, fq),
+                     ww_wake_noise(q + vec2(17.0, 5.0) * (k + 1.0), fq), w);
+        // the blend of two noises varies less than either: its spread restored about the mean
+        m.x = 0.5 + (m.x - 0.5) * inversesqrt(w * w + (1.0 - w) * (1.0 - w));
         float aa = 1.0 - smoothstep(0.25, 0.5, px / WAKE_CREST_SPACING);
         float ph = 6.2832 * (crest.y / WAKE_CREST_SPACING + 2.0 * m.x);
-        float feather = mix(0.5, smoothstep(-0.2, 0.8, sin(ph)), aa);
+        float feather = mix(0.5, smoothstep(-0.5, 0.5, sin(ph)), aa);
+        float hugging = mix(0.45, 1.0, smoothstep(0.3, 0.6, m.x)); // along the hull: one wave
+        feather = mix(hugging, feather, smoothstep(0.0, 2.0, back));
         fresh = WAKE_ARM_FRESH * strength * exp(-age / WAKE_ARM_LIFE);
-        float arm = ww_wake_foam(fresh * in_arm * feather, lace_left * in_arm, m, l);
+        float arm = ww_wake_foam(fresh * in_arm * feather, lace_left * behind_arm, m, l);
 
         float cover = min(max(wash, arm), WAKE_COVER_MAX);
         vec3 up = vec3(0.0, 1.0, 0.0);

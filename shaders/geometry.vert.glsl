@@ -60,7 +60,8 @@ out vec3 v_mesh;           // mesh space at rest (the pattern stays on the bendi
 flat out float v_pattern;
 #endif
 #if WW_GEOM_MODE == 5
-flat out vec2 v_wake;      // the wake's stern: its odometer m, the transom's half-breadth m
+flat out vec3 v_wake;      // the wake: the stern's odometer m, the transom's half-breadth m,
+                           // the time s
 #endif
 
 const float WW_WIGGLE_K = 9.0; // rad per mesh unit: about 1.4 waves along the body
@@ -113,7 +114,7 @@ void main() {
     v_color = a_color;
     v_spec = a_extra.z;
 #if WW_GEOM_MODE == 5
-    v_wake = a_extra.zw;
+    v_wake = vec3(a_extra.zw, a_extra.x);
 #endif
 #if WW_FISH_PATTERNS
     v_mesh = a_pos;

@@ -74,6 +74,13 @@ static const char *WAKE_SCENE =
 #define ARM_CUT_FROM 0.55
 #define ARM_CUT_POINTS 24
 #define ARM_SHARE_MIN 0.9
+/* one frame apart, at least this share of the points in the arms' bands with foam in either
+ * frame have it in both; TRAVEL_ACROSS + 1 points across a band; ARM_GROW, the band's widening
+ * per m behind the stern (geometry.frag.glsl's WAKE_ARM_GROW) */
+#define TRAVEL_SHARE_MIN 0.85
+#define TRAVEL_BAND 0.8 /* of the band from its outer edge in: the lace starts at 0.9 */
+#define TRAVEL_ACROSS 8
+#define ARM_GROW 0.03
 #define ARM_GAP_MAX 0.5
 /* the view from above: height m, and how far behind the boat's middle */
 #define ABOVE 14.0
@@ -214,8 +221,8 @@ static double outline_distance(const double (*poly)[2], int n, double x, double 
     return best;
 }
 
-/* whether any pixel within 1 px of (x, y) moved by more than WAKE_LEVELS between a and b */
-static int foam_near(const ww_test_pic *a, const ww_test_pic *b, double x, double y) {
+/* whether any pixel within 1 px of (x, y) moved by more than `levels` between a and b */
+static int foam_near(const ww_test_pic *a, const ww_test_pic *b, double x, double y, int levels) {
     for (int dy = -1; dy <= 1; dy++)
         for (int dx = -1; dx <= 1; dx++) {
             int px = (int)floor(x) + dx, py = (int)floor(y) + dy;
@@ -223,7 +230,7 @@ static int foam_near(const ww_test_pic *a, const ww_test_pic *b, double x, doubl
             const unsigned char *p = ww_test_pixel(&a->im, px, py);
             const unsigned char *q = ww_test_pixel(&b->im, px, py);
             for (int c = 0; c < 3; c++)
-                if (abs(p[c] - q[c]) > WAKE_LEVELS) return 1;
+                if (abs(p[c] - q[c]) > levels) return 1;
         }
     return 0;
 }
@@ -324,39 +331,86 @@ TEST_IMAGE(picture_wake_foam_behind_the_boat_on_both_sides) {
     ww_scene_free(sc);
 }
 
+/* the run seen from above at a frame: the camera ABOVE m over the path, ABOVE_BACK m behind the
+ * boat's middle then, looking down the path's line. Renders it with and without the wake (tag
+ * names the renders) and leaves the scene with that camera and its state at the frame; 0 when
+ * any of it failed (checked) */
+typedef struct above_view {
+    ww_scene *sc;
+    ww_state *st;
+    ww_test_pic with, none;
+} above_view;
+
+static void above_free(above_view *v) {
+    ww_image_free(&v->with.im);
+    ww_image_free(&v->none.im);
+    if (v->st) ww_state_free(v->st);
+    ww_scene_free(v->sc);
+    memset(v, 0, sizeof *v);
+}
+
+static int above(int frame, const char *tag, above_view *v) {
+    memset(v, 0, sizeof *v);
+    /* where the boat is at the frame, for the camera over it */
+    ww_scene *sc = load(WAKE_SCENE);
+    if (!sc) return 0;
+    ww_state *st = ww_state_new(sc);
+    int ok = run_to(sc, st, frame * sc->steps_per_frame);
+    double bx = st->boat_pos[0] - ABOVE_BACK, bz = st->boat_pos[2];
+    ww_state_free(st);
+    ww_scene_free(sc);
+    if (!ok) return 0;
+    char text[2048], cam[160], path[600], on[80], off[80];
+    snprintf(cam, sizeof cam, "{t: 0, position: [%.3f, %.1f, %.3f], look_at: [%.3f, 0, %.3f]}",
+             bx, ABOVE, bz, bx + 1.0, bz);
+    const char *at = strstr(WAKE_SCENE, WAKE_CAMERA);
+    ENSURE(at != NULL);
+    if (!at) return 0;
+    snprintf(text, sizeof text, "%.*s%s%s", (int)(at - WAKE_SCENE), WAKE_SCENE, cam,
+             at + strlen(WAKE_CAMERA));
+    snprintf(path, sizeof path, "%s/wake.yaml", ww_test_tmpdir(tag));
+    ENSURE(ww_test_write_text(path, text) == 0);
+    snprintf(on, sizeof on, "%s_on", tag);
+    snprintf(off, sizeof off, "%s_off", tag);
+    v->sc = load(text);
+    if (!v->sc) return 0;
+    v->st = ww_state_new(v->sc);
+    if (ww_test_render_pic(path, frame, "640x360", NULL, on, &v->with) &&
+        ww_test_render_pic(path, frame, "640x360", "--set objects.boat.wake=0", off, &v->none) &&
+        run_to(v->sc, v->st, frame * v->sc->steps_per_frame))
+        return 1;
+    above_free(v);
+    return 0;
+}
+
+/* the arms' cuts (below): for each side, ARM_FROM to ARM_TO m behind the stern every ARM_STEP,
+ * ARM_CUT_POINTS + 1 points across from ARM_CUT_FROM of the half width to just past the edge;
+ * whether each has foam within a pixel, in that order; returns the count */
+enum { ARM_CUTS = 37 }; /* (ARM_TO - ARM_FROM) / ARM_STEP + 1 */
+static int arm_points(const above_view *v, int side, unsigned char *foam) {
+    int n = 0;
+    for (int c = 0; c < ARM_CUTS; c++) {
+        double back = ARM_FROM + c * ARM_STEP;
+        double half = (v->sc->boat.length + back) * tan(ww_m_rad(WW_WAKE_KELVIN_DEG));
+        for (int k = 0; k <= ARM_CUT_POINTS; k++) {
+            double px[2], out = half * (ARM_CUT_FROM + (1.02 - ARM_CUT_FROM) * k / ARM_CUT_POINTS);
+            beside(v->sc, v->st, -back, side, out, &v->with, px);
+            foam[n++] = (unsigned char)foam_near(&v->with, &v->none, px[0], px[1], WAKE_LEVELS);
+        }
+    }
+    return n;
+}
+
 /* seen from above the boat, where neither side of the hull hides the water beside it: a bow
  * wave beside the hull's forward half on both sides, and arms whose foam runs on along the
  * wedge rather than in dashes with bare water between */
 TEST_IMAGE(picture_wake_bow_wave_and_unbroken_arms_from_above) {
     REQUIRE_GL();
-    /* where the boat is at the frame, for the camera over it */
-    ww_scene *sc = load(WAKE_SCENE);
-    if (!sc) return;
-    ww_state *st = ww_state_new(sc);
-    double bx = 0.0, bz = 0.0;
-    if (run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame))
-        bx = st->boat_pos[0] - ABOVE_BACK, bz = st->boat_pos[2];
-    ww_state_free(st);
-    ww_scene_free(sc);
-    /* the scene again with the camera ABOVE m over the path, ABOVE_BACK m behind the boat's
-     * middle, looking down the path's line */
-    char text[2048], cam[160], path[600];
-    snprintf(cam, sizeof cam, "{t: 0, position: [%.3f, %.1f, %.3f], look_at: [%.3f, 0, %.3f]}",
-             bx, ABOVE, bz, bx + 1.0, bz);
-    const char *at = strstr(WAKE_SCENE, WAKE_CAMERA);
-    ENSURE(at != NULL);
-    if (!at) return;
-    snprintf(text, sizeof text, "%.*s%s%s", (int)(at - WAKE_SCENE), WAKE_SCENE, cam,
-             at + strlen(WAKE_CAMERA));
-    snprintf(path, sizeof path, "%s/wake.yaml", ww_test_tmpdir("wake_above"));
-    ENSURE(ww_test_write_text(path, text) == 0);
-    ww_test_pic with = {0}, none = {0};
-    sc = load(text);
-    st = sc ? ww_state_new(sc) : NULL;
-    if (sc && ww_test_render_pic(path, STRAIGHT_FRAME, "640x360", NULL, "wake_on", &with) &&
-        ww_test_render_pic(path, STRAIGHT_FRAME, "640x360", "--set objects.boat.wake=0",
-                           "wake_off", &none) &&
-        run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) {
+    above_view v;
+    if (above(STRAIGHT_FRAME, "wake_above", &v)) {
+        ww_scene *sc = v.sc;
+        ww_state *st = v.st;
+        const ww_test_pic with = v.with, none = v.none;
         double len = sc->boat.length;
         /* the bow wave: foam in the band beside the hull's forward half, on each side; points
          * every BOW_STEP m along the middle of the band */
@@ -365,7 +419,7 @@ TEST_IMAGE(picture_wake_bow_wave_and_unbroken_arms_from_above) {
             for (double a = 0.5 * len; a <= len; a += BOW_STEP) {
                 double px[2];
                 beside(sc, st, a, side, ww_wake_hull_half(sc, a) + 0.5 * WW_WAKE_BAND, &with, px);
-                seen += foam_near(&with, &none, px[0], px[1]);
+                seen += foam_near(&with, &none, px[0], px[1], WAKE_LEVELS);
                 points++;
             }
             printf("  the bow wave on side %+d: foam at %d of %d points beside the forward half\n",
@@ -379,32 +433,68 @@ TEST_IMAGE(picture_wake_bow_wave_and_unbroken_arms_from_above) {
          * ARM_FROM to ARM_TO behind the stern, foam somewhere on the cut (dashes leave cuts of
          * bare water) */
         for (int side = -1; side <= 1; side += 2) {
-            int seen = 0, cuts = 0, gap = 0, longest = 0;
-            for (double back = ARM_FROM; back <= ARM_TO; back += ARM_STEP) {
-                double half = (len + back) * tan(ww_m_rad(WW_WAKE_KELVIN_DEG));
+            unsigned char foam[ARM_CUTS * (ARM_CUT_POINTS + 1)];
+            arm_points(&v, side, foam);
+            int seen = 0, gap = 0, longest = 0;
+            for (int c = 0; c < ARM_CUTS; c++) {
                 int hit = 0;
-                for (int k = 0; k <= ARM_CUT_POINTS && !hit; k++) {
-                    double px[2],
-                        out = half * (ARM_CUT_FROM + (1.02 - ARM_CUT_FROM) * k / ARM_CUT_POINTS);
-                    beside(sc, st, -back, side, out, &with, px);
-                    hit = foam_near(&with, &none, px[0], px[1]);
-                }
+                for (int k = 0; k <= ARM_CUT_POINTS; k++) hit |= foam[c * (ARM_CUT_POINTS + 1) + k];
                 seen += hit;
-                cuts++;
                 gap = hit ? 0 : gap + 1;
                 longest = gap > longest ? gap : longest;
             }
             printf("  the arm on side %+d: foam on %d of %d cuts across it, %.0f to %.0f m behind "
-                   "the stern; the longest stretch without, %.2f m\n", side, seen, cuts, ARM_FROM,
-                   ARM_TO, longest * ARM_STEP);
-            ENSURE_MSG(seen >= ARM_SHARE_MIN * cuts,
-                       "the arm on side %+d has foam on %d of %d cuts", side, seen, cuts);
+                   "the stern; the longest stretch without, %.2f m\n", side, seen, ARM_CUTS,
+                   ARM_FROM, ARM_TO, longest * ARM_STEP);
+            ENSURE_MSG(seen >= ARM_SHARE_MIN * ARM_CUTS,
+                       "the arm on side %+d has foam on %d of %d cuts", side, seen, ARM_CUTS);
             ENSURE_MSG(longest * ARM_STEP <= ARM_GAP_MAX,
                        "the arm on side %+d: %.2f m without foam", side, longest * ARM_STEP);
         }
+        above_free(&v);
     }
-    ww_image_free(&with.im);
-    ww_image_free(&none.im);
-    if (st) ww_state_free(st);
-    ww_scene_free(sc);
+}
+
+/* the arms' breaking crests are a pattern that travels with the boat (Kelvin's is steady in the
+ * boat's frame): seen from above at the same place relative to the boat one frame apart, the
+ * foam in the arms' bands lies at the same points, where foam drawn fixed to the water under a
+ * band moving out across it boiled from frame to frame. The points: across each band (from
+ * TRAVEL_BAND of its width, WW_WAKE_BAND + ARM_GROW m per m behind the stern, in from the
+ * ribbon's edge, to the edge) at TRAVEL_ACROSS + 1 points, every ARM_STEP m of path from
+ * ARM_FROM to ARM_TO */
+static int band_points(const above_view *v, int side, unsigned char *foam) {
+    int n = 0;
+    for (int c = 0; c < ARM_CUTS; c++) {
+        double back = ARM_FROM + c * ARM_STEP, band = WW_WAKE_BAND + ARM_GROW * back;
+        double half = (v->sc->boat.length + back) * tan(ww_m_rad(WW_WAKE_KELVIN_DEG));
+        for (int k = 0; k <= TRAVEL_ACROSS; k++) {
+            double px[2];
+            beside(v->sc, v->st, -back, side,
+                   half - TRAVEL_BAND * band * (1.0 - (double)k / TRAVEL_ACROSS), &v->with, px);
+            foam[n++] = (unsigned char)foam_near(&v->with, &v->none, px[0], px[1], WAKE_LEVELS);
+        }
+    }
+    return n;
+}
+
+TEST_IMAGE(picture_wake_arms_travel_with_the_boat) {
+    REQUIRE_GL();
+    above_view a, b;
+    if (!above(STRAIGHT_FRAME, "wake_travel_a", &a)) return;
+    if (above(STRAIGHT_FRAME + 1, "wake_travel_b", &b)) {
+        int both = 0, either = 0;
+        for (int side = -1; side <= 1; side += 2) {
+            unsigned char fa[ARM_CUTS * (TRAVEL_ACROSS + 1)], fb[ARM_CUTS * (TRAVEL_ACROSS + 1)];
+            int n = band_points(&a, side, fa);
+            band_points(&b, side, fb);
+            for (int i = 0; i < n; i++) both += fa[i] && fb[i], either += fa[i] || fb[i];
+        }
+        double share = either ? (double)both / either : 0.0;
+        printf("  the arms' foam one frame apart, at the same places relative to the boat: %d "
+               "points in both of %d in either (%.2f)\n", both, either, share);
+        ENSURE_MSG(either > 0 && share >= TRAVEL_SHARE_MIN,
+                   "the arms' foam at %d of %d points in both frames", both, either);
+        above_free(&b);
+    }
+    above_free(&a);
 }

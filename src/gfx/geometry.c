@@ -1164,9 +1164,11 @@ static void upload_strands(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     }
 }
 
-/* this frame's wake (gfx/wake.h), with the foam's colour and the stern's odometer and
- * half-breadth in the instance's extra (z, w); none under water */
+/* this frame's wake (gfx/wake.h), with the foam's colour, and the time, the stern's odometer
+ * and the transom's half-breadth in the instance's extra (x, z, w; y is the fish's wiggle, 0);
+ * none under water */
 #define FOAM_ALBEDO 0.85
+#define WAKE_CREST_REPEAT (256 * 1.5) /* s: geometry.frag.glsl's WAKE_CREST_CYCLE, 256 times */
 static void upload_wake(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     const ww_scene *sc = f->sc;
     ww_line_eye eye = frame_eye(f);
@@ -1174,7 +1176,9 @@ static void upload_wake(ww_geometry *g, const ww_gl *gl, const ww_frame *f) {
     int nvert = 0, nindex = f->underwater ? 0 : ww_wake_build(sc, f->st, &eye, g->strand_vert,
                                                               g->strand_index, &nvert, stern);
     double foam[3] = {FOAM_ALBEDO, FOAM_ALBEDO, FOAM_ALBEDO};
-    double extra[4] = {0.0, 0.0, stern[0], stern[1]};
+    /* the time, for the noise of the wake's crests: its offsets repeat after 256 cycles (the
+     * noise's period, common.glsl), so wrapping there keeps it continuous in a float */
+    double extra[4] = {fmod(f->st->t, WAKE_CREST_REPEAT), 0.0, stern[0], stern[1]};
     built_upload(g, gl, &g->wake, nvert, nindex, foam, extra);
 }
 

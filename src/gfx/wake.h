@@ -20,16 +20,17 @@
  * and the wedge's, (the path length back from the stem) tan 19.47 deg, so its edges are the
  * bow wave where that hugs the hull and the wedge's arms from where they leave it; in a turn
  * it is at most a share of the radius, so the ribbon never folds. Each row carries the foam's
- * strength there (the boat's speed when it passed: none below WAKE_SPEED_MIN; the bow's share
- * along the hull; the trail's ends fade out), the time since the stern passed it, and the
- * odometer then, a coordinate fixed to the water along the path, so the foam stays where it
- * was made as the boat moves on. The shader makes the wash, the arms and the bow wave from
- * these (geometry.frag.glsl).
+ * strength there (the boat's speed when it passed: none below WAKE_SPEED_MIN; 0 on the row
+ * ahead of the stem; the trail's ends fade out), the time since the stern passed it, and the
+ * odometer then, a coordinate fixed to the water along the path, so the wash and the lace stay
+ * where they were made as the boat moves on. The shader makes the wash, the bow wave and the
+ * arms from these (geometry.frag.glsl); the last two travel with the boat, as Kelvin's pattern
+ * does: their crests are drawn in the boat's frame, from the path length behind the stern.
  *
  * Vertex layout (8 floats, the geometry meshes'): position camera-relative m (at the rest level:
  * the vertex shader puts it on the surface), (strength, age s, odometer m), (s -1 .. 1 across,
  * the half width m); WW_WAKE_ACROSS points across each row. The draw's instance carries the
- * stern's odometer and the transom's half-breadth (ww_wake_stern). */
+ * stern's odometer and the transom's half-breadth (ww_wake_build's `stern`) and the time. */
 #ifndef WW_GFX_WAKE_H
 #define WW_GFX_WAKE_H
 
