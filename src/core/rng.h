@@ -17,7 +17,8 @@ enum {
     WW_RNG_WAVES = 1, WW_RNG_RIPPLES, WW_RNG_STONES, WW_RNG_FISH, WW_RNG_CHEST, WW_RNG_BUBBLES,
     WW_RNG_SWEEP, /* the points of `sweep --random` */
     WW_RNG_CUBES, WW_RNG_BOAT, WW_RNG_ROD,
-    WW_RNG_BENCH /* the sample boxes of `bench sim`'s columns table */
+    WW_RNG_BENCH, /* the sample boxes of `bench sim`'s columns table */
+    WW_RNG_SPLASH /* the drops a splash throws (gfx/splash.h): the picture only */
 };
 
 void ww_rng_seed(ww_rng *r, uint64_t seed, uint64_t stream);

@@ -16,6 +16,7 @@
 #include "core/mathx.h"
 #include "gfx/caustic_set.h"
 #include "gfx/line.h"
+#include "gfx/splash.h"
 #include "gfx/wake.h"
 #include "gfx/meshgen.h"
 #include "gfx/render_impl.h"
@@ -53,7 +54,9 @@
 #define WW_TEX_MATERIAL 4          /* texture unit of an OBJ material's map_Kd */
 #define WW_TEX_CAUSTIC_SET 5       /* texture unit of the caustics' looped set (method texture) */
 #define SPEC_DEFAULT 0.25         /* sun highlight on most things */
-#define SPEC_WET 0.6              /* on fish and bubbles */
+#define SPEC_WET 0.6              /* on fish, bubbles and drops */
+/* a splash's drops: clear water seen as the sky and the sun it scatters, white at this size */
+static const double SPRAY_ALBEDO[3] = {0.8, 0.85, 0.88};
 /* sunlight lost per metre of water (red goes first): seed 003's green-blue under water */
 #define WATER_EXTINCTION_R 0.45
 #define WATER_EXTINCTION_G 0.09
@@ -74,6 +77,7 @@ enum {
     SLOT_FISH_SLIM, /* objects.fish.species: one slot per body plan (ww_fish_shape order) */
     SLOT_FISH_DEEP,
     SLOT_FISH_LONG,
+    SLOT_SPRAY,  /* a splash's drops (gfx/splash.h) */
     SLOT_BUBBLE, /* air bubbles: blended, back to front (WW_GEOM_PART_BUBBLES) */
     SLOT_COLUMN, /* glow: drawn additively, never into depth */
     SLOT_COUNT
@@ -83,16 +87,16 @@ static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
     [SLOT_BOX] = WW_MESH_BOX,     [SLOT_SPHERE] = WW_MESH_SPHERE, [SLOT_STONE] = WW_MESH_STONE,
     [SLOT_HULL] = WW_MESH_HULL,   [SLOT_FISH] = WW_MESH_FISH,     [SLOT_LURE] = WW_MESH_LURE,
     [SLOT_CHEST] = WW_MESH_CHEST, [SLOT_GRID] = WW_MESH_GRID,     [SLOT_COLUMN] = WW_MESHGEN_COLUMN,
-    [SLOT_BUBBLE] = WW_MESH_SPHERE,
+    [SLOT_BUBBLE] = WW_MESH_SPHERE, [SLOT_SPRAY] = WW_MESH_SPHERE,
     [SLOT_FISH_SLIM] = WW_MESHGEN_FISH_OF(WW_FISH_SLIM),
     [SLOT_FISH_DEEP] = WW_MESHGEN_FISH_OF(WW_FISH_DEEP),
     [SLOT_FISH_LONG] = WW_MESHGEN_FISH_OF(WW_FISH_LONG),
 };
 
 /* the slots whose things cast shadow volumes: what casts into the shadow map (not the seabed,
- * the see-through bubbles or the glow) */
+ * the see-through bubbles, a splash's drops or the glow) */
 static int slot_casts(int s) {
-    return s != SLOT_SEABED && s != SLOT_BUBBLE && s != SLOT_COLUMN;
+    return s != SLOT_SEABED && s != SLOT_BUBBLE && s != SLOT_SPRAY && s != SLOT_COLUMN;
 }
 
 /* the slots of the fish species, whose instances carry a colour pattern */
@@ -198,6 +202,7 @@ struct ww_geometry {
     GLuint *image_tex; /* the scene's images a material draws (map_Kd), by asset index; 0 none */
     int nimage;
     struct bubble_order *bubble_order; /* scratch: this frame's bubbles, farthest first */
+    ww_splash_drop *drops;             /* scratch: this frame's drops of the splashes */
     gmesh strand[2];   /* the fishing line and its rod (gfx/line.h), built each frame */
     gmesh wake;        /* the boat's wake (gfx/wake.h), built each frame */
     int wake_on;       /* the scene draws one: the shaders need the waves (geometry.vert.glsl) */
@@ -510,10 +515,12 @@ static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
     cap[SLOT_CHEST] = sc->chest.on ? 1 : 0;
     cap[SLOT_COLUMN] = sc->chest.on ? 1 : 0;
     cap[SLOT_BUBBLE] = sc->bubbles.on ? sc->bubbles.total : 0;
+    cap[SLOT_SPRAY] = ww_splash_capacity(sc);
     for (int i = 0; i < sc->models.count; i++) {
         ww_mesh_kind k = sc->models.model[i].mesh;
         for (int s = 1; s < SLOT_COUNT; s++)
-            if (SLOT_KIND[s] == k && k != WW_MESH_NONE && k != WW_MESH_OBJ && s != SLOT_BUBBLE)
+            if (SLOT_KIND[s] == k && k != WW_MESH_NONE && k != WW_MESH_OBJ && s != SLOT_BUBBLE &&
+                s != SLOT_SPRAY)
                 cap[s]++;
     }
 }
@@ -536,6 +543,7 @@ void ww_geometry_free(ww_geometry *g, const ww_gl *gl) {
         if (g->image_tex[i]) gl->DeleteTextures(1, &g->image_tex[i]);
     free(g->image_tex);
     free(g->bubble_order);
+    free(g->drops);
     ww_water_ubos_free(gl, &g->ubos);
     if (g->caustic_tex) gl->DeleteTextures(1, &g->caustic_tex);
     ww_caustic_set_free(&g->cset);
@@ -890,6 +898,9 @@ ww_result ww_geometry_new(ww_renderer *r, const ww_scene *sc, ww_geometry **out,
         for (int k = 0; k < m->nmaterial && rc == WW_OK; k++)
             rc = material_texture(g, gl, sc, m->material[k].texture, err);
     }
+    if (rc == WW_OK && g->slot[SLOT_SPRAY].cap > 0 &&
+        !(g->drops = malloc((size_t)g->slot[SLOT_SPRAY].cap * sizeof *g->drops)))
+        rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
     if (rc == WW_OK && sc->bubbles.on &&
         !(g->bubble_order = malloc((size_t)sc->bubbles.total * sizeof *g->bubble_order)))
         rc = ww_error_set(err, WW_E_NOMEM, NULL, 0, 0, "geometry: out of memory");
@@ -1335,6 +1346,16 @@ static void upload_instances(ww_geometry *g, const ww_gl *gl, const ww_frame *f)
         }
         slot_upload(gl, &g->slot[SLOT_BUBBLE], in, n);
     }
+    if (g->slot[SLOT_SPRAY].cap) {
+        int n = ww_splash_drops(sc, st, g->drops, g->slot[SLOT_SPRAY].cap);
+        for (int k = 0; k < n; k++) {
+            double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, m[16], d = 2.0 * g->drops[k].radius;
+            double s[3] = {d, d, d};
+            m4_trs(m, g->drops[k].p, I, s);
+            put(&in[k], m, cam, SPRAY_ALBEDO, 0.0, SPEC_WET);
+        }
+        slot_upload(gl, &g->slot[SLOT_SPRAY], in, n);
+    }
     if (g->slot[SLOT_GRID].cap)
         slot_upload(gl, &g->slot[SLOT_GRID], in, add_models(sc, st, WW_MESH_GRID, cam, in, 0));
     for (int i = 0; i < g->nobj; i++) {
@@ -1613,7 +1634,11 @@ void ww_geometry_draw_parts(ww_geometry *g, ww_renderer *r, const ww_frame *f,
     int draws = 0;
     /* the seabed receives shadows but casts none worth a map */
     for (int s = 0; s < SLOT_COUNT; s++) {
-        if (s == SLOT_COLUMN || s == SLOT_BUBBLE || (s == SLOT_SEABED && mode == WW_GEOM_SHADOW))
+        /* a splash's drops: no shadow, and no mirror image, which would show their unlit
+         * undersides as dark specks under the splash */
+        if (s == SLOT_COLUMN || s == SLOT_BUBBLE ||
+            ((s == SLOT_SEABED || s == SLOT_SPRAY) && mode == WW_GEOM_SHADOW) ||
+            (s == SLOT_SPRAY && mode == WW_GEOM_REFLECTION))
             continue;
         if (!(parts & (s == SLOT_SEABED ? WW_GEOM_PART_SEABED : WW_GEOM_PART_SOLIDS))) continue;
         if (g->slot[s].ninst <= 0 || clipped_away(skip, &g->slot[s]) ||

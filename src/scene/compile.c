@@ -64,6 +64,7 @@ static const rule R_SPECTRUM_STEEPNESS = CLOSED(0, 0.95, "");
 static const rule R_RIPPLE_AMPLITUDE = CLOSED(0, 10, "m");
 static const rule R_RIPPLE_LIFETIME = OPEN_LO(0, 1e4, "s");
 static const rule R_RIPPLE_MAX = WHOLE(1, WW_MAX_RIPPLES, "");
+static const rule R_SPRAY = CLOSED(0, 4, "");
 static const rule R_RADIAL_DECAY = CLOSED(0, 1e3, "1/m");
 static const rule R_TIME_DECAY = CLOSED(0, 1e3, "1/s");
 static const rule R_RIPPLE_WAVENUMBER = OPEN_LO(0, 1e4, "rad/m");
@@ -821,7 +822,7 @@ static double ripple_speed(double k) {
 
 static ww_result compile_ripples(ctx *c, const section *water) {
     static const char *const keys[] = {"amplitude",  "lifetime",   "max",   "radial_decay",
-                                       "time_decay", "wavenumber", "speed", NULL};
+                                       "time_decay", "wavenumber", "speed", "spray", NULL};
     ww_ripple_desc *d = &c->sc->ripples;
     section s;
     TRY(wwc_open_section(c, water, "ripples", keys, &s));
@@ -836,6 +837,7 @@ static ww_result compile_ripples(ctx *c, const section *water) {
     TRY(wwc_get_number(c, &s, "time_decay", &R_TIME_DECAY, OPTIONAL, &d->time_decay));
     TRY(wwc_get_number(c, &s, "wavenumber", &R_RIPPLE_WAVENUMBER, OPTIONAL, &d->wavenumber));
     d->speed = ripple_speed(d->wavenumber);
+    TRY(wwc_get_number(c, &s, "spray", &R_SPRAY, OPTIONAL, &d->spray));
     return wwc_get_number(c, &s, "speed", &R_SPEED, OPTIONAL, &d->speed);
 }
 
@@ -1093,7 +1095,8 @@ void ww_scene_defaults(ww_scene *sc) {
                                    .radial_decay = 0.25,
                                    .time_decay = 0.6,
                                    .wavenumber = RIPPLE_DEFAULT_WAVENUMBER,
-                                   .speed = ripple_speed(RIPPLE_DEFAULT_WAVENUMBER)};
+                                   .speed = ripple_speed(RIPPLE_DEFAULT_WAVENUMBER),
+                                   .spray = 1.0};
     sc->fov = ww_m_rad(60.0);
     sc->near_clip = 0.1;
     sc->far_clip = 5000.0;

@@ -122,6 +122,7 @@ typedef struct ww_ripple_desc {
     double time_decay;     /* beta, 1/s */
     double wavenumber;     /* kr (seed 000's omega, which multiplies r - v t), rad/m */
     double speed;          /* v, m/s: capillary-gravity phase speed of kr unless given */
+    double spray;          /* the splash's droplets drawn (gfx/splash.h): 0 none, 1 as made */
 } ww_ripple_desc;
 
 /* time.integrator: how the systems of the scripted world advance their motion over a step.
