@@ -64,6 +64,7 @@ static const struct {
     {WW_MESHGEN_FISH_OF(WW_FISH_SLIM), "fish_slim", 1},
     {WW_MESHGEN_FISH_OF(WW_FISH_DEEP), "fish_deep", 1},
     {WW_MESHGEN_FISH_OF(WW_FISH_LONG), "fish_long", 1},
+    {WW_MESHGEN_DROP, "drop", 1},
 };
 
 /* the shipped OBJ models the renderer's closed test sorts: the floating marker buoy is one

@@ -87,7 +87,7 @@ static const ww_mesh_kind SLOT_KIND[SLOT_COUNT] = {
     [SLOT_BOX] = WW_MESH_BOX,     [SLOT_SPHERE] = WW_MESH_SPHERE, [SLOT_STONE] = WW_MESH_STONE,
     [SLOT_HULL] = WW_MESH_HULL,   [SLOT_FISH] = WW_MESH_FISH,     [SLOT_LURE] = WW_MESH_LURE,
     [SLOT_CHEST] = WW_MESH_CHEST, [SLOT_GRID] = WW_MESH_GRID,     [SLOT_COLUMN] = WW_MESHGEN_COLUMN,
-    [SLOT_BUBBLE] = WW_MESH_SPHERE, [SLOT_SPRAY] = WW_MESH_SPHERE,
+    [SLOT_BUBBLE] = WW_MESH_SPHERE, [SLOT_SPRAY] = WW_MESHGEN_DROP,
     [SLOT_FISH_SLIM] = WW_MESHGEN_FISH_OF(WW_FISH_SLIM),
     [SLOT_FISH_DEEP] = WW_MESHGEN_FISH_OF(WW_FISH_DEEP),
     [SLOT_FISH_LONG] = WW_MESHGEN_FISH_OF(WW_FISH_LONG),
@@ -519,8 +519,7 @@ static void slot_caps(const ww_scene *sc, int cap[SLOT_COUNT]) {
     for (int i = 0; i < sc->models.count; i++) {
         ww_mesh_kind k = sc->models.model[i].mesh;
         for (int s = 1; s < SLOT_COUNT; s++)
-            if (SLOT_KIND[s] == k && k != WW_MESH_NONE && k != WW_MESH_OBJ && s != SLOT_BUBBLE &&
-                s != SLOT_SPRAY)
+            if (SLOT_KIND[s] == k && k != WW_MESH_NONE && k != WW_MESH_OBJ && s != SLOT_BUBBLE)
                 cap[s]++;
     }
 }

@@ -287,6 +287,45 @@ static void gen_sphere(mb *b) {
     mb_ellipsoid(b, c, r);
 }
 
+/* a drop: an icosahedron of diameter 1 with the sphere's normals (12 vertices; a drop is a few
+ * pixels across, where a 425-vertex sphere only costs vertex work). Its faces are the triples of
+ * vertices a side apart, wound to face out */
+static double dist3(const double a[3], const double b[3]) {
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+static void gen_drop(mb *b) {
+    const double f = 0.5 * (1.0 + sqrt(5.0)), r = 0.5 / sqrt(1.0 + f * f);
+    double p[12][3];
+    for (int i = 0; i < 12; i++) {
+        double s1 = (i & 1) ? -1.0 : 1.0, s2 = (i & 2) ? -1.0 : 1.0, q[3] = {0, 0, 0};
+        int k = i >> 2; /* (0, +-1, +-f), (+-1, +-f, 0), (+-f, 0, +-1) */
+        q[(k + 1) % 3] = s1;
+        q[(k + 2) % 3] = s2 * f;
+        double l = sqrt(1.0 + f * f), n[3] = {q[0] / l, q[1] / l, q[2] / l};
+        for (int j = 0; j < 3; j++) p[i][j] = r * q[j];
+        mb_vert(b, p[i], n, 0.0, 0.0);
+    }
+    double side = 2.0 * r; /* the edge of the icosahedron (0, +-1, +-f) is 2 before scaling */
+    for (int i = 0; i < 12; i++)
+        for (int j = i + 1; j < 12; j++)
+            for (int k = j + 1; k < 12; k++) {
+                double e[3] = {dist3(p[i], p[j]), dist3(p[j], p[k]), dist3(p[i], p[k])};
+                if (fabs(e[0] - side) > 1e-9 || fabs(e[1] - side) > 1e-9 ||
+                    fabs(e[2] - side) > 1e-9)
+                    continue;
+                double u[3], v[3], c[3];
+                for (int m = 0; m < 3; m++) u[m] = p[j][m] - p[i][m], v[m] = p[k][m] - p[i][m];
+                c[0] = u[1] * v[2] - u[2] * v[1];
+                c[1] = u[2] * v[0] - u[0] * v[2];
+                c[2] = u[0] * v[1] - u[1] * v[0];
+                int out = c[0] * p[i][0] + c[1] * p[i][1] + c[2] * p[i][2] > 0.0;
+                if (out) mb_tri(b, i, j, k);
+                else mb_tri(b, i, k, j);
+            }
+}
+
 /* a flattened pebble: an ellipsoid, long in x, a little shorter in z, thin in y */
 static void gen_stone(mb *b) {
     double c[3] = {0, 0, 0}, r[3] = {0.5, 0.5 * WW_STONE_THICKNESS, 0.5 * WW_STONE_DEPTH};
@@ -603,6 +642,10 @@ ww_result ww_meshgen(ww_mesh_kind kind, ww_mesh_data *out, ww_error *err) {
     default:
         if (kind == WW_MESHGEN_COLUMN) {
             gen_column(&b);
+            break;
+        }
+        if (kind == WW_MESHGEN_DROP) {
+            gen_drop(&b);
             break;
         }
         if ((int)kind >= WW_MESHGEN_FISH_SPECIES && (int)kind < WW_MESHGEN_FISH_SPECIES + 3) {

@@ -42,6 +42,9 @@
  * gunwale of WW_MESH_HULL, normals up; the main pass draws it into depth before the water so
  * that no water shows inside a boat */
 #define WW_MESHGEN_HULL_CAP ((ww_mesh_kind)101)
+/* a splash's drop (not a ww_mesh_kind): an icosahedron of diameter 1 with the sphere's normals,
+ * closed */
+#define WW_MESHGEN_DROP ((ww_mesh_kind)110)
 
 /* the fish species' bodies (not ww_mesh_kind words: objects.fish.species picks them by shape,
  * scene/desc_fish_species.h): WW_MESHGEN_FISH_SPECIES + shape. Head +x, as WW_MESH_FISH, with
