@@ -11,6 +11,7 @@
 #include "core/mathx.h"
 #include "sim/events.h"
 #include "sim/fish.h"
+#include "sim/ripples.h"
 #include "sim/rod.h"
 #include "sim/state.h"
 #include "sim/step.h"
@@ -34,6 +35,9 @@
 #define FISH_MOUTH_TOL 1e-12
 /* a fight of a second or more reaches this share of the tug's depth at 60 steps a second */
 #define TUG_REACHED 0.95
+/* the tugs' splashes of a fight against 1 + its length times WW_FISH_TUG_HZ: the last tug may
+ * or may not have started when the fish is caught */
+#define TUG_SPLASH_ONSETS_TOL 1.0
 /* the yaw rate against turn_rate: one rounding of the clamp, rad/s */
 #define FISH_TURN_RATE_TOL 1e-9
 
@@ -328,6 +332,9 @@ typedef struct fishing_log {
     double max_fight_step; /* the longest step of a fighting fish over WW_FISH_DASH dt */
     double dip[2];         /* the least and the most the float was under its floating height
                             * while a fish fought, m */
+    int splashes[2];       /* the tugs' splashes of each fight: the ripples of the steps without
+                            * a landing ... */
+    int splashes_astray;   /* ... and those not at the float or not while a fish fought */
 } fishing_log;
 
 static void run_pond(int count, double radius, double until, fishing_log *log) {
@@ -343,7 +350,23 @@ static void run_pond(int count, double radius, double until, fishing_log *log) {
     log->dip[1] = -INFINITY;
     while (st->t < until && count <= 64) {
         memcpy(prev, st->fish_pos, sizeof(double) * 3 * (size_t)count);
+        double t_before = st->t;
+        int hooked_before = (int)st->lure_state[0] == WW_LURE_HOOKED;
         if (!step_ok(sc, st)) break;
+        /* the ripples this step added (stamped with its end): a tug's splash is at the float,
+         * while a fish fights */
+        int landed = events_of(sc, st, WW_SE_LURE_LAND, NULL); /* its splash, not a tug's */
+        for (int r = 0; r < st->ripple_slots[0] && !landed; r++) {
+            const double *e = st->ripple + WW_RIPPLE_STRIDE * r;
+            if (!(e[3] > 0.0) || e[2] < t_before + 0.5 * sc->dt) continue;
+            ENSURE_NEAR(e[3], WW_FISH_TUG_SPLASH * sc->rod.splash, 0.0);
+            int hooked = hooked_before || (int)st->lure_state[0] == WW_LURE_HOOKED;
+            if (hooked && e[0] == st->lure_pos[0] && e[1] == st->lure_pos[2] && log->bites > 0 &&
+                log->bites <= 2)
+                log->splashes[log->bites - 1]++;
+            else
+                log->splashes_astray++;
+        }
         const double *e = NULL;
         log->casts += events_of(sc, st, WW_SE_ROD_CAST, NULL);
         if (events_of(sc, st, WW_SE_LURE_LAND, NULL) && log->lands < 2)
@@ -419,11 +442,20 @@ TEST(fishing_cast_near_fish_bites_then_catches_within_the_window) {
     ENSURE_MSG(log.dip[1] <= WW_FISH_TUG_DEPTH + LURE_FLOAT_TOL &&
                    log.dip[1] >= TUG_REACHED * WW_FISH_TUG_DEPTH,
                "the float went %.4f m under (tugs %.2f m deep)", log.dip[1], WW_FISH_TUG_DEPTH);
+    /* a splash at the float as each tug starts: one at the bite, then one every 1 /
+     * WW_FISH_TUG_HZ s of the fight */
+    for (int c = 0; c < 2; c++) {
+        double tugs = 1.0 + WW_FISH_TUG_HZ * (log.t_catch[c] - log.t_bite[c]);
+        ENSURE_MSG(fabs(log.splashes[c] - tugs) <= TUG_SPLASH_ONSETS_TOL,
+                   "fight %d: %d splashes for %.2f tugs", c, log.splashes[c], tugs);
+    }
+    ENSURE_EQ_INT(log.splashes_astray, 0);
     printf("  bites %.3f s and %.3f s after landing, fights %.3f s and %.3f s; longest step on the "
-           "line %.3f of the dash's; the float tugged %.4f to %.4f m under\n",
+           "line %.3f of the dash's; the float tugged %.4f to %.4f m under, with %d and %d "
+           "splashes\n",
            log.t_bite[0] - log.t_land[0], log.t_bite[1] - log.t_land[1],
            log.t_catch[0] - log.t_bite[0], log.t_catch[1] - log.t_bite[1], log.max_fight_step,
-           log.dip[0], log.dip[1]);
+           log.dip[0], log.dip[1], log.splashes[0], log.splashes[1]);
 }
 
 TEST(fishing_at_most_one_fish_per_cast) {
@@ -631,7 +663,7 @@ TEST(fishing_a_bite_takes_the_lure_from_the_fish_after_it_in_the_step) {
 /* ---- determinism and the loader ----------------------------------------------------------- */
 
 /* the pond with 12 fish after 1800 steps (two casts, catches); printed on a mismatch */
-#define FISHING_HASH 0x5794f533c26d8093ull
+#define FISHING_HASH 0x736b5876c261c9d1ull
 
 TEST(fishing_determinism_and_slices) {
     char text[2048];

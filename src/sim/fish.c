@@ -14,6 +14,7 @@
 #include "core/select.h"
 #include "core/sincos.h"
 #include "sim/events.h"
+#include "sim/ripples.h"
 #include "sim/rod.h"
 #include "sim/water.h"
 
@@ -649,19 +650,27 @@ static void bite(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, i
 
 /* fighting on the line, the float tugged under (the rod's step floated it on the surface) and the
  * hook with it; caught when the fight's time is up */
-static void fight(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i) {
+/* one step of fish i's fight; returns 1 where a tug starts, with the fish thrashing at the float:
+ * the caller adds that splash after every fish has moved, as the step's lowest surface (ks) has
+ * no ripple added during it */
+static int fight(const ww_scene *sc, ww_state *st, const fish_step_consts *ks, int i) {
     const ww_fish_desc *f = &sc->fish;
     double tau = st->fish_timer[i] += sc->dt;
     double s = sine(WW_TAU * WW_FISH_TUG_HZ * tau);
     st->lure_pos[1] -= s > 0.0 ? WW_FISH_TUG_DEPTH * s * s : 0.0;
+    double was = tau - sc->dt;
+    long k = (long)floor(2.0 * WW_FISH_TUG_HZ * tau);
+    long k0 = was > 0.0 ? (long)floor(2.0 * WW_FISH_TUG_HZ * was) : -1;
+    int tug = k != k0 && k % 2 == 0;
     anchor(sc, st, ks, i, tau);
-    if (tau < st->fish_fight[i]) return;
+    if (tau < st->fish_fight[i]) return tug;
 
     st->fish_caught[0] += 1.0;
     ww_emit(sc, st, WW_SE_CATCH, i, st->fish_pos + 3 * i, st->fish_caught[0], 0.0);
     st->fish_mode[i] = WW_FISH_AWAY;
     st->fish_timer[i] = f->respawn;
     ww_rod_reel(sc, st);
+    return tug;
 }
 
 void ww_fish_step(const ww_scene *sc, ww_state *st) {
@@ -679,6 +688,7 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
     steering S;
     steer_all(sc, st, &ks, &P, &S);
     int banked[WW_MAX_FISH] = {0}; /* swam and did not bite: banks from its turn */
+    double splash[2] = {NAN, NAN}; /* where a fighting fish's tug splashes this step */
     for (int i = 0; i < f->count; i++) {
         switch ((int)st->fish_mode[i]) {
         case WW_FISH_AWAY:
@@ -688,7 +698,10 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
         case WW_FISH_FIGHTING:
             if (sc->rod.on && (int)st->lure_state[0] == WW_LURE_HOOKED &&
                 (int)st->rod_fish[0] == i) {
-                fight(sc, st, &ks, i);
+                if (fight(sc, st, &ks, i)) {
+                    splash[0] = st->lure_pos[0];
+                    splash[1] = st->lure_pos[2];
+                }
                 break;
             }
             /* the line was reeled in under it */
@@ -721,4 +734,6 @@ void ww_fish_step(const ww_scene *sc, ww_state *st) {
     banks(vx, vz, rate, f->max_bank, bank, nb);
     for (int i = 0; i < f->count; i++)
         if (banked[i]) st->fish_bank[i] = bank[i];
+    if (!isnan(splash[0]))
+        ww_ripples_add(sc, st, splash[0], splash[1], WW_FISH_TUG_SPLASH * sc->rod.splash);
 }

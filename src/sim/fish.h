@@ -46,7 +46,8 @@
  * the heading is the bite's direction plus wiggle[0] sin(2 pi wiggle[1] tau). It tugs the float
  * under in bursts: the lure (which the rod's step floats on the surface) goes down by
  * WW_FISH_TUG_DEPTH sin^2(2 pi WW_FISH_TUG_HZ tau) on the half-periods where that sine is positive,
- * and the hook with it.
+ * and the hook with it; each such half-period starts with a splash at the float, a ripple of
+ * WW_FISH_TUG_SPLASH times rod.splash.
  * After a duration drawn in fight[lo, hi] the fish is caught: fish_caught + 1, `catch`, the rod
  * reels in, and the fish is away for `respawn` seconds, then reappears at a random place. If the
  * line is reeled in first (a new cast) the fish escapes (`fish_escape`).
@@ -67,6 +68,7 @@ enum { WW_FISH_SWIMMING = 0, WW_FISH_FIGHTING, WW_FISH_AWAY };
 #define WW_FISH_DASH 3.0        /* m/s: a hooked fish's dash to the hook (a trout's burst) */
 #define WW_FISH_TUG_DEPTH 0.05  /* m: how far a fighting fish pulls the float under */
 #define WW_FISH_TUG_HZ 1.3      /* its tugs a second */
+#define WW_FISH_TUG_SPLASH 1.0  /* each tug's splash at the float, of the lure's landing one */
 
 void ww_fish_reset(const ww_scene *sc, ww_state *st);
 void ww_fish_step(const ww_scene *sc, ww_state *st);
