@@ -14,6 +14,7 @@
 #include "io/writers.h"
 #include "scene/scene.h"
 #include "sim/state.h"
+#include "sim/step.h"
 #include "test.h"
 
 /* On a renderer other than the one in golden/RENDERER, without goldens of its own (DIR/KEY/):
@@ -174,6 +175,37 @@ int ww_test_render_pic(const char *scene, int frame, const char *size, const cha
     return ww_test_pic_load(path, p);
 }
 
+int ww_test_render_with_without(const char *tag, const char *text, int frame, const char *size,
+                                const char *without, ww_test_pic *with, ww_test_pic *none) {
+    char path[600], on[160], off[160];
+    *with = *none = (ww_test_pic){0};
+    snprintf(path, sizeof path, "%s/scene.yaml", ww_test_tmpdir(tag));
+    snprintf(on, sizeof on, "%s_with", tag);
+    snprintf(off, sizeof off, "%s_without", tag);
+    ENSURE(ww_test_write_text(path, text) == 0);
+    if (ww_test_render_pic(path, frame, size, NULL, on, with) &&
+        ww_test_render_pic(path, frame, size, without, off, none))
+        return 1;
+    ww_image_free(&with->im);
+    ww_image_free(&none->im);
+    *with = *none = (ww_test_pic){0};
+    return 0;
+}
+
+int ww_test_moved_near(const ww_test_pic *a, const ww_test_pic *b, double x, double y, int radius,
+                       int levels) {
+    for (int dy = -radius; dy <= radius; dy++)
+        for (int dx = -radius; dx <= radius; dx++) {
+            int px = (int)floor(x) + dx, py = (int)floor(y) + dy;
+            if (px < 0 || py < 0 || px >= a->w || py >= a->h) continue;
+            const unsigned char *p = ww_test_pixel(&a->im, px, py);
+            const unsigned char *q = ww_test_pixel(&b->im, px, py);
+            for (int c = 0; c < 3; c++)
+                if (abs(p[c] - q[c]) > levels) return 1;
+        }
+    return 0;
+}
+
 double ww_test_pic_psnr(const ww_test_pic *a, const ww_test_pic *b, int *max_diff) {
     double se = 0.0;
     *max_diff = 0;
@@ -235,4 +267,19 @@ void ww_test_project(const ww_scene *sc, const ww_state *st, const double p[3], 
     double z = ww_m_dot3(d, f), t = tan(0.5 * st->cam_fov[0]);
     px[0] = 0.5 * (1.0 + ww_m_dot3(d, r) / (z * t * sc->width / sc->height)) * sc->width;
     px[1] = 0.5 * (1.0 - ww_m_dot3(d, u) / (z * t)) * sc->height;
+}
+
+struct ww_scene *ww_test_scene_text(const char *name, const char *text) {
+    ww_scene *sc = NULL;
+    ww_error err = {0};
+    ww_result r = ww_scene_load_string(name, text, strlen(text), NULL, 0, &sc, &err);
+    ENSURE_MSG(r == WW_OK, "%s:%d:%d: %s", name, err.line, err.column, err.msg);
+    return r == WW_OK ? sc : NULL;
+}
+
+int ww_test_run_to(const struct ww_scene *sc, struct ww_state *st, int64_t step) {
+    ww_error err = {0};
+    ww_result r = ww_sim_advance_to(sc, st, step, &err);
+    ENSURE_MSG(r == WW_OK, "step %lld: %s", (long long)st->step, err.msg);
+    return r == WW_OK;
 }

@@ -173,9 +173,13 @@ const char *ww_test_build_dir(void);
 /* 1 when cmd is found on PATH */
 int ww_test_have_tool(const char *cmd);
 
-/* tests/golden.c: images */
+/* tests/golden.c: scenes, projections and images */
 struct ww_scene;
 struct ww_state;
+/* a scene from YAML text, named `name` in its messages; a failed load fails the test (NULL) */
+struct ww_scene *ww_test_scene_text(const char *name, const char *text);
+/* the state advanced to `step`; a failed step fails the test (0) */
+int ww_test_run_to(const struct ww_scene *sc, struct ww_state *st, int64_t step);
 /* world point p to pixel coordinates (x right, y down, pixel centres at +0.5) as the state's
  * camera sees it in the scene's frame */
 void ww_test_project(const struct ww_scene *sc, const struct ww_state *st, const double p[3],
@@ -195,6 +199,15 @@ double ww_test_pic_luma(const ww_test_pic *p, int x, int y);
  * folder `name`, read into p; 0 (a failed check) when the render or the read fails */
 int ww_test_render_pic(const char *scene, int frame, const char *size, const char *args,
                        const char *name, ww_test_pic *p);
+/* a scene's text written as tag/scene.yaml under the test's folder and its frame rendered with
+ * and without `without` (arguments that take something out of the picture); 1 when both are
+ * read back, else a failed check and both freed */
+int ww_test_render_with_without(const char *tag, const char *text, int frame, const char *size,
+                                const char *without, ww_test_pic *with, ww_test_pic *none);
+/* whether a channel of a pixel within `radius` px of (x, y) differs between a and b by more than
+ * `levels` (8-bit); pixels off the image do not count */
+int ww_test_moved_near(const ww_test_pic *a, const ww_test_pic *b, double x, double y, int radius,
+                       int levels);
 /* PSNR of b against a over RGB (8-bit; INFINITY when equal) and the largest channel difference */
 double ww_test_pic_psnr(const ww_test_pic *a, const ww_test_pic *b, int *max_diff);
 /* this machine's GL renderer is the one that blessed golden/ (golden/RENDERER) */

@@ -30,13 +30,7 @@
 /* a fish counts as drawn with at least this many pixels in its window */
 #define FISH_MIN_PIXELS 12
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("species.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "%s", err.msg);
-    return r == WW_OK ? sc : NULL;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("species.yaml", text); }
 
 static void run(const ww_scene *sc, ww_state *st, int steps) {
     ww_error err = {0};
@@ -87,7 +81,6 @@ TEST(fish_species_absent_keeps_one_kind) {
 /* ---- the rendered feature scene --------------------------------------------------------- */
 
 #define FEATURE "scenes/features/fish_species.yaml"
-
 
 static double hue_of(const double c[3]) {
     double mx = fmax(c[0], fmax(c[1], c[2])), mn = fmin(c[0], fmin(c[1], c[2])), d = mx - mn;

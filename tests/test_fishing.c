@@ -41,13 +41,7 @@
 /* the yaw rate against turn_rate: one rounding of the clamp, rad/s */
 #define FISH_TURN_RATE_TOL 1e-9
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("fishing.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "load: %s", err.msg);
-    return sc;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("fishing.yaml", text); }
 
 static int step_ok(const ww_scene *sc, ww_state *st) {
     ww_error err = {0};

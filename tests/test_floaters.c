@@ -42,13 +42,7 @@
 #define LAMP_MIN_LUMA 200.0
 #define LAMP_UP 1.45 /* the lamp's position in the crate's frame, m (floating_models.yaml) */
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("floaters.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "%s", err.msg);
-    return r == WW_OK ? sc : NULL;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("floaters.yaml", text); }
 
 static void run(const ww_scene *sc, ww_state *st, int steps) {
     ww_error err = {0};
@@ -231,7 +225,6 @@ static mask_stats ball_mask(const ww_image *im) {
     if (m.n) m.cy /= (double)m.n;
     return m;
 }
-
 
 static double row_of(const ww_scene *sc, const ww_state *st, const double p[3]) {
     double px[2];

@@ -50,13 +50,6 @@ static ww_scene *load_file(const char *path) {
     return r == WW_OK ? sc : NULL;
 }
 
-static int run_to(const ww_scene *sc, ww_state *st, int64_t step) {
-    ww_error err = {0};
-    ww_result r = ww_sim_advance_to(sc, st, step, &err);
-    ENSURE_MSG(r == WW_OK, "step %lld: %s", (long long)st->step, err.msg);
-    return r == WW_OK;
-}
-
 static double dist_to_chord(const double p[3], const double a[3], const double b[3]) {
     double ab[3], ap[3], c[3];
     ww_m_sub3(b, a, ab);
@@ -73,7 +66,7 @@ TEST(line_runs_from_the_tip_to_the_lure_and_never_under_the_water) {
     double worst_under = 0.0, worst_bend = 0.0;
     /* every other frame of the scene's three casts: held from the camera, then from a place */
     for (int64_t step = 0; step < 30 * 30 * sc->steps_per_frame; step += 2 * sc->steps_per_frame) {
-        if (!run_to(sc, st, step)) break;
+        if (!ww_test_run_to(sc, st, step)) break;
         double p[WW_LINE_SEGMENTS + 1][3], tip[3];
         int n = ww_line_points(sc, st, p), state = (int)st->lure_state[0];
         ENSURE_EQ_INT(n > 0, state != WW_LURE_IDLE);
@@ -125,7 +118,7 @@ TEST(line_ribbons_are_two_pixels_wide_or_their_width) {
     ww_scene *sc = load_file(FISHING);
     if (!sc) return;
     ww_state *st = ww_state_new(sc);
-    if (!run_to(sc, st, 50 * sc->steps_per_frame)) return; /* the first cast in flight */
+    if (!ww_test_run_to(sc, st, 50 * sc->steps_per_frame)) return; /* the first cast in flight */
     ww_line_eye eye = {.pixel_angle = 2.0 * tan(0.5 * st->cam_fov[0]) / sc->height,
                        .near = sc->near_clip};
     for (int k = 0; k < 3; k++) eye.pos[k] = st->cam_pos[k], eye.fwd[k] = st->cam_fwd[k];
@@ -213,7 +206,7 @@ TEST_IMAGE(picture_line_seen_from_the_rod_to_the_lure) {
         snprintf(args, sizeof args, "--set objects.rod.line_width=0");
         if (!ww_test_render_pic(FISHING, frames[f], "1280x720", NULL, "line", &with) ||
             !ww_test_render_pic(FISHING, frames[f], "1280x720", args, "none", &none) ||
-            !run_to(sc, st, frames[f] * sc->steps_per_frame))
+            !ww_test_run_to(sc, st, frames[f] * sc->steps_per_frame))
             break;
         double p[WW_LINE_SEGMENTS + 1][3], rp[WW_ROD_SEGMENTS + 1][3], rw[WW_ROD_SEGMENTS + 1];
         int n = ww_line_points(sc, st, p), nr = ww_line_rod_points(sc, st, rp, rw);

@@ -50,20 +50,7 @@ static const char *SPLASH_SCENE =
 #define OUTSIDE_PX 4.0
 #define OUTSIDE_SHARE_MAX 0.01
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("splash.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "%s", err.msg);
-    return r == WW_OK ? sc : NULL;
-}
-
-static int run_to(const ww_scene *sc, ww_state *st, int64_t step) {
-    ww_error err = {0};
-    ww_result r = ww_sim_advance_to(sc, st, step, &err);
-    ENSURE_MSG(r == WW_OK, "step %lld: %s", (long long)st->step, err.msg);
-    return r == WW_OK;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("splash.yaml", text); }
 
 TEST(splash_drops_rise_and_fall_back_from_each_young_ripple) {
     ww_scene *sc = load(SPLASH_SCENE);
@@ -75,13 +62,13 @@ TEST(splash_drops_rise_and_fall_back_from_each_young_ripple) {
     if (!d || !again) return;
     int64_t splash_step = (int64_t)llround(SPLASH_T / sc->dt);
     int expect = (int)lround(WW_SPLASH_DROPS * SPLASH_AMP / WW_SPLASH_A_REF);
-    if (run_to(sc, st, splash_step - 1)) ENSURE_EQ_INT(ww_splash_drops(sc, st, d, cap), 0);
+    if (ww_test_run_to(sc, st, splash_step - 1)) ENSURE_EQ_INT(ww_splash_drops(sc, st, d, cap), 0);
     /* through the flight: all of them at first, then fewer as they fall back; every drop
      * above the surface over the splash, within the crown's height */
     double rise = fmin(WW_SPLASH_RISE * SPLASH_AMP, WW_SPLASH_RISE_MAX);
     int first = -1, last = -1, highest = 0;
     double top = 0.0;
-    for (int64_t step = splash_step + 1; step <= splash_step + 120 && run_to(sc, st, step); step++) {
+    for (int64_t step = splash_step + 1; step <= splash_step + 120 && ww_test_run_to(sc, st, step); step++) {
         int n = ww_splash_drops(sc, st, d, cap);
         if (first < 0) first = n;
         if (n > 0) last = (int)(step - splash_step);
@@ -126,13 +113,9 @@ TEST(splash_drops_rise_and_fall_back_from_each_young_ripple) {
 
 TEST_IMAGE(picture_splash_drops_seen_where_they_are) {
     REQUIRE_GL();
-    char path[600];
-    snprintf(path, sizeof path, "%s/splash.yaml", ww_test_tmpdir("splash_scene"));
-    ENSURE(ww_test_write_text(path, SPLASH_SCENE) == 0);
-    ww_test_pic with = {0}, none = {0};
-    if (!ww_test_render_pic(path, SHOT_FRAME, "640x360", NULL, "spray_on", &with) ||
-        !ww_test_render_pic(path, SHOT_FRAME, "640x360", "--set water.ripples.spray=0",
-                            "spray_off", &none))
+    ww_test_pic with, none;
+    if (!ww_test_render_with_without("splash", SPLASH_SCENE, SHOT_FRAME, "640x360",
+                                     "--set water.ripples.spray=0", &with, &none))
         return;
     ww_scene *sc = load(SPLASH_SCENE);
     if (!sc) return;
@@ -140,7 +123,7 @@ TEST_IMAGE(picture_splash_drops_seen_where_they_are) {
     int cap = ww_splash_capacity(sc);
     ww_splash_drop *d = malloc((size_t)cap * sizeof *d);
     double(*at)[2] = malloc((size_t)cap * sizeof *at);
-    if (d && at && run_to(sc, st, SHOT_FRAME * sc->steps_per_frame)) {
+    if (d && at && ww_test_run_to(sc, st, SHOT_FRAME * sc->steps_per_frame)) {
         int n = ww_splash_drops(sc, st, d, cap);
         double sx = (double)with.w / sc->width, sy = (double)with.h / sc->height;
         for (int k = 0; k < n; k++) {
@@ -148,26 +131,12 @@ TEST_IMAGE(picture_splash_drops_seen_where_they_are) {
             at[k][0] *= sx, at[k][1] *= sy;
         }
         int seen = 0;
-        for (int k = 0; k < n; k++) {
-            int hit = 0;
-            for (int dy = -DROP_PX; dy <= DROP_PX && !hit; dy++)
-                for (int dx = -DROP_PX; dx <= DROP_PX && !hit; dx++) {
-                    int x = (int)floor(at[k][0]) + dx, y = (int)floor(at[k][1]) + dy;
-                    if (x < 0 || y < 0 || x >= with.w || y >= with.h) continue;
-                    const unsigned char *a = ww_test_pixel(&with.im, x, y);
-                    const unsigned char *b = ww_test_pixel(&none.im, x, y);
-                    for (int c = 0; c < 3; c++) hit |= abs(a[c] - b[c]) > DROP_LEVELS;
-                }
-            seen += hit;
-        }
+        for (int k = 0; k < n; k++)
+            seen += ww_test_moved_near(&with, &none, at[k][0], at[k][1], DROP_PX, DROP_LEVELS);
         long changed = 0, outside = 0;
         for (int y = 0; y < with.h; y++)
             for (int x = 0; x < with.w; x++) {
-                const unsigned char *a = ww_test_pixel(&with.im, x, y);
-                const unsigned char *b = ww_test_pixel(&none.im, x, y);
-                int moved = 0;
-                for (int c = 0; c < 3; c++) moved |= abs(a[c] - b[c]) > DROP_LEVELS;
-                if (!moved) continue;
+                if (!ww_test_moved_near(&with, &none, x, y, 0, DROP_LEVELS)) continue;
                 changed++;
                 double best = INFINITY;
                 for (int i = 0; i < n; i++)

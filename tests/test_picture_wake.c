@@ -86,20 +86,7 @@ static const char *WAKE_SCENE =
 #define ABOVE 14.0
 #define ABOVE_BACK 5.0
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("wake.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "%s", err.msg);
-    return r == WW_OK ? sc : NULL;
-}
-
-static int run_to(const ww_scene *sc, ww_state *st, int64_t step) {
-    ww_error err = {0};
-    ww_result r = ww_sim_advance_to(sc, st, step, &err);
-    ENSURE_MSG(r == WW_OK, "step %lld: %s", (long long)st->step, err.msg);
-    return r == WW_OK;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("wake.yaml", text); }
 
 TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
     ww_scene *sc = load(WAKE_SCENE);
@@ -111,7 +98,7 @@ TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
     int64_t every = (int64_t)floor(WW_BOAT_WAKE_EVERY / sc->dt + 0.5);
     /* each trail sample is the stern at its step */
     for (int64_t step = every; step <= 3 * every; step += every) {
-        if (!run_to(sc, st, step)) break;
+        if (!ww_test_run_to(sc, st, step)) break;
         int k = ((int)st->boat_wake_next[0] + WW_BOAT_WAKE - 1) % WW_BOAT_WAKE;
         const double *w = st->boat_wake + 4 * k;
         double h = st->boat_heading[0], L = 0.5 * sc->boat.length;
@@ -120,7 +107,7 @@ TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
         ENSURE_NEAR(w[2], st->t, 0.0);
         ENSURE_NEAR(w[3], st->boat_odometer[0], 0.0);
     }
-    if (!run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) return;
+    if (!ww_test_run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) return;
     int n = ww_wake_rows(sc, st, row, &stern);
     ENSURE_MSG(n > stern + 10, "%d rows of wake after 4.5 s under way", n - stern - 1);
     ENSURE_EQ_INT(stern, WW_WAKE_HULL_ROWS);
@@ -159,7 +146,7 @@ TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
            row[stern].half, row[n - 1].half);
 
     /* in the turn the inner edge runs on along the path: it never doubles back over itself */
-    if (!run_to(sc, st, TURN_FRAME * sc->steps_per_frame)) return;
+    if (!ww_test_run_to(sc, st, TURN_FRAME * sc->steps_per_frame)) return;
     n = ww_wake_rows(sc, st, row, &stern);
     int folds = 0;
     for (int i = 1; i + 1 < n; i++) {
@@ -190,7 +177,7 @@ TEST(wake_trail_and_wedge_on_a_straight_run_and_in_a_turn) {
     sc = load(text);
     if (!sc) return;
     st = ww_state_new(sc);
-    if (run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame))
+    if (ww_test_run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame))
         ENSURE_EQ_INT(ww_wake_rows(sc, st, row, &stern), 0);
     ww_state_free(st);
     ww_scene_free(sc);
@@ -221,20 +208,6 @@ static double outline_distance(const double (*poly)[2], int n, double x, double 
     return best;
 }
 
-/* whether any pixel within 1 px of (x, y) moved by more than `levels` between a and b */
-static int foam_near(const ww_test_pic *a, const ww_test_pic *b, double x, double y, int levels) {
-    for (int dy = -1; dy <= 1; dy++)
-        for (int dx = -1; dx <= 1; dx++) {
-            int px = (int)floor(x) + dx, py = (int)floor(y) + dy;
-            if (px < 0 || py < 0 || px >= a->w || py >= a->h) continue;
-            const unsigned char *p = ww_test_pixel(&a->im, px, py);
-            const unsigned char *q = ww_test_pixel(&b->im, px, py);
-            for (int c = 0; c < 3; c++)
-                if (abs(p[c] - q[c]) > levels) return 1;
-        }
-    return 0;
-}
-
 /* the point on the water beside the straight path: `ahead` m ahead of the stern (negative:
  * behind), `out` m out to `side` (-1, 1), projected into the frame (scaled to its size) */
 static void beside(const ww_scene *sc, const ww_state *st, double ahead, int side, double out,
@@ -252,18 +225,14 @@ static void beside(const ww_scene *sc, const ww_state *st, double ahead, int sid
 
 TEST_IMAGE(picture_wake_foam_behind_the_boat_on_both_sides) {
     REQUIRE_GL();
-    char path[600];
-    snprintf(path, sizeof path, "%s/wake.yaml", ww_test_tmpdir("wake_scene"));
-    ENSURE(ww_test_write_text(path, WAKE_SCENE) == 0);
-    ww_test_pic with = {0}, none = {0};
-    if (!ww_test_render_pic(path, STRAIGHT_FRAME, "640x360", NULL, "wake_on", &with) ||
-        !ww_test_render_pic(path, STRAIGHT_FRAME, "640x360", "--set objects.boat.wake=0",
-                            "wake_off", &none))
+    ww_test_pic with, none;
+    if (!ww_test_render_with_without("wake", WAKE_SCENE, STRAIGHT_FRAME, "640x360",
+                                     "--set objects.boat.wake=0", &with, &none))
         return;
     ww_scene *sc = load(WAKE_SCENE);
     if (!sc) return;
     ww_state *st = ww_state_new(sc);
-    if (run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) {
+    if (ww_test_run_to(sc, st, STRAIGHT_FRAME * sc->steps_per_frame)) {
         ww_wake_row row[WW_WAKE_MAX_ROWS];
         int stern = 0, n = ww_wake_rows(sc, st, row, &stern);
         /* the ribbon's two halves projected, each a polygon: an edge, then the path back */
@@ -355,12 +324,12 @@ static int above(int frame, const char *tag, above_view *v) {
     ww_scene *sc = load(WAKE_SCENE);
     if (!sc) return 0;
     ww_state *st = ww_state_new(sc);
-    int ok = run_to(sc, st, frame * sc->steps_per_frame);
+    int ok = ww_test_run_to(sc, st, frame * sc->steps_per_frame);
     double bx = st->boat_pos[0] - ABOVE_BACK, bz = st->boat_pos[2];
     ww_state_free(st);
     ww_scene_free(sc);
     if (!ok) return 0;
-    char text[2048], cam[160], path[600], on[80], off[80];
+    char text[2048], cam[160];
     snprintf(cam, sizeof cam, "{t: 0, position: [%.3f, %.1f, %.3f], look_at: [%.3f, 0, %.3f]}",
              bx, ABOVE, bz, bx + 1.0, bz);
     const char *at = strstr(WAKE_SCENE, WAKE_CAMERA);
@@ -368,16 +337,12 @@ static int above(int frame, const char *tag, above_view *v) {
     if (!at) return 0;
     snprintf(text, sizeof text, "%.*s%s%s", (int)(at - WAKE_SCENE), WAKE_SCENE, cam,
              at + strlen(WAKE_CAMERA));
-    snprintf(path, sizeof path, "%s/wake.yaml", ww_test_tmpdir(tag));
-    ENSURE(ww_test_write_text(path, text) == 0);
-    snprintf(on, sizeof on, "%s_on", tag);
-    snprintf(off, sizeof off, "%s_off", tag);
     v->sc = load(text);
     if (!v->sc) return 0;
     v->st = ww_state_new(v->sc);
-    if (ww_test_render_pic(path, frame, "640x360", NULL, on, &v->with) &&
-        ww_test_render_pic(path, frame, "640x360", "--set objects.boat.wake=0", off, &v->none) &&
-        run_to(v->sc, v->st, frame * v->sc->steps_per_frame))
+    if (ww_test_render_with_without(tag, text, frame, "640x360", "--set objects.boat.wake=0",
+                                    &v->with, &v->none) &&
+        ww_test_run_to(v->sc, v->st, frame * v->sc->steps_per_frame))
         return 1;
     above_free(v);
     return 0;
@@ -395,7 +360,7 @@ static int arm_points(const above_view *v, int side, unsigned char *foam) {
         for (int k = 0; k <= ARM_CUT_POINTS; k++) {
             double px[2], out = half * (ARM_CUT_FROM + (1.02 - ARM_CUT_FROM) * k / ARM_CUT_POINTS);
             beside(v->sc, v->st, -back, side, out, &v->with, px);
-            foam[n++] = (unsigned char)foam_near(&v->with, &v->none, px[0], px[1], WAKE_LEVELS);
+            foam[n++] = (unsigned char)ww_test_moved_near(&v->with, &v->none, px[0], px[1], 1, WAKE_LEVELS);
         }
     }
     return n;
@@ -419,7 +384,7 @@ TEST_IMAGE(picture_wake_bow_wave_and_unbroken_arms_from_above) {
             for (double a = 0.5 * len; a <= len; a += BOW_STEP) {
                 double px[2];
                 beside(sc, st, a, side, ww_wake_hull_half(sc, a) + 0.5 * WW_WAKE_BAND, &with, px);
-                seen += foam_near(&with, &none, px[0], px[1], WAKE_LEVELS);
+                seen += ww_test_moved_near(&with, &none, px[0], px[1], 1, WAKE_LEVELS);
                 points++;
             }
             printf("  the bow wave on side %+d: foam at %d of %d points beside the forward half\n",
@@ -471,7 +436,7 @@ static int band_points(const above_view *v, int side, unsigned char *foam) {
             double px[2];
             beside(v->sc, v->st, -back, side,
                    half - TRAVEL_BAND * band * (1.0 - (double)k / TRAVEL_ACROSS), &v->with, px);
-            foam[n++] = (unsigned char)foam_near(&v->with, &v->none, px[0], px[1], WAKE_LEVELS);
+            foam[n++] = (unsigned char)ww_test_moved_near(&v->with, &v->none, px[0], px[1], 1, WAKE_LEVELS);
         }
     }
     return n;

@@ -37,13 +37,7 @@
 /* a bubble's lateral offset against its wobble amplitude: rounding */
 #define WOBBLE_TOL 1e-12
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("reef.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "load: %s", err.msg);
-    return sc;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("reef.yaml", text); }
 
 /* events of kind k in the step's outbox; the last one's entry in *last */
 static int count_events(const ww_scene *sc, const ww_state *st, int kind, const double **last) {

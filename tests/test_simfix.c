@@ -145,13 +145,7 @@ TEST_PROC(golden_features_layout_is_found_by_render_golden) {
 
 /* ---- camera collision: slide or stop, never pass -------------------------------------------- */
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("simfix.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "load: %s", err.msg);
-    return r == WW_OK ? sc : NULL;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("simfix.yaml", text); }
 
 /* the segment a + u (b - a), u in [0, 1], meets the open box |x - c| < h (slab test written out
  * here, independently of collide.c) */

@@ -38,13 +38,7 @@
 /* impulse and momentum of a thud: rounding */
 #define THUD_TOL 1e-9
 
-static ww_scene *load(const char *text) {
-    ww_scene *sc = NULL;
-    ww_error err = {0};
-    ww_result r = ww_scene_load_string("stones.yaml", text, strlen(text), NULL, 0, &sc, &err);
-    ENSURE_MSG(r == WW_OK, "load: %s:%d:%d %s", err.file, err.line, err.column, err.msg);
-    return sc;
-}
+static ww_scene *load(const char *text) { return ww_test_scene_text("stones.yaml", text); }
 
 static int count_events(const ww_scene *sc, const ww_state *st, ww_sim_event_kind k) {
     int n = 0;
