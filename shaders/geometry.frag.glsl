@@ -258,7 +258,7 @@ vec3 ww_fish_pattern(vec3 c, vec3 m, float pattern) {
 #endif
 
 #if WW_GEOM_MODE == 5
-// the wake's foam: times s, widths m (gfx/wake.c's ARM_BAND is WAKE_ARM_BAND)
+// the wake's foam: times s, widths m (gfx/wake.h's WW_WAKE_BAND is WAKE_ARM_BAND)
 const float WAKE_WASH_LIFE = 1.2;    // the wash's fresh foam fades by e in this ...
 const float WAKE_ARM_LIFE = 2.5;     // ... the arms' and the bow wave's ...
 const float WAKE_LACE_LIFE = 3.5;    // ... and the lace either leaves
@@ -345,16 +345,16 @@ void main() {
         // the boat's wake (gfx/wake.h), a ribbon lying on the water from the stem back: v_normal
         // holds the foam's strength, the time since the stern passed (s) and the odometer (m
         // along the path, fixed to the water), v_uv the place across (-1 .. 1) and the half width
-        // (m), v_wake the stern's odometer and the transom's half-breadth. Three foams, each a
-        // coverage that noise fixed to the water breaks into patches as it thins, then into a
-        // lace (as the water's crest foam, water.frag.glsl):
+        // (m), v_wake the stern's odometer, the transom's half-breadth and the time. Two foams,
+        // each a coverage that noise breaks into patches as it thins, and a lace it leaves in
+        // the water (as the water's crest foam, water.frag.glsl):
         // - the wash behind the transom, streaks along the path, spreading slowly;
         // - the bow wave along the hull and the wedge's arms from where it leaves the hull, a
-        //   band inside the ribbon's edge, feathered along the divergent crests (54.7 degrees
+        //   band inside the ribbon's edge, in crests along the divergent waves' (54.7 degrees
         //   to the path);
-        // both fading with the time since the stern passed. The noise fades to its mean where
-        // its cells shrink under a pixel, so a far wake does not shimmer. Foam is white, lit by
-        // the sky and the sun (from above: it lies flat), fogged as every surface.
+        // both fading with the time since the stern passed. Each noise fades to its mean where
+        // its cells shrink under two pixels, so a far wake does not shimmer. Foam is white, lit
+        // by the sky and the sun (from above: it lies flat), fogged as every surface.
         float strength = v_normal.x, age = v_normal.y, along = v_normal.z;
         float x = v_uv.x * v_uv.y, ax = abs(x), back = v_wake.x - along; // m behind the stern
         float px = max(fwidth(along), fwidth(x)) + 1e-4;                 // m a pixel
@@ -375,8 +375,8 @@ void main() {
         // their foam is drawn in the boat's frame: along the hull one breaking wave, behind the
         // stern crests slanting back at 54.7 degrees to the path about WAKE_CREST_SPACING apart
         // across themselves, made ragged by a noise stretched along them that changes over
-        // WAKE_CREST_CYCLE s (two of it crossfaded, each offset anew every cycle). What breaks leaves a lace in the water
-        // inside the band, which moves out across the water as the wedge widens.
+        // WAKE_CREST_CYCLE s (two of it crossfaded, each offset anew every cycle). What breaks
+        // leaves a lace in the water inside the band, which moves out as the wedge widens.
         float band = WAKE_ARM_BAND + WAKE_ARM_GROW * grow, in_edge = v_uv.y - ax;
         float in_arm = smoothstep(0.0, 0.05 + px, in_edge) *
                        (1.0 - smoothstep(0.35 * band, band + px, in_edge));

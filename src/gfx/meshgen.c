@@ -287,14 +287,14 @@ static void gen_sphere(mb *b) {
     mb_ellipsoid(b, c, r);
 }
 
-/* a drop: an icosahedron of diameter 1 with the sphere's normals (12 vertices; a drop is a few
- * pixels across, where a 425-vertex sphere only costs vertex work). Its faces are the triples of
- * vertices a side apart, wound to face out */
 static double dist3(const double a[3], const double b[3]) {
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                 (a[2] - b[2]) * (a[2] - b[2]));
 }
 
+/* a drop: an icosahedron of diameter 1 with the sphere's normals (12 vertices; a drop is a few
+ * pixels across, where a 425-vertex sphere only costs vertex work). Its faces are the triples of
+ * vertices a side apart, wound to face out */
 static void gen_drop(mb *b) {
     const double f = 0.5 * (1.0 + sqrt(5.0)), r = 0.5 / sqrt(1.0 + f * f);
     double p[12][3];
@@ -321,8 +321,10 @@ static void gen_drop(mb *b) {
                 c[1] = u[2] * v[0] - u[0] * v[2];
                 c[2] = u[0] * v[1] - u[1] * v[0];
                 int out = c[0] * p[i][0] + c[1] * p[i][1] + c[2] * p[i][2] > 0.0;
-                if (out) mb_tri(b, i, j, k);
-                else mb_tri(b, i, k, j);
+                if (out)
+                    mb_tri(b, i, j, k);
+                else
+                    mb_tri(b, i, k, j);
             }
 }
 

@@ -2,7 +2,7 @@
  * every ripple is something that hit the water (a stone's skip or sink, the lure landing, a
  * cube let go, a scripted ripple), so each young one throws a crown of drops that rise and fall
  * back on ballistic paths. Nothing in the simulation reads them: they are built each frame from
- * the pool's (x, z, t0, A0) and drawn as small lit spheres (gfx/geometry.c). No GL here: the
+ * the pool's (x, z, t0, A0) and drawn as small lit icosahedra (gfx/geometry.c). No GL here: the
  * tests check the drops without a context.
  *
  * A splash of amplitude A throws about WW_SPLASH_DROPS (A / WW_SPLASH_A_REF) drops (scaled by
@@ -10,8 +10,8 @@
  * across at the surface over the ripple's centre, at 55 to 80 degrees from the level, each
  * drop's azimuth, angle, speed and size drawn from a counter-based stream keyed by the ripple
  * (core/rng.h: WW_RNG_SPLASH), so a frame shows the same drops whichever frames were rendered
- * before it. A drop is drawn from the splash's instant until it falls back below the height it
- * was thrown from. */
+ * before it. A drop is drawn from the splash's instant until it falls back below the surface
+ * over the ripple's centre, which it was thrown from. */
 #ifndef WW_GFX_SPLASH_H
 #define WW_GFX_SPLASH_H
 
