@@ -225,11 +225,7 @@ TEST_IMAGE(picture_line_seen_from_the_rod_to_the_lure) {
         long away = 0;
         for (int y = 0; y < with.h; y++)
             for (int x = 0; x < with.w; x++) {
-                const unsigned char *a = ww_test_pixel(&with.im, x, y);
-                const unsigned char *b = ww_test_pixel(&none.im, x, y);
-                int d = 0;
-                for (int c = 0; c < 3; c++) d = abs(a[c] - b[c]) > d ? abs(a[c] - b[c]) : d;
-                if (d <= AWAY_LEVELS) continue;
+                if (!ww_test_moved_near(&with, &none, x, y, 0, AWAY_LEVELS)) continue;
                 int near = 0;
                 for (int i = 0; i < ml + mr && !near; i++) {
                     const sample *s = i < ml ? &line[i] : &rod[i - ml];

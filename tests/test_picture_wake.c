@@ -263,11 +263,7 @@ TEST_IMAGE(picture_wake_foam_behind_the_boat_on_both_sides) {
         double gain = 0.0;
         for (int y = 0; y < with.h; y++)
             for (int x = 0; x < with.w; x++) {
-                const unsigned char *a = ww_test_pixel(&with.im, x, y);
-                const unsigned char *b = ww_test_pixel(&none.im, x, y);
-                int d = 0;
-                for (int c = 0; c < 3; c++) d = abs(a[c] - b[c]) > d ? abs(a[c] - b[c]) : d;
-                if (d <= WAKE_LEVELS) continue;
+                if (!ww_test_moved_near(&with, &none, x, y, 0, WAKE_LEVELS)) continue;
                 changed++;
                 gain += ww_test_pic_luma(&with, x, y) - ww_test_pic_luma(&none, x, y);
                 double px = x + 0.5, py = y + 0.5;
